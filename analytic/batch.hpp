@@ -1,0 +1,32 @@
+// gradcontact/analytic: the JSON Lines evaluator behind `gradcontact eval` (vocabulary, units and
+// sign conventions in analytic/README.md).
+//
+// One request object a line in, one answer line out: {"id": ..., "value": x} or
+// {"id": ..., "error": "..."}; the error names the parameter, its value and the valid range. One bad
+// line never stops the others.
+#pragma once
+
+#include <iosfwd>
+#include <string>
+
+namespace gradcontact::batch
+{
+  /// The answer to one request.
+  struct Answer
+  {
+    std::string id_json; ///< the request's id, re-serialised ("null" when absent or unreadable)
+    bool ok;             ///< true: value holds the result; false: error holds the message
+    double value;
+    std::string error;
+  };
+
+  /// Evaluates one request line. Never throws: every failure becomes Answer::error.
+  Answer evaluate(const std::string &line);
+
+  /// One JSON line, without the newline.
+  std::string to_json(const Answer &answer);
+
+  /// Reads requests from `in` until EOF and writes one answer line per non-blank request line.
+  /// Returns the number of answers that are errors.
+  int evaluate_stream(std::istream &in, std::ostream &out);
+} // namespace gradcontact::batch

@@ -1,0 +1,92 @@
+// gradcontact/analytic: the numerical MDR engine (chapter 9.1.1 and 9.2.1) for any axisymmetric
+// profile. It is the independent check of every closed form and the tool a user calls to check a
+// closed form of their own.
+//
+//   g(x)   = |x|^(1-k) int_0^|x| f'(r) (x^2 - r^2)^(-(1-k)/2) dr                          (9.2)
+//   d(a)   = g(a) (non-adhesive, 9.10);   w1D(a) = -Delta_l(a) (adhesive, 9.46)
+//   F(a)   = int_-a^a c_N(x) w1D(x) dx, c_N(x) = cN0 (|x|/c0)^k                             (9.11)
+//   p(r)   = -cN0/(pi c0^k) int_r^inf w1D'(x) (x^2 - r^2)^(-(1-k)/2) dx  (a jump of w1D at a counts) (9.12)
+//   w(r)   = 2 cos(k pi/2)/pi int_0^min(r,a) x^k w1D(x) (r^2 - x^2)^(-(1+k)/2) dx           (9.12)
+//   w1D(x) = 2 c0^k cos(k pi/2)/cN0 int_x^a r p(r) (r^2 - x^2)^(-(1+k)/2) dr                (9.13)
+//
+// Every integral is mapped onto int_0^1 u^alpha (1-u)^beta h(u) du and the end-point powers are
+// removed by u = v^(1/(alpha+1)) / 2 (and the mirror image at u = 1) before tanh-sinh: the mass of
+// x^k near 0 for k -> -1 lies at scales below any double, and a plain tanh-sinh loses digits there
+// (ERRATA.md, quadrature item).
+#pragma once
+
+#include <analytic/material.hpp>
+
+#include <functional>
+
+namespace gradcontact::mdr
+{
+  /// An axisymmetric profile f(r), f(0) = 0, with its derivatives. f'' is needed only for the
+  /// pressure (through g'(x)); leave it empty otherwise.
+  struct Profile
+  {
+    std::function<double(double)> f;
+    std::function<double(double)> df;
+    std::function<double(double)> d2f;
+  };
+
+  /// f = A r^n with exact derivatives.
+  Profile power_law(double n, double A);
+
+  /// The 1D displacement of the Winkler foundation on [0, a] (even in x) and its slope.
+  /// Outside |x| > a it is zero; a jump at x = a enters the pressure as the edge term.
+  struct Foundation
+  {
+    std::function<double(double)> w;  ///< w1D(x), 0 <= x <= a
+    std::function<double(double)> dw; ///< w1D'(x), needed for the pressure only
+    double a;                         ///< contact radius
+  };
+
+  /// g(x) (9.2)
+  double equivalent_profile(const Profile &profile, double k, double x);
+  /// g'(x), from f' and f''.
+  double equivalent_profile_slope(const Profile &profile, double k, double x);
+
+  /// The foundation w1D(x) = d - g(x) on |x| <= a for a given depth d (9.9); d is the centre
+  /// displacement d0 for a concave punch in complete contact.
+  Foundation indentation_to_depth(const Profile &profile, double k, double a, double d);
+
+  /// A rigid flat translation w1D = d on |x| <= a (flat punch, 9.14).
+  Foundation flat(double a, double d);
+
+  /// The foundation w1D(x) = d - g(x) of an indentation to contact radius a. Without adhesion
+  /// d = g(a) (9.10); with dgamma > 0, d = g(a) - Delta_l(a) (9.46). dgamma = 0 means no adhesion.
+  Foundation indentation(const Profile &profile, const Medium &m, double a, double dgamma = 0.);
+
+  /// The foundation (9.13) of a surface pressure p(r) on r < a (p = 0 outside).
+  Foundation from_pressure(const std::function<double(double)> &p, const Medium &m, double a);
+
+  /// d = w1D(0) + g(0) = w1D(0) for indentations (the depth at the centre, 9.9).
+  double depth(const Foundation &w1d);
+  /// F_N (9.11)
+  double force(const Foundation &w1d, const Medium &m);
+  /// p(r) (9.12), zero for r > a.
+  double pressure(const Foundation &w1d, const Medium &m, double r);
+  /// w(r) (9.12), inside and outside the contact.
+  double displacement(const Foundation &w1d, const Medium &m, double r);
+
+  enum class Control
+  {
+    force,
+    displacement
+  };
+
+  struct CriticalState
+  {
+    double radius;
+    double depth;
+    double force;
+  };
+
+  /// The critical (pull-off) state of an adhesive indentation, found by minimising F_N(a) (force
+  /// control) or d(a) (displacement control) over a in [a_lo, a_hi] (a log-spaced scan, Brent's
+  /// method, then the root of a central-difference derivative), not from 9.48. DomainError when the
+  /// minimum lies on the end of the bracket (no critical state inside it).
+  CriticalState critical_state(const Profile &profile, const Medium &m, double dgamma, Control control,
+                               double a_lo, double a_hi);
+} // namespace gradcontact::mdr

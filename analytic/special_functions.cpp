@@ -1,0 +1,228 @@
+#include <analytic/errors.hpp>
+#include <analytic/special_functions.hpp>
+
+#include <boost/math/special_functions/beta.hpp>
+#include <boost/math/special_functions/gamma.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace gradcontact
+{
+  namespace detail
+  {
+    constexpr double eps = std::numeric_limits<double>::epsilon();
+    constexpr int max_terms = 2000;
+
+    bool is_nonpositive_integer(const double x) { return x <= 0 && x == std::floor(x); }
+
+    // Region predicates of hyp2f1. The Taylor series at 0 converges at least like 2^-j for z <= 1/2.
+    bool taylor_region(const double z) { return z <= 0.5; }
+    // The connection formula z -> 1 - z has Gamma(c-a-b) and Gamma(a+b-c) terms whose poles cancel
+    // when c - a - b is an integer: within this distance of an integer the two terms lose more than
+    // about log10(1/distance) digits to cancellation, so Euler's integral is used instead.
+    constexpr double degenerate_width = 0.05;
+    bool near_integer(const double s) { return std::abs(s - std::round(s)) < degenerate_width; }
+
+    double hyp2f1_taylor(const double a, const double b, const double c, const double z)
+    {
+      double term = 1., sum = 1.;
+      for (int j = 0; j < max_terms; ++j)
+        {
+          term *= (a + j) * (b + j) / ((c + j) * (j + 1.)) * z;
+          sum += term;
+          if (std::abs(term) <= eps * std::abs(sum) * 0.5)
+            return sum;
+        }
+      throw std::runtime_error("hyp2f1: Taylor series did not converge (internal error)");
+    }
+
+    // Analytic continuation along (1/2, z] by Taylor steps of the hypergeometric equation
+    // z (1-z) F'' + [c - (a+b+1) z] F' - a b F = 0. At z0 the local series converges for
+    // |t| < 1 - z0, so each step covers half the remaining distance to the singular point 1 and the
+    // terms fall like 2^-n. Used where the connection formula is degenerate (c - a - b near an
+    // integer): no Gamma function of the parameters is involved, so nothing cancels.
+    double hyp2f1_ode(const double a, const double b, const double c, const double z)
+    {
+      double z0 = 0.5;
+      double F = hyp2f1_taylor(a, b, c, z0);
+      double dF = a * b / c * hyp2f1_taylor(a + 1., b + 1., c + 1., z0);
+      const double s1 = a + b + 1., ab = a * b;
+      while (z0 < z)
+        {
+          const double t = std::min(z - z0, 0.5 * (1. - z0));
+          const double q = z0 * (1. - z0), p0 = c - s1 * z0, p1 = 1. - 2. * z0;
+          // u_n: Taylor coefficients of F at z0; F(z0 + t) = sum u_n t^n.
+          double u0 = F, u1 = dF;
+          double value = u0 + u1 * t, slope = u1, tn = t; // tn = t^n for the current n = 1
+          for (int n = 0; n < max_terms; ++n)
+            {
+              const double u2 = -((p1 * n + p0) * (n + 1.) * u1 - (n * (n - 1.) + s1 * n + ab) * u0) /
+                                (q * (n + 2.) * (n + 1.));
+              const double term = u2 * tn * t;           // u_{n+2} t^(n+2)
+              const double dterm = (n + 2.) * u2 * tn;   // d/dt of it
+              value += term;
+              slope += dterm;
+              tn *= t;
+              u0 = u1;
+              u1 = u2;
+              if (std::abs(term) <= eps * std::abs(value) * 0.25 &&
+                  std::abs(dterm) <= eps * std::abs(slope) * 0.25 && n > 2)
+                break;
+            }
+          F = value;
+          dF = slope;
+          z0 = (t == z - z0) ? z : z0 + t;
+        }
+      return F;
+    }
+
+    double hyp2f1_connection(const double a, const double b, const double c, const double z)
+    {
+      const double w = 1. - z;
+      const double s = c - a - b;
+      using boost::math::tgamma;
+      const double gc = tgamma(c);
+      double result = 0.;
+      const double A1 = gc * tgamma(s) * rgamma(c - a) * rgamma(c - b);
+      if (A1 != 0.)
+        result += A1 * hyp2f1_taylor(a, b, 1. - s, w);
+      if (w > 0)
+        {
+          const double A2 = gc * tgamma(-s) * rgamma(a) * rgamma(b);
+          if (A2 != 0.)
+            result += A2 * std::pow(w, s) * hyp2f1_taylor(c - a, c - b, 1. + s, w);
+        }
+      return result;
+    }
+
+    // int_z^1 t^(x-1) (1-t)^(y-1) dt for z >= 1/2, any x: with w = 1 - z <= 1/2,
+    // = w^y sum_j (1-x)_j / j! w^j / (y + j), converging like 2^-j.
+    double beta_upper_near_one(const double z, const double x, const double y)
+    {
+      const double w = 1. - z;
+      double coefficient = 1., power = 1., sum = 1. / y;
+      for (int j = 1; j < max_terms; ++j)
+        {
+          coefficient *= (j - x) / j; // (1-x)_j / j!
+          power *= w;
+          const double term = coefficient * power / (y + j);
+          sum += term;
+          if (std::abs(term) <= eps * std::abs(sum) * 0.5 && j > 1)
+            return std::pow(w, y) * sum;
+        }
+      throw std::runtime_error("beta_upper: series did not converge (internal error)");
+    }
+
+    // int_z^h t^(m-1) dt = (h^m - z^m) / m for 0 < z < h, finite at m = 0 (= log(h/z)).
+    double power_integral(const double z, const double h, const double m, const double L)
+    {
+      // L = log(h/z) > 0. For |m L| < 1 use z^m L expm1(m L)/(m L): no 0/0 and no cancellation.
+      const double mL = m * L;
+      if (std::abs(mL) < 1.)
+        return std::pow(z, m) * (mL == 0. ? L : L * std::expm1(mL) / mL);
+      return (std::pow(h, m) - std::pow(z, m)) / m;
+    }
+  } // namespace detail
+
+  double rgamma(const double x)
+  {
+    if (detail::is_nonpositive_integer(x))
+      return 0.;
+    return 1. / boost::math::tgamma(x);
+  }
+
+  double hyp2f1(const double a, const double b, const double c, const double z)
+  {
+    const char *fn = "hyp2f1";
+    check::finite(fn, "a", a);
+    check::finite(fn, "b", b);
+    check::finite(fn, "c", c);
+    check::closed_interval(fn, "z", z, 0., 1.);
+    if (detail::is_nonpositive_integer(c))
+      check::fail(fn, "c", c, "must not be 0, -1, -2, ... (2F1 is undefined)");
+    if (z == 0.)
+      return 1.;
+    if (detail::taylor_region(z))
+      return detail::hyp2f1_taylor(a, b, c, z);
+    const double s = c - a - b;
+    if (z == 1. && !(s > 0.))
+      check::fail(fn, "c - a - b", s, "must be > 0 at z = 1 (Gauss's sum diverges otherwise)");
+    if (!detail::near_integer(s))
+      return detail::hyp2f1_connection(a, b, c, z);
+    if (z == 1.)
+      {
+        // Gauss's sum, exact at z = 1 for c - a - b > 0.
+        using boost::math::tgamma;
+        return tgamma(c) * tgamma(s) * rgamma(c - a) * rgamma(c - b);
+      }
+    return detail::hyp2f1_ode(a, b, c, z);
+  }
+
+  double beta_upper(const double z, const double x, const double y)
+  {
+    const char *fn = "beta_upper";
+    check::finite(fn, "x", x);
+    check::positive(fn, "y", y);
+    check::closed_interval(fn, "z", z, 0., 1.);
+    if (z == 0.)
+      {
+        if (!(x > 0.))
+          check::fail(fn, "z", z, "must be > 0 when x <= 0 (the integral diverges at t = 0)");
+        return boost::math::beta(x, y);
+      }
+    if (z == 1.)
+      return 0.;
+    if (z >= 0.5)
+      return detail::beta_upper_near_one(z, x, y);
+    // int_z^(1/2) t^(x-1) (1-t)^(y-1) dt = sum_j (1-y)_j / j! int_z^(1/2) t^(x+j-1) dt, then the
+    // piece from 1/2 to 1. For 0 < y <= 1 all terms are positive (no cancellation).
+    const double h = 0.5;
+    const double L = std::log(h / z);
+    double coefficient = 1.;
+    double sum = detail::power_integral(z, h, x, L);
+    for (int j = 1; j < detail::max_terms; ++j)
+      {
+        coefficient *= (j - y) / j;
+        const double term = coefficient * detail::power_integral(z, h, x + j, L);
+        sum += term;
+        if (x + j > 0 && std::abs(term) <= detail::eps * std::abs(sum) * 0.5)
+          return sum + detail::beta_upper_near_one(h, x, y);
+      }
+    throw std::runtime_error("beta_upper: series did not converge (internal error)");
+  }
+
+  double incomplete_beta(const double z, const double x, const double y)
+  {
+    const char *fn = "incomplete_beta";
+    check::finite(fn, "x", x);
+    check::positive(fn, "y", y);
+    check::closed_interval(fn, "z", z, 0., 1.);
+    if (x > 0.)
+      return boost::math::beta(x, y, z);
+    if (detail::is_nonpositive_integer(x))
+      check::fail(fn, "x", x, "must not be 0, -1, -2, ... (B(z; x, y) has a pole; use beta_upper)");
+    if (z == 0.)
+      check::fail(fn, "z", z, "must be > 0 when x < 0 (B(z; x, y) diverges at z = 0)");
+    if (z <= 0.5)
+      {
+        // 9.21 written as sum_j (1-y)_j / j! z^(x+j) / (x+j).
+        double coefficient = 1., power = std::pow(z, x);
+        double sum = power / x;
+        for (int j = 1; j < detail::max_terms; ++j)
+          {
+            coefficient *= (j - y) / j;
+            power *= z;
+            const double term = coefficient * power / (x + j);
+            sum += term;
+            if (x + j > 0 && std::abs(term) <= detail::eps * std::abs(sum) * 0.5)
+              return sum;
+          }
+        throw std::runtime_error("incomplete_beta: series did not converge (internal error)");
+      }
+    // Continued complete beta minus the (finite) upper part.
+    using boost::math::tgamma;
+    return tgamma(x) * tgamma(y) * rgamma(x + y) - beta_upper(z, x, y);
+  }
+} // namespace gradcontact
