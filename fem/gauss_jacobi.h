@@ -1,0 +1,32 @@
+// Gauss-Jacobi quadrature for the integrals of the surface cell layer.
+//
+// The n-point rule on [0, 1] with weight x^s, s > -1,
+//     \int_0^1 x^s g(x) dx = \sum_q w_q g(x_q)   exactly for polynomials g of degree <= 2n - 1,
+// built by the Golub-Welsch algorithm: the nodes are the eigenvalues of the symmetric tridiagonal
+// Jacobi matrix of the three-term recurrence of the Jacobi polynomials P^{(0, s)} (mapped from [-1, 1]
+// to [0, 1]), the weights are mu_0 v_{0,q}^2 with mu_0 = \int_0^1 x^s dx = 1 / (1 + s) and v_q the
+// normalised eigenvectors. s = 0 gives Gauss-Legendre.
+//
+// deal.II 9.4 has no Gauss-Jacobi rule with a non-integer exponent (its jacobi_polynomial_roots takes
+// integer alpha, beta), hence this one.
+#ifndef GRADCONTACT_FEM_GAUSS_JACOBI_H
+#define GRADCONTACT_FEM_GAUSS_JACOBI_H
+
+#include <deal.II/base/quadrature.h>
+
+namespace gradcontact::fem
+{
+  /// n-point rule on [0, 1] whose weights contain x^s (so sum_q w_q = 1 / (1 + s)).
+  /// Throws std::invalid_argument for n = 0 or s <= -1.
+  dealii::Quadrature<1> gauss_jacobi(unsigned int n_points, double s);
+
+  /// The 2D rule for a cell whose face `singular_face` (deal.II numbering: 0 x=0, 1 x=1, 2 y=0, 3 y=1)
+  /// lies on the surface z = 0: Gauss-Jacobi with exponent s across that face, Gauss-Legendre along it.
+  /// `distance` receives, per point, the reference-coordinate distance xi_q from that face (the weights
+  /// contain xi_q^s, so the integrand must be divided by it).
+  dealii::Quadrature<2> surface_cell_quadrature(unsigned int n_points, double s,
+                                                unsigned int singular_face,
+                                                std::vector<double> &distance);
+} // namespace gradcontact::fem
+
+#endif

@@ -1,0 +1,409 @@
+#include <fem/boundary_ids.h>
+#include <fem/mesh.h>
+
+#include <deal.II/grid/grid_generator.h>
+#include <deal.II/grid/grid_in.h>
+#include <deal.II/grid/grid_tools.h>
+#include <deal.II/grid/tria_accessor.h>
+#include <deal.II/grid/tria_iterator.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <functional>
+#include <limits>
+#include <map>
+#include <sstream>
+#include <stdexcept>
+
+#include <unistd.h>
+
+#ifndef GRADCONTACT_MESH_DIR
+#  define GRADCONTACT_MESH_DIR "meshes"
+#endif
+#ifndef GRADCONTACT_DEFAULT_MESH_CACHE
+#  define GRADCONTACT_DEFAULT_MESH_CACHE "mesh-cache"
+#endif
+
+namespace gradcontact::fem
+{
+  using namespace dealii;
+
+  namespace
+  {
+    // Relative tolerance for "this vertex is on z = 0 / at the contact edge". Vertices there are exact
+    // (gmsh writes the geometry points, refinement takes midpoints), so this only absorbs round-off.
+    constexpr double on_line_tolerance = 1e-12;
+    // Largest ratio of neighbouring cell sizes in the deal.II near field.
+    constexpr double max_growth = 1.5;
+    // Safety stop of the halving loop: 2^-200 is far below any sensible surface_layer_thickness.
+    constexpr unsigned int max_halving_sweeps = 200;
+
+    [[noreturn]] void fail(const std::string &what, const double value, const std::string &range)
+    {
+      std::ostringstream msg;
+      msg.precision(17);
+      msg << "MeshParameters: " << what << " = " << value << " outside " << range;
+      throw std::invalid_argument(msg.str());
+    }
+
+    std::string read_file(const std::string &path)
+    {
+      std::ifstream in(path);
+      if (!in)
+        throw std::runtime_error("make_mesh: cannot read " + path);
+      std::ostringstream s;
+      s << in.rdbuf();
+      return s.str();
+    }
+
+    /// Steps covering [0, length] that grow geometrically (<= max_growth) from h_fine at the start to
+    /// at most h_coarse, scaled to sum exactly to length.
+    std::vector<double> graded_steps(const double length, const double h_fine, const double h_coarse)
+    {
+      std::vector<double> steps;
+      double              h = h_fine, sum = 0.0;
+      while (sum < length)
+        {
+          steps.push_back(h);
+          sum += h;
+          h = std::min(h * max_growth, h_coarse);
+        }
+      for (double &s : steps)
+        s *= length / sum;
+      return steps;
+    }
+
+    /// Step 1 with deal.II: tensor-product grid, r graded toward 1 from both sides, z toward 0.
+    void deal_ii_near_field(const MeshParameters &p, Triangulation<2> &tria)
+    {
+      const double R1 = p.near_field_size;
+      std::vector<double> inside = graded_steps(1.0, p.h_edge, p.h_surface); // from r = 1 toward 0
+      std::reverse(inside.begin(), inside.end());
+      const std::vector<double> outside = graded_steps(R1 - 1.0, p.h_edge, p.h_far);
+      std::vector<std::vector<double>> steps(2);
+      steps[0] = inside;
+      steps[0].insert(steps[0].end(), outside.begin(), outside.end());
+      steps[1] = graded_steps(R1, p.h_edge, p.h_far);
+      GridGenerator::subdivided_hyper_rectangle(tria, steps, Point<2>(0, 0), Point<2>(R1, R1));
+
+      for (const auto &cell : tria.active_cell_iterators())
+        for (const unsigned int f : cell->face_indices())
+          if (cell->face(f)->at_boundary())
+            {
+              const Point<2> c = cell->face(f)->center();
+              if (std::abs(c[1]) < on_line_tolerance)
+                cell->face(f)->set_boundary_id(c[0] < 1.0 ? boundary_id::contact :
+                                                            boundary_id::free_surface);
+              else if (std::abs(c[0]) < on_line_tolerance)
+                cell->face(f)->set_boundary_id(boundary_id::axis);
+              else
+                cell->face(f)->set_boundary_id(boundary_id::far_field);
+            }
+    }
+
+    /// Step 1 with gmsh, cached by the .geo text and its parameters.
+    MeshInfo gmsh_near_field(const MeshParameters &p, Triangulation<2> &tria)
+    {
+      namespace fs = std::filesystem;
+      const std::string geo = p.geo_file.empty() ? std::string(GRADCONTACT_MESH_DIR) + "/near_field.geo" :
+                                                   p.geo_file;
+      std::string cache = p.cache_directory;
+      if (cache.empty())
+        {
+          const char *env = std::getenv("GRADCONTACT_MESH_CACHE");
+          cache           = env ? env : GRADCONTACT_DEFAULT_MESH_CACHE;
+        }
+      fs::create_directories(cache);
+
+      std::ostringstream key;
+      key.precision(17);
+      key << "geo=" << std::hash<std::string>{}(read_file(geo)) << " R1=" << p.near_field_size
+          << " h_edge=" << p.h_edge << " h_surface=" << p.h_surface << " h_far=" << p.h_far << '\n';
+      std::ostringstream name;
+      name << "near_field_" << std::hex << std::hash<std::string>{}(key.str());
+      const fs::path msh     = fs::path(cache) / (name.str() + ".msh");
+      const fs::path keyfile = fs::path(cache) / (name.str() + ".key");
+
+      MeshInfo info;
+      info.near_field_source = msh.string();
+      info.cache_hit = fs::exists(msh) && fs::exists(keyfile) && read_file(keyfile.string()) == key.str();
+      if (!info.cache_hit)
+        {
+          // Write to a private name and rename: a concurrent or interrupted run never sees half a file.
+          const std::string tmp = msh.string() + ".tmp" + std::to_string(::getpid());
+          const std::string log = tmp + ".log";
+          std::ostringstream cmd;
+          cmd.precision(17);
+          cmd << p.gmsh_executable << " -2 -v 2 -format msh22"
+              << " -setnumber R1 " << p.near_field_size << " -setnumber h_edge " << p.h_edge
+              << " -setnumber h_surface " << p.h_surface << " -setnumber h_far " << p.h_far << " '"
+              << geo << "' -o '" << tmp << "' > '" << log << "' 2>&1";
+          const int rc = std::system(cmd.str().c_str());
+          if (rc != 0 || !fs::exists(tmp))
+            {
+              std::string out = fs::exists(log) ? read_file(log) : std::string("(no log)");
+              if (out.size() > 2000)
+                out = out.substr(out.size() - 2000);
+              fs::remove(tmp);
+              throw std::runtime_error("make_mesh: gmsh could not mesh " + geo + " (exit code " +
+                                       std::to_string(rc) + ", command: " + cmd.str() + "):\n" + out);
+            }
+          fs::remove(log);
+          fs::rename(tmp, msh);
+          std::ofstream(keyfile) << key.str();
+        }
+
+      GridIn<2> grid_in;
+      grid_in.attach_triangulation(tria);
+      std::ifstream in(msh);
+      grid_in.read_msh(in);
+      return info;
+    }
+
+    /// Step 2: the near field (units of a) plus n rings of quads out to L / a, into `tria`.
+    void attach_far_field(const Triangulation<2> &near, const MeshParameters &p, MeshInfo &info,
+                          Triangulation<2> &tria)
+    {
+      std::vector<Point<2>>       vertices = near.get_vertices();
+      std::vector<CellData<2>>    cells;
+      SubCellData                 boundary;
+      std::map<unsigned int, std::vector<unsigned int>> far_neighbours; // far-field chain adjacency
+
+      for (const auto &cell : near.active_cell_iterators())
+        {
+          CellData<2> c;
+          for (const unsigned int v : cell->vertex_indices())
+            c.vertices[v] = cell->vertex_index(v);
+          c.material_id = 0;
+          cells.push_back(c);
+          for (const unsigned int f : cell->face_indices())
+            if (cell->face(f)->at_boundary())
+              {
+                const unsigned int v0 = cell->face(f)->vertex_index(0),
+                                   v1 = cell->face(f)->vertex_index(1);
+                const types::boundary_id id = cell->face(f)->boundary_id();
+                if (id == boundary_id::unassigned)
+                  throw std::runtime_error("make_mesh: near-field boundary face at " +
+                                           std::to_string(cell->face(f)->center()[0]) + ", " +
+                                           std::to_string(cell->face(f)->center()[1]) +
+                                           " carries no physical group");
+                if (id == boundary_id::far_field)
+                  {
+                    far_neighbours[v0].push_back(v1);
+                    far_neighbours[v1].push_back(v0);
+                  }
+                CellData<1> line;
+                line.vertices[0] = v0;
+                line.vertices[1] = v1;
+                line.boundary_id = id;
+                boundary.boundary_lines.push_back(line);
+              }
+        }
+
+      const double R1       = p.near_field_size;
+      const double L        = p.far_field_size;
+      const unsigned int n  = (L > R1 * (1 + on_line_tolerance)) ?
+                                static_cast<unsigned int>(std::ceil(std::log(L / R1) / std::log(p.ring_growth))) :
+                                0;
+      info.n_rings     = n;
+      info.ring_growth = n > 0 ? std::pow(L / R1, 1.0 / n) : 1.0;
+      if (n > 0)
+        {
+          // Order the far-field chain from its end on the surface (z = 0) to its end on the axis.
+          unsigned int start = numbers::invalid_unsigned_int;
+          for (const auto &[v, nb] : far_neighbours)
+            if (nb.size() == 1 && std::abs(vertices[v][1]) < on_line_tolerance * R1)
+              start = v;
+          AssertThrow(start != numbers::invalid_unsigned_int,
+                      ExcMessage("make_mesh: far-field boundary of the near field has no end on z = 0"));
+          std::vector<unsigned int> chain{start};
+          while (true)
+            {
+              const auto &nb   = far_neighbours[chain.back()];
+              unsigned int next = numbers::invalid_unsigned_int;
+              for (const unsigned int v : nb)
+                if (chain.size() < 2 || v != chain[chain.size() - 2])
+                  next = v;
+              if (next == numbers::invalid_unsigned_int)
+                break;
+              chain.push_back(next);
+            }
+          AssertThrow(std::abs(vertices[chain.back()][0]) < on_line_tolerance * R1,
+                      ExcMessage("make_mesh: far-field chain does not end on the axis"));
+
+          // Drop the near field's far-field lines: they are interior now.
+          boundary.boundary_lines.erase(
+            std::remove_if(boundary.boundary_lines.begin(), boundary.boundary_lines.end(),
+                           [](const CellData<1> &l) { return l.boundary_id == boundary_id::far_field; }),
+            boundary.boundary_lines.end());
+
+          std::vector<unsigned int> inner = chain;
+          for (unsigned int j = 1; j <= n; ++j)
+            {
+              const double scale = (j == n) ? L / R1 : std::pow(info.ring_growth, j);
+              std::vector<unsigned int> outer;
+              for (const unsigned int v : chain)
+                {
+                  outer.push_back(vertices.size());
+                  vertices.push_back(Point<2>(vertices[v][0] * scale, vertices[v][1] * scale));
+                }
+              for (unsigned int i = 0; i + 1 < chain.size(); ++i)
+                {
+                  CellData<2> c;
+                  // lexicographic: 0 = (inner i), 1 = (inner i+1), 2 = (outer i), 3 = (outer i+1);
+                  // flip along the chain if that gives a negative Jacobian.
+                  unsigned int a0 = inner[i], a1 = inner[i + 1], b0 = outer[i], b1 = outer[i + 1];
+                  const Tensor<1, 2> e1 = vertices[a1] - vertices[a0], e2 = vertices[b0] - vertices[a0];
+                  if (e1[0] * e2[1] - e1[1] * e2[0] < 0)
+                    {
+                      std::swap(a0, a1);
+                      std::swap(b0, b1);
+                    }
+                  c.vertices[0] = a0;
+                  c.vertices[1] = a1;
+                  c.vertices[2] = b0;
+                  c.vertices[3] = b1;
+                  c.material_id = 0;
+                  cells.push_back(c);
+                }
+              // The ring's side on z = 0 (first chain vertex) and on the axis (last one).
+              CellData<1> surface, axis;
+              surface.vertices[0] = inner.front();
+              surface.vertices[1] = outer.front();
+              surface.boundary_id = boundary_id::free_surface;
+              axis.vertices[0]    = inner.back();
+              axis.vertices[1]    = outer.back();
+              axis.boundary_id    = boundary_id::axis;
+              boundary.boundary_lines.push_back(surface);
+              boundary.boundary_lines.push_back(axis);
+              inner = outer;
+            }
+          for (unsigned int i = 0; i + 1 < inner.size(); ++i)
+            {
+              CellData<1> far;
+              far.vertices[0] = inner[i];
+              far.vertices[1] = inner[i + 1];
+              far.boundary_id = boundary_id::far_field;
+              boundary.boundary_lines.push_back(far);
+            }
+        }
+
+      GridTools::consistently_order_cells(cells);
+      tria.create_triangulation(vertices, cells, boundary);
+
+      for (const auto &face : tria.active_face_iterators())
+        if (face->at_boundary() && face->boundary_id() == boundary_id::unassigned)
+          throw std::runtime_error("make_mesh: boundary face at r = " + std::to_string(face->center()[0]) +
+                                   ", z = " + std::to_string(face->center()[1]) + " has no boundary id");
+    }
+
+    bool is_surface(const types::boundary_id id)
+    {
+      return id == boundary_id::contact || id == boundary_id::free_surface;
+    }
+  } // namespace
+
+
+
+  void MeshParameters::validate() const
+  {
+    if (!(contact_radius > 0) || !std::isfinite(contact_radius))
+      fail("contact_radius", contact_radius, "(0, inf)");
+    if (!(near_field_size >= 1.5))
+      fail("near_field_size", near_field_size, "[1.5, inf) (R1 / a)");
+    if (!(h_edge > 0 && h_edge <= h_surface))
+      fail("h_edge", h_edge, "(0, h_surface]");
+    if (!(h_surface > 0 && h_surface <= 1.0))
+      fail("h_surface", h_surface, "(0, 1]");
+    if (!(h_far >= h_surface && h_far <= near_field_size))
+      fail("h_far", h_far, "[h_surface, near_field_size]");
+    if (!(far_field_size >= near_field_size && far_field_size <= 1e16))
+      fail("far_field_size", far_field_size, "[near_field_size, 1e16] (L / a)");
+    if (!(ring_growth > 1.05 && ring_growth <= 4.0))
+      fail("ring_growth", ring_growth, "(1.05, 4]");
+    if (!(surface_layer_thickness >= 1e-12 && surface_layer_thickness <= 1.0))
+      fail("surface_layer_thickness", surface_layer_thickness, "[1e-12, 1] (/ a)");
+    if (!(halving_radius >= 0 && halving_radius <= near_field_size))
+      fail("halving_radius", halving_radius, "[0, near_field_size]");
+    if (edge_refinements > 40)
+      fail("edge_refinements", edge_refinements, "[0, 40]");
+    if (global_refinements > 6)
+      fail("global_refinements", global_refinements, "[0, 6]");
+  }
+
+
+
+  MeshInfo make_near_field(const MeshParameters &p, Triangulation<2> &near)
+  {
+    p.validate();
+    if (p.mesher == NearFieldMesher::gmsh)
+      return gmsh_near_field(p, near);
+    deal_ii_near_field(p, near);
+    MeshInfo info;
+    info.near_field_source = "deal.II";
+    return info;
+  }
+
+
+
+  MeshInfo make_mesh(const MeshParameters &p, Triangulation<2> &tria)
+  {
+    AssertThrow(tria.n_cells() == 0, ExcMessage("make_mesh: the triangulation must be empty"));
+    Triangulation<2> near;
+    MeshInfo         info = make_near_field(p, near);
+    attach_far_field(near, p, info, tria);
+
+    const double a = p.contact_radius;
+    GridTools::scale(a, tria);
+    tria.refine_global(p.global_refinements);
+
+    // Step 3a: isotropic refinement of the cells at the contact edge (a, 0).
+    const Point<2> edge(a, 0.0);
+    for (unsigned int cycle = 0; cycle < p.edge_refinements; ++cycle)
+      {
+        for (const auto &cell : tria.active_cell_iterators())
+          for (const unsigned int v : cell->vertex_indices())
+            if (cell->vertex(v).distance(edge) < on_line_tolerance * a)
+              cell->set_refine_flag();
+        tria.execute_coarsening_and_refinement();
+      }
+
+    // Step 3b: halve the surface cells under r <= halving_radius a parallel to the surface until they
+    // are at most surface_layer_thickness a thick. The refinement case that halves the distance to
+    // face f is cut_x for faces 0, 1 and cut_y for faces 2, 3.
+    const double r_max = p.halving_radius * a * (1 + on_line_tolerance);
+    const double t_max = p.surface_layer_thickness * a * (1 + on_line_tolerance);
+    for (unsigned int sweep = 0; sweep < max_halving_sweeps; ++sweep)
+      {
+        bool flagged = false;
+        for (const auto &cell : tria.active_cell_iterators())
+          for (const unsigned int f : cell->face_indices())
+            if (cell->face(f)->at_boundary() && is_surface(cell->face(f)->boundary_id()) &&
+                cell->face(f)->center()[0] <= r_max && cell->extent_in_direction(f / 2) > t_max)
+              {
+                cell->set_refine_flag(f < 2 ? RefinementCase<2>::cut_x : RefinementCase<2>::cut_y);
+                flagged = true;
+              }
+        if (!flagged)
+          break;
+        tria.execute_coarsening_and_refinement();
+        ++info.n_halvings;
+      }
+
+    info.min_surface_cell = std::numeric_limits<double>::max();
+    info.min_edge_cell    = std::numeric_limits<double>::max();
+    for (const auto &cell : tria.active_cell_iterators())
+      for (const unsigned int f : cell->face_indices())
+        {
+          if (cell->face(f)->at_boundary() && is_surface(cell->face(f)->boundary_id()))
+            info.min_surface_cell = std::min(info.min_surface_cell, cell->extent_in_direction(f / 2) / a);
+          if (cell->vertex(f).distance(edge) < on_line_tolerance * a)
+            info.min_edge_cell = std::min(info.min_edge_cell, cell->minimum_vertex_distance() / a);
+        }
+    return info;
+  }
+} // namespace gradcontact::fem

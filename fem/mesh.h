@@ -1,0 +1,74 @@
+// Meshes of the meridian plane (r, z) of the graded half-space. deal.II coordinates: x = r, y = z, z
+// pointing into the material, so the body is the quarter plane x >= 0, y >= 0 truncated at
+// max(r, z) = L (an L-infinity "quarter disc").
+//
+// A mesh is built in three steps:
+//  1. the near field [0, R1 a]^2 with the named boundaries of fem/boundary_ids.h, graded toward the
+//     contact edge (a, 0): from meshes/near_field.geo by gmsh (cached by its parameters, never
+//     committed), or, as fallback, a deal.II tensor-product grid with geometric steps;
+//  2. far-field rings: the outer boundary polyline P_i of the near field scaled by g, g^2, ..., g^n,
+//     g^n R1 = L / a, each ring one layer of quads between the polylines g^{j-1} P_i and g^j P_i.
+//     The truncation error of the force falls like (a/L)^{1+k} (issue 3), so L/a = 1e8..1e14 is wanted
+//     and costs only n = log(L / (R1 a)) / log g rings;
+//  3. deal.II refinement: `edge_refinements` isotropic refinements of the cells at (a, 0), then z-only
+//     halvings (anisotropic, parallel to the surface) of the surface cells with r <= halving_radius a
+//     until they are at most surface_layer_thickness a thick: E vanishes (k > 0) or blows up (k < 0)
+//     at z = 0 under the whole loaded zone.
+#ifndef GRADCONTACT_FEM_MESH_H
+#define GRADCONTACT_FEM_MESH_H
+
+#include <deal.II/grid/tria.h>
+
+#include <string>
+
+namespace gradcontact::fem
+{
+  enum class NearFieldMesher
+  {
+    gmsh,   ///< meshes/near_field.geo through the gmsh executable
+    deal_ii ///< GridGenerator::subdivided_hyper_rectangle with graded steps
+  };
+
+  /// Lengths relative to the contact radius a unless said otherwise.
+  struct MeshParameters
+  {
+    double          contact_radius = 1.0;   ///< a, the length unit of the mesh (physical units)
+    NearFieldMesher mesher         = NearFieldMesher::gmsh;
+    double          near_field_size = 4.0;  ///< R1 / a
+    double          h_edge          = 1e-3; ///< cell size at (a, 0) / a (gmsh; deal.II: first step)
+    double          h_surface       = 0.25; ///< cell size at (0, 0) and (R1 a, 0) / a
+    double          h_far           = 1.5;  ///< cell size on the near field's outer boundary / a
+    double          far_field_size  = 1e10; ///< L / a
+    double          ring_growth     = 1.6;  ///< target ratio g of consecutive far-field rings
+    unsigned int    edge_refinements = 0;   ///< isotropic refinements at (a, 0)
+    double          surface_layer_thickness = 1e-6; ///< target thickness of the surface cells / a
+    double          halving_radius          = 1.05; ///< z-halvings where r <= halving_radius a
+    unsigned int    global_refinements      = 0;    ///< uniform refinements after step 1 (h-studies)
+    std::string     geo_file;        ///< empty: meshes/near_field.geo of the source tree
+    std::string     cache_directory; ///< empty: $GRADCONTACT_MESH_CACHE, else <build>/mesh-cache
+    std::string     gmsh_executable = "gmsh";
+
+    /// Throws std::invalid_argument naming the member, its value and the valid range.
+    void validate() const;
+  };
+
+  /// What make_mesh did, for reports.
+  struct MeshInfo
+  {
+    unsigned int n_rings           = 0;
+    double       ring_growth       = 0;  ///< the g actually used (L hit exactly)
+    unsigned int n_halvings        = 0;  ///< refinement sweeps of the surface layer
+    double       min_surface_cell  = 0;  ///< thinnest surface cell / a
+    double       min_edge_cell     = 0;  ///< smallest cell at (a, 0) / a
+    std::string  near_field_source;      ///< cached .msh path or "deal.II"
+    bool         cache_hit         = false;
+  };
+
+  /// Builds the mesh of steps 1-3 into `tria` (which must be empty).
+  MeshInfo make_mesh(const MeshParameters &parameters, dealii::Triangulation<2> &tria);
+
+  /// Step 1 only, in units of a (for tests and for inspecting the gmsh part).
+  MeshInfo make_near_field(const MeshParameters &parameters, dealii::Triangulation<2> &near_field);
+} // namespace gradcontact::fem
+
+#endif

@@ -1,0 +1,230 @@
+#include <fem/gauss_jacobi.h>
+#include <fem/modulus.h>
+
+#include <deal.II/base/function_parser.h>
+#include <deal.II/base/point.h>
+#include <deal.II/base/quadrature_lib.h>
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+#include <stdexcept>
+
+namespace gradcontact::fem
+{
+  namespace
+  {
+    // Points of the rules used for layer averages; the regular factor of every field we use is smooth,
+    // so this many points per geometric sub-interval give the average to round-off.
+    constexpr unsigned int average_points = 24;
+    // [z1, z2] with z1 > 0 is split at z1 * 2^j: E varies by a bounded factor on each piece.
+    constexpr double average_split_ratio = 2.0;
+
+    [[noreturn]] void fail(const std::string &where, const std::string &what, const double value,
+                           const std::string &range)
+    {
+      std::ostringstream msg;
+      msg.precision(17);
+      msg << where << ": " << what << " = " << value << " outside " << range;
+      throw std::invalid_argument(msg.str());
+    }
+  } // namespace
+
+
+
+  double ModulusField::average(const double z1, const double z2) const
+  {
+    if (!(z1 >= 0.0))
+      fail("ModulusField::average", "z1", z1, "[0, inf)");
+    if (!(z2 > z1))
+      fail("ModulusField::average", "z2", z2, "(z1, inf)");
+
+    double integral = 0.0;
+    double lo       = z1;
+    if (z1 == 0.0)
+      {
+        // mean = \int_0^1 E(z2 x) dx = \int_0^1 x^s [E(z2 x) / x^s] dx, Gauss-Jacobi in x.
+        const double                s = surface_exponent();
+        const dealii::Quadrature<1> q = gauss_jacobi(average_points, s);
+        for (unsigned int i = 0; i < q.size(); ++i)
+          {
+            const double x = q.point(i)[0];
+            integral += q.weight(i) * value(z2 * x) / std::pow(x, s);
+          }
+        return integral;
+      }
+    const dealii::QGauss<1> gauss(average_points);
+    while (lo < z2)
+      {
+        const double hi = std::min(z2, lo * average_split_ratio);
+        for (unsigned int i = 0; i < gauss.size(); ++i)
+          integral += gauss.weight(i) * (hi - lo) * value(lo + (hi - lo) * gauss.point(i)[0]);
+        lo = hi;
+      }
+    return integral / (z2 - z1);
+  }
+
+
+
+  PowerLawModulus::PowerLawModulus(const double E0, const double c0, const double k)
+    : E0(E0)
+    , c0(c0)
+    , k(k)
+  {
+    if (!(E0 > 0.0) || !std::isfinite(E0))
+      fail("PowerLawModulus", "E0", E0, "(0, inf)");
+    if (!(c0 > 0.0) || !std::isfinite(c0))
+      fail("PowerLawModulus", "c0", c0, "(0, inf)");
+    if (!(k > -1.0 && k < 1.0))
+      fail("PowerLawModulus", "k", k, "(-1, 1)");
+  }
+
+  double PowerLawModulus::value(const double z) const
+  {
+    return E0 * std::pow(z / c0, k);
+  }
+
+  double PowerLawModulus::average(const double z1, const double z2) const
+  {
+    if (!(z1 >= 0.0))
+      fail("PowerLawModulus::average", "z1", z1, "[0, inf)");
+    if (!(z2 > z1))
+      fail("PowerLawModulus::average", "z2", z2, "(z1, inf)");
+    // E0 c0^{-k} (z2^{1+k} - z1^{1+k}) / ((1+k)(z2 - z1)), written with the ratio t = z1/z2 so that
+    // thin layers deep down do not cancel: z2^k (1 - t^{1+k}) / ((1+k)(1 - t)).
+    const double t = z1 / z2;
+    const double factor =
+      (t == 0.0) ? 1.0 / (1.0 + k) : -std::expm1((1.0 + k) * std::log(t)) / ((1.0 + k) * (1.0 - t));
+    return value(z2) * factor;
+  }
+
+  std::string PowerLawModulus::description() const
+  {
+    std::ostringstream s;
+    s.precision(17);
+    s << "power law E(z) = " << E0 << " (z/" << c0 << ")^" << k;
+    return s.str();
+  }
+
+
+
+  LayeredModulus::LayeredModulus(std::shared_ptr<const ModulusField> base_field,
+                                 std::vector<double> layer_interfaces)
+    : base(std::move(base_field))
+    , interfaces(std::move(layer_interfaces))
+  {
+    if (!base)
+      throw std::invalid_argument("LayeredModulus: base field is null");
+    if (interfaces.empty())
+      throw std::invalid_argument("LayeredModulus: interfaces is empty, need N >= 1 layers");
+    double previous = 0.0;
+    for (unsigned int i = 0; i < interfaces.size(); ++i)
+      {
+        if (!(interfaces[i] > previous) || !std::isfinite(interfaces[i]))
+          fail("LayeredModulus", "interfaces[" + std::to_string(i) + "]", interfaces[i],
+               "(previous interface, inf): interfaces must increase from 0");
+        layer_modulus.push_back(base->average(previous, interfaces[i]));
+        previous = interfaces[i];
+      }
+  }
+
+  std::shared_ptr<LayeredModulus> LayeredModulus::uniform(std::shared_ptr<const ModulusField> base,
+                                                          const unsigned int n_layers,
+                                                          const double depth)
+  {
+    if (n_layers == 0)
+      fail("LayeredModulus::uniform", "n_layers", 0, "[1, inf)");
+    if (!(depth > 0.0))
+      fail("LayeredModulus::uniform", "depth", depth, "(0, inf)");
+    std::vector<double> z(n_layers);
+    for (unsigned int i = 0; i < n_layers; ++i)
+      z[i] = depth * (i + 1.0) / n_layers;
+    return std::make_shared<LayeredModulus>(std::move(base), z);
+  }
+
+  std::shared_ptr<LayeredModulus> LayeredModulus::geometric(std::shared_ptr<const ModulusField> base,
+                                                            const unsigned int n_layers,
+                                                            const double first_thickness,
+                                                            const double ratio)
+  {
+    if (n_layers == 0)
+      fail("LayeredModulus::geometric", "n_layers", 0, "[1, inf)");
+    if (!(first_thickness > 0.0))
+      fail("LayeredModulus::geometric", "first_thickness", first_thickness, "(0, inf)");
+    if (!(ratio >= 1.0))
+      fail("LayeredModulus::geometric", "ratio", ratio, "[1, inf)");
+    std::vector<double> z(n_layers);
+    double              t = first_thickness, depth = 0.0;
+    for (unsigned int i = 0; i < n_layers; ++i, t *= ratio)
+      z[i] = (depth += t);
+    return std::make_shared<LayeredModulus>(std::move(base), z);
+  }
+
+  double LayeredModulus::value(const double z) const
+  {
+    const auto it = std::lower_bound(interfaces.begin(), interfaces.end(), z);
+    if (it == interfaces.end())
+      return base->value(z);
+    return layer_modulus[it - interfaces.begin()];
+  }
+
+  std::string LayeredModulus::description() const
+  {
+    std::ostringstream s;
+    s.precision(6);
+    s << interfaces.size() << " layers to z = " << interfaces.back() << " averaging "
+      << base->description();
+    return s.str();
+  }
+
+
+
+  struct ExpressionModulus::Parser
+  {
+    dealii::FunctionParser<1> function;
+  };
+
+  ExpressionModulus::ExpressionModulus(const std::string &expr,
+                                       const std::map<std::string, double> &constants,
+                                       const double surface_exponent)
+    : parser(std::make_unique<Parser>())
+    , expression(expr)
+    , exponent(surface_exponent)
+  {
+    if (!(surface_exponent > -1.0 && surface_exponent < 1.0))
+      fail("ExpressionModulus", "surface_exponent", surface_exponent, "(-1, 1)");
+    try
+      {
+        parser->function.initialize("z", expression, constants);
+        // Evaluate once so that a syntax error surfaces here and not in the assembly.
+        (void)parser->function.value(dealii::Point<1>(1.0));
+      }
+    catch (const std::exception &e)
+      {
+        throw std::invalid_argument("ExpressionModulus: cannot parse E(z) = \"" + expression +
+                                    "\": " + e.what());
+      }
+  }
+
+  ExpressionModulus::~ExpressionModulus() = default;
+
+  double ExpressionModulus::value(const double z) const
+  {
+    return parser->function.value(dealii::Point<1>(z));
+  }
+
+  std::string ExpressionModulus::description() const
+  {
+    return "E(z) = " + expression;
+  }
+
+
+
+  void Material::validate() const
+  {
+    if (!modulus)
+      throw std::invalid_argument("Material: modulus field is null");
+    if (!(nu > -1.0 && nu < 0.5))
+      fail("Material", "nu", nu, "(-1, 0.5) (incompressible nu = 0.5 needs a mixed formulation)");
+  }
+} // namespace gradcontact::fem
