@@ -153,6 +153,7 @@ namespace gradcontact::fem
 
     /// |2 pi u.Au - work of the loads| / (2 pi u.Au): a solver-garbage detector (ill-conditioning).
     double energy_mismatch = 0;
+    bool   reliable        = true; ///< energy_mismatch small enough (else `message` says why)
 
     unsigned int n_dofs  = 0;
     unsigned int n_cells = 0;

@@ -337,6 +337,30 @@ namespace gradcontact::fem
 
 
 
+  MeshParameters recommended_mesh_parameters(const double contact_radius, const double s,
+                                             const double truncation_tolerance)
+  {
+    // Measured truncation constant of the flat-punch force, C (a/L)^{1+k}: 1.1 / 0.9 / 0.55 for
+    // k = -0.5 / 0 / 0.5; the largest is used for any s.
+    constexpr double truncation_constant = 1.1;
+    constexpr double min_far_field = 1e4, max_far_field = 1e16;
+    // Thinnest surface layer for s > 0: the error of u_z ~ z^{1-s} falls like t^{1-s}.
+    constexpr double singular_surface_layer = 1e-10;
+    if (!(s > -1 && s < 1))
+      fail("surface_exponent", s, "(-1, 1)");
+    if (!(truncation_tolerance > 0 && truncation_tolerance < 1))
+      fail("truncation_tolerance", truncation_tolerance, "(0, 1)");
+    MeshParameters p;
+    p.contact_radius = contact_radius;
+    p.far_field_size = std::clamp(std::pow(truncation_constant / truncation_tolerance, 1 / (1 + s)),
+                                  min_far_field, max_far_field);
+    p.surface_layer_thickness = (s > 0) ? singular_surface_layer : 1.0;
+    p.validate();
+    return p;
+  }
+
+
+
   MeshInfo make_near_field(const MeshParameters &p, Triangulation<2> &near)
   {
     p.validate();

@@ -35,13 +35,13 @@ namespace gradcontact::fem
     double          contact_radius = 1.0;   ///< a, the length unit of the mesh (physical units)
     NearFieldMesher mesher         = NearFieldMesher::gmsh;
     double          near_field_size = 4.0;  ///< R1 / a
-    double          h_edge          = 1e-3; ///< cell size at (a, 0) / a (gmsh; deal.II: first step)
+    double          h_edge          = 1e-5; ///< cell size at (a, 0) / a (gmsh; deal.II: first step)
     double          h_surface       = 0.25; ///< cell size at (0, 0) and (R1 a, 0) / a
-    double          h_far           = 1.5;  ///< cell size on the near field's outer boundary / a
+    double          h_far           = 3.0;  ///< cell size on the near field's outer boundary / a
     double          far_field_size  = 1e10; ///< L / a
-    double          ring_growth     = 1.6;  ///< target ratio g of consecutive far-field rings
+    double          ring_growth     = 1.15; ///< target ratio g of consecutive far-field rings
     unsigned int    edge_refinements = 0;   ///< isotropic refinements at (a, 0)
-    double          surface_layer_thickness = 1e-6; ///< target thickness of the surface cells / a
+    double          surface_layer_thickness = 1.0; ///< target thickness of the surface cells / a
     double          halving_radius          = 1.05; ///< z-halvings where r <= halving_radius a
     unsigned int    global_refinements      = 0;    ///< uniform refinements after step 1 (h-studies)
     std::string     geo_file;        ///< empty: meshes/near_field.geo of the source tree
@@ -63,6 +63,13 @@ namespace gradcontact::fem
     std::string  near_field_source;      ///< cached .msh path or "deal.II"
     bool         cache_hit         = false;
   };
+
+  /// The measured defaults (fem/README.md) for a modulus that behaves like z^s at the surface:
+  /// L/a such that the truncation error C (a/L)^{1+s}, C <= 1.1, is below `truncation_tolerance`
+  /// (within [1e4, 1e16]); z-halvings to 1e-10 a only for s > 0 (u_z ~ z^{1-s} is singular there),
+  /// none for s <= 0 (the Gauss-Jacobi rule carries the singular E; thin cells only ruin the condition).
+  MeshParameters recommended_mesh_parameters(double contact_radius, double surface_exponent,
+                                             double truncation_tolerance = 1e-8);
 
   /// Builds the mesh of steps 1-3 into `tria` (which must be empty).
   MeshInfo make_mesh(const MeshParameters &parameters, dealii::Triangulation<2> &tria);
