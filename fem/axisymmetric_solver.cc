@@ -37,8 +37,9 @@ namespace gradcontact::fem
     // -3e-5 (p = 3), a violated complete contact of the concave punch is O(1).
     constexpr double consistency_tolerance = 1e-3;
     // |u.Au - work| / u.Au above this means the direct solver returned garbage (measured: <= 4e-9 on
-    // sound meshes; 2e-4 .. 3e-3 once k < 0 surface cells are thinner than 1e-7 a).
-    constexpr double energy_mismatch_tolerance = 1e-7;
+    // sound meshes, 3.7e-7 at k = -0.5 with 1e-5 a surface cells; 2e-4 .. 3e-3 once k < 0 surface
+    // cells are thinner than 1e-7 a).
+    constexpr double energy_mismatch_tolerance = 1e-6;
 
     [[noreturn]] void fail(const std::string &where, const std::string &what, const double value,
                            const std::string &range)
