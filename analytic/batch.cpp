@@ -171,12 +171,16 @@ namespace gradcontact::batch
     double solve_increasing(const std::function<double(double)> &increasing, const double target,
                             const double start, const char *what)
     {
-      double lo = start, hi = start;
+      double lo = start / 2., hi = start * 2.;
       for (int i = 0; i < 200 && increasing(lo) > target; ++i)
         lo /= 4.;
       for (int i = 0; i < 200 && increasing(hi) < target; ++i)
         hi *= 4.;
       const double f_lo = increasing(lo) - target, f_hi = increasing(hi) - target;
+      if (f_lo == 0.)
+        return lo;
+      if (f_hi == 0.)
+        return hi;
       if (!(f_lo <= 0. && f_hi >= 0.))
         throw DomainError(std::string(what) + ": no solution found for the target " + check::format(target));
       std::uintmax_t iterations = 200;
@@ -185,6 +189,28 @@ namespace gradcontact::batch
         boost::math::tools::eps_tolerance<double>(50), iterations);
       return 0.5 * (root.first + root.second);
     }
+
+    // The root a > a_c of value(a) = target on the stable branch of an adhesive contact, where value
+    // (d(a) or F_N(a)) increases from its minimum value_c at a_c.
+    double stable_branch_radius(const std::function<double(double)> &value, const double target, const double ac,
+                                const double value_c, const char *name)
+    {
+      if (target < value_c)
+        check::fail("contact_radius", name, target,
+                    "is below its critical value " + check::format(value_c) + ": no adhesive equilibrium");
+      if (target == value_c)
+        return ac;
+      double hi = 2. * ac;
+      for (int i = 0; i < 200 && value(hi) < target; ++i)
+        hi *= 2.;
+      std::uintmax_t iterations = 200;
+      const auto root = boost::math::tools::toms748_solve([&](const double a) { return value(a) - target; }, ac, hi,
+                                                          value_c - target, value(hi) - target,
+                                                          boost::math::tools::eps_tolerance<double>(50), iterations);
+      return 0.5 * (root.first + root.second);
+    }
+
+    constexpr double numerical_centre_margin = 0.1;
 
     mdr::Profile power_law_profile(const Request &q)
     {
@@ -274,7 +300,18 @@ namespace gradcontact::batch
       };
       t.numerical_mdr["pressure"] = [](const Request &q) {
         const Medium m = q.medium();
-        return mdr::pressure(mdr::indentation(power_law_profile(q), m, q.number("a")), m, q.number("r"));
+        const double r = q.number("r");
+        const PowerLaw p = closed_power_law(q);
+        if (r == 0. && !(p.n + m.k > 1.))
+          check::fail("power_law pressure", "n + k", p.n + m.k,
+                      "must be > 1 for a finite pressure at r = 0 (the tip is too sharp)");
+        // p(0) ~ int_0 x^(n+k-2) dx: a fraction (1e-308)^((n+k-1)/(k+1)) of it lies below the smallest
+        // double, out of reach of any quadrature; (n+k-1)/(k+1) >= 0.1 keeps it below 1e-30.
+        if (r == 0. && p.n + m.k - 1. < numerical_centre_margin * (1. + m.k))
+          check::fail("power_law pressure (numerical MDR)", "n + k - 1", p.n + m.k - 1.,
+                      "is too close to 0: the numerical MDR cannot resolve p(0) (its integrand's mass lies below "
+                      "the smallest double); use r > 0 or the closed form");
+        return mdr::pressure(mdr::indentation(power_law_profile(q), m, q.number("a")), m, r);
       };
       t.numerical_mdr["displacement"] = [](const Request &q) {
         const Medium m = q.medium();
@@ -398,6 +435,12 @@ namespace gradcontact::batch
         return UniformPressure{q.number("a"), optimal ? -q.number("sigma_th") : q.geometry("p0")};
       };
       t.closed_form["depth"] = [check_load](const Request &q) { return centre_displacement(q.medium(), check_load(q)); };
+      t.closed_form["pressure"] = [check_load](const Request &q) {
+        const UniformPressure load = check_load(q);
+        const double r = q.number("r");
+        check::non_negative("pressure", "r", r);
+        return r <= load.a ? load.p0 : 0.; // the load itself (9.37, 9.69)
+      };
       t.closed_form["force"] = [check_load](const Request &q) { return force(check_load(q)); };
       t.closed_form["displacement"] = [check_load](const Request &q) {
         return displacement(q.medium(), check_load(q), q.number("r"));
@@ -473,6 +516,25 @@ namespace gradcontact::batch
       t.closed_form["critical_radius"] = [critical](const Request &q) { return critical(q).radius; };
       t.closed_form["critical_depth"] = [critical](const Request &q) { return critical(q).depth; };
       t.closed_form["critical_force"] = [critical](const Request &q) { return critical(q).force; };
+      // a from d or F on the stable branch a > a_c (a_c of displacement control for d, of force
+      // control for F), where d(a) and F(a) increase.
+      t.closed_form["contact_radius"] = [is_parabola](const Request &q) {
+        const Medium m = q.medium();
+        const double dgamma = q.number("dgamma");
+        const bool by_depth = q.has("d");
+        const double target = by_depth ? q.number("d") : q.number("F");
+        check::finite("contact_radius", by_depth ? "d" : "F", target);
+        const jkr::Control control = by_depth ? jkr::Control::displacement : jkr::Control::force;
+        const auto value = [&](const double a) {
+          if (is_parabola(q))
+            return by_depth ? jkr::depth(m, Paraboloid{q.geometry("R")}, dgamma, a)
+                            : jkr::force(m, Paraboloid{q.geometry("R")}, dgamma, a);
+          return by_depth ? jkr::depth(m, closed_power_law(q), dgamma, a) : jkr::force(m, closed_power_law(q), dgamma, a);
+        };
+        const jkr::CriticalState c = is_parabola(q) ? jkr::critical_state(m, Paraboloid{q.geometry("R")}, dgamma, control)
+                                                    : jkr::critical_state(m, closed_power_law(q), dgamma, control);
+        return stable_branch_radius(value, target, c.radius, by_depth ? c.depth : c.force, by_depth ? "d" : "F");
+      };
 
       t.numerical_mdr["depth"] = [](const Request &q) {
         return numeric_depth(power_law_profile(q), q.medium(), q.number("a"), q.number("dgamma"));
@@ -498,6 +560,22 @@ namespace gradcontact::batch
         const mdr::Control control =
           q.control() == jkr::Control::force ? mdr::Control::force : mdr::Control::displacement;
         return mdr::critical_state(power_law_profile(q), m, q.number("dgamma"), control, lo, hi);
+      };
+      t.numerical_mdr["contact_radius"] = [](const Request &q) {
+        const Medium m = q.medium();
+        const double dgamma = q.number("dgamma");
+        const bool by_depth = q.has("d");
+        const double target = by_depth ? q.number("d") : q.number("F");
+        check::finite("contact_radius", by_depth ? "d" : "F", target);
+        const mdr::Profile f = power_law_profile(q);
+        const double lo = q.has("a_lo") ? q.number("a_lo") : m.c0 * 1e-9;
+        const double hi = q.has("a_hi") ? q.number("a_hi") : m.c0 * 1e9;
+        const mdr::CriticalState c = mdr::critical_state(
+          f, m, dgamma, by_depth ? mdr::Control::displacement : mdr::Control::force, lo, hi);
+        const auto value = [&](const double a) {
+          return by_depth ? numeric_depth(f, m, a, dgamma) : numeric_force(f, m, a, dgamma);
+        };
+        return stable_branch_radius(value, target, c.radius, by_depth ? c.depth : c.force, by_depth ? "d" : "F");
       };
       t.numerical_mdr["critical_radius"] = [numeric_critical](const Request &q) { return numeric_critical(q).radius; };
       t.numerical_mdr["critical_depth"] = [numeric_critical](const Request &q) { return numeric_critical(q).depth; };
@@ -773,8 +851,9 @@ namespace gradcontact::batch
       t.numerical_mdr["hysteresis_force"] = numeric_hysteresis;
       t.numerical_mdr["tangential_force"] = numeric_hysteresis;
       t.numerical_mdr["dissipated_energy"] = [check_amplitude](const Request &q) {
-        // The loop area 2 int_(-uA)^(uA) F_unloading(u) du, parametrised by the annulus radius b in
-        // [c, a]: u(b) = uA - 2 mu alpha (d(a) - d(b)), F(b) = FA - 2 mu (F_N(a) - F_N(b)).
+        // The loop area int (F_reloading - F_unloading) du over [-uA, uA] = -2 int F_unloading(u) du
+        // (F_reloading(u) = -F_unloading(-u); the reloading branch lies above), parametrised by the
+        // annulus radius b in [c, a]: u(b) = uA - 2 mu alpha (d(a) - d(b)), F(b) = FA - 2 mu (F_N(a) - F_N(b)).
         const NumericSphere s(q);
         const double FA = q.number("FA");
         check_amplitude(s, FA);
@@ -784,7 +863,7 @@ namespace gradcontact::batch
           const double du_db = 2. * s.mu * s.alpha() * mdr::equivalent_profile_slope(s.f, s.m.k, b);
           return F * du_db;
         };
-        return 2. * detail::integrate_with_distances(integrand, c, s.a, 1e-12);
+        return -2. * detail::integrate_with_distances(integrand, c, s.a, 1e-12);
       };
       return t;
     }

@@ -21,12 +21,18 @@ namespace gradcontact
 
   namespace check
   {
+    /// The shortest of 15 or 17 significant digits that reads back as the same double.
     inline std::string format(const double x)
     {
-      std::ostringstream s;
-      s.precision(17);
-      s << x;
-      return s.str();
+      for (const int digits : {15, 17})
+        {
+          std::ostringstream s;
+          s.precision(digits);
+          s << x;
+          if (digits == 17 || std::stod(s.str()) == x)
+            return s.str();
+        }
+      return {};
     }
 
     [[noreturn]] inline void fail(const char *function, const char *name, const double value,

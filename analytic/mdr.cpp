@@ -43,6 +43,13 @@ namespace gradcontact::mdr
              std::pow(0.5, beta + 1.) / (beta + 1.) * detail::integrate_with_distances(right, 0., 1.);
     }
 
+    // f'(s) (+ s f''(s)) at an abscissa s = x sqrt(u). The substitution of beta_weight_integral puts
+    // nodes at u down to the smallest double; there s may underflow to 0, or f' and f'' of a sharp tip
+    // (A r^n, n < 1) may overflow. Such nodes carry weights below 1e-150 of the integral (the inner
+    // weight is u^(-1/2), substituted with u = v^2/2), so they are dropped rather than allowed to
+    // turn the sum into inf or NaN.
+    double profile_term(const double value) { return std::isfinite(value) ? value : 0.; }
+
     void check_k(const char *fn, const double k) { check::open_interval(fn, "k", k, -1., 1.); }
 
     double delta_ell(const Medium &m, const double dgamma, const double a)
@@ -57,7 +64,8 @@ namespace gradcontact::mdr
     check::finite("mdr::power_law", "A", A);
     return {[=](const double r) { return A * std::pow(r, n); },
             [=](const double r) { return n * A * std::pow(r, n - 1.); },
-            [=](const double r) { return n * (n - 1.) * A * std::pow(r, n - 2.); }};
+            // n = 1: exactly 0 (not 0 * r^-1, which is NaN at r = 0)
+            [=](const double r) { return n == 1. ? 0. : n * (n - 1.) * A * std::pow(r, n - 2.); }};
   }
 
   double equivalent_profile(const Profile &profile, const double k, const double x)
@@ -70,7 +78,10 @@ namespace gradcontact::mdr
     if (x == 0.)
       return 0.;
     // g(x) = x/2 int_0^1 f'(x sqrt(u)) u^(-1/2) (1-u)^((k-1)/2) du   (9.2 with r = x sqrt(u))
-    const auto h = [&](const double u, const double) { return profile.df(x * std::sqrt(u)); };
+    const auto h = [&](const double u, const double) {
+      const double s = x * std::sqrt(u);
+      return s > 0. ? profile_term(profile.df(s)) : 0.;
+    };
     return x / 2. * beta_weight_integral(h, -0.5, (k - 1.) / 2.);
   }
 
@@ -84,7 +95,7 @@ namespace gradcontact::mdr
     // g'(x) = 1/2 int_0^1 [f'(s) + s f''(s)]_(s = x sqrt(u)) u^(-1/2) (1-u)^((k-1)/2) du
     const auto h = [&](const double u, const double) {
       const double s = x * std::sqrt(u);
-      return profile.df(s) + (s > 0. ? s * profile.d2f(s) : 0.);
+      return s > 0. ? profile_term(profile.df(s) + s * profile.d2f(s)) : 0.;
     };
     return 0.5 * beta_weight_integral(h, -0.5, (k - 1.) / 2.);
   }
@@ -107,6 +118,8 @@ namespace gradcontact::mdr
     check::finite(fn, "d", d);
     Foundation w1d;
     w1d.a = a;
+    w1d.d = d;
+    w1d.profile_slope = profile.df;
     w1d.w = [profile, k, d](const double x) { return d - equivalent_profile(profile, k, x); };
     if (profile.d2f)
       w1d.dw = [profile, k](const double x) { return -equivalent_profile_slope(profile, k, x); };
@@ -117,7 +130,11 @@ namespace gradcontact::mdr
   {
     check::positive("mdr flat", "a", a);
     check::finite("mdr flat", "d", d);
-    return {[d](double) { return d; }, [](double) { return 0.; }, a};
+    Foundation w1d;
+    w1d.w = [d](double) { return d; };
+    w1d.dw = [](double) { return 0.; };
+    w1d.a = a;
+    return w1d;
   }
 
   Foundation from_pressure(const std::function<double(double)> &p, const Medium &m, const double a)
@@ -131,12 +148,17 @@ namespace gradcontact::mdr
     w1d.a = a;
     // 9.13 with r^2 = x^2 + (a^2 - x^2) u:
     // w1D(x) = c0^k cos(k pi/2)/cN0 (a^2 - x^2)^((1-k)/2) int_0^1 u^(-(1+k)/2) p(r(u)) du
-    w1d.w = [p, k, a, factor](const double x) {
+    w1d.edge_exponent = (1. - k) / 2.;
+    w1d.edge_free = [p, k, a, factor](const double x) {
       const double D = (a - x) * (a + x);
-      if (!(D > 0.))
-        return 0.;
-      const auto h = [&](const double u, const double) { return p(std::sqrt(x * x + D * u)); };
-      return factor * std::pow(D, (1. - k) / 2.) * beta_weight_integral(h, -(1. + k) / 2., 0.);
+      const auto h = [&](const double u, const double) { return p(std::sqrt(x * x + std::max(D, 0.) * u)); };
+      return factor * beta_weight_integral(h, -(1. + k) / 2., 0.);
+    };
+    const auto phi = w1d.edge_free;
+    const double e = w1d.edge_exponent;
+    w1d.w = [phi, a, e](const double x) {
+      const double D = (a - x) * (a + x);
+      return D > 0. ? std::pow(D, e) * phi(x) : 0.;
     };
     return w1d;
   }
@@ -145,11 +167,33 @@ namespace gradcontact::mdr
 
   double force(const Foundation &w1d, const Medium &m)
   {
+    if (!w1d.profile_slope)
+      return force_nested(w1d, m);
+    validate("mdr force", m);
+    const double k = m.k, a = w1d.a;
+    // F = 2 cN0/c0^k [d a^(k+1)/(k+1) - int_0^a x^k g(x) dx] with
+    // int_0^a x^k g(x) dx = 1/(k+1) int_0^a f'(r) (a^2-r^2)^((k+1)/2) dr
+    //                     = a^(k+2)/(2(k+1)) int_0^1 u^(-1/2) (1-u)^((k+1)/2) f'(a sqrt(u)) du
+    const auto h = [&](const double u, const double) { return w1d.profile_slope(a * std::sqrt(u)); };
+    const double shape = std::pow(a, k + 2.) / (2. * (k + 1.)) * beta_weight_integral(h, -0.5, (k + 1.) / 2.);
+    return 2. * m.cN0 / std::pow(m.c0, k) * (w1d.d * std::pow(a, k + 1.) / (k + 1.) - shape);
+  }
+
+  double force_nested(const Foundation &w1d, const Medium &m)
+  {
     validate("mdr force", m);
     const double k = m.k, a = w1d.a;
     // 9.11 with x = a sqrt(u): F = cN0 a^(k+1)/c0^k int_0^1 u^((k-1)/2) w1D(a sqrt(u)) du
+    const double prefactor = m.cN0 * std::pow(a, k + 1.) / std::pow(m.c0, k);
+    if (w1d.edge_exponent != 0.)
+      {
+        // w1D = (a^2 (1-u))^e phi: the factor (1-u)^e joins the weight
+        const double e = w1d.edge_exponent;
+        const auto h = [&](const double u, const double) { return w1d.edge_free(a * std::sqrt(u)); };
+        return prefactor * std::pow(a, 2. * e) * beta_weight_integral(h, (k - 1.) / 2., e);
+      }
     const auto h = [&](const double u, const double) { return w1d.w(a * std::sqrt(u)); };
-    return m.cN0 * std::pow(a, k + 1.) / std::pow(m.c0, k) * beta_weight_integral(h, (k - 1.) / 2., 0.);
+    return prefactor * beta_weight_integral(h, (k - 1.) / 2., 0.);
   }
 
   double pressure(const Foundation &w1d, const Medium &m, const double r)
@@ -190,6 +234,13 @@ namespace gradcontact::mdr
     const double c = boost::math::cos_pi(k / 2.) / pi;
     if (r == 0.)
       return w1d.w(0.);
+    const double e = w1d.edge_exponent;
+    if (r == a && e != 0.)
+      {
+        // w1D(a sqrt(u)) = (a^2 (1-u))^e phi: the factor joins the weight (1-u)^(-(1+k)/2)
+        const auto h = [&](const double u, const double) { return w1d.edge_free(a * std::sqrt(u)); };
+        return c * std::pow(a, 2. * e) * beta_weight_integral(h, (k - 1.) / 2., e - (1. + k) / 2.);
+      }
     if (r <= a)
       {
         // x = r sqrt(u): w = cos(k pi/2)/pi int_0^1 u^((k-1)/2) (1-u)^(-(1+k)/2) w1D(r sqrt(u)) du
@@ -198,6 +249,13 @@ namespace gradcontact::mdr
       }
     // x = a sqrt(u), r^2 - x^2 = (r^2 - a^2) + a^2 (1 - u)
     const double D = (r - a) * (r + a);
+    if (e != 0.)
+      {
+        const auto h = [&](const double u, const double one_minus_u) {
+          return w1d.edge_free(a * std::sqrt(u)) * std::pow(D + a * a * one_minus_u, -(1. + k) / 2.);
+        };
+        return c * std::pow(a, k + 1. + 2. * e) * beta_weight_integral(h, (k - 1.) / 2., e);
+      }
     const auto h = [&](const double u, const double one_minus_u) {
       return w1d.w(a * std::sqrt(u)) * std::pow(D + a * a * one_minus_u, -(1. + k) / 2.);
     };

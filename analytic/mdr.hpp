@@ -40,6 +40,17 @@ namespace gradcontact::mdr
     std::function<double(double)> w;  ///< w1D(x), 0 <= x <= a
     std::function<double(double)> dw; ///< w1D'(x), needed for the pressure only
     double a;                         ///< contact radius
+    /// For w1D = d - g(x) of a profile (indentation_to_depth): the profile's f', so that force()
+    /// can use the single integral int_0^a x^k g(x) dx = 1/(1+k) int_0^a f'(r) (a^2-r^2)^((1+k)/2) dr
+    /// (9.2 in 9.11, integration order exchanged) instead of a nested quadrature.
+    std::function<double(double)> profile_slope;
+    double d = 0.; ///< the depth of that indentation
+    /// Where w1D = (a^2 - x^2)^e phi(x) with phi smooth at the edge (foundations of a pressure, 9.13:
+    /// e = (1-k)/2), e and phi: the quadratures then treat the factor exactly. For k -> +-1 the
+    /// combined end-point exponents approach -1 and part of the mass lies below the smallest double,
+    /// which no quadrature of w1D itself can reach.
+    double edge_exponent = 0.;
+    std::function<double(double)> edge_free;
   };
 
   /// g(x) (9.2)
@@ -63,8 +74,10 @@ namespace gradcontact::mdr
 
   /// d = w1D(0) + g(0) = w1D(0) for indentations (the depth at the centre, 9.9).
   double depth(const Foundation &w1d);
-  /// F_N (9.11)
+  /// F_N (9.11); single quadrature for indentations of a profile, nested otherwise.
   double force(const Foundation &w1d, const Medium &m);
+  /// F_N (9.11) by the nested quadrature of w1D, whatever the foundation (for checks of force()).
+  double force_nested(const Foundation &w1d, const Medium &m);
   /// p(r) (9.12), zero for r > a.
   double pressure(const Foundation &w1d, const Medium &m, double r);
   /// w(r) (9.12), inside and outside the contact.

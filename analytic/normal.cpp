@@ -20,11 +20,24 @@ namespace gradcontact
     // cos(k pi/2) / pi, the prefactor of every surface displacement outside the contact (9.12).
     double outer_factor(const double k) { return boost::math::cos_pi(k / 2.) / pi; }
 
+    // B(a^2/r^2; x, y) for r > a, the incomplete beta of every displacement outside the contact.
+    // With w = 1 - a^2/r^2 = (r-a)(r+a)/r^2 (formed without cancellation), rounding z = a^2/r^2 costs
+    // about w^(y-1) eps in B(z; x, y), while the complement B(x, y) - B(w; y, x) costs about
+    // B(x, y) eps by cancellation: take the form with the smaller error (near the edge, the complement).
+    double outer_beta(const double x, const double y, const double a, const double r)
+    {
+      const double ratio = a / r;
+      const double w = (r - a) * (r + a) / (r * r);
+      const double complete = boost::math::beta(x, y);
+      if (std::pow(w, y - 1.) <= complete)
+        return boost::math::beta(x, y, ratio * ratio);
+      return complete - boost::math::beta(y, x, w);
+    }
+
     // B(a^2/r^2; (1+k)/2, (1-k)/2): w outside a flat punch of unit depth, times pi / cos(k pi/2).
     double flat_punch_outer_beta(const double k, const double a, const double r)
     {
-      const double z = (a / r) * (a / r);
-      return boost::math::beta((1. + k) / 2., (1. - k) / 2., z);
+      return outer_beta((1. + k) / 2., (1. - k) / 2., a, r);
     }
 
     void check_medium(const char *fn, const Medium &m) { validate(fn, m); }
@@ -149,11 +162,9 @@ namespace gradcontact
     const double d = kappa(n, k) * p.A * std::pow(a, n);
     if (r <= a)
       return d - p.A * std::pow(r, n);
-    const double z = (a / r) * (a / r);
     const double y = (1. - k) / 2.;
     return outer_factor(k) * d *
-           (boost::math::beta((1. + k) / 2., y, z) -
-            std::pow(r / a, n) * boost::math::beta((1. + k + n) / 2., y, z)); // 9.30
+           (outer_beta((1. + k) / 2., y, a, r) - std::pow(r / a, n) * outer_beta((1. + k + n) / 2., y, a, r)); // 9.30
   }
 
   double contact_radius_from_depth(const Medium &m, const PowerLaw &p, const double d)
@@ -235,11 +246,9 @@ namespace gradcontact
     const double k = m.k;
     if (r <= a)
       return a * a / ((k + 1.) * p.R) - r * r / (2. * p.R);
-    const double z = (a / r) * (a / r);
     const double y = (1. - k) / 2.;
     return a * a * outer_factor(k) / ((k + 1.) * p.R) *
-           (boost::math::beta((1. + k) / 2., y, z) -
-            (r / a) * (r / a) * boost::math::beta((3. + k) / 2., y, z)); // 9.26
+           (outer_beta((1. + k) / 2., y, a, r) - (r / a) * (r / a) * outer_beta((3. + k) / 2., y, a, r)); // 9.26
   }
 
   // --- concave punch ----------------------------------------------------------------------------
@@ -296,10 +305,9 @@ namespace gradcontact
     const double k = m.k, a = punch.a;
     if (r <= a)
       return d0 + punch.h0 * (r / a) * (r / a); // 9.32: d0 - f(r)
-    const double z = (a / r) * (a / r);
     const double y = (1. - k) / 2.;
-    return outer_factor(k) * (d0 * boost::math::beta((1. + k) / 2., y, z) +
-                              2. * punch.h0 / (k + 1.) / z * boost::math::beta((3. + k) / 2., y, z));
+    return outer_factor(k) * (d0 * outer_beta((1. + k) / 2., y, a, r) +
+                              2. * punch.h0 / (k + 1.) * (r / a) * (r / a) * outer_beta((3. + k) / 2., y, a, r)); // 9.34
   }
 
   // --- constant pressure ---------------------------------------------------------------------
@@ -321,10 +329,9 @@ namespace gradcontact
     const double wc = centre_displacement(m, load);
     const double k = m.k, a = load.a;
     if (r <= a)
-      return wc * hyp2f1((k - 1.) / 2., (1. + k) / 2., 1., (r / a) * (r / a)); // 9.40
-    const double z = (a / r) * (a / r);
+      return wc * hyp2f1((k - 1.) / 2., (1. + k) / 2., 1., (r / a) * (r / a), (a - r) * (a + r) / (a * a)); // 9.40
     return wc * (1. - k) / 2. * std::pow(a / r, 1. + k) *
-           hyp2f1((1. + k) / 2., (1. + k) / 2., 2., z); // 9.40
+           hyp2f1((1. + k) / 2., (1. + k) / 2., 2., (a / r) * (a / r), (r - a) * (r + a) / (r * r)); // 9.40
   }
 
   double force(const UniformPressure &load)

@@ -43,44 +43,44 @@ namespace gradcontact
     // |t| < 1 - z0, so each step covers half the remaining distance to the singular point 1 and the
     // terms fall like 2^-n. Used where the connection formula is degenerate (c - a - b near an
     // integer): no Gamma function of the parameters is involved, so nothing cancels.
-    double hyp2f1_ode(const double a, const double b, const double c, const double z)
+    double hyp2f1_ode(const double a, const double b, const double c, const double w)
     {
-      double z0 = 0.5;
-      double F = hyp2f1_taylor(a, b, c, z0);
-      double dF = a * b / c * hyp2f1_taylor(a + 1., b + 1., c + 1., z0);
+      // The state is kept as gap = 1 - z0, which halves exactly at every step but the last, so that
+      // the distance to the singular point is never formed by cancellation.
+      double gap = 0.5;
+      double F = hyp2f1_taylor(a, b, c, 0.5);
+      double dF = a * b / c * hyp2f1_taylor(a + 1., b + 1., c + 1., 0.5);
       const double s1 = a + b + 1., ab = a * b;
-      while (z0 < z)
+      while (gap > w)
         {
-          const double t = std::min(z - z0, 0.5 * (1. - z0));
-          const double q = z0 * (1. - z0), p0 = c - s1 * z0, p1 = 1. - 2. * z0;
-          // u_n: Taylor coefficients of F at z0; F(z0 + t) = sum u_n t^n.
-          double u0 = F, u1 = dF;
-          double value = u0 + u1 * t, slope = u1, tn = t; // tn = t^n for the current n = 1
+          const double t = std::min(gap - w, 0.5 * gap);
+          const double z0 = 1. - gap;
+          const double q = z0 * gap, p0 = c - s1 * z0, p1 = 2. * gap - 1.;
+          // v_n = u_n t^n with u_n the Taylor coefficients of F at z0, F(z0 + t) = sum v_n. Scaling
+          // by t^n keeps the terms O(2^-n) although u_n grows like (1 - z0)^-n near z = 1.
+          double v0 = F, v1 = dF * t;
+          double value = v0 + v1, slope_t = v1; // slope_t = t F'(z0 + t) = sum n v_n
           for (int n = 0; n < max_terms; ++n)
             {
-              const double u2 = -((p1 * n + p0) * (n + 1.) * u1 - (n * (n - 1.) + s1 * n + ab) * u0) /
+              const double v2 = -((p1 * n + p0) * (n + 1.) * v1 * t - (n * (n - 1.) + s1 * n + ab) * v0 * t * t) /
                                 (q * (n + 2.) * (n + 1.));
-              const double term = u2 * tn * t;           // u_{n+2} t^(n+2)
-              const double dterm = (n + 2.) * u2 * tn;   // d/dt of it
-              value += term;
-              slope += dterm;
-              tn *= t;
-              u0 = u1;
-              u1 = u2;
-              if (std::abs(term) <= eps * std::abs(value) * 0.25 &&
-                  std::abs(dterm) <= eps * std::abs(slope) * 0.25 && n > 2)
+              value += v2;
+              slope_t += (n + 2.) * v2;
+              v0 = v1;
+              v1 = v2;
+              if (std::abs(v2) * (n + 2.) <= eps * 0.25 * (std::abs(value) + std::abs(slope_t)) && n > 2)
                 break;
             }
+          const double slope = slope_t / t;
           F = value;
           dF = slope;
-          z0 = (t == z - z0) ? z : z0 + t;
+          gap = (t == gap - w) ? w : gap - t;
         }
       return F;
     }
 
-    double hyp2f1_connection(const double a, const double b, const double c, const double z)
+    double hyp2f1_connection(const double a, const double b, const double c, const double w)
     {
-      const double w = 1. - z;
       const double s = c - a - b;
       using boost::math::tgamma;
       const double gc = tgamma(c);
@@ -133,7 +133,7 @@ namespace gradcontact
     return 1. / boost::math::tgamma(x);
   }
 
-  double hyp2f1(const double a, const double b, const double c, const double z)
+  double hyp2f1(const double a, const double b, const double c, const double z, const double one_minus_z)
   {
     const char *fn = "hyp2f1";
     check::finite(fn, "a", a);
@@ -147,17 +147,18 @@ namespace gradcontact
     if (detail::taylor_region(z))
       return detail::hyp2f1_taylor(a, b, c, z);
     const double s = c - a - b;
-    if (z == 1. && !(s > 0.))
+    const double w = one_minus_z >= 0. ? one_minus_z : 1. - z;
+    if (w == 0. && !(s > 0.))
       check::fail(fn, "c - a - b", s, "must be > 0 at z = 1 (Gauss's sum diverges otherwise)");
     if (!detail::near_integer(s))
-      return detail::hyp2f1_connection(a, b, c, z);
-    if (z == 1.)
+      return detail::hyp2f1_connection(a, b, c, w);
+    if (w == 0.)
       {
         // Gauss's sum, exact at z = 1 for c - a - b > 0.
         using boost::math::tgamma;
         return tgamma(c) * tgamma(s) * rgamma(c - a) * rgamma(c - b);
       }
-    return detail::hyp2f1_ode(a, b, c, z);
+    return detail::hyp2f1_ode(a, b, c, w);
   }
 
   double beta_upper(const double z, const double x, const double y)
@@ -205,24 +206,37 @@ namespace gradcontact
       check::fail(fn, "x", x, "must not be 0, -1, -2, ... (B(z; x, y) has a pole; use beta_upper)");
     if (z == 0.)
       check::fail(fn, "z", z, "must be > 0 when x < 0 (B(z; x, y) diverges at z = 0)");
-    if (z <= 0.5)
+    // 9.21 written as sum_j (1-y)_j / j! t^(x+j) / (x+j) at t = min(z, 1/2), converging like 2^-j.
+    const double t = std::min(z, 0.5);
+    double coefficient = 1., power = std::pow(t, x);
+    double lower = power / x;
+    for (int j = 1;; ++j)
       {
-        // 9.21 written as sum_j (1-y)_j / j! z^(x+j) / (x+j).
-        double coefficient = 1., power = std::pow(z, x);
-        double sum = power / x;
-        for (int j = 1; j < detail::max_terms; ++j)
-          {
-            coefficient *= (j - y) / j;
-            power *= z;
-            const double term = coefficient * power / (x + j);
-            sum += term;
-            if (x + j > 0 && std::abs(term) <= detail::eps * std::abs(sum) * 0.5)
-              return sum;
-          }
-        throw std::runtime_error("incomplete_beta: series did not converge (internal error)");
+        if (j == detail::max_terms)
+          throw std::runtime_error("incomplete_beta: series did not converge (internal error)");
+        coefficient *= (j - y) / j;
+        power *= t;
+        const double term = coefficient * power / (x + j);
+        lower += term;
+        if (x + j > 0 && std::abs(term) <= detail::eps * std::abs(lower) * 0.5)
+          break;
       }
-    // Continued complete beta minus the (finite) upper part.
-    using boost::math::tgamma;
-    return tgamma(x) * tgamma(y) * rgamma(x + y) - beta_upper(z, x, y);
+    if (z <= 0.5)
+      return lower;
+    // int_(1/2)^z t^(x-1) (1-t)^(y-1) dt = sum_j (1-x)_j / j! int_w^(1/2) s^(y+j-1) ds, w = 1 - z,
+    // each power integral formed without cancellation as y -> 0 (power_integral). All terms are
+    // positive for x < 1. (B(x, y) - beta_upper(z, x, y) would cancel ~log10(1/y) digits here.)
+    const double w = 1. - z, L = std::log(0.5 / w);
+    double upper = detail::power_integral(w, 0.5, y, L);
+    coefficient = 1.;
+    for (int j = 1; j < detail::max_terms; ++j)
+      {
+        coefficient *= (j - x) / j;
+        const double term = coefficient * detail::power_integral(w, 0.5, y + j, L);
+        upper += term;
+        if (std::abs(term) <= detail::eps * std::abs(upper) * 0.5)
+          return lower + upper;
+      }
+    throw std::runtime_error("incomplete_beta: series did not converge (internal error)");
   }
 } // namespace gradcontact

@@ -20,7 +20,10 @@ namespace gradcontact
   double beta_upper(double z, double x, double y);
 
   /// 2F1(a, b; c; z) for 0 <= z <= 1, c not 0, -1, -2, ...; at z = 1 also c - a - b > 0.
-  double hyp2f1(double a, double b, double c, double z);
+  /// one_minus_z, when given (>= 0), is 1 - z formed by the caller without cancellation (e.g.
+  /// (a-r)(a+r)/a^2 for z = r^2/a^2): near z = 1, where 2F1 varies like (1-z)^(c-a-b), it is used
+  /// instead of 1 - z.
+  double hyp2f1(double a, double b, double c, double z, double one_minus_z = -1.);
 
   /// 1 / Gamma(x), zero at the poles x = 0, -1, -2, ...
   double rgamma(double x);

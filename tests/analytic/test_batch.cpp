@@ -1,0 +1,80 @@
+// Requirement: `gradcontact eval` shall answer one JSON line per request, in order, echo the id as
+// given, report every bad request as an error line naming the parameter, and never stop at one.
+#include <analytic/batch.hpp>
+
+#include <catch2/catch.hpp>
+#include <nlohmann/json.hpp>
+
+#include <sstream>
+
+using namespace gradcontact;
+using Catch::Contains;
+using nlohmann::json;
+
+namespace
+{
+  const std::string material = R"("material":{"E0":1e9,"c0":1e-3,"k":0.5,"nu":0.3})";
+}
+
+TEST_CASE("eval answers in order and survives bad lines", "[analytic]")
+{
+  std::istringstream in(
+    R"({"id":"first","case":"paraboloid","quantity":"force",)" + material + R"(,"geometry":{"R":0.01},"a":1e-4})" "\n"
+    "not json at all\n"
+    "\n"
+    R"({"id":3,"case":"paraboloid","quantity":"force",)" + material + R"(,"geometry":{"R":-1},"a":1e-4})" "\n"
+    R"({"id":[4,5],"case":"teapot","quantity":"force",)" + material + "}\n"
+    R"({"id":6,"case":"paraboloid","quantity":"force",)" + material + R"(,"geometry":{"R":0.01},"a":1e-4,"method":"numerical_mdr"})" "\n");
+  std::ostringstream out;
+  const int errors = batch::evaluate_stream(in, out);
+  CHECK(errors == 3);
+  std::istringstream lines(out.str());
+  std::vector<json> answers;
+  for (std::string line; std::getline(lines, line);)
+    answers.push_back(json::parse(line));
+  REQUIRE(answers.size() == 5);
+  CHECK(answers[0]["id"] == "first");
+  CHECK(answers[0]["value"].get<double>() > 0.);
+  CHECK(answers[1]["id"].is_null());
+  CHECK_THAT(answers[1]["error"].get<std::string>(), Contains("not valid JSON"));
+  CHECK(answers[2]["id"] == 3);
+  CHECK_THAT(answers[2]["error"].get<std::string>(), Contains("R = -1"));
+  CHECK(answers[3]["id"] == json::array({4, 5}));
+  CHECK_THAT(answers[3]["error"].get<std::string>(), Contains("teapot") && Contains("paraboloid"));
+  CHECK(answers[4]["id"] == 6);
+  CHECK_THAT(answers[4]["value"].get<double>(),
+             Catch::Matchers::WithinRel(answers[0]["value"].get<double>(), 1e-12));
+}
+
+TEST_CASE("eval names missing, unknown and mistyped entries", "[analytic]")
+{
+  const auto error_of = [](const std::string &line) {
+    const batch::Answer a = batch::evaluate(line);
+    REQUIRE_FALSE(a.ok);
+    return a.error;
+  };
+  CHECK_THAT(error_of(R"({"case":"paraboloid","quantity":"force",)" + material + R"(,"geometry":{"R":0.01}})"),
+             Contains("a: missing"));
+  CHECK_THAT(error_of(R"({"case":"paraboloid","quantity":"force",)" + material + R"(,"geometry":{"R":0.01},"a":1e-4,"dgama":1})"),
+             Contains("unknown key 'dgama'"));
+  CHECK_THAT(error_of(R"({"case":"paraboloid","quantity":"force",)" + material + R"(,"geometry":{"R":"big"},"a":1e-4})"),
+             Contains("geometry.R") && Contains("must be a number"));
+  CHECK_THAT(error_of(R"({"case":"paraboloid","quantity":"traction",)" + material + R"(,"geometry":{"R":0.01},"a":1e-4})"),
+             Contains("quantity = 'traction'") && Contains("valid: "));
+  CHECK_THAT(error_of(R"({"case":"jkr_paraboloid","quantity":"critical_force",)" + material +
+                      R"(,"geometry":{"R":0.01},"dgamma":0.05,"control":"torque"})"),
+             Contains("control = 'torque'"));
+  CHECK_THAT(error_of(R"({"case":"paraboloid","quantity":"force","material":{"E0":1e9,"c0":1e-3,"k":0.5,"nu":0.3,"G":1},"geometry":{"R":0.01},"a":1e-4})"),
+             Contains("material.G"));
+  CHECK_THAT(error_of(R"({"case":"paraboloid","quantity":"force",)" + material + R"(,"geometry":{"R":0.01},"a":1e-4,"method":"guess"})"),
+             Contains("method = 'guess'"));
+}
+
+TEST_CASE("eval answers are valid JSON with round-trip values", "[analytic]")
+{
+  const batch::Answer a = batch::evaluate(
+    R"({"id":1,"case":"flat_punch","quantity":"force",)" + material + R"(,"a":1e-4,"d":1e-6})");
+  REQUIRE(a.ok);
+  const json j = json::parse(batch::to_json(a));
+  CHECK(j["value"].get<double>() == a.value); // 17 significant digits round-trip exactly
+}

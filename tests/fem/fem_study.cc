@@ -1,0 +1,152 @@
+// fem_study: one FE run of the graded half-space with any mesh/discretisation setting, its error against
+// the closed form and its timings, for the measurements of fem/README.md. Not a test.
+//
+//   fem_study load=punch k=0 p=3 h_edge=1e-5 h_surface=0.25 h_far=3 g=1.15 L=1e8 layer=1e-10 R1=4
+//             edge_refinements=0 global=0 repeat=1
+// load = punch | paraboloid | cone | power (n=, A=) | pressure; every key is optional (defaults: the
+// recommended parameters for k). Prints one line per run: key=value pairs.
+#include <fem/axisymmetric_solver.h>
+#include <fem/modulus.h>
+
+#include <analytic/material.hpp>
+#include <analytic/normal.hpp>
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <iostream>
+#include <map>
+#include <memory>
+#include <string>
+
+using namespace gradcontact::fem;
+
+int main(int argc, char **argv)
+{
+  try
+    {
+      std::map<std::string, std::string> arg;
+      for (int i = 1; i < argc; ++i)
+        {
+          const std::string s = argv[i];
+          const auto        eq = s.find('=');
+          if (eq == std::string::npos)
+            throw std::invalid_argument("fem_study: argument '" + s + "' is not key=value");
+          arg[s.substr(0, eq)] = s.substr(eq + 1);
+        }
+      auto num = [&](const std::string &key, const double fallback) {
+        return arg.count(key) ? std::stod(arg[key]) : fallback;
+      };
+      const double E0 = 2e9, c0 = 3e-4, a = 1e-4, nu = num("nu", 0.3);
+      const double k  = num("k", 0.0);
+      const std::string load_name = arg.count("load") ? arg["load"] : "punch";
+      MeshParameters mesh = recommended_mesh_parameters(a, k, num("truncation", 1e-8));
+      mesh.h_edge         = num("h_edge", mesh.h_edge);
+      mesh.h_surface      = num("h_surface", mesh.h_surface);
+      mesh.h_far          = num("h_far", mesh.h_far);
+      mesh.h_axis         = num("h_axis", mesh.h_axis);
+      mesh.ring_growth    = num("g", mesh.ring_growth);
+      mesh.far_field_size = num("L", mesh.far_field_size);
+      mesh.surface_layer_thickness = num("layer", mesh.surface_layer_thickness);
+      mesh.near_field_size         = num("R1", mesh.near_field_size);
+      mesh.halving_radius          = num("halving_radius", mesh.halving_radius);
+      mesh.edge_refinements   = static_cast<unsigned>(num("edge_refinements", mesh.edge_refinements));
+      mesh.global_refinements = static_cast<unsigned>(num("global", mesh.global_refinements));
+      DiscretizationParameters disc;
+      disc.degree                  = static_cast<unsigned>(num("p", disc.degree));
+      disc.extra_quadrature_points = static_cast<unsigned>(num("extra_q", disc.extra_quadrature_points));
+
+      const auto start = std::chrono::steady_clock::now();
+      Material   material{std::make_shared<PowerLawModulus>(E0, c0, k), nu};
+      if (arg.count("layers"))
+        material.modulus = LayeredModulus::uniform(std::make_shared<PowerLawModulus>(E0, c0, k),
+                                                   static_cast<unsigned>(num("layers", 1)),
+                                                   num("layer_depth", 1.0) * a);
+      AxisymmetricSolver solver(material, mesh, disc);
+      const gradcontact::Medium medium =
+        gradcontact::medium(gradcontact::GradedHalfSpace{E0, c0, k, nu});
+
+      LoadCase load;
+      double   reference = 0;
+      // Indenters: a_true is the contact radius of the closed form; the mesh is graded at
+      // a_mesh = a_true * shift (control=depth|force find the radius on that mesh).
+      const std::string control = arg.count("control") ? arg["control"] : "radius";
+      const double      a_true  = a / num("shift", 1.0);
+      gradcontact::PowerLaw power{num("n", 2.0), num("A", 1.0)};
+      if (load_name == "paraboloid")
+        power = gradcontact::as_power_law(gradcontact::Paraboloid{50 * a});
+      else if (load_name == "cone")
+        power = gradcontact::as_power_law(gradcontact::Cone{num("tan", 0.1)});
+      else if (load_name == "power")
+        power.A = num("A", 0.02) * std::pow(a, 1 - power.n);
+      if (load_name == "punch")
+        {
+          load.type  = LoadType::flat_punch;
+          load.depth = 1e-3 * a;
+          reference  = gradcontact::force(medium, gradcontact::FlatPunch{a}, load.depth);
+        }
+      else
+        {
+          load.profile = Profile::power_law(power.n, power.A);
+          if (control == "radius")
+            load.type = LoadType::indenter;
+          else if (control == "depth")
+            {
+              load.type  = LoadType::indenter_depth;
+              load.depth = gradcontact::depth(medium, power, a_true);
+            }
+          else
+            {
+              load.type  = LoadType::indenter_force;
+              load.force = gradcontact::force(medium, power, a_true);
+            }
+          reference = gradcontact::force(medium, power, control == "radius" ? a : a_true);
+        }
+      OutputRequest out;
+      const double  a_ref = load_name == "punch" || control == "radius" ? a : a_true;
+      if (load_name != "punch")
+        {
+          out.displacement_radii = {1.5 * a_ref, 10 * a_ref};
+          for (unsigned int i = 0; i < 400; ++i)
+            out.pressure_radii.push_back(0.99 * a_ref * (i + 0.5) / 400);
+        }
+      const Result r     = solver.run(load, out);
+      const double total = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+      double w_err[2] = {0, 0}, p_err = 0, p_norm = 0;
+      if (load_name != "punch")
+        {
+          // FE radius control: compare at the FE depth; depth/force control: at the closed-form state.
+          const double a_cmp = control == "radius" ? gradcontact::contact_radius_from_depth(medium, power, r.depth) : a_true;
+          for (unsigned int i = 0; i < 2; ++i)
+            {
+              const double w = gradcontact::displacement(medium, power, a_cmp, r.displacement[i].r);
+              w_err[i]       = r.displacement[i].value / w - 1;
+            }
+          for (const Sample &s : r.pressure)
+            {
+              const double p = gradcontact::pressure(medium, power, a_cmp, s.r);
+              p_err += (s.value - p) * (s.value - p) * s.r;
+              p_norm += p * p * s.r;
+            }
+          p_err = std::sqrt(p_err / p_norm);
+          if (control == "radius")
+            reference = gradcontact::force(medium, power, a_cmp);
+        }
+      std::printf("load=%s control=%s k=%g p=%u h_edge=%g L=%g dofs=%u F_error=%.3e a_error=%.3e d_error=%.3e "
+                  "w1.5_error=%.2e w10_error=%.2e p_L2=%.2e iterations=%u set=%u mismatch=%.1e mesh=%.2f "
+                  "setup=%.2f assemble=%.2f factorize=%.2f solve=%.2f post=%.2f total=%.2f rings=%u %s\n",
+                  load_name.c_str(), control.c_str(), k, disc.degree, mesh.h_edge, mesh.far_field_size,
+                  r.n_dofs, r.force / reference - 1,
+                  load_name == "punch" ? 0.0 : r.contact_radius / a_ref - 1,
+                  load_name == "punch" ? 0.0 : r.depth / gradcontact::depth(medium, power, a_ref) - 1,
+                  w_err[0], w_err[1], p_err, r.iterations, r.active_set_size, r.energy_mismatch, r.time.mesh,
+                  r.time.setup, r.time.assemble, r.time.factorize, r.time.solve, r.time.postprocess, total,
+                  r.mesh.n_rings, r.message.c_str());
+      return 0;
+    }
+  catch (const std::exception &e)
+    {
+      std::cerr << e.what() << '\n';
+      return 1;
+    }
+}
