@@ -17,6 +17,7 @@
 #include <functional>
 #include <istream>
 #include <map>
+#include <memory>
 #include <ostream>
 #include <set>
 #include <sstream>
@@ -89,10 +90,13 @@ namespace gradcontact::batch
                 number_in(m, "nu", prefix)};
       }
 
+      /// The equivalent medium, computed once per request.
       Medium medium() const
       {
-        return has("material2") ? gradcontact::medium(body("material"), body("material2"))
-                                : gradcontact::medium(body("material"));
+        if (!medium_)
+          medium_ = std::make_unique<Medium>(has("material2") ? gradcontact::medium(body("material"), body("material2"))
+                                                              : gradcontact::medium(body("material")));
+        return *medium_;
       }
 
       jkr::Control control() const
@@ -154,6 +158,7 @@ namespace gradcontact::batch
       }
 
       const json &j_;
+      mutable std::unique_ptr<Medium> medium_;
     };
 
     using Evaluator = std::function<double(const Request &)>;
@@ -916,7 +921,7 @@ namespace gradcontact::batch
       return s;
     }
 
-    double dispatch(const Request &q)
+    const Evaluator &find_evaluator(const Request &q)
     {
       const auto &all = tables();
       const auto c = all.find(q.case_name);
@@ -933,13 +938,43 @@ namespace gradcontact::batch
         throw DomainError("quantity = '" + q.quantity + "' is not available for case '" + q.case_name +
                           "' with method '" + (q.numerical ? "numerical_mdr" : "closed_form") +
                           "' (valid: " + names(table) + ")");
-      const double value = f->second(q);
+      return f->second;
+    }
+
+    double checked(const double value)
+    {
       if (!std::isfinite(value))
         throw std::runtime_error("internal error: non-finite result " + check::format(value) +
                                  " (please report the request)");
       return value;
     }
+
+    double dispatch(const Request &q) { return checked(find_evaluator(q)(q)); }
   } // namespace
+
+  struct Prepared::Impl
+  {
+    explicit Impl(const std::string &line) : j(json::parse(line)), q(j), f(find_evaluator(q)) {}
+    json j;
+    Request q;
+    const Evaluator &f;
+  };
+
+  double Prepared::operator()() const { return checked(impl_->f(impl_->q)); }
+
+  Prepared prepare(const std::string &line)
+  {
+    Prepared p;
+    try
+      {
+        p.impl_ = std::make_shared<const Prepared::Impl>(line);
+      }
+    catch (const json::exception &e)
+      {
+        throw DomainError(std::string("request: not valid JSON (") + e.what() + ")");
+      }
+    return p;
+  }
 
   Answer evaluate(const std::string &line)
   {

@@ -7,6 +7,7 @@
 #pragma once
 
 #include <iosfwd>
+#include <memory>
 #include <string>
 
 namespace gradcontact::batch
@@ -25,6 +26,23 @@ namespace gradcontact::batch
 
   /// One JSON line, without the newline.
   std::string to_json(const Answer &answer);
+
+  /// A parsed and checked request, ready to be evaluated repeatedly without parsing (benchmarks).
+  class Prepared
+  {
+  public:
+    /// The value; throws DomainError (or another std::exception) exactly where evaluate() reports an error.
+    double operator()() const;
+    struct Impl;
+
+  private:
+    friend Prepared prepare(const std::string &line);
+    std::shared_ptr<const Impl> impl_;
+  };
+
+  /// Parses a request line; throws DomainError for what evaluate() would report before evaluating
+  /// (invalid JSON, unknown keys, case, quantity or method).
+  Prepared prepare(const std::string &line);
 
   /// Reads requests from `in` until EOF and writes one answer line per non-blank request line.
   /// Returns the number of answers that are errors.

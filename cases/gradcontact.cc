@@ -2,6 +2,7 @@
 //
 //   gradcontact eval [file]          JSON Lines requests (stdin without file) -> one answer a line
 //   gradcontact run <scene|folder>   run scenes, write reports/<scene>/ and reports/summary.md
+//   gradcontact bench                 work-precision benchmarks, write reports/benchmarks/
 //   gradcontact --help
 //
 // Sample runs:
@@ -12,6 +13,7 @@
 // Errors are reported here, at the boundary: what() on stderr and a non-zero exit code.
 #include <analytic/batch.hpp>
 
+#include "bench.h"
 #include "runner.h"
 
 #include <cstring>
@@ -31,6 +33,8 @@ namespace
            "                           line per request (vocabulary: analytic/README.md)\n"
            "  run <scene|folder> ...   run scenes and write reports/ (options: --reports DIR,\n"
            "                           --quiet, --verbose)\n"
+           "  bench [--reports DIR] [--repeat N]\n"
+           "                           work-precision benchmarks -> reports/benchmarks/\n"
            "  --help                   this text\n";
   }
 
@@ -67,6 +71,8 @@ int main(int argc, char **argv)
         return eval(args);
       if (command == "run")
         return gradcontact::cases::run(args);
+      if (command == "bench")
+        return gradcontact::cases::bench(args);
       std::cerr << "gradcontact: unknown command '" << command << "'\n";
       usage(std::cerr);
       return 2;

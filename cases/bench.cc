@@ -1,0 +1,244 @@
+#include "bench.h"
+
+#include <analytic/batch.hpp>
+
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <map>
+#include <sstream>
+#include <stdexcept>
+#include <sys/utsname.h>
+
+#ifndef GRADCONTACT_SOURCE_DIR
+#  define GRADCONTACT_SOURCE_DIR "."
+#endif
+
+namespace gradcontact::cases
+{
+  namespace fs = std::filesystem;
+  using json = nlohmann::json;
+
+  namespace
+  {
+    struct Options
+    {
+      fs::path reports = "reports";
+      fs::path references = fs::path(GRADCONTACT_SOURCE_DIR) / "tests/data/references.jsonl";
+      int repeat = 5;
+      std::size_t numerical_stride = 5; // numerical MDR on every 5th row of a family (ms per row)
+    };
+
+    /// One family: case/quantity, with its rows (requests without method) and references.
+    struct Family
+    {
+      std::vector<std::string> requests;
+      std::vector<double> references;
+    };
+
+    struct Timing
+    {
+      double min = 0., median = 0.; // seconds per evaluation
+      double worst_error = 0.;
+      std::size_t rows = 0;
+      std::size_t refused = 0; // rows the method refuses with an explicit message
+    };
+
+    Options parse(const std::vector<std::string> &args)
+    {
+      Options o;
+      for (std::size_t i = 0; i < args.size(); ++i)
+        {
+          const auto value = [&](const char *name) {
+            if (i + 1 == args.size())
+              throw std::invalid_argument(std::string("bench: ") + name + " needs a value");
+            return args[++i];
+          };
+          if (args[i] == "--reports")
+            o.reports = value("--reports");
+          else if (args[i] == "--references")
+            o.references = value("--references");
+          else if (args[i] == "--repeat")
+            {
+              o.repeat = std::stoi(value("--repeat"));
+              if (o.repeat < 1 || o.repeat > 1000)
+                throw std::invalid_argument("bench: --repeat = " + std::to_string(o.repeat) + " is outside [1, 1000]");
+            }
+          else
+            throw std::invalid_argument("bench: unknown argument '" + args[i] + "'");
+        }
+      return o;
+    }
+
+    std::map<std::string, Family> load(const fs::path &file)
+    {
+      std::ifstream in(file);
+      if (!in)
+        throw std::runtime_error("bench: cannot open the reference table '" + file.string() + "'");
+      std::map<std::string, Family> families;
+      for (std::string line; std::getline(in, line);)
+        {
+          if (line.empty())
+            continue;
+          json row = json::parse(line);
+          const std::string key = row["case"].get<std::string>() + "/" + row["quantity"].get<std::string>();
+          const double reference = std::stod(row["reference"].get<std::string>());
+          row.erase("reference");
+          row.erase("group");
+          families[key].requests.push_back(row.dump());
+          families[key].references.push_back(reference);
+        }
+      return families;
+    }
+
+    // Times the evaluation of the rows of a family: each request is parsed once (batch::prepare), then
+    // evaluated `repeat` times; the clock covers the evaluations only (the material coefficients of a
+    // request are computed on its first evaluation, so the minimum over repetitions excludes them).
+    Timing measure(const Family &f, const std::string &method, const std::size_t stride, const int repeat)
+    {
+      std::vector<batch::Prepared> requests;
+      std::vector<double> references;
+      Timing t;
+      std::size_t not_available = 0;
+      for (std::size_t i = 0; i < f.requests.size(); i += stride)
+        {
+          json q = json::parse(f.requests[i]);
+          q["method"] = method;
+          try
+            {
+              requests.push_back(batch::prepare(q.dump()));
+              references.push_back(f.references[i]);
+            }
+          catch (const std::exception &)
+            {
+              ++not_available; // the method has no path for this quantity
+            }
+        }
+      if (requests.empty())
+        {
+          t.refused = not_available;
+          return t;
+        }
+      std::vector<double> samples;
+      for (int rep = 0; rep < repeat; ++rep)
+        {
+          double worst = 0.;
+          std::size_t refused = 0, rows = 0;
+          double seconds = 0.;
+          for (std::size_t i = 0; i < requests.size(); ++i)
+            {
+              double value = 0.;
+              const auto start = std::chrono::steady_clock::now();
+              try
+                {
+                  value = requests[i]();
+                }
+              catch (const std::exception &)
+                {
+                  ++refused;
+                  continue;
+                }
+              seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+              ++rows;
+              const double r = references[i];
+              worst = std::max(worst, r == 0. ? std::abs(value) : std::abs(value - r) / std::abs(r));
+            }
+          samples.push_back(seconds / std::max<std::size_t>(rows, 1));
+          t.worst_error = worst;
+          t.rows = rows;
+          t.refused = refused + not_available;
+        }
+      std::sort(samples.begin(), samples.end());
+      t.min = samples.front();
+      t.median = samples[samples.size() / 2];
+      return t;
+    }
+
+    std::string machine()
+    {
+      std::string cpu = "unknown";
+      std::ifstream info("/proc/cpuinfo");
+      for (std::string line; std::getline(info, line);)
+        if (line.rfind("model name", 0) == 0)
+          {
+            cpu = line.substr(line.find(':') + 2);
+            break;
+          }
+      utsname u{};
+      uname(&u);
+      std::ostringstream s;
+      s << cpu << "; " << u.sysname << " " << u.release << "; compiler " << __VERSION__ << "; "
+#ifdef NDEBUG
+        << "optimised build (NDEBUG)";
+#else
+        << "debug build (assertions on)";
+#endif
+      return s.str();
+    }
+
+    std::string fmt(const double x, const char *f = "%.3g")
+    {
+      char b[32];
+      std::snprintf(b, sizeof b, f, x);
+      return b;
+    }
+  } // namespace
+
+  int bench(const std::vector<std::string> &args)
+  {
+    const Options o = parse(args);
+    const auto families = load(o.references);
+    if (families.empty())
+      throw std::runtime_error("bench: the reference table is empty");
+
+    const fs::path folder = o.reports / "benchmarks";
+    const fs::path tmp = o.reports / ".benchmarks.tmp";
+    fs::remove_all(tmp);
+    fs::create_directories(tmp);
+    std::ofstream csv(tmp / "analytic.csv");
+    csv << "family,method,rows,refused,min_seconds,median_seconds,worst_relative_error\n";
+    std::ostringstream md;
+    md << "# Analytic benchmarks: time per evaluation against error\n\n"
+       << "Machine: " << machine() << ".  \n"
+       << "Each family is every row of `tests/data/references.jsonl` with that case and quantity (the numerical "
+          "MDR every "
+       << o.numerical_stride << "th row), evaluated " << o.repeat
+       << " times (the numerical MDR once); times are per evaluation of a parsed request (batch::prepare), including "
+          "the look-up of its inputs, minimum and median over the repetitions. Errors are the worst relative error "
+          "against the 34-digit references.\n\n"
+       << "| family | rows | closed form min [ns] | median [ns] | worst error | numerical MDR min [ms] | median [ms] | "
+          "worst error |\n|---|---|---|---|---|---|---|---|\n";
+    for (const auto &entry : families)
+      {
+        const Timing closed = measure(entry.second, "closed_form", 1, o.repeat);
+        Timing numeric = measure(entry.second, "numerical_mdr", o.numerical_stride, 1);
+        const bool has_numeric = numeric.rows > 0;
+        std::cerr << entry.first << ": closed " << fmt(closed.min * 1e9) << " ns, error " << fmt(closed.worst_error)
+                  << (has_numeric ? "; numerical " + fmt(numeric.min * 1e3) + " ms, error " + fmt(numeric.worst_error) : "")
+                  << "\n";
+        csv << entry.first << ",closed_form," << closed.rows << ',' << closed.refused << ',' << closed.min << ','
+            << closed.median << ',' << closed.worst_error << '\n';
+        if (has_numeric)
+          csv << entry.first << ",numerical_mdr," << numeric.rows << ',' << numeric.refused << ',' << numeric.min << ','
+              << numeric.median << ',' << numeric.worst_error << '\n';
+        md << "| " << entry.first << " | " << closed.rows << " | " << fmt(closed.min * 1e9, "%.0f") << " | "
+           << fmt(closed.median * 1e9, "%.0f") << " | " << fmt(closed.worst_error, "%.1e") << " | "
+           << (has_numeric ? fmt(numeric.min * 1e3, "%.3f") : "-") << " | "
+           << (has_numeric ? fmt(numeric.median * 1e3, "%.3f") : "-") << " | "
+           << (has_numeric ? fmt(numeric.worst_error, "%.1e") + (numeric.refused ? " (" + std::to_string(numeric.refused) + " refused)" : "") : "-")
+           << " |\n";
+      }
+    std::ofstream(tmp / "analytic.md") << md.str();
+    csv.close();
+    fs::remove_all(folder);
+    fs::rename(tmp, folder);
+    std::cout << "wrote " << (folder / "analytic.md").string() << "\n";
+    return 0;
+  }
+} // namespace gradcontact::cases
