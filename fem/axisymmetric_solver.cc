@@ -40,6 +40,12 @@ namespace gradcontact::fem
     // sound meshes, 3.7e-7 at k = -0.5 with 1e-5 a surface cells; 2e-4 .. 3e-3 once k < 0 surface
     // cells are thinner than 1e-7 a).
     constexpr double energy_mismatch_tolerance = 1e-6;
+    // Depth and force control: at most this many trial contact sets, and at most this many surface
+    // DoFs whose state differs from the mesh's contact zone (one back-substitution and two vectors
+    // each). A search that needs more stops with a message: the mesh's contact radius is too far from
+    // the answer (remesh at the reported radius).
+    constexpr unsigned int max_control_iterations = 60;
+    constexpr unsigned int max_modified_dofs      = 200;
 
     [[noreturn]] void fail(const std::string &where, const std::string &what, const double value,
                            const std::string &range)
@@ -87,6 +93,29 @@ namespace gradcontact::fem
     if (discontinuity_subdivisions < 1 || discontinuity_subdivisions > 64)
       fail("DiscretizationParameters", "discontinuity_subdivisions", discontinuity_subdivisions,
            "[1, 64]");
+  }
+
+
+
+  Settings recommended_settings(const double contact_radius, const double s, const double force_tolerance)
+  {
+    if (!(force_tolerance > 0 && force_tolerance < 1))
+      fail("recommended_settings", "force_tolerance", force_tolerance, "(0, 1)");
+    // The threshold between the two measured settings: degree 3 reaches 3.8e-7..2.1e-6.
+    constexpr double degree_3_limit = 1e-6;
+    Settings settings;
+    settings.mesh = recommended_mesh_parameters(contact_radius, s, std::min(force_tolerance / 10, 1e-8));
+    if (force_tolerance < degree_3_limit)
+      {
+        settings.discretization.degree = 4;
+        settings.mesh.h_edge           = 1e-6;
+        settings.mesh.h_far            = 4.0;
+        settings.mesh.ring_growth      = 1.3;
+        // The halvings of the cells just outside the contact doubled the DoFs for k = 0.5 and did not
+        // change the error (measured 2.03e-6 vs 2.58e-6 at degree 3).
+        settings.mesh.halving_radius = 1.0;
+      }
+    return settings;
   }
 
 
@@ -144,6 +173,21 @@ namespace gradcontact::fem
     return 0; // unreachable
   }
 
+  double Profile::exponent() const
+  {
+    switch (shape)
+      {
+        case Shape::paraboloid:
+        case Shape::concave_paraboloid:
+          return 2.0;
+        case Shape::cone:
+          return 1.0;
+        case Shape::power_law:
+          return n;
+      }
+    return 0; // unreachable
+  }
+
   void Profile::validate() const
   {
     switch (shape)
@@ -177,6 +221,14 @@ namespace gradcontact::fem
           if (!std::isfinite(depth) || depth == 0)
             fail("LoadCase (flat punch)", "depth", depth, "finite, non-zero");
           break;
+        case LoadType::indenter_depth:
+          if (!std::isfinite(depth) || !(depth > 0))
+            fail("LoadCase (indenter, depth control)", "depth", depth, "(0, inf)");
+          [[fallthrough]];
+        case LoadType::indenter_force:
+          if (type == LoadType::indenter_force && (!std::isfinite(force) || !(force > 0)))
+            fail("LoadCase (indenter, force control)", "force", force, "(0, inf)");
+          [[fallthrough]];
         case LoadType::indenter:
           profile.validate();
           if (profile.shape == Profile::Shape::concave_paraboloid)
@@ -301,6 +353,26 @@ namespace gradcontact::fem
       contact_r.push_back(dof_r[d]);
     AssertThrow(!contact_dofs.empty() && std::abs(contact_r.back() - a) < node_tolerance * a,
                 ExcMessage("the contact zone must end in a node at r = a"));
+
+    // All surface z-DoFs and vertices, ascending r: the candidates of depth and force control.
+    surface_dofs.clear();
+    surface_vertex_r.clear();
+    for (const SurfaceFace &face : surface_faces)
+      {
+        surface_dofs.insert(surface_dofs.end(), face.dofs.begin(), face.dofs.end());
+        surface_vertex_r.push_back(face.r0);
+        surface_vertex_r.push_back(face.r1);
+      }
+    std::sort(surface_dofs.begin(), surface_dofs.end());
+    surface_dofs.erase(std::unique(surface_dofs.begin(), surface_dofs.end()), surface_dofs.end());
+    std::sort(surface_dofs.begin(), surface_dofs.end(),
+              [&](const auto x, const auto y) { return dof_r[x] < dof_r[y]; });
+    std::sort(surface_vertex_r.begin(), surface_vertex_r.end());
+    surface_vertex_r.erase(std::unique(surface_vertex_r.begin(), surface_vertex_r.end(),
+                                       [&](const double x, const double y) {
+                                         return std::abs(x - y) <= node_tolerance * a;
+                                       }),
+                           surface_vertex_r.end());
 
     setup_time.setup = seconds_since(start);
   }
@@ -501,18 +573,22 @@ namespace gradcontact::fem
 
 
 
-  std::vector<double> AxisymmetricSolver::recover_pressure(const Vector<double> &reaction) const
+  std::vector<double> AxisymmetricSolver::recover_pressure(const Vector<double> &reaction,
+                                                           const double edge) const
   {
-    // Consistent recovery: R_i = \int p phi_i r dr on the contact line, i.e. M p = R with
+    // Consistent recovery: R_i = \int p phi_i r dr on the contact line r <= edge, i.e. M p = R with
     // M_ij = \int phi_i phi_j r dr (phi the z-trace of the basis functions, 1D Lagrange on each face).
-    const unsigned int m = contact_dofs.size();
+    const double limit = edge * (1 + node_tolerance);
     std::map<types::global_dof_index, unsigned int> index;
-    for (unsigned int i = 0; i < m; ++i)
-      index[contact_dofs[i]] = i;
+    for (const SurfaceFace &face : surface_faces)
+      if (face.r1 <= limit)
+        for (const auto d : face.dofs)
+          index.emplace(d, index.size());
+    const unsigned int       m = index.size();
     LAPACKFullMatrix<double> M(m, m);
     const QGauss<1>          quadrature(discretization.degree + 2);
     for (const SurfaceFace &face : surface_faces)
-      if (face.contact)
+      if (face.r1 <= limit)
         for (unsigned int q = 0; q < quadrature.size(); ++q)
           {
             const double r  = face.r0 + (face.r1 - face.r0) * quadrature.point(q)[0];
@@ -529,35 +605,142 @@ namespace gradcontact::fem
                 M(index[face.dofs[i]], index[face.dofs[j]]) += phi[i] * phi[j] * w;
           }
     Vector<double> p(m);
-    for (unsigned int i = 0; i < m; ++i)
-      p[i] = reaction[contact_dofs[i]];
+    for (const auto &[dof, i] : index)
+      p[i] = reaction[dof];
     M.compute_lu_factorization();
     M.solve(p);
-    return std::vector<double>(p.begin(), p.end());
+    std::vector<double> nodal(dof_handler.n_dofs(), 0.0);
+    for (const auto &[dof, i] : index)
+      nodal[dof] = p[i];
+    return nodal;
   }
 
 
 
   double AxisymmetricSolver::evaluate_on_surface(const std::vector<double> &nodal, const double r,
-                                                 const bool contact_only) const
+                                                 const double contact_edge) const
   {
-    // `nodal` is indexed by global DoF (displacement) or, with contact_only, by contact index.
-    std::map<types::global_dof_index, unsigned int> index;
-    if (contact_only)
-      for (unsigned int i = 0; i < contact_dofs.size(); ++i)
-        index[contact_dofs[i]] = i;
+    // `nodal` is indexed by global DoF; with contact_edge >= 0 only faces on r <= contact_edge count.
+    const bool contact_only = contact_edge >= 0;
     for (const SurfaceFace &face : surface_faces)
-      if (r >= face.r0 && r <= face.r1 && (!contact_only || face.contact))
+      if (r >= face.r0 && r <= face.r1 &&
+          (!contact_only || face.r1 <= contact_edge * (1 + node_tolerance)))
         {
           std::vector<double> y;
           for (const auto d : face.dofs)
-            y.push_back(contact_only ? nodal[index[d]] : nodal[d]);
+            y.push_back(nodal[d]);
           return lagrange(face.r, y, r);
         }
     std::ostringstream msg;
     msg << "sample radius r = " << r << " outside the " << (contact_only ? "contact zone" : "surface")
-        << " [0, " << (contact_only ? contact_r.back() : surface_faces.back().r1) << "]";
+        << " [0, " << (contact_only ? contact_edge : surface_faces.back().r1) << "]";
     throw std::invalid_argument(msg.str());
+  }
+
+
+
+  const std::pair<Vector<double>, Vector<double>> &
+  AxisymmetricSolver::column(const types::global_dof_index dof)
+  {
+    auto it = columns.find(dof);
+    if (it != columns.end())
+      return it->second;
+    if (columns.size() >= max_modified_dofs)
+      {
+        std::ostringstream msg;
+        msg << "depth/force control: more than " << max_modified_dofs
+            << " surface DoFs differ from the mesh's contact zone r <= " << mesh_parameters.contact_radius
+            << " (next at r = " << dof_r[dof]
+            << "); build the mesh with a contact radius closer to the answer";
+        throw std::runtime_error(msg.str());
+      }
+    const unsigned int   m = contact_dofs.size();
+    std::vector<double>  g(m, 0.0);
+    Vector<double>       b(dof_handler.n_dofs()), reaction;
+    const auto           in_contact = std::find(contact_dofs.begin(), contact_dofs.end(), dof);
+    if (in_contact != contact_dofs.end())
+      g[in_contact - contact_dofs.begin()] = 1.0; // prescribed value 1 at dof
+    else
+      b[dof] = 1.0;                               // unit point load at dof
+    double         unused;
+    Vector<double> c = solve(true, g, b, reaction, unused);
+    reaction += b; // A c
+    return columns.emplace(dof, std::make_pair(std::move(c), std::move(reaction))).first->second;
+  }
+
+
+
+  AxisymmetricSolver::TrialSet
+  AxisymmetricSolver::trial_set(const unsigned int vertex, const Profile &profile,
+                                const Vector<double> &u1, const Vector<double> &u2,
+                                const Vector<double> &Au1, const Vector<double> &Au2)
+  {
+    // The radius-controlled state of the contact set C = {surface z-DoFs with r <= r_e}, from the
+    // factorisation of the mesh's contact zone C_a = {r <= a}: u = d U1 + U2 with
+    //   U_i = u_i + sum_{m in Delta} gamma_{i,m} c_m,    Delta = C xor C_a,
+    // c_m = column(m). For m in C \ C_a (r_e > a) c_m carries a unit point load at m and the condition
+    // is the prescribed value, U1_l = 1, U2_l = -f(r_l); gamma is then the contact force at l. For
+    // m in C_a \ C (r_e < a) c_m carries a unit prescribed value at m and the condition is a free node,
+    // (A U)_l = 0. Both give a dense |Delta| x |Delta| system. The depth is the one at which the edge
+    // node carries no force, d = -(A U2)_e / (A U1)_e, as for LoadType::indenter.
+    const double a     = mesh_parameters.contact_radius;
+    const double r_e   = surface_vertex_r[vertex];
+    const double limit = r_e * (1 + node_tolerance) + node_tolerance * a;
+    TrialSet     t;
+    t.vertex = vertex;
+    std::vector<types::global_dof_index> delta;
+    types::global_dof_index              edge = numbers::invalid_dof_index;
+    for (const auto d : surface_dofs)
+      if (dof_r[d] <= limit)
+        {
+          t.active.push_back(d);
+          edge = d; // ascending r: the last is the edge node
+          if (dof_r[d] > a * (1 + node_tolerance))
+            delta.push_back(d);
+        }
+      else if (dof_r[d] <= a * (1 + node_tolerance))
+        delta.push_back(d);
+    const bool grow = r_e > a * (1 + node_tolerance);
+
+    t.U1  = u1;
+    t.U2  = u2;
+    t.AU1 = Au1;
+    t.AU2 = Au2;
+    const unsigned int n = delta.size();
+    if (n > 0)
+      {
+        LAPACKFullMatrix<double> M(n, n);
+        Vector<double>           rhs1(n), rhs2(n);
+        for (unsigned int l = 0; l < n; ++l)
+          {
+            const auto dl = delta[l];
+            for (unsigned int m = 0; m < n; ++m)
+              {
+                const auto &c = column(delta[m]);
+                M(l, m)       = grow ? c.first[dl] : c.second[dl];
+              }
+            rhs1[l] = grow ? 1.0 - u1[dl] : -Au1[dl];
+            rhs2[l] = grow ? -profile(dof_r[dl], a) - u2[dl] : -Au2[dl];
+          }
+        M.compute_lu_factorization();
+        M.solve(rhs1);
+        M.solve(rhs2);
+        for (unsigned int m = 0; m < n; ++m)
+          {
+            const auto &c = column(delta[m]);
+            t.U1.add(rhs1[m], c.first);
+            t.U2.add(rhs2[m], c.first);
+            t.AU1.add(rhs1[m], c.second);
+            t.AU2.add(rhs2[m], c.second);
+          }
+      }
+    t.depth = -t.AU2[edge] / t.AU1[edge];
+    for (const auto d : t.active)
+      {
+        t.F1 += t.AU1[d];
+        t.F2 += t.AU2[d];
+      }
+    return t;
   }
 
 
@@ -572,14 +755,18 @@ namespace gradcontact::fem
     result.n_cells        = triangulation.n_active_cells();
     result.mesh           = mesh_info;
     result.contact_radius = a;
+    result.edge_node_radius = a;
 
     const auto     start = std::chrono::steady_clock::now();
     const unsigned m     = contact_dofs.size();
     const Vector<double> no_load(dof_handler.n_dofs());
     Vector<double>       u, reaction;
+    // The DoFs with prescribed u_z (the contact) and their values g.
+    std::vector<types::global_dof_index> active = contact_dofs;
     std::vector<double>  g(m);
     double               work = 0; // work of the prescribed displacements and loads, per 2 pi
     bool                 constrained = true;
+    double               contact_edge = a;
 
     switch (load.type)
       {
@@ -615,6 +802,140 @@ namespace gradcontact::fem
             result.depth = d;
             break;
           }
+        case LoadType::indenter_depth:
+        case LoadType::indenter_force:
+          {
+            // The discrete contact set is {r <= r_j}, r_j a surface vertex; its radius-controlled depth
+            // d_j and force F_j* = F(d_j) grow with j. Find the last j with d_j <= d (depth control) or
+            // F_j* <= F (force control): search outward or inward from the mesh's contact radius with
+            // doubling steps until bracketed, then bisect. The state is that set at the given d (or at
+            // the d that gives F): its edge node is in compression, the next vertex is not in contact.
+            std::vector<double> g1(m, 1.0), g2(m);
+            for (unsigned int i = 0; i < m; ++i)
+              g2[i] = -load.profile(contact_r[i], a);
+            Vector<double> Au1, Au2;
+            const Vector<double> u1 = solve(true, g1, no_load, Au1, result.time.factorize);
+            double               unused;
+            const Vector<double> u2 = solve(true, g2, no_load, Au2, unused);
+            const bool   by_depth = load.type == LoadType::indenter_depth;
+            const double target   = by_depth ? load.depth : load.force / (2 * numbers::PI);
+            std::map<unsigned int, TrialSet> trials;
+            auto key = [&](const unsigned int j) {
+              auto it = trials.find(j);
+              if (it == trials.end())
+                {
+                  if (trials.size() >= max_control_iterations)
+                    {
+                      std::ostringstream msg;
+                      msg << "depth/force control did not converge: " << trials.size()
+                          << " trial contact sets, the last with " << trials.rbegin()->second.active.size()
+                          << " contact DoFs (edge r = " << surface_vertex_r[trials.rbegin()->first] << ")";
+                      throw std::runtime_error(msg.str());
+                    }
+                  try
+                    {
+                      it = trials.emplace(j, trial_set(j, load.profile, u1, u2, Au1, Au2)).first;
+                    }
+                  catch (const std::runtime_error &e)
+                    {
+                      std::ostringstream msg;
+                      msg << "depth/force control stopped after " << trials.size()
+                          << " trial contact sets (last set: "
+                          << (trials.empty() ? 0 : trials.rbegin()->second.active.size())
+                          << " contact DoFs): " << e.what();
+                      throw std::runtime_error(msg.str());
+                    }
+                }
+              const TrialSet &t = it->second;
+              return by_depth ? t.depth : t.depth * t.F1 + t.F2;
+            };
+            const unsigned int j_a =
+              std::lower_bound(surface_vertex_r.begin(), surface_vertex_r.end(), a * (1 - node_tolerance)) -
+              surface_vertex_r.begin();
+            // Largest index a contact can reach: the vertices inside the near field.
+            const unsigned int j_max =
+              std::upper_bound(surface_vertex_r.begin(), surface_vertex_r.end(),
+                               mesh_parameters.near_field_size * a) - surface_vertex_r.begin() - 1;
+            unsigned int lo, hi; // key(lo) <= target < key(hi)
+            auto fail_bracket = [&](const std::string &why) {
+              std::ostringstream msg;
+              msg << "depth/force control: " << why << " (" << (by_depth ? "depth " : "force ")
+                  << (by_depth ? load.depth : load.force) << ", " << trials.size()
+                  << " trial contact sets, the last with "
+                  << (trials.empty() ? 0 : trials.rbegin()->second.active.size()) << " contact DoFs)";
+              throw std::runtime_error(msg.str());
+            };
+            // First guess from the scaling of the mesh's own radius-controlled state: d ~ a^n and
+            // F ~ a^{n+1+s} (s the surface exponent of E; exact for the power-law half-space, a guess
+            // otherwise). Only the start of the search: the bracket below decides.
+            const double exponent =
+              load.profile.exponent() + (by_depth ? 0.0 : 1.0 + material.modulus->surface_exponent());
+            const double r_guess = a * std::pow(target / key(j_a), 1.0 / exponent);
+            if (r_guess > mesh_parameters.near_field_size * a)
+              fail_bracket("the contact radius, estimated " + std::to_string(r_guess / a) +
+                           " a, would leave the near field r <= " +
+                           std::to_string(mesh_parameters.near_field_size) + " a");
+            unsigned int start_vertex =
+              std::lower_bound(surface_vertex_r.begin(), surface_vertex_r.end(), r_guess) -
+              surface_vertex_r.begin();
+            start_vertex = std::clamp(start_vertex, 1u, j_max);
+            if (key(start_vertex) <= target)
+              {
+                lo = start_vertex;
+                unsigned int step = 1;
+                while (true)
+                  {
+                    if (lo == j_max)
+                      fail_bracket("the contact would leave the near field r <= " +
+                                   std::to_string(mesh_parameters.near_field_size) + " a");
+                    hi = std::min(lo + step, j_max);
+                    if (key(hi) > target)
+                      break;
+                    lo = hi;
+                    step *= 2;
+                  }
+              }
+            else
+              {
+                hi = start_vertex;
+                unsigned int step = 1;
+                while (true)
+                  {
+                    if (hi <= 1)
+                      fail_bracket("no contact beyond the axis node: the load is too small for this mesh");
+                    lo = (hi > step + 1) ? hi - step : 1;
+                    if (key(lo) <= target)
+                      break;
+                    hi = lo;
+                    step *= 2;
+                  }
+              }
+            while (hi - lo > 1)
+              {
+                const unsigned int mid = (lo + hi) / 2;
+                (key(mid) <= target ? lo : hi) = mid;
+              }
+            const TrialSet &t = trials.at(lo);
+            const double    d = by_depth ? load.depth : (target - t.F2) / t.F1;
+            u                 = t.U2;
+            u.add(d, t.U1);
+            reaction = t.AU2;
+            reaction.add(d, t.AU1);
+            active = t.active;
+            g.resize(active.size());
+            for (unsigned int i = 0; i < active.size(); ++i)
+              g[i] = d - load.profile(dof_r[active[i]], a);
+            result.depth = d;
+            // The transition radius between the vertex in contact and the next one out.
+            const double key_lo = key(lo), key_hi = key(hi);
+            const double value  = by_depth ? d : target;
+            contact_edge = surface_vertex_r[lo];
+            result.edge_node_radius = contact_edge;
+            result.contact_radius =
+              surface_vertex_r[lo] + (surface_vertex_r[hi] - surface_vertex_r[lo]) * (value - key_lo) / (key_hi - key_lo);
+            result.iterations = trials.size();
+            break;
+          }
         case LoadType::constant_pressure:
           {
             constrained              = false;
@@ -626,14 +947,15 @@ namespace gradcontact::fem
             break;
           }
       }
+    result.active_set_size = constrained ? active.size() : 0;
 
     // Force from the reaction (prescribed displacement) or from the load (pressure).
     double force = 0;
     if (constrained)
-      for (unsigned int i = 0; i < m; ++i)
+      for (unsigned int i = 0; i < active.size(); ++i)
         {
-          force += reaction[contact_dofs[i]];
-          work += reaction[contact_dofs[i]] * g[i];
+          force += reaction[active[i]];
+          work += reaction[active[i]] * g[i];
         }
     else
       force = load.pressure * a * a / 2; // \int_0^a p0 r dr
@@ -662,27 +984,27 @@ namespace gradcontact::fem
       {
         // Consistency of the contact: nodal forces >= 0 in the contact, gap >= 0 outside.
         double max_force = 0, min_force = std::numeric_limits<double>::max();
-        for (const auto d : contact_dofs)
+        for (const auto d : active)
           {
             max_force = std::max(max_force, std::abs(reaction[d]));
             min_force = std::min(min_force, reaction[d]);
           }
         result.min_relative_contact_force = min_force / max_force;
         double min_gap = std::numeric_limits<double>::max();
-        if (load.type == LoadType::indenter)
-          for (const SurfaceFace &face : surface_faces)
-            if (!face.contact)
-              for (unsigned int i = 0; i < face.dofs.size(); ++i)
-                if (face.r[i] > a * (1 + node_tolerance))
-                  min_gap = std::min(min_gap, (u[face.dofs[i]] - (result.depth - load.profile(face.r[i], a))) /
-                                                std::abs(result.depth));
+        if (load.type == LoadType::indenter || load.type == LoadType::indenter_depth ||
+            load.type == LoadType::indenter_force)
+          for (const auto d : surface_dofs)
+            if (dof_r[d] > contact_edge * (1 + node_tolerance))
+              min_gap = std::min(min_gap, (u[d] - (result.depth - load.profile(dof_r[d], a))) /
+                                            std::abs(result.depth));
         result.min_relative_gap = (min_gap == std::numeric_limits<double>::max()) ? 0 : min_gap;
         std::ostringstream msg;
         if (result.min_relative_contact_force < -consistency_tolerance)
           msg << (load.type == LoadType::concave_punch ? "contact is not complete: " : "")
               << "tensile nodal contact force (min/max = " << result.min_relative_contact_force << "); ";
         if (result.min_relative_gap < -consistency_tolerance)
-          msg << "penetration outside r = a (min gap / d = " << result.min_relative_gap << "); ";
+          msg << "penetration outside r = " << contact_edge << " (min gap / d = " << result.min_relative_gap
+              << "); ";
         result.consistent_contact = msg.str().empty();
         result.message += msg.str();
       }
@@ -691,16 +1013,16 @@ namespace gradcontact::fem
       {
         std::vector<double> p;
         if (constrained)
-          p = recover_pressure(reaction);
+          p = recover_pressure(reaction, contact_edge);
         for (const double r : outputs.pressure_radii)
           result.pressure.push_back(
-            {r, constrained ? evaluate_on_surface(p, r, true) : (r <= a ? load.pressure : 0.0)});
+            {r, constrained ? evaluate_on_surface(p, r, contact_edge) : (r <= a ? load.pressure : 0.0)});
       }
     if (!outputs.displacement_radii.empty())
       {
         const std::vector<double> nodal(u.begin(), u.end());
         for (const double r : outputs.displacement_radii)
-          result.displacement.push_back({r, evaluate_on_surface(nodal, r, false)});
+          result.displacement.push_back({r, evaluate_on_surface(nodal, r)});
       }
     if (!outputs.vtu_file.empty())
       output_results(u, outputs.vtu_file);

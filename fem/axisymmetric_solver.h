@@ -55,6 +55,7 @@
 #include <deal.II/lac/sparsity_pattern.h>
 #include <deal.II/lac/vector.h>
 
+#include <map>
 #include <memory>
 #include <string>
 #include <vector>
@@ -69,6 +70,20 @@ namespace gradcontact::fem
 
     void validate() const;
   };
+
+  /// A mesh and a discretisation chosen together.
+  struct Settings
+  {
+    MeshParameters           mesh;
+    DiscretizationParameters discretization;
+  };
+
+  /// The measured cheapest settings (fem/README.md, "Flat-punch accuracy") for a modulus E ~ z^s at the
+  /// surface and a wanted relative force error. force_tolerance >= 1e-6: degree 3, h_edge = 1e-5 a,
+  /// rings g = 1.15 (flat punch 3.8e-7 / 7.9e-7 / 2.1e-6 for k = -0.5 / 0 / 0.5). Below: degree 4,
+  /// h_edge = 1e-6 a, h_far = 4 a, g = 1.3 (k = 0: 5.2e-8 in about 2 s; k = -0.5: 1.1e-7 in 6 s; k = 0.5
+  /// stays near 1e-6, limited by the u_z ~ z^{1-k} surface layer), and z-halvings only under r <= a.
+  Settings recommended_settings(double contact_radius, double surface_exponent, double force_tolerance);
 
   /// A rigid axisymmetric indenter profile f(r), f(0) = 0, z into the material.
   struct Profile
@@ -94,6 +109,8 @@ namespace gradcontact::fem
 
     /// f(r); `a` is the punch radius (used by the concave paraboloid only).
     double operator()(double r, double a) const;
+    /// The power n of f ~ r^n (2, 1, n; 2 for the concave paraboloid).
+    double exponent() const;
     void   validate() const;
   };
 
@@ -101,6 +118,8 @@ namespace gradcontact::fem
   {
     flat_punch,       ///< prescribed depth d on r <= a
     indenter,         ///< curved indenter, contact radius a (mesh), depth found
+    indenter_depth,   ///< curved indenter at a given depth, contact radius found on the same mesh
+    indenter_force,   ///< curved indenter at a given force, depth and contact radius found
     concave_punch,    ///< concave paraboloid, centre displacement d0, complete contact checked
     constant_pressure ///< p0 on r <= a
   };
@@ -108,7 +127,8 @@ namespace gradcontact::fem
   struct LoadCase
   {
     LoadType type     = LoadType::flat_punch;
-    double   depth    = 0.0; ///< d (flat punch) or d0 (concave punch)
+    double   depth    = 0.0; ///< d (flat punch, indenter_depth) or d0 (concave punch)
+    double   force    = 0.0; ///< F_N (indenter_force)
     Profile  profile;        ///< indenter and concave punch
     double   pressure = 0.0; ///< p0 (constant pressure)
 
@@ -139,7 +159,12 @@ namespace gradcontact::fem
   struct Result
   {
     double force          = 0; ///< F_N, compressive positive
-    double contact_radius = 0; ///< a (the mesh's, under contact-radius control)
+    double contact_radius = 0; ///< a (the mesh's under contact-radius control; found under depth or
+                               ///< force control, linearly interpolated between the last node in
+                               ///< contact and the first one out)
+    double edge_node_radius = 0;  ///< r of the outermost surface vertex in contact
+    unsigned int active_set_size = 0; ///< surface z-DoFs in contact
+    unsigned int iterations      = 0; ///< trial contact sets (depth or force control), else 0
     double depth          = 0; ///< d; d0 for the concave punch; w_c for constant pressure
     std::vector<Sample> pressure;     ///< p(r), compressive positive
     std::vector<Sample> displacement; ///< w(r) = u_z(r, 0), into the material positive
@@ -193,8 +218,27 @@ namespace gradcontact::fem
                                  const dealii::Vector<double> &b, dealii::Vector<double> &reaction,
                                  double &factorize_seconds);
     dealii::Vector<double> pressure_load(double p0) const;
-    std::vector<double>    recover_pressure(const dealii::Vector<double> &reaction) const;
-    double evaluate_on_surface(const std::vector<double> &nodal, double r, bool contact_only) const;
+    std::vector<double>    recover_pressure(const dealii::Vector<double> &reaction, double edge) const;
+    double evaluate_on_surface(const std::vector<double> &nodal, double r, double contact_edge = -1) const;
+
+    /// Depth or force control on this mesh: the contact set {r <= r_j}, r_j a surface vertex, is found
+    /// by a bracketing search over j; each trial is the radius-controlled state of that set, built from
+    /// the contact-constrained factorisation by a small dense correction (see the .cc).
+    struct TrialSet
+    {
+      unsigned int                                 vertex;   ///< index into surface_vertex_r
+      std::vector<dealii::types::global_dof_index> active;   ///< surface z-DoFs in contact
+      dealii::Vector<double> U1, U2;   ///< u = d U1 + U2
+      dealii::Vector<double> AU1, AU2; ///< A U1, A U2 (contact forces on `active`)
+      double depth = 0;                ///< d at which the edge node carries no force
+      double F1 = 0, F2 = 0;           ///< F(d) / (2 pi) = d F1 + F2
+    };
+    TrialSet trial_set(unsigned int vertex, const Profile &profile, const dealii::Vector<double> &u1,
+                       const dealii::Vector<double> &u2, const dealii::Vector<double> &Au1,
+                       const dealii::Vector<double> &Au2);
+    /// The column for modifying the surface z-DoF `dof`: prescribed value 1 (dof in the contact
+    /// zone of the mesh) or unit point load (outside), all other contact DoFs held at 0. Cached.
+    const std::pair<dealii::Vector<double>, dealii::Vector<double>> &column(dealii::types::global_dof_index dof);
     void   output_results(const dealii::Vector<double> &u, const std::string &filename) const;
 
     const Material                 material;
@@ -217,6 +261,10 @@ namespace gradcontact::fem
     std::vector<double>                          contact_r;
     std::vector<SurfaceFace>                     surface_faces; ///< ascending r
     std::vector<double>                          dof_r;         ///< r of every DoF (support point)
+    std::vector<dealii::types::global_dof_index> surface_dofs;  ///< z-DoFs on z = 0, ascending r
+    std::vector<double>                          surface_vertex_r; ///< vertices on z = 0, ascending
+    /// (column, A column) per modified surface DoF, load independent (TrialSet).
+    std::map<dealii::types::global_dof_index, std::pair<dealii::Vector<double>, dealii::Vector<double>>> columns;
     Timings                                      setup_time;
   };
 } // namespace gradcontact::fem

@@ -317,6 +317,8 @@ namespace gradcontact::fem
       fail("near_field_size", near_field_size, "[1.5, inf) (R1 / a)");
     if (!(h_edge > 0 && h_edge <= h_surface))
       fail("h_edge", h_edge, "(0, h_surface]");
+    if (axis_refinements > 40)
+      fail("axis_refinements", axis_refinements, "[0, 40]");
     if (!(h_surface > 0 && h_surface <= 1.0))
       fail("h_surface", h_surface, "(0, 1]");
     if (!(h_far >= h_surface && h_far <= near_field_size))
@@ -396,6 +398,18 @@ namespace gradcontact::fem
         for (const auto &cell : tria.active_cell_iterators())
           for (const unsigned int v : cell->vertex_indices())
             if (cell->vertex(v).distance(edge) < on_line_tolerance * a)
+              cell->set_refine_flag();
+        tria.execute_coarsening_and_refinement();
+      }
+
+    // Step 3a': the same at the surface point of the axis (0, 0), where the pressure of a cone (and of
+    // f ~ r^n, n < 2) is singular.
+    const Point<2> centre(0.0, 0.0);
+    for (unsigned int cycle = 0; cycle < p.axis_refinements; ++cycle)
+      {
+        for (const auto &cell : tria.active_cell_iterators())
+          for (const unsigned int v : cell->vertex_indices())
+            if (cell->vertex(v).distance(centre) < on_line_tolerance * a)
               cell->set_refine_flag();
         tria.execute_coarsening_and_refinement();
       }

@@ -44,7 +44,7 @@ int main(int argc, char **argv)
       mesh.h_edge         = num("h_edge", mesh.h_edge);
       mesh.h_surface      = num("h_surface", mesh.h_surface);
       mesh.h_far          = num("h_far", mesh.h_far);
-      mesh.h_axis         = num("h_axis", mesh.h_axis);
+      mesh.axis_refinements = static_cast<unsigned>(num("axis_refinements", 0));
       mesh.ring_growth    = num("g", mesh.ring_growth);
       mesh.far_field_size = num("L", mesh.far_field_size);
       mesh.surface_layer_thickness = num("layer", mesh.surface_layer_thickness);
