@@ -31,8 +31,11 @@ namespace
            "commands:\n"
            "  eval [file]              evaluate JSON Lines requests from file (or stdin), one answer\n"
            "                           line per request (vocabulary: analytic/README.md)\n"
-           "  run <scene|folder> ...   run scenes and write reports/ (options: --reports DIR,\n"
-           "                           --quiet, --verbose)\n"
+           "  run <scene|folder> ...   run scenes (.prm, .jsonl) and write reports/ (options:\n"
+           "                           --set Section/key=value, --reports DIR, --quiet, --verbose,\n"
+           "                           --help-scene lists every scene entry)\n"
+           "  sweep <scene.prm> --over Section/key=v1,v2,...\n"
+           "                           run a scene once per value (same options as run)\n"
            "  bench [--reports DIR] [--repeat N]\n"
            "                           work-precision benchmarks -> reports/benchmarks/\n"
            "  --help                   this text\n";
@@ -71,6 +74,8 @@ int main(int argc, char **argv)
         return eval(args);
       if (command == "run")
         return gradcontact::cases::run(args);
+      if (command == "sweep")
+        return gradcontact::cases::sweep(args);
       if (command == "bench")
         return gradcontact::cases::bench(args);
       std::cerr << "gradcontact: unknown command '" << command << "'\n";

@@ -1,5 +1,9 @@
 #include "runner.h"
 
+#include "fe_scene.h"
+#include "report.h"
+#include "scene.h"
+
 #include <analytic/batch.hpp>
 
 #include <nlohmann/json.hpp>
@@ -7,7 +11,6 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <iomanip>
@@ -26,96 +29,91 @@ namespace gradcontact::cases
     struct Options
     {
       std::vector<fs::path> scenes;
+      std::vector<Override> overrides;
       fs::path reports = "reports";
       bool quiet = false;
       bool verbose = false;
     };
 
-    /// One comparison: a value against a reference, with its error and tolerance (STYLE rule 7).
-    struct Row
+    void add_scenes(Options &o, const std::string &a)
     {
-      std::string name, case_name, quantity;
-      double reference = 0., value = 0., abs_error = 0., rel_error = 0., tolerance = 0.;
-      bool pass = false;
-      std::string error; // non-empty when either side failed to evaluate
-      double milliseconds = 0.;
-    };
+      const fs::path p(a);
+      if (fs::is_directory(p))
+        {
+          std::vector<fs::path> found;
+          for (const auto &entry : fs::directory_iterator(p))
+            if (entry.path().extension() == ".jsonl" || entry.path().extension() == ".prm")
+              found.push_back(entry.path());
+          std::sort(found.begin(), found.end());
+          if (found.empty())
+            throw std::invalid_argument("run: folder '" + a + "' holds no scene (*.prm, *.jsonl)");
+          o.scenes.insert(o.scenes.end(), found.begin(), found.end());
+        }
+      else if (fs::is_regular_file(p))
+        {
+          if (p.extension() != ".prm" && p.extension() != ".jsonl")
+            throw std::invalid_argument("run: '" + a + "' is not a scene (*.prm or *.jsonl)");
+          o.scenes.push_back(p);
+        }
+      else
+        throw std::invalid_argument("run: no scene file or folder '" + a + "'");
+    }
 
-    struct SceneResult
-    {
-      std::string name;
-      std::vector<Row> rows;
-      double seconds = 0.;
-      bool pass() const
-      {
-        return std::all_of(rows.begin(), rows.end(), [](const Row &r) { return r.pass; });
-      }
-    };
-
-    Options parse(const std::vector<std::string> &args)
+    Options parse(const std::vector<std::string> &args, std::vector<std::string> *rest = nullptr)
     {
       Options o;
       for (std::size_t i = 0; i < args.size(); ++i)
         {
           const std::string &a = args[i];
+          const auto value = [&]() {
+            if (i + 1 == args.size())
+              throw std::invalid_argument("run: " + a + " needs a value");
+            return args[++i];
+          };
           if (a == "--reports")
-            {
-              if (i + 1 == args.size())
-                throw std::invalid_argument("run: --reports needs a folder");
-              o.reports = args[++i];
-            }
+            o.reports = value();
+          else if (a == "--set")
+            o.overrides.push_back(parse_override(value()));
           else if (a == "--quiet")
             o.quiet = true;
           else if (a == "--verbose")
             o.verbose = true;
+          else if (a == "--help-scene")
+            {
+              std::cout << scene_documentation();
+              std::exit(0);
+            }
+          else if (rest && a == "--over")
+            {
+              rest->push_back(a);
+              rest->push_back(value());
+            }
           else if (!a.empty() && a[0] == '-')
             throw std::invalid_argument("run: unknown option '" + a + "'");
           else
-            {
-              const fs::path p(a);
-              if (fs::is_directory(p))
-                {
-                  std::vector<fs::path> found;
-                  for (const auto &entry : fs::directory_iterator(p))
-                    if (entry.path().extension() == ".jsonl")
-                      found.push_back(entry.path());
-                  std::sort(found.begin(), found.end());
-                  if (found.empty())
-                    throw std::invalid_argument("run: folder '" + a + "' holds no scene (*.jsonl)");
-                  o.scenes.insert(o.scenes.end(), found.begin(), found.end());
-                }
-              else if (fs::is_regular_file(p))
-                o.scenes.push_back(p);
-              else
-                throw std::invalid_argument("run: no scene file or folder '" + a + "'");
-            }
+            add_scenes(o, a);
         }
       if (o.scenes.empty())
         throw std::invalid_argument("run: name at least one scene file or folder");
       return o;
     }
 
-    std::string format(const double x)
-    {
-      char b[32];
-      std::snprintf(b, sizeof b, "%.10g", x);
-      return b;
-    }
-
     SceneResult run_analytic_check(const fs::path &scene)
     {
       SceneResult result;
       result.name = scene.stem().string();
+      result.kind = "jsonl";
+      result.description = "Closed forms against the numerical MDR (" + scene.filename().string() + ").";
       std::ifstream in(scene);
       if (!in)
         throw std::runtime_error("cannot open scene '" + scene.string() + "'");
-      std::string line;
-      int number = 0;
       const auto start = std::chrono::steady_clock::now();
-      while (std::getline(in, line))
+      int number = 0;
+      for (std::string line; std::getline(in, line);)
         {
           ++number;
-          if (line.find_first_not_of(" \t\r") == std::string::npos || line[line.find_first_not_of(" \t")] == '#')
+          const auto first = line.find_first_not_of(" \t\r");
+          if (first == std::string::npos || line[first] == '#')
             continue;
           json j;
           try
@@ -124,28 +122,31 @@ namespace gradcontact::cases
             }
           catch (const json::exception &e)
             {
-              throw std::runtime_error(scene.string() + ":" + std::to_string(number) + ": not valid JSON (" +
-                                       e.what() + ")");
+              throw std::runtime_error(scene.string() + ":" + std::to_string(number) + ": not valid JSON (" + e.what() + ")");
             }
           Row row;
-          row.name = j.value("name", scene.stem().string() + ":" + std::to_string(number));
-          row.case_name = j.value("case", "");
-          row.quantity = j.value("quantity", "");
+          row.quantity = j.value("case", "") + "/" + j.value("quantity", "");
+          row.metric = j.value("name", scene.stem().string() + ":" + std::to_string(number));
+          row.method = "closed form";
+          row.reference = "numerical MDR";
           row.tolerance = j.value("tolerance", 1e-9);
           const double floor = j.value("abs_floor", 0.);
           for (const char *key : {"name", "tolerance", "abs_floor", "method"})
             j.erase(key);
-          const auto t0 = std::chrono::steady_clock::now();
           j["method"] = "closed_form";
+          const auto t0 = std::chrono::steady_clock::now();
           const batch::Answer closed = batch::evaluate(j.dump());
+          row.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
           j["method"] = "numerical_mdr";
           const batch::Answer numeric = batch::evaluate(j.dump());
-          row.milliseconds = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
           if (!closed.ok || !numeric.ok)
-            row.error = !closed.ok ? "closed form: " + closed.error : "numerical MDR: " + numeric.error;
+            {
+              row.error = !closed.ok ? "closed form: " + closed.error : "numerical MDR: " + numeric.error;
+              row.rel_error = INFINITY;
+            }
           else
             {
-              row.reference = numeric.value;
+              row.reference_value = numeric.value;
               row.value = closed.value;
               row.abs_error = std::abs(closed.value - numeric.value);
               row.rel_error = row.abs_error / std::max(std::abs(numeric.value), 1e-300);
@@ -157,46 +158,61 @@ namespace gradcontact::cases
       return result;
     }
 
-    void write_report(const SceneResult &s, const fs::path &folder)
+    /// Runs one scene (with overrides) and writes its report atomically; `suffix` names sweep variants.
+    SceneResult run_one(const fs::path &file, const std::vector<Override> &overrides, const Options &o,
+                        const std::string &suffix = "")
     {
-      std::ofstream csv(folder / "errors.csv");
-      csv << "name,case,quantity,reference_numerical_mdr,value_closed_form,abs_error,rel_error,tolerance,pass,"
-             "milliseconds,error\n";
-      std::ofstream md(folder / "errors.md");
-      md << "# " << s.name << ": closed form against the numerical MDR\n\n"
-         << "| name | case | quantity | numerical MDR | closed form | rel. error | tolerance | pass | ms |\n"
-         << "|---|---|---|---|---|---|---|---|---|\n";
-      for (const Row &r : s.rows)
+      if (file.extension() == ".jsonl")
         {
-          csv << r.name << ',' << r.case_name << ',' << r.quantity << ',' << std::setprecision(17) << r.reference
-              << ',' << r.value << ',' << r.abs_error << ',' << r.rel_error << ',' << r.tolerance << ','
-              << (r.pass ? "pass" : "FAIL") << ',' << r.milliseconds << ",\"" << r.error << "\"\n";
-          md << "| " << r.name << " | " << r.case_name << " | " << r.quantity << " | "
-             << (r.error.empty() ? format(r.reference) : "error") << " | "
-             << (r.error.empty() ? format(r.value) : r.error) << " | " << format(r.rel_error) << " | "
-             << format(r.tolerance) << " | " << (r.pass ? "pass" : "**FAIL**") << " | " << format(r.milliseconds)
-             << " |\n";
+          if (!overrides.empty())
+            throw std::invalid_argument("run: --set applies to .prm scenes, not to " + file.string());
+          SceneResult s = run_analytic_check(file);
+          atomic_folder(o.reports / s.name, [&](const fs::path &tmp) { write_errors(s, tmp); });
+          return s;
         }
+      Scene scene = read_scene(file.string(), overrides);
+      scene.info.name += suffix;
+      SceneResult s;
+      atomic_folder(o.reports / scene.info.name, [&](const fs::path &tmp) {
+        s = run_prm_scene(scene, tmp, o.verbose);
+        write_errors(s, tmp);
+      });
+      return s;
     }
 
-    // Writes `folder` through a temporary sibling, replacing the old report only when complete.
-    template <class Writer>
-    void atomic_folder(const fs::path &folder, const Writer &writer)
+    void print(const SceneResult &s, const Options &o)
     {
-      const fs::path tmp = folder.parent_path() / ("." + folder.filename().string() + ".tmp");
-      fs::remove_all(tmp);
-      fs::create_directories(tmp);
-      try
-        {
-          writer(tmp);
-        }
-      catch (...)
-        {
-          fs::remove_all(tmp);
-          throw;
-        }
-      fs::remove_all(folder);
-      fs::rename(tmp, folder);
+      if (o.quiet)
+        return;
+      std::cout << (s.pass() ? "pass " : "FAIL ") << s.name << ": " << s.rows.size() << " comparisons, worst error "
+                << format(s.worst_error()) << ", " << format(s.seconds) << " s\n";
+      if (o.verbose || !s.pass())
+        for (const Row &r : s.rows)
+          if (o.verbose || !r.pass)
+            std::cout << "  " << (r.pass ? "pass " : "FAIL ") << r.quantity << " [" << r.metric << "] " << r.method
+                      << " vs " << r.reference << ": " << (r.error.empty() ? format(r.rel_error) : r.error) << "\n";
+    }
+
+    int finish(const std::vector<SceneResult> &results, const Options &o)
+    {
+      const fs::path summary = o.reports / "summary.md";
+      const fs::path tmp = o.reports / ".summary.md.tmp";
+      {
+        std::ofstream md(tmp);
+        md << "# gradcontact summary\n\n| scene | comparisons | worst error | failed | seconds | report |\n"
+              "|---|---|---|---|---|---|\n";
+        for (const SceneResult &s : results)
+          {
+            const auto failed = std::count_if(s.rows.begin(), s.rows.end(), [](const Row &r) { return !r.pass; });
+            md << "| " << s.name << " | " << s.rows.size() << " | " << format(s.worst_error()) << " | " << failed
+               << " | " << format(s.seconds) << " | [" << s.name << "/errors.md](" << s.name << "/errors.md) |\n";
+          }
+      }
+      fs::rename(tmp, summary);
+      const bool all_pass = std::all_of(results.begin(), results.end(), [](const SceneResult &s) { return s.pass(); });
+      if (!o.quiet)
+        std::cout << "summary: " << summary.string() << (all_pass ? " (all pass)" : " (FAILURES)") << "\n";
+      return all_pass ? 0 : 1;
     }
   } // namespace
 
@@ -210,52 +226,40 @@ namespace gradcontact::cases
     for (std::size_t i = 0; i < o.scenes.size(); ++i)
       {
         if (progress)
-          std::cerr << "[" << i + 1 << "/" << o.scenes.size() << "] " << o.scenes[i].string() << " ("
-                    << std::fixed << std::setprecision(1)
-                    << std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count()
-                    << " s)\n";
-        SceneResult s = run_analytic_check(o.scenes[i]);
-        atomic_folder(o.reports / s.name, [&](const fs::path &tmp) { write_report(s, tmp); });
-        if (!o.quiet)
-          {
-            double worst = 0.;
-            for (const Row &r : s.rows)
-              worst = std::max(worst, r.error.empty() ? r.rel_error : INFINITY);
-            std::cout << (s.pass() ? "pass " : "FAIL ") << s.name << ": " << s.rows.size()
-                      << " comparisons, worst relative error " << format(worst) << ", " << format(s.seconds)
-                      << " s\n";
-            if (o.verbose)
-              for (const Row &r : s.rows)
-                std::cout << "  " << (r.pass ? "pass " : "FAIL ") << r.name << " " << r.case_name << "/"
-                          << r.quantity << " rel " << format(r.rel_error) << (r.error.empty() ? "" : " " + r.error)
-                          << "\n";
-          }
-        results.push_back(std::move(s));
+          std::cerr << "[" << i + 1 << "/" << o.scenes.size() << "] " << o.scenes[i].string() << " (" << std::fixed
+                    << std::setprecision(1)
+                    << std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() << " s)\n"
+                    << std::defaultfloat;
+        results.push_back(run_one(o.scenes[i], o.overrides, o));
+        print(results.back(), o);
       }
-    const fs::path summary = o.reports / "summary.md";
-    const fs::path tmp = o.reports / ".summary.md.tmp";
-    {
-      std::ofstream md(tmp);
-      md << "# gradcontact summary\n\n| scene | comparisons | worst rel. error | failed | seconds | report |\n"
-            "|---|---|---|---|---|---|\n";
-      for (const SceneResult &s : results)
-        {
-          double worst = 0.;
-          int failed = 0;
-          for (const Row &r : s.rows)
-            {
-              worst = std::max(worst, r.error.empty() ? r.rel_error : INFINITY);
-              failed += r.pass ? 0 : 1;
-            }
-          md << "| " << s.name << " | " << s.rows.size() << " | " << format(worst) << " | " << failed << " | "
-             << format(s.seconds) << " | [" << s.name << "/errors.md](" << s.name << "/errors.md) |\n";
-        }
-    }
-    fs::rename(tmp, summary);
-    const bool all_pass =
-      std::all_of(results.begin(), results.end(), [](const SceneResult &s) { return s.pass(); });
-    if (!o.quiet)
-      std::cout << "summary: " << summary.string() << (all_pass ? " (all pass)" : " (FAILURES)") << "\n";
-    return all_pass ? 0 : 1;
+    return finish(results, o);
+  }
+
+  int sweep(const std::vector<std::string> &args)
+  {
+    std::vector<std::string> over;
+    const Options o = parse(args, &over);
+    if (o.scenes.size() != 1 || o.scenes.front().extension() != ".prm")
+      throw std::invalid_argument("sweep: name exactly one .prm scene");
+    if (over.size() != 2)
+      throw std::invalid_argument("sweep: give one --over Section/key=v1,v2,...");
+    const Override base = parse_override(over[1]);
+    std::vector<std::string> values;
+    std::stringstream list(base.value);
+    for (std::string v; std::getline(list, v, ',');)
+      values.push_back(v);
+    if (values.empty())
+      throw std::invalid_argument("sweep: --over " + over[1] + " lists no value");
+    fs::create_directories(o.reports);
+    std::vector<SceneResult> results;
+    for (const std::string &v : values)
+      {
+        std::vector<Override> overrides = o.overrides;
+        overrides.push_back({base.path, v});
+        results.push_back(run_one(o.scenes.front(), overrides, o, "-" + base.path.back() + "=" + v));
+        print(results.back(), o);
+      }
+    return finish(results, o);
   }
 } // namespace gradcontact::cases

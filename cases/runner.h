@@ -1,11 +1,14 @@
 // gradcontact/cases: the one runner.
 //
-// A scene is data; the runner is code. Scene kinds so far:
-//   *.jsonl  analytic check: each line is an eval request (analytic/README.md) plus optional
-//            "name", "tolerance" (relative, default 1e-9) and "abs_floor"; the runner evaluates the
-//            closed form and the numerical MDR for it and reports their difference.
-// Reports go to <reports>/<scene>/ (errors.csv, errors.md) and <reports>/summary.md, written under a
-// temporary name and renamed at the end, so that a failed run leaves no half-written report.
+// Scene kinds:
+//   *.prm    a deal.II ParameterHandler scene (scene.h): the FE model of the graded half-space against
+//            the closed form and/or the numerical MDR (or, with References/fem = false, the closed
+//            form against the numerical MDR only).
+//   *.jsonl  an analytic check: each line an eval request (analytic/README.md) plus optional "name",
+//            "tolerance" (relative, default 1e-9) and "abs_floor": closed form against numerical MDR.
+// Reports go to <reports>/<scene>/ (errors.csv, errors.md, convergence.*, plots with their data and
+// gnuplot scripts, parameters.prm) and <reports>/summary.md, each written under a temporary name and
+// renamed when complete, so that a failed run leaves no half-written report.
 #pragma once
 
 #include <string>
@@ -15,4 +18,7 @@ namespace gradcontact::cases
 {
   /// `gradcontact run` with its arguments; returns the exit code (non-zero when a comparison fails).
   int run(const std::vector<std::string> &args);
+
+  /// `gradcontact sweep <scene.prm> --over Section/key=v1,v2,... [run options]`.
+  int sweep(const std::vector<std::string> &args);
 } // namespace gradcontact::cases

@@ -1,0 +1,471 @@
+#include "fe_scene.h"
+
+#include <analytic/batch.hpp>
+#include <fem/axisymmetric_solver.h>
+
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <fstream>
+#include <iostream>
+#include <optional>
+#include <stdexcept>
+
+namespace gradcontact::cases
+{
+  namespace fs = std::filesystem;
+  using json = nlohmann::json;
+  using Type = LoadParameters::Type;
+  using Control = LoadParameters::Control;
+
+  namespace
+  {
+    bool curved(const LoadParameters &l)
+    {
+      return l.type == Type::paraboloid || l.type == Type::cone || l.type == Type::power_law;
+    }
+
+    // --- the analytic side: eval requests built from the scene (analytic/README.md) ------------------
+    class AnalyticReference
+    {
+    public:
+      AnalyticReference(const Scene &s, const std::string &method) : scene(s), method(method)
+      {
+        const MaterialParameters &m = s.material;
+        base = {{"material", {{"E0", m.E0}, {"c0", m.c0}, {"k", m.k}, {"nu", m.nu}}}, {"method", method}};
+        const LoadParameters &l = s.load;
+        switch (l.type)
+          {
+            case Type::flat_punch:
+              base["case"] = "flat_punch";
+              base["a"] = l.a;
+              base["d"] = l.depth;
+              break;
+            case Type::paraboloid:
+              base["case"] = "paraboloid";
+              base["geometry"] = {{"R", l.R}};
+              break;
+            case Type::cone:
+              base["case"] = "cone";
+              base["geometry"] = {{"tan_theta", l.tan_theta}};
+              break;
+            case Type::power_law:
+              base["case"] = "power_law";
+              base["geometry"] = {{"n", l.n}, {"A", l.A}};
+              break;
+            case Type::concave_punch:
+              base["case"] = "concave_paraboloid";
+              base["geometry"] = {{"h0", l.h0}};
+              base["a"] = l.a;
+              base["d0"] = l.depth;
+              break;
+            case Type::constant_pressure:
+              base["case"] = "constant_pressure";
+              base["geometry"] = {{"p0", l.p0}};
+              base["a"] = l.a;
+              break;
+          }
+        if (curved(l))
+          {
+            // The reference state is the one the load prescribes: a given, or a(d), or a(F).
+            if (l.control == Control::contact_radius)
+              base["a"] = l.a;
+            else
+              {
+                json q = base;
+                q["quantity"] = "contact_radius";
+                q[l.control == Control::depth ? "d" : "F"] = l.control == Control::depth ? l.depth : l.force;
+                base["a"] = evaluate(q);
+              }
+          }
+      }
+
+      double get(const std::string &quantity, const std::optional<double> r = std::nullopt) const
+      {
+        json q = base;
+        q["quantity"] = quantity;
+        if (r)
+          q["r"] = *r;
+        return evaluate(q);
+      }
+
+      double radius() const { return base.value("a", 0.); }
+
+      const Scene &scene;
+      const std::string method;
+
+    private:
+      static double evaluate(const json &q) { return batch::prepare(q.dump())(); }
+      json base;
+    };
+
+    // --- the FE side ------------------------------------------------------------------------------------
+    fem::Material fe_material(const Scene &s)
+    {
+      const MaterialParameters &m = s.material;
+      const auto power = std::make_shared<fem::PowerLawModulus>(m.E0, m.c0, m.k);
+      fem::Material material;
+      material.nu = m.nu;
+      switch (m.modulus)
+        {
+          case MaterialParameters::Modulus::power_law:
+            material.modulus = power;
+            break;
+          case MaterialParameters::Modulus::layered:
+            material.modulus = fem::LayeredModulus::uniform(power, m.layers, m.layered_depth * s.load.a);
+            break;
+          case MaterialParameters::Modulus::expression:
+            material.modulus = std::make_shared<fem::ExpressionModulus>(
+              m.expression, std::map<std::string, double>{{"E0", m.E0}, {"c0", m.c0}, {"k", m.k}}, m.k);
+            break;
+        }
+      return material;
+    }
+
+    fem::LoadCase fe_load(const LoadParameters &l)
+    {
+      fem::LoadCase lc;
+      switch (l.type)
+        {
+          case Type::flat_punch:
+            lc.type = fem::LoadType::flat_punch;
+            lc.depth = l.depth;
+            return lc;
+          case Type::concave_punch:
+            lc.type = fem::LoadType::concave_punch;
+            lc.depth = l.depth;
+            lc.profile = fem::Profile::concave_paraboloid(l.h0);
+            return lc;
+          case Type::constant_pressure:
+            lc.type = fem::LoadType::constant_pressure;
+            lc.pressure = l.p0;
+            return lc;
+          default:
+            break;
+        }
+      lc.profile = l.type == Type::paraboloid ? fem::Profile::paraboloid(l.R)
+                   : l.type == Type::cone     ? fem::Profile::cone(l.tan_theta)
+                                              : fem::Profile::power_law(l.n, l.A);
+      lc.type = l.control == Control::contact_radius ? fem::LoadType::indenter
+                : l.control == Control::depth        ? fem::LoadType::indenter_depth
+                                                     : fem::LoadType::indenter_force;
+      lc.depth = l.depth;
+      lc.force = l.force;
+      return lc;
+    }
+
+    struct FeRun
+    {
+      unsigned int refinement;
+      fem::Result result;
+      double seconds;
+    };
+
+    FeRun run_fe(const Scene &s, const unsigned int refinement, const fs::path &folder)
+    {
+      const auto start = std::chrono::steady_clock::now();
+      fem::Settings settings = fem::recommended_settings(s.load.a, s.material.k, s.discretization.force_tolerance);
+      settings.discretization.degree = s.discretization.degree;
+      settings.mesh.global_refinements = refinement;
+      if (s.discretization.far_field > 0.)
+        settings.mesh.far_field_size = s.discretization.far_field;
+      fem::AxisymmetricSolver solver(fe_material(s), settings.mesh, settings.discretization);
+      fem::OutputRequest out;
+      for (const double x : s.outputs.pressure_radii)
+        out.pressure_radii.push_back(x * s.load.a);
+      for (const double x : s.outputs.displacement_radii)
+        out.displacement_radii.push_back(x * s.load.a);
+      if (s.outputs.vtu)
+        out.vtu_file = (folder / ("fields-" + std::to_string(refinement) + ".vtu")).string();
+      fem::Result r = solver.run(fe_load(s.load), out);
+      return {refinement, r, std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count()};
+    }
+
+    Row compare(const std::string &quantity, const std::string &metric, const std::string &checked,
+                const std::string &reference, const double ref, const double value, const double scale,
+                const double tolerance, const unsigned int dofs, const double seconds)
+    {
+      Row row;
+      row.quantity = quantity;
+      row.metric = metric;
+      row.method = checked;
+      row.reference = reference;
+      row.reference_value = ref;
+      row.value = value;
+      row.abs_error = std::abs(value - ref);
+      row.rel_error = row.abs_error / std::max(std::abs(scale), 1e-300);
+      row.tolerance = tolerance;
+      row.pass = row.rel_error <= tolerance;
+      row.dofs = dofs;
+      row.seconds = seconds;
+      return row;
+    }
+
+    Row failed(const std::string &quantity, const std::string &checked, const std::string &reference,
+               const std::string &what)
+    {
+      Row row;
+      row.quantity = quantity;
+      row.method = checked;
+      row.reference = reference;
+      row.error = what;
+      row.rel_error = std::numeric_limits<double>::infinity();
+      return row;
+    }
+
+    // The scalar quantities a scene compares, with the FE value and the reference quantity name.
+    struct Scalar
+    {
+      std::string name;      ///< row quantity
+      std::string reference; ///< eval quantity
+      double fe;
+      double tolerance;
+    };
+
+    std::vector<Scalar> scalars(const Scene &s, const fem::Result &r)
+    {
+      std::vector<Scalar> out;
+      const OutputParameters &o = s.outputs;
+      const LoadParameters &l = s.load;
+      if (o.force && l.type != Type::constant_pressure)
+        out.push_back({"force", "force", r.force, s.tolerances.force});
+      if (o.depth && (curved(l) && l.control != Control::depth))
+        out.push_back({"depth", "depth", r.depth, s.tolerances.depth});
+      if (o.depth && l.type == Type::constant_pressure)
+        out.push_back({"centre displacement", "depth", r.depth, s.tolerances.depth});
+      if (o.contact_radius && curved(l) && l.control != Control::contact_radius)
+        out.push_back({"contact radius", "", r.contact_radius, s.tolerances.contact_radius});
+      return out;
+    }
+  } // namespace
+
+  SceneResult run_prm_scene(const Scene &s, const fs::path &folder, const bool verbose)
+  {
+    SceneResult result;
+    result.name = s.info.name;
+    result.description = s.info.description;
+    result.kind = "prm";
+    const auto start = std::chrono::steady_clock::now();
+    std::ofstream(folder / "parameters.prm") << s.resolved;
+
+    std::vector<std::unique_ptr<AnalyticReference>> references;
+    const auto add_reference = [&](const std::string &method, const std::string &label) {
+      try
+        {
+          references.push_back(std::make_unique<AnalyticReference>(s, method));
+        }
+      catch (const std::exception &e)
+        {
+          result.rows.push_back(failed("reference state", "-", label, e.what()));
+        }
+    };
+    if (s.references.closed_form)
+      add_reference("closed_form", "closed form");
+    if (s.references.numerical_mdr)
+      add_reference("numerical_mdr", "numerical MDR");
+    const auto label = [](const AnalyticReference &r) {
+      return r.method == "closed_form" ? std::string("closed form") : std::string("numerical MDR");
+    };
+
+    if (!s.references.fem)
+      {
+        // Analytic only: the closed form against the numerical MDR, for the scalars and profiles asked.
+        AnalyticReference closed(s, "closed_form"), numeric(s, "numerical_mdr");
+        std::vector<std::pair<std::string, std::optional<double>>> items;
+        if (s.outputs.force && s.load.type != Type::constant_pressure)
+          items.push_back({"force", std::nullopt});
+        if (s.outputs.depth && s.load.type != Type::flat_punch && s.load.type != Type::concave_punch)
+          items.push_back({"depth", std::nullopt});
+        for (const double x : s.outputs.pressure_radii)
+          items.push_back({"pressure", x * closed.radius()});
+        for (const double x : s.outputs.displacement_radii)
+          items.push_back({"displacement", x * closed.radius()});
+        for (const auto &[quantity, r] : items)
+          {
+            const std::string metric = r ? "r/a = " + format(*r / closed.radius()) + ", relative" : "relative";
+            try
+              {
+                const auto t0 = std::chrono::steady_clock::now();
+                const double c = closed.get(quantity, r);
+                const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+                const double n = numeric.get(quantity, r);
+                result.rows.push_back(compare(quantity, metric, "closed form", "numerical MDR", n, c, n, 1e-9, 0, seconds));
+              }
+            catch (const std::exception &e)
+              {
+                result.rows.push_back(failed(quantity, "closed form", "numerical MDR", e.what()));
+              }
+          }
+        result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        return result;
+      }
+
+    // One FE solve per refinement level, shared by every quantity and every reference.
+    std::vector<FeRun> runs;
+    for (const unsigned int level : s.discretization.refinements)
+      {
+        if (verbose)
+          std::cerr << "  " << s.info.name << ": FE solve, " << level << " refinement(s)\n";
+        try
+          {
+            runs.push_back(run_fe(s, level, folder));
+          }
+        catch (const std::exception &e)
+          {
+            result.rows.push_back(failed("FE solve", "FE", "-", "refinement " + std::to_string(level) + ": " + concise(e)));
+          }
+      }
+
+    for (const FeRun &run : runs)
+      {
+        const fem::Result &fe = run.result;
+        const std::string checked = "FE (" + std::to_string(run.refinement) + " ref.)";
+        if (!fe.consistent_contact || !fe.reliable)
+          result.rows.push_back(failed("FE solve", checked, "-", fe.message));
+        for (const auto &ref : references)
+          {
+            for (const Scalar &q : scalars(s, fe))
+              try
+                {
+                  const double value = q.reference.empty() ? ref->radius() : ref->get(q.reference);
+                  result.rows.push_back(compare(q.name, "relative", checked, label(*ref), value, q.fe, value,
+                                                q.tolerance, fe.n_dofs, run.seconds));
+                }
+              catch (const std::exception &e)
+                {
+                  result.rows.push_back(failed(q.name, checked, label(*ref), e.what()));
+                }
+            // pressure: relative to the largest |p| sampled (p -> 0 or -> inf at the edge)
+            try
+              {
+                std::vector<double> refs;
+                for (const fem::Sample &p : fe.pressure)
+                  refs.push_back(ref->get("pressure", p.r));
+                double scale = 0.;
+                for (const double v : refs)
+                  scale = std::max(scale, std::abs(v));
+                for (std::size_t i = 0; i < fe.pressure.size(); ++i)
+                  result.rows.push_back(compare("pressure", "r/a = " + format(fe.pressure[i].r / s.load.a) + ", rel. to max |p|",
+                                                checked, label(*ref), refs[i], fe.pressure[i].value, scale,
+                                                s.tolerances.pressure, fe.n_dofs, run.seconds));
+              }
+            catch (const std::exception &e)
+              {
+                result.rows.push_back(failed("pressure", checked, label(*ref), e.what()));
+              }
+            for (const fem::Sample &w : fe.displacement)
+              try
+                {
+                  const double value = ref->get("displacement", w.r);
+                  result.rows.push_back(compare("displacement", "r/a = " + format(w.r / s.load.a) + ", relative", checked,
+                                                label(*ref), value, w.value, value, s.tolerances.displacement, fe.n_dofs,
+                                                run.seconds));
+                }
+              catch (const std::exception &e)
+                {
+                  result.rows.push_back(failed("displacement", checked, label(*ref), e.what()));
+                }
+          }
+      }
+
+    // Convergence study: the scalar quantities against the first reference, level by level.
+    if (runs.size() > 1 && !references.empty())
+      {
+        std::ofstream csv(folder / "convergence.csv"), md(folder / "convergence.md");
+        csv << "quantity,refinement,dofs,seconds,value,reference,relative_error,observed_order\n";
+        md << "# " << s.info.name << ": convergence\n\nErrors against the " << label(*references.front())
+           << "; the observed order p (error ~ h^p, h ~ DoFs^(-1/2)) is fitted over the last three levels.\n\n";
+        for (std::size_t q = 0; q < scalars(s, runs.front().result).size(); ++q)
+          {
+            const Scalar first = scalars(s, runs.front().result)[q];
+            double value = 0.;
+            try
+              {
+                value = first.reference.empty() ? references.front()->radius() : references.front()->get(first.reference);
+              }
+            catch (const std::exception &)
+              {
+                continue;
+              }
+            std::vector<Level> levels;
+            for (const FeRun &run : runs)
+              {
+                const double v = scalars(s, run.result)[q].fe;
+                levels.push_back({run.refinement, run.result.n_dofs, run.seconds, v, std::abs(v - value) / std::abs(value)});
+              }
+            const double p = observed_order(levels);
+            md << "## " << first.name << "\n\n| refinement | DoFs | s | value | rel. error |\n|---|---|---|---|---|\n";
+            Series errors{first.name, {}, {}, true}, times{first.name, {}, {}, true};
+            for (const Level &l : levels)
+              {
+                md << "| " << l.refinement << " | " << l.dofs << " | " << format(l.seconds) << " | " << format(l.value)
+                   << " | " << format(l.error) << " |\n";
+                csv << first.name << ',' << l.refinement << ',' << l.dofs << ',' << l.seconds << ',' << l.value << ','
+                    << value << ',' << l.error << ',' << p << '\n';
+                errors.x.push_back(l.dofs);
+                errors.y.push_back(std::max(l.error, 1e-17));
+                times.x.push_back(l.seconds);
+                times.y.push_back(std::max(l.error, 1e-17));
+              }
+            md << "\nObserved order over the last three levels: " << format(p) << "\n\n";
+            if (s.outputs.plots)
+              {
+                const std::string stem = "convergence-" + std::to_string(q);
+                write_plot(folder, stem + "-dofs", s.info.name + ": " + first.name + " error against DoFs", "DoFs",
+                           "relative error", {errors}, true, true);
+                write_plot(folder, stem + "-time", s.info.name + ": " + first.name + " error against run time",
+                           "seconds", "relative error", {times}, true, true);
+              }
+          }
+      }
+
+    // Profiles: the analytic curve (closed form, dense) with the FE points of the finest level.
+    if (s.outputs.plots && !runs.empty() && s.references.closed_form && !references.empty())
+      {
+        const fem::Result &fe = runs.back().result;
+        const AnalyticReference &closed = *references.front();
+        const double a = closed.radius();
+        const auto profile_plot = [&](const std::string &quantity, const std::vector<fem::Sample> &samples,
+                                      const double x_max, const std::string &ylabel) {
+          if (samples.empty())
+            return;
+          Series curve{"closed form", {}, {}, false}, points{"FE", {}, {}, true};
+          constexpr int n = 200;
+          for (int i = 0; i <= n; ++i)
+            {
+              // for the pressure stay inside the contact; for w also skip r = a exactly
+              const double x = x_max * (quantity == "pressure" ? 0.999 * i / n : static_cast<double>(i) / n);
+              try
+                {
+                  curve.y.push_back(closed.get(quantity, x * a));
+                  curve.x.push_back(x);
+                }
+              catch (const std::exception &)
+                {
+                }
+            }
+          double worst = 0.;
+          for (const fem::Sample &p : samples)
+            {
+              points.x.push_back(p.r / s.load.a);
+              points.y.push_back(p.value);
+            }
+          for (const Row &r : result.rows)
+            if (r.quantity == quantity && r.error.empty() && r.reference == "closed form")
+              worst = std::max(worst, r.rel_error);
+          write_plot(folder, quantity, s.info.name + ": " + quantity + " (worst FE error " + format(worst) + ")", "r / a",
+                     ylabel, {curve, points});
+        };
+        double w_max = 1.;
+        for (const double x : s.outputs.displacement_radii)
+          w_max = std::max(w_max, x);
+        profile_plot("pressure", fe.pressure, 1., "p [Pa]");
+        profile_plot("displacement", fe.displacement, w_max, "w [m]");
+      }
+
+    result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    return result;
+  }
+} // namespace gradcontact::cases

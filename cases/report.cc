@@ -1,0 +1,152 @@
+#include "report.h"
+
+#include <algorithm>
+#include <exception>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
+#include <iomanip>
+#include <limits>
+
+namespace gradcontact::cases
+{
+  namespace fs = std::filesystem;
+
+  std::string format(const double x)
+  {
+    char b[32];
+    std::snprintf(b, sizeof b, "%.6g", x);
+    return b;
+  }
+
+  std::string concise(const std::exception &e)
+  {
+    std::string text = e.what();
+    const auto info = text.find("Additional information:");
+    if (info != std::string::npos)
+      {
+        text = text.substr(info + 23);
+        const auto trace = text.find("Stacktrace:");
+        if (trace != std::string::npos)
+          text = text.substr(0, trace);
+      }
+    std::string folded;
+    bool space = false;
+    for (const char c : text)
+      {
+        if (c == '\n' || c == ' ' || c == '\t' || c == '-')
+          {
+            space = space || c != '-' || folded.empty() || folded.back() == ' ';
+            if (c != '-')
+              continue;
+          }
+        if (space && !folded.empty())
+          folded += ' ';
+        space = false;
+        folded += c;
+      }
+    return folded;
+  }
+
+  bool SceneResult::pass() const
+  {
+    return std::all_of(rows.begin(), rows.end(), [](const Row &r) { return r.pass; });
+  }
+
+  double SceneResult::worst_error() const
+  {
+    double worst = 0.;
+    for (const Row &r : rows)
+      worst = std::max(worst, r.error.empty() ? r.rel_error : std::numeric_limits<double>::infinity());
+    return worst;
+  }
+
+  namespace
+  {
+    std::string csv_quote(const std::string &s)
+    {
+      std::string out = "\"";
+      for (const char c : s)
+        out += (c == '"') ? std::string("\"\"") : std::string(1, c);
+      return out + "\"";
+    }
+  } // namespace
+
+  void write_errors(const SceneResult &s, const fs::path &folder)
+  {
+    std::ofstream csv(folder / "errors.csv");
+    csv << "quantity,metric,method,reference,reference_value,value,abs_error,rel_error,tolerance,pass,dofs,seconds,error\n";
+    csv << std::setprecision(17);
+    for (const Row &r : s.rows)
+      csv << csv_quote(r.quantity) << ',' << csv_quote(r.metric) << ',' << csv_quote(r.method) << ','
+          << csv_quote(r.reference) << ',' << r.reference_value << ',' << r.value << ',' << r.abs_error << ','
+          << r.rel_error << ',' << r.tolerance << ',' << (r.pass ? "pass" : "FAIL") << ',' << r.dofs << ','
+          << r.seconds << ',' << csv_quote(r.error) << '\n';
+    std::ofstream md(folder / "errors.md");
+    md << "# " << s.name << "\n\n" << s.description << "\n\n"
+       << "| quantity | metric | checked | reference | reference value | value | rel. error | tolerance | pass | DoFs | s |\n"
+       << "|---|---|---|---|---|---|---|---|---|---|---|\n";
+    for (const Row &r : s.rows)
+      md << "| " << r.quantity << " | " << r.metric << " | " << r.method << " | " << r.reference << " | "
+         << (r.error.empty() ? format(r.reference_value) : "-") << " | "
+         << (r.error.empty() ? format(r.value) : "error: " + r.error) << " | " << format(r.rel_error) << " | "
+         << format(r.tolerance) << " | " << (r.pass ? "pass" : "**FAIL**") << " | " << (r.dofs ? std::to_string(r.dofs) : "-")
+         << " | " << format(r.seconds) << " |\n";
+  }
+
+  double observed_order(const std::vector<Level> &levels)
+  {
+    const std::size_t n = levels.size();
+    if (n < 2)
+      return std::numeric_limits<double>::quiet_NaN();
+    const std::size_t first = n >= 3 ? n - 3 : 0;
+    // least squares of log(error) against log(h), h = DoFs^(-1/2)
+    double sx = 0., sy = 0., sxx = 0., sxy = 0.;
+    int m = 0;
+    for (std::size_t i = first; i < n; ++i)
+      {
+        if (!(levels[i].error > 0.))
+          continue;
+        const double x = -0.5 * std::log(static_cast<double>(levels[i].dofs)), y = std::log(levels[i].error);
+        sx += x;
+        sy += y;
+        sxx += x * x;
+        sxy += x * y;
+        ++m;
+      }
+    if (m < 2)
+      return std::numeric_limits<double>::quiet_NaN();
+    return (m * sxy - sx * sy) / (m * sxx - sx * sx);
+  }
+
+  bool write_plot(const fs::path &folder, const std::string &stem, const std::string &title, const std::string &xlabel,
+                  const std::string &ylabel, const std::vector<Series> &series, const bool logx, const bool logy)
+  {
+    std::ofstream data(folder / (stem + ".dat"));
+    data << std::setprecision(12);
+    for (std::size_t i = 0; i < series.size(); ++i)
+      {
+        data << "# " << series[i].title << "\n";
+        for (std::size_t j = 0; j < series[i].x.size(); ++j)
+          data << series[i].x[j] << ' ' << series[i].y[j] << '\n';
+        data << "\n\n"; // gnuplot data blocks: index i
+      }
+    data.close();
+    std::ofstream gp(folder / (stem + ".gp"));
+    gp << "# gnuplot script: `gnuplot " << stem << ".gp` in this folder remakes " << stem << ".png and " << stem
+       << ".svg\n"
+       << "set title \"" << title << "\" noenhanced\nset xlabel \"" << xlabel << "\" noenhanced\nset ylabel \"" << ylabel
+       << "\" noenhanced\nset grid\nset key top right\n"
+       << (logx ? "set logscale x\n" : "") << (logy ? "set logscale y\n" : "");
+    std::string plot = "plot ";
+    for (std::size_t i = 0; i < series.size(); ++i)
+      plot += std::string(i ? ", " : "") + "'" + stem + ".dat' index " + std::to_string(i) + " with " +
+              (series[i].points ? "points pt 7 ps 1.2" : "lines lw 2") + " title \"" + series[i].title + "\" noenhanced";
+    gp << "set terminal pngcairo size 900,600\nset output '" << stem << ".png'\n" << plot << "\n"
+       << "set terminal svg size 900,600\nset output '" << stem << ".svg'\n" << plot << "\n";
+    gp.close();
+    const std::string command = "cd '" + folder.string() + "' && gnuplot '" + stem + ".gp' > /dev/null 2>&1";
+    return std::system(command.c_str()) == 0;
+  }
+} // namespace gradcontact::cases

@@ -1,0 +1,306 @@
+#include "scene.h"
+
+#include "report.h"
+
+#include <deal.II/base/utilities.h>
+
+#include <filesystem>
+#include <sstream>
+#include <stdexcept>
+
+namespace gradcontact::cases
+{
+  using dealii::ParameterHandler;
+  namespace Patterns = dealii::Patterns;
+
+  namespace
+  {
+    std::vector<double> to_doubles(const std::string &list)
+    {
+      std::vector<double> out;
+      for (const std::string &item : dealii::Utilities::split_string_list(list))
+        if (!item.empty())
+          out.push_back(dealii::Utilities::string_to_double(item));
+      return out;
+    }
+
+    // A list of non-negative numbers.
+    const Patterns::List double_list(Patterns::Double(0.), 0, 1000);
+  } // namespace
+
+  void SceneInfo::declare(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Scene");
+    prm.declare_entry("name", "", Patterns::Anything(), "Report folder name; empty: the file name without .prm.");
+    prm.declare_entry("description", "", Patterns::Anything(), "One line saying what the scene checks.");
+    prm.leave_subsection();
+  }
+  void SceneInfo::parse(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Scene");
+    name = prm.get("name");
+    description = prm.get("description");
+    prm.leave_subsection();
+  }
+
+  void MaterialParameters::declare(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Material");
+    prm.declare_entry("E0", "1e9", Patterns::Double(0.), "E0 of E(z) = E0 (z/c0)^k (9.1) [Pa], > 0.");
+    prm.declare_entry("c0", "1e-3", Patterns::Double(0.), "Characteristic depth c0 [m], > 0.");
+    prm.declare_entry("k", "0.5", Patterns::Double(-1., 1.), "Exponent k of the grading, -1 < k < 1.");
+    prm.declare_entry("nu", "0.3", Patterns::Double(0., 0.5), "Poisson ratio, 0 <= nu < 1/2 for the FE model.");
+    prm.declare_entry("modulus", "power law", Patterns::Selection("power law|layered|expression"),
+                      "How the FE model represents E(z): pointwise power law, N layers with exact layer "
+                      "averages, or an expression in z.");
+    prm.declare_entry("layers", "16", Patterns::Integer(1, 100000), "Layered modulus: number of layers.");
+    prm.declare_entry("layered depth", "10", Patterns::Double(0.), "Layered modulus: depth of the layered zone / a.");
+    prm.declare_entry("expression", "E0*(z/c0)^k", Patterns::Anything(),
+                      "Expression modulus: E(z) (muparser; constants E0, c0, k).");
+    prm.leave_subsection();
+  }
+  void MaterialParameters::parse(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Material");
+    E0 = prm.get_double("E0");
+    c0 = prm.get_double("c0");
+    k = prm.get_double("k");
+    nu = prm.get_double("nu");
+    const std::string m = prm.get("modulus");
+    modulus = m == "power law" ? Modulus::power_law : (m == "layered" ? Modulus::layered : Modulus::expression);
+    layers = prm.get_integer("layers");
+    layered_depth = prm.get_double("layered depth");
+    expression = prm.get("expression");
+    prm.leave_subsection();
+    if (E0 <= 0. || c0 <= 0.)
+      throw std::invalid_argument("Material: E0 and c0 must be > 0");
+    if (k <= -1. || k >= 1.)
+      throw std::invalid_argument("Material/k = " + std::to_string(k) + " is outside (-1, 1)");
+  }
+
+  void LoadParameters::declare(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Load");
+    prm.declare_entry("type", "flat punch",
+                      Patterns::Selection("flat punch|paraboloid|cone|power law|concave punch|constant pressure"),
+                      "The load: rigid flat punch (9.16), paraboloid (9.26), cone (9.20), power-law "
+                      "indenter A r^n (9.30), concave punch in complete contact (9.34), constant pressure (9.40).");
+    prm.declare_entry("control", "contact radius", Patterns::Selection("contact radius|depth|force"),
+                      "Curved indenters: what is prescribed.");
+    prm.declare_entry("a", "1e-4", Patterns::Double(0.), "Contact radius (punch radius, loaded radius) [m].");
+    prm.declare_entry("depth", "1e-6", Patterns::Double(), "Depth d (flat punch, depth control) or centre displacement d0 (concave punch) [m].");
+    prm.declare_entry("force", "1e-2", Patterns::Double(0.), "Normal force (force control) [N].");
+    prm.declare_entry("R", "1e-2", Patterns::Double(0.), "Paraboloid radius [m].");
+    prm.declare_entry("tan theta", "0.1", Patterns::Double(0.), "Cone slope tan(theta).");
+    prm.declare_entry("n", "2", Patterns::Double(0.), "Power-law exponent n > 0.");
+    prm.declare_entry("A", "1", Patterns::Double(0.), "Power-law coefficient A [m^(1-n)].");
+    prm.declare_entry("h0", "1e-7", Patterns::Double(0.), "Concave punch depth h0 [m] (9.31).");
+    prm.declare_entry("p0", "1e6", Patterns::Double(), "Constant pressure p0 [Pa].");
+    prm.leave_subsection();
+  }
+  void LoadParameters::parse(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Load");
+    const std::string t = prm.get("type");
+    type = t == "flat punch"      ? Type::flat_punch
+           : t == "paraboloid"    ? Type::paraboloid
+           : t == "cone"          ? Type::cone
+           : t == "power law"     ? Type::power_law
+           : t == "concave punch" ? Type::concave_punch
+                                  : Type::constant_pressure;
+    const std::string c = prm.get("control");
+    control = c == "contact radius" ? Control::contact_radius : (c == "depth" ? Control::depth : Control::force);
+    a = prm.get_double("a");
+    depth = prm.get_double("depth");
+    force = prm.get_double("force");
+    R = prm.get_double("R");
+    tan_theta = prm.get_double("tan theta");
+    n = prm.get_double("n");
+    A = prm.get_double("A");
+    h0 = prm.get_double("h0");
+    p0 = prm.get_double("p0");
+    prm.leave_subsection();
+  }
+
+  void DiscretizationParameters::declare(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Discretization");
+    prm.declare_entry("degree", "3", Patterns::Integer(1, 4), "FE_Q degree.");
+    prm.declare_entry("refinements", "0", Patterns::List(Patterns::Integer(0, 6), 1, 7),
+                      "Uniform refinements of the recommended mesh; several values make a convergence study.");
+    prm.declare_entry("force tolerance", "1e-6", Patterns::Double(1e-12, 1.),
+                      "The wanted relative force error: selects the recommended mesh (fem/README.md).");
+    prm.declare_entry("far field", "0", Patterns::Double(0.), "L/a of the truncated domain; 0: the recommended one.");
+    prm.leave_subsection();
+  }
+  void DiscretizationParameters::parse(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Discretization");
+    degree = prm.get_integer("degree");
+    refinements.clear();
+    for (const std::string &s : dealii::Utilities::split_string_list(prm.get("refinements")))
+      refinements.push_back(dealii::Utilities::string_to_int(s));
+    force_tolerance = prm.get_double("force tolerance");
+    far_field = prm.get_double("far field");
+    prm.leave_subsection();
+  }
+
+  void OutputParameters::declare(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Outputs");
+    prm.declare_entry("force", "true", Patterns::Bool(), "Compare the normal force.");
+    prm.declare_entry("depth", "true", Patterns::Bool(), "Compare the depth (centre displacement for pressure loads).");
+    prm.declare_entry("contact radius", "true", Patterns::Bool(), "Compare the contact radius (depth and force control).");
+    prm.declare_entry("pressure radii", "", double_list, "Radii / a at which to compare p(r) (r < a); empty: none.");
+    prm.declare_entry("displacement radii", "", double_list, "Radii / a at which to compare w(r); empty: none.");
+    prm.declare_entry("vtu", "false", Patterns::Bool(), "Write the FE fields as VTU.");
+    prm.declare_entry("plots", "true", Patterns::Bool(), "Write gnuplot plots of the sampled profiles.");
+    prm.leave_subsection();
+  }
+  void OutputParameters::parse(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Outputs");
+    force = prm.get_bool("force");
+    depth = prm.get_bool("depth");
+    contact_radius = prm.get_bool("contact radius");
+    pressure_radii = to_doubles(prm.get("pressure radii"));
+    displacement_radii = to_doubles(prm.get("displacement radii"));
+    vtu = prm.get_bool("vtu");
+    plots = prm.get_bool("plots");
+    prm.leave_subsection();
+  }
+
+  void ReferenceParameters::declare(ParameterHandler &prm)
+  {
+    prm.enter_subsection("References");
+    prm.declare_entry("closed form", "true", Patterns::Bool(), "Compare with the chapter's closed form.");
+    prm.declare_entry("numerical MDR", "false", Patterns::Bool(), "Compare with the numerical MDR engine.");
+    prm.declare_entry("fem", "true", Patterns::Bool(),
+                      "Run the FE model; false compares the closed form with the numerical MDR only.");
+    prm.leave_subsection();
+  }
+  void ReferenceParameters::parse(ParameterHandler &prm)
+  {
+    prm.enter_subsection("References");
+    closed_form = prm.get_bool("closed form");
+    numerical_mdr = prm.get_bool("numerical MDR");
+    fem = prm.get_bool("fem");
+    prm.leave_subsection();
+  }
+
+  void ToleranceParameters::declare(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Tolerances");
+    prm.declare_entry("force", "1e-5", Patterns::Double(0.), "Relative tolerance of the force.");
+    prm.declare_entry("depth", "1e-4", Patterns::Double(0.), "Relative tolerance of the depth.");
+    prm.declare_entry("contact radius", "1e-4", Patterns::Double(0.), "Relative tolerance of the contact radius.");
+    prm.declare_entry("pressure", "1e-3", Patterns::Double(0.), "Tolerance of p(r), relative to the largest |p| sampled.");
+    prm.declare_entry("displacement", "1e-4", Patterns::Double(0.), "Relative tolerance of w(r).");
+    prm.leave_subsection();
+  }
+  void ToleranceParameters::parse(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Tolerances");
+    force = prm.get_double("force");
+    depth = prm.get_double("depth");
+    contact_radius = prm.get_double("contact radius");
+    pressure = prm.get_double("pressure");
+    displacement = prm.get_double("displacement");
+    prm.leave_subsection();
+  }
+
+  namespace
+  {
+    void declare_all(ParameterHandler &prm)
+    {
+      SceneInfo::declare(prm);
+      MaterialParameters::declare(prm);
+      LoadParameters::declare(prm);
+      DiscretizationParameters::declare(prm);
+      OutputParameters::declare(prm);
+      ReferenceParameters::declare(prm);
+      ToleranceParameters::declare(prm);
+    }
+  } // namespace
+
+  Override parse_override(const std::string &text)
+  {
+    const auto eq = text.find('=');
+    if (eq == std::string::npos || eq == 0)
+      throw std::invalid_argument("--set '" + text + "': expected Section/key=value");
+    Override o;
+    std::stringstream path(text.substr(0, eq));
+    for (std::string part; std::getline(path, part, '/');)
+      o.path.push_back(part);
+    if (o.path.size() < 2)
+      throw std::invalid_argument("--set '" + text + "': expected Section/key=value (the section is missing)");
+    o.value = text.substr(eq + 1);
+    return o;
+  }
+
+  Scene read_scene(const std::string &file, const std::vector<Override> &overrides)
+  {
+    ParameterHandler prm;
+    declare_all(prm);
+    try
+      {
+        if (!std::filesystem::is_regular_file(file))
+          throw std::invalid_argument("no such file");
+        prm.parse_input(file, "", false);
+      }
+    catch (const std::exception &e)
+      {
+        // deal.II names the line, the entry and the pattern it violates.
+        throw std::invalid_argument("scene " + file + ": " + concise(e));
+      }
+    for (const Override &o : overrides)
+      {
+        try
+          {
+            for (std::size_t i = 0; i + 1 < o.path.size(); ++i)
+              prm.enter_subsection(o.path[i]);
+            prm.set(o.path.back(), o.value);
+            for (std::size_t i = 0; i + 1 < o.path.size(); ++i)
+              prm.leave_subsection();
+          }
+        catch (const std::exception &e)
+          {
+            std::string name;
+            for (const std::string &p : o.path)
+              name += (name.empty() ? "" : "/") + p;
+            throw std::invalid_argument("scene " + file + ": --set " + name + "=" + o.value + ": " + concise(e));
+          }
+      }
+    Scene s;
+    s.file = file;
+    try
+      {
+        s.info.parse(prm);
+        s.material.parse(prm);
+        s.load.parse(prm);
+        s.discretization.parse(prm);
+        s.outputs.parse(prm);
+        s.references.parse(prm);
+        s.tolerances.parse(prm);
+      }
+    catch (const std::exception &e)
+      {
+        throw std::invalid_argument("scene " + file + ": " + concise(e));
+      }
+    if (s.info.name.empty())
+      s.info.name = std::filesystem::path(file).stem().string();
+    std::ostringstream out;
+    prm.print_parameters(out, ParameterHandler::ShortPRM);
+    s.resolved = out.str();
+    return s;
+  }
+
+  std::string scene_documentation()
+  {
+    ParameterHandler prm;
+    declare_all(prm);
+    std::ostringstream out;
+    prm.print_parameters(out, ParameterHandler::PRM);
+    return out.str();
+  }
+} // namespace gradcontact::cases

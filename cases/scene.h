@@ -1,0 +1,130 @@
+// gradcontact/cases: a scene, i.e. one deal.II ParameterHandler file (.prm).
+//
+// One struct per subsection, each with declare() and parse() (the code-gallery pattern): ranges in
+// the patterns, a doc string on every entry. Variants of a scene are overrides on the command line
+// (`--set Section/key=value`), never copied files. `gradcontact run --help-scene` prints every entry.
+#pragma once
+
+#include <deal.II/base/parameter_handler.h>
+
+#include <string>
+#include <vector>
+
+namespace gradcontact::cases
+{
+  struct SceneInfo
+  {
+    std::string name; ///< report folder; empty: the file's stem
+    std::string description;
+    static void declare(dealii::ParameterHandler &prm);
+    void parse(dealii::ParameterHandler &prm);
+  };
+
+  struct MaterialParameters
+  {
+    enum class Modulus
+    {
+      power_law,
+      layered,
+      expression
+    };
+    double E0 = 1e9, c0 = 1e-3, k = 0.5, nu = 0.3;
+    Modulus modulus = Modulus::power_law;
+    unsigned int layers = 16;    ///< layered: number of layers
+    double layered_depth = 10.;  ///< layered: depth of the layered zone / a (below: the power law)
+    std::string expression;      ///< expression: E(z), constants E0, c0, k
+    static void declare(dealii::ParameterHandler &prm);
+    void parse(dealii::ParameterHandler &prm);
+  };
+
+  struct LoadParameters
+  {
+    enum class Type
+    {
+      flat_punch,
+      paraboloid,
+      cone,
+      power_law,
+      concave_punch,
+      constant_pressure
+    };
+    enum class Control
+    {
+      contact_radius,
+      depth,
+      force
+    };
+    Type type = Type::flat_punch;
+    Control control = Control::contact_radius;
+    double a = 1e-4;      ///< contact radius (punch radius, loaded radius)
+    double depth = 1e-6;  ///< d (flat punch, depth control), d0 (concave punch)
+    double force = 1e-2;  ///< F_N (force control)
+    double R = 1e-2, tan_theta = 0.1, n = 2., A = 1., h0 = 1e-7, p0 = 1e6;
+    static void declare(dealii::ParameterHandler &prm);
+    void parse(dealii::ParameterHandler &prm);
+  };
+
+  struct DiscretizationParameters
+  {
+    unsigned int degree = 3;
+    std::vector<unsigned int> refinements = {0}; ///< uniform refinements; several = a convergence study
+    double force_tolerance = 1e-6; ///< picks the recommended mesh (fem::recommended_settings)
+    double far_field = 0.;         ///< L/a; 0: the recommended one
+    static void declare(dealii::ParameterHandler &prm);
+    void parse(dealii::ParameterHandler &prm);
+  };
+
+  struct OutputParameters
+  {
+    bool force = true, depth = true, contact_radius = true;
+    std::vector<double> pressure_radii;     ///< / a
+    std::vector<double> displacement_radii; ///< / a
+    bool vtu = false;
+    bool plots = true;
+    static void declare(dealii::ParameterHandler &prm);
+    void parse(dealii::ParameterHandler &prm);
+  };
+
+  struct ReferenceParameters
+  {
+    bool closed_form = true;
+    bool numerical_mdr = false;
+    bool fem = true; ///< false: only the analytic references are compared (closed form vs MDR)
+    static void declare(dealii::ParameterHandler &prm);
+    void parse(dealii::ParameterHandler &prm);
+  };
+
+  struct ToleranceParameters
+  {
+    double force = 1e-5, depth = 1e-4, contact_radius = 1e-4, pressure = 1e-3, displacement = 1e-4;
+    static void declare(dealii::ParameterHandler &prm);
+    void parse(dealii::ParameterHandler &prm);
+  };
+
+  struct Scene
+  {
+    std::string file;
+    SceneInfo info;
+    MaterialParameters material;
+    LoadParameters load;
+    DiscretizationParameters discretization;
+    OutputParameters outputs;
+    ReferenceParameters references;
+    ToleranceParameters tolerances;
+    std::string resolved; ///< every entry after overrides, as a .prm, stored with the report
+  };
+
+  /// An override "Section/key=value" (Section may be nested: "A/B/key=value").
+  struct Override
+  {
+    std::vector<std::string> path; ///< subsections, then the key
+    std::string value;
+  };
+  Override parse_override(const std::string &text);
+
+  /// Reads a scene and applies the overrides. Errors name the file, the entry and the valid range.
+  Scene read_scene(const std::string &file, const std::vector<Override> &overrides);
+
+  /// Every entry with its documentation and default (for --help-scene).
+  std::string scene_documentation();
+} // namespace gradcontact::cases
