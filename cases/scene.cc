@@ -209,6 +209,39 @@ namespace gradcontact::cases
     prm.leave_subsection();
   }
 
+  void CandidateParameters::declare(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Candidate");
+    prm.declare_entry("profile", "", Patterns::Anything(),
+                      "A profile f(r) (muparser, variable r; f(0) = 0) whose candidate closed forms below are checked "
+                      "against the numerical MDR. Empty: no candidate check.");
+    prm.declare_entry("profile slope", "", Patterns::Anything(), "f'(r); empty: finite differences of f.");
+    prm.declare_entry("profile curvature", "", Patterns::Anything(), "f''(r); required for a pressure candidate.");
+    prm.declare_entry("constants", "", Patterns::Anything(),
+                      "Constants of the expressions, \"name=value, ...\"; E0, c0, k, nu, cN0 (9.4) and pi are always defined.");
+    prm.declare_entry("depth", "", Patterns::Anything(), "Candidate d(a) (variable a).");
+    prm.declare_entry("force", "", Patterns::Anything(), "Candidate F_N(a) (variable a).");
+    prm.declare_entry("pressure", "", Patterns::Anything(), "Candidate p(r, a) (variables r, a), at Outputs/pressure radii.");
+    prm.declare_entry("displacement", "", Patterns::Anything(),
+                      "Candidate w(r, a) (variables r, a), at Outputs/displacement radii.");
+    prm.declare_entry("tolerance", "1e-8", Patterns::Double(0.), "Relative tolerance of the candidate.");
+    prm.leave_subsection();
+  }
+  void CandidateParameters::parse(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Candidate");
+    profile = prm.get("profile");
+    slope = prm.get("profile slope");
+    curvature = prm.get("profile curvature");
+    constants = prm.get("constants");
+    depth = prm.get("depth");
+    force = prm.get("force");
+    pressure = prm.get("pressure");
+    displacement = prm.get("displacement");
+    tolerance = prm.get_double("tolerance");
+    prm.leave_subsection();
+  }
+
   namespace
   {
     void declare_all(ParameterHandler &prm)
@@ -220,6 +253,7 @@ namespace gradcontact::cases
       OutputParameters::declare(prm);
       ReferenceParameters::declare(prm);
       ToleranceParameters::declare(prm);
+      CandidateParameters::declare(prm);
     }
   } // namespace
 
@@ -282,6 +316,7 @@ namespace gradcontact::cases
         s.outputs.parse(prm);
         s.references.parse(prm);
         s.tolerances.parse(prm);
+        s.candidate.parse(prm);
       }
     catch (const std::exception &e)
       {

@@ -101,6 +101,18 @@ namespace gradcontact::cases
     void parse(dealii::ParameterHandler &prm);
   };
 
+  /// A user's candidate closed form for an axisymmetric profile, checked against the numerical MDR.
+  struct CandidateParameters
+  {
+    std::string profile;                  ///< f(r); empty: no candidate check
+    std::string slope, curvature;         ///< f'(r), f''(r); empty: fourth-order finite differences of f
+    std::string constants;                ///< "R=0.01, A=2"
+    std::string depth, force, pressure, displacement; ///< d(a), F(a), p(r, a), w(r, a); empty: not checked
+    double tolerance = 1e-8;
+    static void declare(dealii::ParameterHandler &prm);
+    void parse(dealii::ParameterHandler &prm);
+  };
+
   struct Scene
   {
     std::string file;
@@ -111,6 +123,7 @@ namespace gradcontact::cases
     OutputParameters outputs;
     ReferenceParameters references;
     ToleranceParameters tolerances;
+    CandidateParameters candidate;
     std::string resolved; ///< every entry after overrides, as a .prm, stored with the report
   };
 
