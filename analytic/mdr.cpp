@@ -216,8 +216,11 @@ namespace gradcontact::mdr
     const double D = (a - r) * (a + r);
     // -int_r^a w1D'(x) (x^2-r^2)^((k-1)/2) dx with x^2 = r^2 + D u:
     //   = -D^((k+1)/2)/2 int_0^1 u^((k-1)/2) w1D'(x)/x du
+    // x is kept above sqrt(D) 1e-150: at r = 0 with u near the smallest double, D u underflows and
+    // w1D'(x)/x would be 0/0 (w1D' is odd, the ratio tends to w1D''(0)).
+    const double x_min = std::sqrt(D) * 1e-150;
     const auto h = [&](const double u, const double) {
-      const double x = std::sqrt(r * r + D * u);
+      const double x = std::max(std::sqrt(r * r + D * u), x_min);
       return w1d.dw(x) / x;
     };
     const double smooth = -std::pow(D, (k + 1.) / 2.) / 2. * beta_weight_integral(h, (k - 1.) / 2., 0.);

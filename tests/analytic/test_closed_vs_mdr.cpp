@@ -130,3 +130,17 @@ TEST_CASE("ERRATA 9.20: the printed cone displacement is wrong, the corrected on
       CHECK(std::abs(corrected / mdr_value - 1.) < 1e-12);
     }
 }
+
+TEST_CASE("regression: the numerical centre pressure at nanometre scales (found by the 1e5-point run)", "[analytic]")
+{
+  // a = 2.3e-9 m: at r = 0 the substitution put D u below the smallest double and w1D'(x)/x became 0/0.
+  const json q = json::parse(R"({"a":2.2652360751036146e-09,"case":"jkr_concave","dgamma":0.03337007962456719,
+    "geometry":{"h0":7.126448992815002e-13},"material":{"E0":734877528.7395487,"c0":1.7786791470261065e-06,
+    "k":0.0016806457484359605,"nu":0.11112969042418286},"mechanism":"centre","quantity":"pressure",
+    "r":1.8283504599590186e-09,"sigma_th":158092.6356095993})");
+  const batch::Answer closed = evaluate(q, "closed_form"), numeric = evaluate(q, "numerical_mdr");
+  CAPTURE(closed.error, numeric.error);
+  REQUIRE(closed.ok);
+  REQUIRE(numeric.ok);
+  CHECK(std::abs(numeric.value / closed.value - 1.) < tol_closed_vs_mdr);
+}
