@@ -14,6 +14,7 @@
 #include <analytic/batch.hpp>
 
 #include "bench.h"
+#include "figures.h"
 #include "runner.h"
 
 #include <cstring>
@@ -36,6 +37,8 @@ namespace
            "                           --help-scene lists every scene entry)\n"
            "  sweep <scene.prm> --over Section/key=v1,v2,...\n"
            "                           run a scene once per value (same options as run)\n"
+           "  figures <file.json|folder> [--reports DIR]\n"
+           "                           draw the chapter's figures (cases/figures) -> reports/figures/\n"
            "  bench [--reports DIR] [--repeat N]\n"
            "                           work-precision benchmarks -> reports/benchmarks/\n"
            "  --help                   this text\n";
@@ -76,6 +79,8 @@ int main(int argc, char **argv)
         return gradcontact::cases::run(args);
       if (command == "sweep")
         return gradcontact::cases::sweep(args);
+      if (command == "figures")
+        return gradcontact::cases::figures(args);
       if (command == "bench")
         return gradcontact::cases::bench(args);
       std::cerr << "gradcontact: unknown command '" << command << "'\n";

@@ -1,0 +1,20 @@
+// gradcontact/cases: the chapter's figures as analytic curves (`gradcontact figures`).
+//
+// A figure is data (cases/figures/*.json); one plotter draws them all. Each curve sweeps one request key
+// (r, a, Fx, ...) and plots x against y, where each of x and y is the swept value or an eval request
+// (analytic/README.md) evaluated at it, optionally scaled and divided by another request's value.
+//   {"name", "title", "xlabel", "ylabel", "logx", "logy",
+//    "curves": [{"title", "sweep": {"key", "from", "to", "points", "log"},
+//                "x": {"sweep": true, "scale": 1} | {"request": {...}, "scale": s, "divide_by": {...}},
+//                "y": ... }]}
+// Output: reports/figures/<name>.png/.svg with the data and the gnuplot script.
+#pragma once
+
+#include <string>
+#include <vector>
+
+namespace gradcontact::cases
+{
+  /// `gradcontact figures <file.json|folder> [--reports DIR]`; returns the exit code.
+  int figures(const std::vector<std::string> &args);
+} // namespace gradcontact::cases
