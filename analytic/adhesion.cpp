@@ -345,8 +345,8 @@ namespace gradcontact::jkr
     check::closed_interval(fn, "r", r, 0., p.a);
     const double k = m.k;
     return gradcontact::centre_displacement(m, load) *
-           (1. - hyp2f1((k - 1.) / 2., (1. + k) / 2., 1., (r / p.a) * (r / p.a),
-                        (p.a - r) * (p.a + r) / (p.a * p.a))); // 9.73
+           -hyp2f1_minus_one((k - 1.) / 2., (1. + k) / 2., 1., (r / p.a) * (r / p.a),
+                             (p.a - r) * (p.a + r) / (p.a * p.a)); // 9.73: w_c [1 - 2F1(...)]
   }
 
   double shifted_profile(const Medium &m, const OptimalProfile &p, const double r)

@@ -26,16 +26,17 @@ namespace gradcontact
     double outer_factor(const double k) { return boost::math::cos_pi(k / 2.) / pi; }
 
     // B(a^2/r^2; x, y) for r > a, the incomplete beta of every displacement outside the contact.
-    // With w = 1 - a^2/r^2 = (r-a)(r+a)/r^2 (formed without cancellation), rounding z = a^2/r^2 costs
-    // about w^(y-1) eps in B(z; x, y), while the complement B(x, y) - B(w; y, x) costs about
-    // B(x, y) eps by cancellation: take the form with the smaller error (near the edge, the complement).
+    // With z = a^2/r^2 and w = 1 - z = (r-a)(r+a)/r^2 (formed without cancellation), rounding z costs
+    // the absolute error z^x w^(y-1) eps in B(z; x, y) (the integrand at z times eps z), while the
+    // complement B(x, y) - B(w; y, x) costs B(x, y) eps: take the form with the smaller error
+    // (near the edge the complement, far out the direct form, whose value is then tiny).
     double outer_beta(const double x, const double y, const double a, const double r)
     {
-      const double ratio = a / r;
+      const double z = (a / r) * (a / r);
       const double w = (r - a) * (r + a) / (r * r);
       const double complete = boost::math::beta(x, y, promoted());
-      if (std::pow(w, y - 1.) <= complete)
-        return boost::math::beta(x, y, ratio * ratio, promoted());
+      if (std::pow(z, x) * std::pow(w, y - 1.) <= complete)
+        return boost::math::beta(x, y, z, promoted());
       return complete - boost::math::beta(y, x, w, promoted());
     }
 

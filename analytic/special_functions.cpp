@@ -161,6 +161,22 @@ namespace gradcontact
     return detail::hyp2f1_ode(a, b, c, w);
   }
 
+  double hyp2f1_minus_one(const double a, const double b, const double c, const double z, const double one_minus_z)
+  {
+    if (!detail::taylor_region(z))
+      return hyp2f1(a, b, c, z, one_minus_z) - 1.;
+    hyp2f1(a, b, c, z, one_minus_z); // the argument checks
+    double term = 1., sum = 0.;
+    for (int j = 0; j < detail::max_terms; ++j)
+      {
+        term *= (a + j) * (b + j) / ((c + j) * (j + 1.)) * z;
+        sum += term;
+        if (std::abs(term) <= detail::eps * std::abs(sum) * 0.5)
+          return sum;
+      }
+    throw std::runtime_error("hyp2f1_minus_one: series did not converge (internal error)");
+  }
+
   double beta_upper(const double z, const double x, const double y)
   {
     const char *fn = "beta_upper";

@@ -82,6 +82,9 @@ namespace gradcontact::testing
           pick(q, c == "constant_pressure" ? std::vector<std::string>{"depth", "force", "displacement"}
                                            : std::vector<std::string>{"depth", "force", "displacement", "profile"});
           q["r"] = r_value(q["quantity"] == "profile");
+          // f_opt = w(0) - w(r) of the numerical MDR cancels like (a/r)^2: keep r >= a/100 there
+          if (q["quantity"] == "profile" && q["r"].get<double>() < 0.01 * a)
+            q["r"] = 0.01 * a;
         }
       else if (c == "jkr_paraboloid" || c == "jkr_power_law")
         {

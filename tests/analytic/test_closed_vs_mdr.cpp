@@ -144,3 +144,31 @@ TEST_CASE("regression: the numerical centre pressure at nanometre scales (found 
   REQUIRE(numeric.ok);
   CHECK(std::abs(numeric.value / closed.value - 1.) < tol_closed_vs_mdr);
 }
+
+TEST_CASE("regression: displacement far outside a steep power-law contact (found by the 1e5-point run)", "[analytic]")
+{
+  // n = 3.8, r = 245 a: the complement form of B(a^2/r^2; ...) was chosen and cancelled 7 digits.
+  const json q = json::parse(R"({"a":1.1253280585456788e-05,"case":"power_law","geometry":{"A":1861988077858.0635,
+    "n":3.8320394224865146},"material":{"E0":4505627533.907146,"c0":1.9546141889864718e-05,"k":-0.27880963670304637,
+    "nu":0.43064603603827945},"quantity":"displacement","r":0.0027532682810254})");
+  // 40-digit mpmath quadrature of 9.12 with w1D = kappa A (a^n - x^n): 1.02575336822251995e-8
+  const double reference = 1.02575336822251995e-8;
+  const batch::Answer closed = evaluate(q, "closed_form");
+  REQUIRE(closed.ok);
+  CHECK(std::abs(closed.value / reference - 1.) < 1e-13);
+}
+
+TEST_CASE("regression: the optimal profile near the axis (found by the 1e5-point run)", "[analytic]")
+{
+  // r = 4.4e-4 a: w_c [1 - 2F1] cancelled like a^2/r^2; now 2F1 - 1 is summed without its first term.
+  // (The numerical MDR forms f = w(0) - w(r) and cancels the same way: it is not the reference here.)
+  const json q = json::parse(R"({"a":0.0006424150550156864,"case":"optimal_profile","material":{"E0":797670883473.7535,
+    "c0":4.3308466045753626e-06,"k":0.9093432069642713,"nu":0.019144524416565525},"quantity":"profile",
+    "r":2.84175732756354e-07,"sigma_th":1e6})");
+  // mpmath at 40 digits: w_c (1 - hyp2f1((k-1)/2, (1+k)/2; 1; r^2/a^2)) with w_c of 9.72
+  const double reference = -8.4945504392991804543e-19;
+  const batch::Answer closed = evaluate(q, "closed_form");
+  REQUIRE(closed.ok);
+  CAPTURE(closed.value, reference);
+  CHECK(std::abs(closed.value / reference - 1.) < 1e-13);
+}
