@@ -1,6 +1,6 @@
 #include <fem/axisymmetric_solver.h>
 #include <fem/boundary_ids.h>
-#include <fem/gauss_jacobi.h>
+#include <fem/elasticity_assembly.h>
 
 #include <deal.II/base/function.h>
 #include <deal.II/base/quadrature_lib.h>
@@ -59,11 +59,6 @@ namespace gradcontact::fem
     double seconds_since(const std::chrono::steady_clock::time_point &start)
     {
       return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    }
-
-    bool is_surface(const types::boundary_id id)
-    {
-      return id == boundary_id::contact || id == boundary_id::free_surface;
     }
 
     /// Value at r of the Lagrange interpolant through (x_i, y_i).
@@ -318,7 +313,7 @@ namespace gradcontact::fem
     surface_faces.clear();
     for (const auto &cell : dof_handler.active_cell_iterators())
       for (const unsigned int f : cell->face_indices())
-        if (cell->face(f)->at_boundary() && is_surface(cell->face(f)->boundary_id()))
+        if (cell->face(f)->at_boundary() && boundary_id::is_surface(cell->face(f)->boundary_id()))
           {
             cell->face(f)->get_dof_indices(face_dofs);
             SurfaceFace face;
@@ -381,102 +376,14 @@ namespace gradcontact::fem
 
   void AxisymmetricSolver::assemble_system()
   {
-    const auto   start = std::chrono::steady_clock::now();
-    const double nu    = material.nu;
-    const ModulusField &E = *material.modulus;
-    const double s        = E.surface_exponent();
-    // lambda = c_lambda E, mu = c_mu E
-    const double c_lambda = nu / ((1 + nu) * (1 - 2 * nu));
-    const double c_mu     = 1 / (2 * (1 + nu));
-
-    const unsigned int  n_q   = discretization.degree + discretization.extra_quadrature_points;
-    const UpdateFlags   flags = update_values | update_gradients | update_quadrature_points |
-                              update_JxW_values;
-    const QGauss<2>     regular_quadrature(n_q);
-    FEValues<2>         regular(mapping, fe, regular_quadrature, flags);
-    const QIterated<2>  subdivided_quadrature(QGauss<1>(n_q), discretization.discontinuity_subdivisions);
-    FEValues<2>         subdivided(mapping, fe, subdivided_quadrature, flags);
-    // One Gauss-Jacobi rule per reference face that may lie on z = 0; `distance` is the reference
-    // distance xi_q from that face, whose power xi_q^s the weights already contain.
-    std::vector<std::unique_ptr<FEValues<2>>> surface(4);
-    std::vector<std::vector<double>>          distance(4);
-    for (unsigned int f = 0; f < 4; ++f)
-      surface[f] = std::make_unique<FEValues<2>>(
-        mapping, fe, surface_cell_quadrature(n_q, s, f, distance[f]), flags);
-    const std::vector<double> jumps = E.discontinuities();
-
-    const unsigned int                   dofs_per_cell = fe.n_dofs_per_cell();
-    FullMatrix<double>                   cell_matrix(dofs_per_cell, dofs_per_cell);
-    std::vector<types::global_dof_index> local_dof_indices(dofs_per_cell);
-    // Per shape function: eps_rr, eps_zz, eps_tt, gamma_rz.
-    std::vector<std::array<double, 4>> B(dofs_per_cell);
-
+    const auto start = std::chrono::steady_clock::now();
+    // K_cell: fem/elasticity_assembly.h (shared with the distributed solver).
+    CellStiffness                        cell_stiffness(material, fe, mapping, discretization);
+    std::vector<types::global_dof_index> local_dof_indices(fe.n_dofs_per_cell());
     for (const auto &cell : dof_handler.active_cell_iterators())
       {
-        unsigned int surface_face = numbers::invalid_unsigned_int;
-        for (const unsigned int f : cell->face_indices())
-          if (cell->face(f)->at_boundary() && is_surface(cell->face(f)->boundary_id()))
-            surface_face = f;
-        double z_min = std::numeric_limits<double>::max(), z_max = 0;
-        for (const unsigned int v : cell->vertex_indices())
-          {
-            z_min = std::min(z_min, cell->vertex(v)[1]);
-            z_max = std::max(z_max, cell->vertex(v)[1]);
-          }
-        const bool straddles = std::any_of(jumps.begin(), jumps.end(),
-                                           [&](const double z) { return z > z_min && z < z_max; });
-
-        FEValues<2> *fe_values = &regular;
-        const std::vector<double> *xi = nullptr;
-        if (straddles)
-          fe_values = &subdivided;
-        else if (surface_face != numbers::invalid_unsigned_int && s != 0.0)
-          {
-            fe_values = surface[surface_face].get();
-            xi        = &distance[surface_face];
-          }
-        fe_values->reinit(cell);
-
-        cell_matrix = 0;
-        for (const unsigned int q : fe_values->quadrature_point_indices())
-          {
-            const Point<2> &x = fe_values->quadrature_point(q);
-            const double    r = x[0];
-            // With the Gauss-Jacobi rule JxW contains xi^s, so E is divided by it: E(z)/xi^s is the
-            // regular factor (E0 (h(x)/c0)^k for the power law, h the local cell height).
-            const double modulus = (xi ? E.value(x[1]) / std::pow((*xi)[q], s) : E.value(x[1]));
-            const double lambda  = c_lambda * modulus;
-            const double mu      = c_mu * modulus;
-            const double weight  = r * fe_values->JxW(q);
-
-            for (unsigned int i = 0; i < dofs_per_cell; ++i)
-              {
-                const unsigned int  c    = fe.system_to_component_index(i).first;
-                const double        phi  = fe_values->shape_value(i, q);
-                const Tensor<1, 2> &grad = fe_values->shape_grad(i, q);
-                B[i] = (c == 0) ? std::array<double, 4>{{grad[0], 0.0, phi / r, grad[1]}} :
-                                  std::array<double, 4>{{0.0, grad[1], 0.0, grad[0]}};
-              }
-            for (unsigned int i = 0; i < dofs_per_cell; ++i)
-              {
-                const double tr_i = B[i][0] + B[i][1] + B[i][2];
-                for (unsigned int j = 0; j <= i; ++j)
-                  {
-                    const double tr_j = B[j][0] + B[j][1] + B[j][2];
-                    cell_matrix(i, j) +=
-                      (lambda * tr_i * tr_j +
-                       2 * mu * (B[i][0] * B[j][0] + B[i][1] * B[j][1] + B[i][2] * B[j][2]) +
-                       mu * B[i][3] * B[j][3]) *
-                      weight;
-                  }
-              }
-          }
-        for (unsigned int i = 0; i < dofs_per_cell; ++i)
-          for (unsigned int j = i + 1; j < dofs_per_cell; ++j)
-            cell_matrix(i, j) = cell_matrix(j, i);
-
         cell->get_dof_indices(local_dof_indices);
-        constraints.distribute_local_to_global(cell_matrix, local_dof_indices, stiffness);
+        constraints.distribute_local_to_global(cell_stiffness.matrix(cell), local_dof_indices, stiffness);
       }
 
     // The matrix with the contact z-DoFs eliminated (rows and columns zeroed, diagonal kept), so
@@ -546,28 +453,19 @@ namespace gradcontact::fem
 
   Vector<double> AxisymmetricSolver::pressure_load(const double p0) const
   {
-    // l(v) = \int_{contact} p0 v_z r dr: the pressure pushes into the material (+z).
-    Vector<double>      b(dof_handler.n_dofs());
-    const QGauss<1>     quadrature(discretization.degree + discretization.extra_quadrature_points);
-    FEFaceValues<2>     fe_face(mapping, fe, quadrature,
-                            update_values | update_quadrature_points | update_JxW_values);
-    const unsigned int  dofs_per_cell = fe.n_dofs_per_cell();
-    Vector<double>      cell_rhs(dofs_per_cell);
-    std::vector<types::global_dof_index> local_dof_indices(dofs_per_cell);
+    // l(v) = \int_{contact} p0 v_z r dr (fem/elasticity_assembly.h).
+    Vector<double>                       b(dof_handler.n_dofs());
+    CellPressureLoad                     cell_load(fe, mapping, discretization);
+    std::vector<types::global_dof_index> local_dof_indices(fe.n_dofs_per_cell());
+    bool                                 loaded = false;
     for (const auto &cell : dof_handler.active_cell_iterators())
-      for (const unsigned int f : cell->face_indices())
-        if (cell->face(f)->at_boundary() && cell->face(f)->boundary_id() == boundary_id::contact)
-          {
-            fe_face.reinit(cell, f);
-            cell_rhs = 0;
-            for (const unsigned int q : fe_face.quadrature_point_indices())
-              for (unsigned int i = 0; i < dofs_per_cell; ++i)
-                if (fe.system_to_component_index(i).first == 1)
-                  cell_rhs(i) += p0 * fe_face.shape_value(i, q) * fe_face.quadrature_point(q)[0] *
-                                 fe_face.JxW(q);
-            cell->get_dof_indices(local_dof_indices);
-            constraints.distribute_local_to_global(cell_rhs, local_dof_indices, b);
-          }
+      {
+        const Vector<double> &cell_rhs = cell_load.vector(cell, p0, loaded);
+        if (!loaded)
+          continue;
+        cell->get_dof_indices(local_dof_indices);
+        constraints.distribute_local_to_global(cell_rhs, local_dof_indices, b);
+      }
     return b;
   }
 

@@ -21,6 +21,12 @@ namespace gradcontact::fem::boundary_id
   constexpr boundary_id axis = 4;
   /// What deal.II assigns to boundary faces nobody named.
   constexpr boundary_id unassigned = 0;
+
+  /// The surface z = 0 (contact zone or free surface).
+  constexpr bool is_surface(const boundary_id id)
+  {
+    return id == contact || id == free_surface;
+  }
 } // namespace gradcontact::fem::boundary_id
 
 #endif

@@ -1,6 +1,8 @@
 #include <fem/boundary_ids.h>
 #include <fem/mesh.h>
 
+#include <deal.II/base/mpi.h>
+#include <deal.II/distributed/tria.h>
 #include <deal.II/grid/grid_generator.h>
 #include <deal.II/grid/grid_in.h>
 #include <deal.II/grid/grid_tools.h>
@@ -300,11 +302,6 @@ namespace gradcontact::fem
           throw std::runtime_error("make_mesh: boundary face at r = " + std::to_string(face->center()[0]) +
                                    ", z = " + std::to_string(face->center()[1]) + " has no boundary id");
     }
-
-    bool is_surface(const types::boundary_id id)
-    {
-      return id == boundary_id::contact || id == boundary_id::free_surface;
-    }
   } // namespace
 
 
@@ -380,15 +377,37 @@ namespace gradcontact::fem
 
 
 
-  MeshInfo make_mesh(const MeshParameters &p, Triangulation<2> &tria)
+  MeshInfo make_coarse_mesh(const MeshParameters &p, Triangulation<2> &tria)
   {
-    AssertThrow(tria.n_cells() == 0, ExcMessage("make_mesh: the triangulation must be empty"));
+    AssertThrow(tria.n_cells() == 0, ExcMessage("make_coarse_mesh: the triangulation must be empty"));
     Triangulation<2> near;
     MeshInfo         info = make_near_field(p, near);
     attach_far_field(near, p, info, tria);
+    GridTools::scale(p.contact_radius, tria);
+    return info;
+  }
 
+
+
+  MeshInfo make_mesh(const MeshParameters &p, Triangulation<2> &tria)
+  {
+    MeshInfo info = make_coarse_mesh(p, tria);
+    refine_mesh(p, tria, info);
+    return info;
+  }
+
+
+
+  void refine_mesh(const MeshParameters &p, Triangulation<2> &tria, MeshInfo &info)
+  {
+    // On a distributed triangulation every process flags its own cells by the same geometric rule,
+    // so the refined mesh does not depend on the partition; the flags of other cells are ignored.
+    const auto *distributed = dynamic_cast<const parallel::distributed::Triangulation<2> *>(&tria);
+    auto       global_or    = [&](const bool local) {
+      return distributed ? Utilities::MPI::max(static_cast<int>(local), tria.get_communicator()) != 0 :
+                                    local;
+    };
     const double a = p.contact_radius;
-    GridTools::scale(a, tria);
     tria.refine_global(p.global_refinements);
 
     // Step 3a: isotropic refinement of the cells at the contact edge (a, 0).
@@ -397,7 +416,7 @@ namespace gradcontact::fem
       {
         for (const auto &cell : tria.active_cell_iterators())
           for (const unsigned int v : cell->vertex_indices())
-            if (cell->vertex(v).distance(edge) < on_line_tolerance * a)
+            if (cell->is_locally_owned() && cell->vertex(v).distance(edge) < on_line_tolerance * a)
               cell->set_refine_flag();
         tria.execute_coarsening_and_refinement();
       }
@@ -409,7 +428,7 @@ namespace gradcontact::fem
       {
         for (const auto &cell : tria.active_cell_iterators())
           for (const unsigned int v : cell->vertex_indices())
-            if (cell->vertex(v).distance(centre) < on_line_tolerance * a)
+            if (cell->is_locally_owned() && cell->vertex(v).distance(centre) < on_line_tolerance * a)
               cell->set_refine_flag();
         tria.execute_coarsening_and_refinement();
       }
@@ -422,16 +441,28 @@ namespace gradcontact::fem
     for (unsigned int sweep = 0; sweep < max_halving_sweeps; ++sweep)
       {
         bool flagged = false;
+        double thickest = 0;
         for (const auto &cell : tria.active_cell_iterators())
-          for (const unsigned int f : cell->face_indices())
-            if (cell->face(f)->at_boundary() && is_surface(cell->face(f)->boundary_id()) &&
-                cell->face(f)->center()[0] <= r_max && cell->extent_in_direction(f / 2) > t_max)
-              {
-                cell->set_refine_flag(f < 2 ? RefinementCase<2>::cut_x : RefinementCase<2>::cut_y);
-                flagged = true;
-              }
-        if (!flagged)
+          if (cell->is_locally_owned())
+            for (const unsigned int f : cell->face_indices())
+              if (cell->face(f)->at_boundary() && boundary_id::is_surface(cell->face(f)->boundary_id()) &&
+                  cell->face(f)->center()[0] <= r_max && cell->extent_in_direction(f / 2) > t_max)
+                {
+                  thickest = std::max(thickest, cell->extent_in_direction(f / 2) / a);
+                  if (!distributed)
+                    cell->set_refine_flag(f < 2 ? RefinementCase<2>::cut_x : RefinementCase<2>::cut_y);
+                  flagged = true;
+                }
+        if (!global_or(flagged))
           break;
+        // p4est refines isotropically only; isotropic halvings down to 1e-10 a would multiply the
+        // cells along the surface by 2^33. Every process throws (the decision above is collective).
+        if (distributed)
+          fail("surface_layer_thickness (distributed triangulation: z-only halvings are anisotropic "
+               "refinement, which p4est does not support; the surface cells are up to " +
+                 std::to_string(Utilities::MPI::max(thickest, tria.get_communicator())) +
+                 " a thick)",
+               p.surface_layer_thickness, "[that thickness, 1] (no halvings)");
         tria.execute_coarsening_and_refinement();
         ++info.n_halvings;
       }
@@ -439,13 +470,19 @@ namespace gradcontact::fem
     info.min_surface_cell = std::numeric_limits<double>::max();
     info.min_edge_cell    = std::numeric_limits<double>::max();
     for (const auto &cell : tria.active_cell_iterators())
-      for (const unsigned int f : cell->face_indices())
-        {
-          if (cell->face(f)->at_boundary() && is_surface(cell->face(f)->boundary_id()))
-            info.min_surface_cell = std::min(info.min_surface_cell, cell->extent_in_direction(f / 2) / a);
-          if (cell->vertex(f).distance(edge) < on_line_tolerance * a)
-            info.min_edge_cell = std::min(info.min_edge_cell, cell->minimum_vertex_distance() / a);
-        }
-    return info;
+      if (cell->is_locally_owned())
+        for (const unsigned int f : cell->face_indices())
+          {
+            if (cell->face(f)->at_boundary() && boundary_id::is_surface(cell->face(f)->boundary_id()))
+              info.min_surface_cell =
+                std::min(info.min_surface_cell, cell->extent_in_direction(f / 2) / a);
+            if (cell->vertex(f).distance(edge) < on_line_tolerance * a)
+              info.min_edge_cell = std::min(info.min_edge_cell, cell->minimum_vertex_distance() / a);
+          }
+    if (distributed)
+      {
+        info.min_surface_cell = Utilities::MPI::min(info.min_surface_cell, tria.get_communicator());
+        info.min_edge_cell    = Utilities::MPI::min(info.min_edge_cell, tria.get_communicator());
+      }
   }
 } // namespace gradcontact::fem

@@ -72,8 +72,19 @@ namespace gradcontact::fem
   MeshParameters recommended_mesh_parameters(double contact_radius, double surface_exponent,
                                              double truncation_tolerance = 1e-8);
 
-  /// Builds the mesh of steps 1-3 into `tria` (which must be empty).
+  /// Builds the mesh of steps 1-3 into `tria` (which must be empty): make_coarse_mesh + refine_mesh.
   MeshInfo make_mesh(const MeshParameters &parameters, dealii::Triangulation<2> &tria);
+
+  /// Steps 1-2 in physical units (scaled by the contact radius a): the coarse mesh that a serial and a
+  /// distributed triangulation share (parallel::distributed::Triangulation::copy_triangulation).
+  MeshInfo make_coarse_mesh(const MeshParameters &parameters, dealii::Triangulation<2> &tria);
+
+  /// Step 3 on a coarse mesh from make_coarse_mesh, serial or parallel::distributed (each process flags
+  /// its own cells by the same geometric rule, so the mesh does not depend on the partition). The
+  /// z-only halvings are anisotropic refinement, which p4est cannot do: on a distributed triangulation a
+  /// surface_layer_thickness that needs halvings throws std::invalid_argument (on every process).
+  /// Fills n_halvings, min_surface_cell and min_edge_cell of `info`.
+  void refine_mesh(const MeshParameters &parameters, dealii::Triangulation<2> &tria, MeshInfo &info);
 
   /// Step 1 only, in units of a (for tests and for inspecting the gmsh part).
   MeshInfo make_near_field(const MeshParameters &parameters, dealii::Triangulation<2> &near_field);

@@ -1,0 +1,382 @@
+#include <fem/boundary_ids.h>
+#include <fem/distributed_solver.h>
+#include <fem/elasticity_assembly.h>
+
+#include <deal.II/base/function.h>
+#include <deal.II/dofs/dof_tools.h>
+#include <deal.II/fe/fe_q.h>
+#include <deal.II/lac/dynamic_sparsity_pattern.h>
+#include <deal.II/lac/solver_cg.h>
+#include <deal.II/lac/solver_control.h>
+#include <deal.II/lac/sparsity_tools.h>
+#include <deal.II/numerics/vector_tools.h>
+
+#include <cmath>
+#include <limits>
+#include <sstream>
+#include <stdexcept>
+
+namespace gradcontact::fem
+{
+  using namespace dealii;
+
+  namespace
+  {
+    // As in the serial solver: |u.Au - work| / u.Au above this means the linear solver returned
+    // garbage (sound meshes measured <= 4e-7 with UMFPACK).
+    constexpr double energy_mismatch_tolerance = 1e-6;
+    // The z-DoF at the centre (0, 0): its support point is exact, this only absorbs round-off.
+    constexpr double centre_tolerance = 1e-12;
+
+    [[noreturn]] void fail(const std::string &what, const double value, const std::string &range)
+    {
+      std::ostringstream msg;
+      msg.precision(17);
+      msg << "DistributedSolverParameters: " << what << " = " << value << " outside " << range;
+      throw std::invalid_argument(msg.str());
+    }
+  } // namespace
+
+
+
+  void DistributedSolverParameters::validate() const
+  {
+    if (!(relative_tolerance > 0 && relative_tolerance < 1))
+      fail("relative_tolerance", relative_tolerance, "(0, 1)");
+    if (max_iterations < 1)
+      fail("max_iterations", max_iterations, "[1, inf)");
+    if (!(aggregation_threshold >= 0 && aggregation_threshold < 1))
+      fail("aggregation_threshold", aggregation_threshold, "[0, 1)");
+    if (smoother_sweeps < 1 || smoother_sweeps > 20)
+      fail("smoother_sweeps", smoother_sweeps, "[1, 20]");
+  }
+
+
+
+  namespace
+  {
+    /// The communicator, after checking that MPI is up (Trilinos and p4est need it even on one process).
+    MPI_Comm checked(const MPI_Comm communicator)
+    {
+      if (!Utilities::MPI::job_supports_mpi())
+        throw std::runtime_error("DistributedSolver: MPI is not initialised; the program must create a "
+                                 "dealii::Utilities::MPI::MPI_InitFinalize object first");
+      return communicator;
+    }
+  } // namespace
+
+
+
+  DistributedSolver::DistributedSolver(const MPI_Comm communicator_, const Material &material_,
+                                       const MeshParameters &mesh_,
+                                       const DiscretizationParameters &discretization_,
+                                       const DistributedSolverParameters &solver_)
+    : communicator(checked(communicator_))
+    , material((material_.validate(), material_))
+    , mesh_parameters((mesh_.validate(), mesh_))
+    , discretization((discretization_.validate(), discretization_))
+    , solver_parameters((solver_.validate(), solver_))
+    , triangulation(communicator)
+    , fe(FE_Q<2>(discretization_.degree), 2)
+    , dof_handler(triangulation)
+  {
+    make_grid();
+    setup_system();
+    assemble_system();
+  }
+
+  DistributedSolver::~DistributedSolver()
+  {
+    dof_handler.clear();
+  }
+
+
+
+  double DistributedSolver::elapsed_max(const std::chrono::steady_clock::time_point &start) const
+  {
+    const double local = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    return Utilities::MPI::max(local, communicator);
+  }
+
+
+
+  void DistributedSolver::make_grid()
+  {
+    const auto start = std::chrono::steady_clock::now();
+    // The coarse mesh of the serial solver. Process 0 makes it first, so that only one process runs
+    // gmsh and the others read the cached .msh.
+    Triangulation<2> coarse;
+    const unsigned int rank = Utilities::MPI::this_mpi_process(communicator);
+    if (rank == 0)
+      mesh_info = make_coarse_mesh(mesh_parameters, coarse);
+    MPI_Barrier(communicator);
+    if (rank != 0)
+      mesh_info = make_coarse_mesh(mesh_parameters, coarse);
+    triangulation.copy_triangulation(coarse);
+    refine_mesh(mesh_parameters, triangulation, mesh_info);
+    setup_time.mesh = elapsed_max(start);
+  }
+
+
+
+  void DistributedSolver::setup_system()
+  {
+    const auto start = std::chrono::steady_clock::now();
+    dof_handler.distribute_dofs(fe);
+    owned = dof_handler.locally_owned_dofs();
+    DoFTools::extract_locally_relevant_dofs(dof_handler, relevant);
+
+    constraints.clear();
+    constraints.reinit(relevant);
+    DoFTools::make_hanging_node_constraints(dof_handler, constraints);
+    const FEValuesExtractors::Scalar radial(0);
+    VectorTools::interpolate_boundary_values(mapping, dof_handler, boundary_id::axis,
+                                             Functions::ZeroFunction<2>(2), constraints,
+                                             fe.component_mask(radial));
+    VectorTools::interpolate_boundary_values(mapping, dof_handler, boundary_id::far_field,
+                                             Functions::ZeroFunction<2>(2), constraints);
+    constraints.close();
+
+    // The unit punch: the homogeneous constraints plus u_z = 1 on the z-DoFs of the contact faces
+    // (every locally relevant one, i.e. on owned and ghost cells). As in the serial solver no contact
+    // DoF is constrained otherwise (a boundary face is never the refined side of a hanging node in 2D).
+    punch_constraints.clear();
+    punch_constraints.reinit(relevant);
+    punch_constraints.merge(constraints);
+    std::vector<types::global_dof_index> face_dofs(fe.n_dofs_per_face());
+    owned_contact_dofs.clear();
+    centre_dof = numbers::invalid_dof_index;
+    std::vector<Point<2>> unit_support = fe.get_unit_support_points();
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      if (!cell->is_artificial())
+        for (const unsigned int f : cell->face_indices())
+          if (cell->face(f)->at_boundary() && cell->face(f)->boundary_id() == boundary_id::contact)
+            {
+              cell->face(f)->get_dof_indices(face_dofs);
+              for (unsigned int i = 0; i < face_dofs.size(); ++i)
+                if (fe.face_system_to_component_index(i, f).first == 1)
+                  {
+                    const auto d = face_dofs[i];
+                    if (constraints.is_constrained(d))
+                      throw std::runtime_error("DistributedSolver: a contact z-DoF is constrained; the "
+                                               "flat punch assumes it is not");
+                    if (!punch_constraints.is_constrained(d))
+                      {
+                        punch_constraints.add_line(d);
+                        punch_constraints.set_inhomogeneity(d, 1.0);
+                        if (owned.is_element(d))
+                          owned_contact_dofs.push_back(d);
+                      }
+                  }
+            }
+    punch_constraints.close();
+
+    // The centre z-DoF, on the owner of a cell with the vertex (0, 0): its value is w_c.
+    const double a = mesh_parameters.contact_radius;
+    std::vector<types::global_dof_index> cell_dofs(fe.n_dofs_per_cell());
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      if (cell->is_locally_owned())
+        for (const unsigned int v : cell->vertex_indices())
+          if (cell->vertex(v).norm() < centre_tolerance * a)
+            {
+              cell->get_dof_indices(cell_dofs);
+              for (unsigned int i = 0; i < cell_dofs.size(); ++i)
+                if (fe.system_to_component_index(i).first == 1 && owned.is_element(cell_dofs[i]) &&
+                    unit_support[i].distance(GeometryInfo<2>::unit_cell_vertex(v)) < 1e-12)
+                  centre_dof = cell_dofs[i];
+            }
+
+    DynamicSparsityPattern dsp(relevant);
+    DoFTools::make_sparsity_pattern(dof_handler, dsp, constraints, false);
+    SparsityTools::distribute_sparsity_pattern(dsp, owned, communicator, relevant);
+    stiffness.reinit(owned, owned, dsp, communicator);
+    punch_matrix.reinit(owned, owned, dsp, communicator);
+    unit_punch_rhs.reinit(owned, communicator);
+    setup_time.setup = elapsed_max(start);
+  }
+
+
+
+  void DistributedSolver::assemble_system()
+  {
+    const auto start = std::chrono::steady_clock::now();
+    // K_cell: fem/elasticity_assembly.h (shared with the serial solver). The unit punch right-hand
+    // side is -A g_1 on the free DoFs, g_1 the unit prescribed values (deal.II's elimination of
+    // inhomogeneous constraints, with the constrained rows carrying a diagonal entry only).
+    CellStiffness                        cell_stiffness(material, fe, mapping, discretization);
+    std::vector<types::global_dof_index> local_dof_indices(fe.n_dofs_per_cell());
+    dealii::Vector<double>               cell_rhs(fe.n_dofs_per_cell());
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      if (cell->is_locally_owned())
+        {
+          const FullMatrix<double> &cell_matrix = cell_stiffness.matrix(cell);
+          cell->get_dof_indices(local_dof_indices);
+          constraints.distribute_local_to_global(cell_matrix, local_dof_indices, stiffness);
+          cell_rhs = 0;
+          punch_constraints.distribute_local_to_global(cell_matrix, cell_rhs, local_dof_indices, punch_matrix,
+                                                       unit_punch_rhs, true);
+        }
+    stiffness.compress(VectorOperation::add);
+    punch_matrix.compress(VectorOperation::add);
+    unit_punch_rhs.compress(VectorOperation::add);
+    setup_time.assemble = elapsed_max(start);
+  }
+
+
+
+  void DistributedSolver::solve(const bool contact_constrained, const Vector &b, Vector &u,
+                                DistributedResult &result)
+  {
+    const Matrix &A      = contact_constrained ? punch_matrix : stiffness;
+    LinearSolver &linear = contact_constrained ? punch_solver : free_solver;
+    const auto    start  = std::chrono::steady_clock::now();
+    bool          built  = false;
+    if (solver_parameters.method == DistributedSolverParameters::Method::direct)
+      {
+        result.solver = "Amesos_Mumps";
+        if (!linear.direct)
+          {
+            linear.control = std::make_unique<SolverControl>(1, 0);
+            linear.direct  = std::make_unique<TrilinosWrappers::SolverDirect>(
+              *linear.control, TrilinosWrappers::SolverDirect::AdditionalData(false, "Amesos_Mumps"));
+            linear.direct->initialize(A);
+            built = true;
+          }
+      }
+    else
+      {
+        result.solver = "CG + ML AMG";
+        if (!linear.amg)
+          {
+            // Near-null space: the constant mode of each component (the axisymmetric body has no
+            // rotation mode; u_r = const is excluded by the axis condition but still helps the
+            // coarse spaces away from the axis).
+            std::vector<std::vector<bool>> constant_modes;
+            DoFTools::extract_constant_modes(dof_handler, ComponentMask(), constant_modes);
+            TrilinosWrappers::PreconditionAMG::AdditionalData data;
+            data.elliptic              = true;
+            data.higher_order_elements = discretization.degree > 1;
+            data.aggregation_threshold = solver_parameters.aggregation_threshold;
+            data.smoother_sweeps       = solver_parameters.smoother_sweeps;
+            data.constant_modes        = constant_modes;
+            linear.amg                 = std::make_unique<TrilinosWrappers::PreconditionAMG>();
+            linear.amg->initialize(A, data);
+            built = true;
+          }
+      }
+    result.time.factorize = built ? elapsed_max(start) : 0.0;
+
+    u.reinit(owned, communicator);
+    if (linear.direct)
+      {
+        linear.direct->solve(u, b);
+        result.iterations = 0;
+      }
+    else
+      {
+        SolverControl control(solver_parameters.max_iterations,
+                              solver_parameters.relative_tolerance * b.l2_norm());
+        SolverCG<Vector> cg(control);
+        try
+          {
+            cg.solve(A, u, b, *linear.amg);
+          }
+        catch (const SolverControl::NoConvergence &e)
+          {
+            std::ostringstream msg;
+            msg << "DistributedSolver: CG + AMG did not converge in " << e.last_step
+                << " iterations (residual " << e.last_residual / b.l2_norm() << " of ||b||, wanted "
+                << solver_parameters.relative_tolerance << "); use Method::direct";
+            throw std::runtime_error(msg.str());
+          }
+        result.iterations = control.last_step();
+      }
+    Vector residual(owned, communicator);
+    A.vmult(residual, u);
+    residual.sadd(-1.0, 1.0, b);
+    result.residual = residual.l2_norm() / b.l2_norm();
+  }
+
+
+
+  DistributedResult DistributedSolver::run(const LoadCase &load)
+  {
+    load.validate();
+    if (load.type != LoadType::flat_punch && load.type != LoadType::constant_pressure)
+      throw std::invalid_argument("DistributedSolver::run: LoadCase::type = " +
+                                  std::to_string(static_cast<int>(load.type)) +
+                                  " is not supported; valid: flat_punch, constant_pressure");
+    const double      a = mesh_parameters.contact_radius;
+    DistributedResult result;
+    result.time        = setup_time;
+    result.n_dofs      = dof_handler.n_dofs();
+    result.n_cells     = triangulation.n_global_active_cells();
+    result.n_processes = Utilities::MPI::n_mpi_processes(communicator);
+    result.mesh        = mesh_info;
+
+    MPI_Barrier(communicator);
+    const auto start = std::chrono::steady_clock::now();
+    Vector     u, b;
+    double     work = 0; // work of the loads, per 2 pi
+    if (load.type == LoadType::flat_punch)
+      {
+        // u = d u1: the unit punch scaled, exact by linearity (the constraints carry u_z = 1).
+        solve(true, unit_punch_rhs, u, result);
+        punch_constraints.distribute(u);
+        u *= load.depth;
+        Vector reaction(owned, communicator);
+        stiffness.vmult(reaction, u);
+        double force = 0;
+        for (const auto d : owned_contact_dofs)
+          force += reaction[d];
+        force        = Utilities::MPI::sum(force, communicator);
+        work         = force * load.depth;
+        result.force = 2 * numbers::PI * force;
+        result.depth = load.depth;
+      }
+    else
+      {
+        // l(v) = \int_{contact} p0 v_z r dr (fem/elasticity_assembly.h).
+        b.reinit(owned, communicator);
+        CellPressureLoad                     cell_load(fe, mapping, discretization);
+        std::vector<types::global_dof_index> local_dof_indices(fe.n_dofs_per_cell());
+        bool                                 loaded = false;
+        for (const auto &cell : dof_handler.active_cell_iterators())
+          if (cell->is_locally_owned())
+            {
+              const dealii::Vector<double> &cell_rhs = cell_load.vector(cell, load.pressure, loaded);
+              if (!loaded)
+                continue;
+              cell->get_dof_indices(local_dof_indices);
+              constraints.distribute_local_to_global(cell_rhs, local_dof_indices, b);
+            }
+        b.compress(VectorOperation::add);
+        solve(false, b, u, result);
+        constraints.distribute(u);
+        work         = b * u;
+        result.force = numbers::PI * load.pressure * a * a; // 2 pi \int_0^a p0 r dr
+        const double centre =
+          (centre_dof != numbers::invalid_dof_index) ? u[centre_dof] : 0.0;
+        // Exactly one process owns the centre z-DoF.
+        result.depth = Utilities::MPI::sum(centre, communicator);
+      }
+
+    // Energy on the unconstrained DoFs (the constrained rows of A carry a diagonal entry only).
+    Vector u_free(u), Au(owned, communicator);
+    constraints.set_zero(u_free);
+    stiffness.vmult(Au, u_free);
+    const double energy    = u_free * Au;
+    result.energy_mismatch = std::abs(energy - work) / std::abs(energy);
+    if (!(result.energy_mismatch <= energy_mismatch_tolerance))
+      {
+        std::ostringstream msg;
+        msg << "unreliable solve: energy mismatch " << result.energy_mismatch << " > "
+            << energy_mismatch_tolerance << " (linear residual " << result.residual << ", surface cells "
+            << mesh_info.min_surface_cell << " a thin); ";
+        result.reliable = false;
+        result.message += msg.str();
+      }
+    result.time.solve = elapsed_max(start) - result.time.factorize;
+    return result;
+  }
+} // namespace gradcontact::fem

@@ -1,0 +1,157 @@
+// The axisymmetric graded half-space on a distributed triangulation (p4est) with Trilinos linear algebra:
+// the variant of fem/axisymmetric_solver.h for runs that outgrow one process (issue 3, last step).
+//
+// Same model, same discrete operator: the coarse mesh comes from make_coarse_mesh and is refined by
+// refine_mesh (fem/mesh.h), the cell matrices and loads from fem/elasticity_assembly.h, the material
+// from fem/modulus.h. On meshes without z-only halvings the mesh, hence the discrete problem, is the
+// one of the serial solver, and the answers agree to the accuracy of the linear solvers.
+//
+// Loads. LoadType::flat_punch (u_z = d on r <= a, no shear) and LoadType::constant_pressure (p0 on
+// r <= a); the other load types throw std::invalid_argument. The flat punch is solved as d times the
+// unit punch u1 (u_z = 1 on the contact z-DoFs, an inhomogeneous AffineConstraints), so one matrix and
+// one preconditioner or factorisation serve every depth. Force from the reaction,
+//   F = 2 pi sum_{i in contact} (A u)_i = 2 pi a(u, phi),   phi = sum of the contact z-basis functions,
+// with A assembled with the homogeneous constraints only (axis, far field, hanging nodes); the constant
+// pressure gives F = pi p0 a^2 and the depth w_c = u_z(0, 0).
+//
+// Linear solvers (DistributedSolverParameters::Method):
+//  - direct: MUMPS through Trilinos Amesos (Amesos_Mumps; Debian's Trilinos 13.2 has it), the default:
+//    it reproduces the serial UMFPACK answer to round-off on the ill-conditioned graded systems;
+//  - amg_cg: CG preconditioned by Trilinos ML (smoothed aggregation, Chebyshev smoother, the constant
+//    modes of u_r and u_z as near-null space), stopped at ||b - A u|| <= relative_tolerance ||b||.
+//    The graded E (10 orders of magnitude of cell size, E -> 0 or infinity at z = 0) degrades it:
+//    measured iteration counts are in fem/README.md ("Distributed runs").
+//
+// Reliability as in the serial solver: |u.Au - work| / u.Au above 1e-6 marks the result unreliable.
+//
+// MPI. The caller initialises MPI (Utilities::MPI::MPI_InitFinalize); every process of `communicator`
+// must construct the solver and call run() with the same arguments. The results are the same on every
+// process.
+#ifndef GRADCONTACT_FEM_DISTRIBUTED_SOLVER_H
+#define GRADCONTACT_FEM_DISTRIBUTED_SOLVER_H
+
+#include <fem/axisymmetric_solver.h>
+#include <fem/mesh.h>
+#include <fem/modulus.h>
+
+#include <deal.II/base/index_set.h>
+#include <deal.II/base/mpi.h>
+#include <deal.II/distributed/tria.h>
+#include <deal.II/dofs/dof_handler.h>
+#include <deal.II/fe/fe_system.h>
+#include <deal.II/fe/mapping_q1.h>
+#include <deal.II/lac/affine_constraints.h>
+#include <deal.II/lac/trilinos_precondition.h>
+#include <deal.II/lac/trilinos_solver.h>
+#include <deal.II/lac/trilinos_sparse_matrix.h>
+#include <deal.II/lac/trilinos_vector.h>
+
+#include <chrono>
+#include <memory>
+#include <string>
+
+namespace gradcontact::fem
+{
+  struct DistributedSolverParameters
+  {
+    enum class Method
+    {
+      direct, ///< Amesos_Mumps (distributed sparse LU)
+      amg_cg  ///< CG + Trilinos ML AMG
+    };
+    Method       method                = Method::direct;
+    double       relative_tolerance    = 1e-12; ///< amg_cg: ||b - A u|| <= this ||b||, (0, 1)
+    unsigned int max_iterations        = 20000; ///< amg_cg: CG iterations, >= 1
+    double       aggregation_threshold = 1e-4;  ///< amg_cg: ML drop tolerance, [0, 1)
+    unsigned int smoother_sweeps       = 2;     ///< amg_cg: Chebyshev sweeps, [1, 20]
+
+    /// Throws std::invalid_argument naming the member, its value and the valid range.
+    void validate() const;
+  };
+
+  struct DistributedResult
+  {
+    double force = 0; ///< F_N, compressive positive
+    double depth = 0; ///< d (flat punch) or w_c = u_z(0, 0) (constant pressure)
+
+    dealii::types::global_dof_index n_dofs = 0;
+    unsigned int n_cells     = 0; ///< active cells of the whole mesh
+    unsigned int n_processes = 0;
+    std::string  solver;          ///< "Amesos_Mumps" or "CG + ML AMG"
+    unsigned int iterations = 0;  ///< CG iterations of this run (0: direct)
+    double       residual   = 0;  ///< ||b - A u|| / ||b|| of the linear solve
+
+    double      energy_mismatch = 0; ///< |2 pi u.Au - work| / (2 pi u.Au)
+    bool        reliable        = true;
+    std::string message;             ///< what failed, if anything
+
+    MeshInfo mesh;
+    /// Wall times, the slowest process: mesh, setup, assemble once per solver; factorize is the
+    /// factorisation or AMG setup of this run (0 when reused), solve and postprocess this run's.
+    Timings time;
+  };
+
+  class DistributedSolver
+  {
+  public:
+    /// Builds the distributed mesh, DoFs, constraints and both matrices (collective). Throws
+    /// std::invalid_argument on bad input (also a surface_layer_thickness that needs z-only halvings,
+    /// which p4est cannot do) and std::runtime_error when MPI is not initialised.
+    DistributedSolver(MPI_Comm communicator, const Material &material, const MeshParameters &mesh,
+                      const DiscretizationParameters &discretization,
+                      const DistributedSolverParameters &solver = {});
+    ~DistributedSolver();
+
+    /// Solves one load case (collective), reusing everything load independent.
+    DistributedResult run(const LoadCase &load);
+
+    dealii::types::global_dof_index n_dofs() const { return dof_handler.n_dofs(); }
+
+  private:
+    using Vector = dealii::TrilinosWrappers::MPI::Vector;
+    using Matrix = dealii::TrilinosWrappers::SparseMatrix;
+
+    /// The factorisation or the AMG preconditioner of one matrix, built on first use.
+    struct LinearSolver
+    {
+      std::unique_ptr<dealii::SolverControl>                 control;
+      std::unique_ptr<dealii::TrilinosWrappers::SolverDirect> direct;
+      std::unique_ptr<dealii::TrilinosWrappers::PreconditionAMG> amg;
+    };
+
+    void make_grid();
+    void setup_system();
+    void assemble_system();
+    /// u = A^{-1} b for the contact-constrained matrix (true) or the free one; iterations and the
+    /// factorisation time into `result`.
+    void solve(bool contact_constrained, const Vector &b, Vector &u, DistributedResult &result);
+    double elapsed_max(const std::chrono::steady_clock::time_point &start) const;
+
+    MPI_Comm                          communicator;
+    const Material                    material;
+    const MeshParameters              mesh_parameters;
+    const DiscretizationParameters    discretization;
+    const DistributedSolverParameters solver_parameters;
+
+    dealii::parallel::distributed::Triangulation<2> triangulation;
+    MeshInfo                                        mesh_info;
+    const dealii::FESystem<2>                       fe;
+    dealii::DoFHandler<2>                           dof_handler;
+    const dealii::MappingQ1<2>                      mapping;
+
+    dealii::IndexSet owned, relevant;
+    /// Homogeneous: hanging nodes, u_r = 0 on the axis, u = 0 on the far field.
+    dealii::AffineConstraints<double> constraints;
+    /// The same plus u_z = 1 on the contact z-DoFs (the unit punch).
+    dealii::AffineConstraints<double> punch_constraints;
+    Matrix stiffness;       ///< A with `constraints`: the reaction A u and the energy u.Au
+    Matrix punch_matrix;    ///< A with `punch_constraints`
+    Vector unit_punch_rhs;  ///< the right-hand side of the unit punch
+    std::vector<dealii::types::global_dof_index> owned_contact_dofs; ///< locally owned contact z-DoFs
+    dealii::types::global_dof_index centre_dof; ///< the z-DoF at (0, 0)
+    LinearSolver punch_solver, free_solver;
+    Timings      setup_time;
+  };
+} // namespace gradcontact::fem
+
+#endif

@@ -1,0 +1,150 @@
+#include <fem/axisymmetric_solver.h>
+#include <fem/boundary_ids.h>
+#include <fem/elasticity_assembly.h>
+#include <fem/gauss_jacobi.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace gradcontact::fem
+{
+  using namespace dealii;
+
+  namespace
+  {
+    const UpdateFlags cell_flags =
+      update_values | update_gradients | update_quadrature_points | update_JxW_values;
+
+    unsigned int n_points(const DiscretizationParameters &d)
+    {
+      return d.degree + d.extra_quadrature_points;
+    }
+  } // namespace
+
+
+
+  CellStiffness::CellStiffness(const Material &material_, const FESystem<2> &fe_, const Mapping<2> &mapping,
+                               const DiscretizationParameters &discretization)
+    : material(material_)
+    , fe(fe_)
+    , s(material_.modulus->surface_exponent())
+    , jumps(material_.modulus->discontinuities())
+    , cell_matrix(fe_.n_dofs_per_cell(), fe_.n_dofs_per_cell())
+    , B(fe_.n_dofs_per_cell())
+  {
+    const unsigned int n_q = n_points(discretization);
+    regular    = std::make_unique<FEValues<2>>(mapping, fe, QGauss<2>(n_q), cell_flags);
+    subdivided = std::make_unique<FEValues<2>>(
+      mapping, fe, QIterated<2>(QGauss<1>(n_q), discretization.discontinuity_subdivisions), cell_flags);
+    for (unsigned int f = 0; f < 4; ++f)
+      surface[f] = std::make_unique<FEValues<2>>(mapping, fe, surface_cell_quadrature(n_q, s, f, distance[f]),
+                                                 cell_flags);
+  }
+
+
+
+  const FullMatrix<double> &CellStiffness::matrix(const DoFHandler<2>::active_cell_iterator &cell)
+  {
+    const ModulusField &E        = *material.modulus;
+    const double        nu       = material.nu;
+    const double        c_lambda = nu / ((1 + nu) * (1 - 2 * nu));
+    const double        c_mu     = 1 / (2 * (1 + nu));
+
+    unsigned int surface_face = numbers::invalid_unsigned_int;
+    for (const unsigned int f : cell->face_indices())
+      if (cell->face(f)->at_boundary() && boundary_id::is_surface(cell->face(f)->boundary_id()))
+        surface_face = f;
+    double z_min = std::numeric_limits<double>::max(), z_max = 0;
+    for (const unsigned int v : cell->vertex_indices())
+      {
+        z_min = std::min(z_min, cell->vertex(v)[1]);
+        z_max = std::max(z_max, cell->vertex(v)[1]);
+      }
+    const bool straddles =
+      std::any_of(jumps.begin(), jumps.end(), [&](const double z) { return z > z_min && z < z_max; });
+
+    // A jump inside the cell wins over the surface rule (QIterated resolves the jump; E is bounded
+    // away from the surface there).
+    FEValues<2>               *fe_values = regular.get();
+    const std::vector<double> *xi        = nullptr;
+    if (straddles)
+      fe_values = subdivided.get();
+    else if (surface_face != numbers::invalid_unsigned_int && s != 0.0)
+      {
+        fe_values = surface[surface_face].get();
+        xi        = &distance[surface_face];
+      }
+    fe_values->reinit(cell);
+
+    const unsigned int dofs_per_cell = fe.n_dofs_per_cell();
+    cell_matrix                      = 0;
+    for (const unsigned int q : fe_values->quadrature_point_indices())
+      {
+        const Point<2> &x = fe_values->quadrature_point(q);
+        const double    r = x[0];
+        // With the Gauss-Jacobi rule JxW contains xi^s, so E is divided by it: E(z)/xi^s is the
+        // regular factor (E0 (h(x)/c0)^k for the power law, h the local cell height).
+        const double modulus = (xi ? E.value(x[1]) / std::pow((*xi)[q], s) : E.value(x[1]));
+        const double lambda  = c_lambda * modulus;
+        const double mu      = c_mu * modulus;
+        const double weight  = r * fe_values->JxW(q);
+
+        for (unsigned int i = 0; i < dofs_per_cell; ++i)
+          {
+            const unsigned int  c    = fe.system_to_component_index(i).first;
+            const double        phi  = fe_values->shape_value(i, q);
+            const Tensor<1, 2> &grad = fe_values->shape_grad(i, q);
+            B[i] = (c == 0) ? std::array<double, 4>{{grad[0], 0.0, phi / r, grad[1]}} :
+                              std::array<double, 4>{{0.0, grad[1], 0.0, grad[0]}};
+          }
+        for (unsigned int i = 0; i < dofs_per_cell; ++i)
+          {
+            const double tr_i = B[i][0] + B[i][1] + B[i][2];
+            for (unsigned int j = 0; j <= i; ++j)
+              {
+                const double tr_j = B[j][0] + B[j][1] + B[j][2];
+                cell_matrix(i, j) += (lambda * tr_i * tr_j +
+                                      2 * mu * (B[i][0] * B[j][0] + B[i][1] * B[j][1] + B[i][2] * B[j][2]) +
+                                      mu * B[i][3] * B[j][3]) *
+                                     weight;
+              }
+          }
+      }
+    for (unsigned int i = 0; i < dofs_per_cell; ++i)
+      for (unsigned int j = i + 1; j < dofs_per_cell; ++j)
+        cell_matrix(i, j) = cell_matrix(j, i);
+    return cell_matrix;
+  }
+
+
+
+  CellPressureLoad::CellPressureLoad(const FESystem<2> &fe_, const Mapping<2> &mapping,
+                                     const DiscretizationParameters &discretization)
+    : fe(fe_)
+    , face_values(mapping, fe_, QGauss<1>(n_points(discretization)),
+                  update_values | update_quadrature_points | update_JxW_values)
+    , cell_rhs(fe_.n_dofs_per_cell())
+  {}
+
+
+
+  const Vector<double> &CellPressureLoad::vector(const DoFHandler<2>::active_cell_iterator &cell,
+                                                 const double p0, bool &loaded)
+  {
+    cell_rhs = 0;
+    loaded   = false;
+    for (const unsigned int f : cell->face_indices())
+      if (cell->face(f)->at_boundary() && cell->face(f)->boundary_id() == boundary_id::contact)
+        {
+          loaded = true;
+          face_values.reinit(cell, f);
+          for (const unsigned int q : face_values.quadrature_point_indices())
+            for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
+              if (fe.system_to_component_index(i).first == 1)
+                cell_rhs(i) +=
+                  p0 * face_values.shape_value(i, q) * face_values.quadrature_point(q)[0] * face_values.JxW(q);
+        }
+    return cell_rhs;
+  }
+} // namespace gradcontact::fem

@@ -1,0 +1,135 @@
+// fem_mpi: one flat-punch or constant-pressure run of the distributed solver (p4est + Trilinos,
+// fem/distributed_solver.h), optionally checked against the serial solver on the same mesh.
+//
+//   mpirun -np 2 fem_mpi load=punch k=0 p=3 h_edge=1e-5 h_far=3 g=1.15 L=1e8 layer=1 R1=4 global=0
+//                        solver=direct|amg tol=1e-12 compare=1 compare_tol=1e-10
+// load = punch | pressure. Mesh keys default to recommended_mesh_parameters(a, k) except layer (the
+// z-only surface halvings, which p4est cannot do: default 1, none). compare=1: process 0 also runs the
+// serial AxisymmetricSolver (UMFPACK) and the program fails (exit 1) unless force and depth agree within
+// compare_tol relative. Prints one line of key=value pairs (process 0).
+#include <fem/axisymmetric_solver.h>
+#include <fem/distributed_solver.h>
+#include <fem/modulus.h>
+
+#include <deal.II/base/mpi.h>
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <iostream>
+#include <map>
+#include <memory>
+#include <string>
+
+using namespace gradcontact::fem;
+
+int main(int argc, char **argv)
+{
+  // One thread per process: the machine's cores go to the MPI processes.
+  dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  const MPI_Comm     world = MPI_COMM_WORLD;
+  const bool         root  = dealii::Utilities::MPI::this_mpi_process(world) == 0;
+  try
+    {
+      std::map<std::string, std::string> arg;
+      for (int i = 1; i < argc; ++i)
+        {
+          const std::string s  = argv[i];
+          const auto        eq = s.find('=');
+          if (eq == std::string::npos)
+            throw std::invalid_argument("fem_mpi: argument '" + s + "' is not key=value");
+          arg[s.substr(0, eq)] = s.substr(eq + 1);
+        }
+      auto num = [&](const std::string &key, const double fallback) {
+        return arg.count(key) ? std::stod(arg[key]) : fallback;
+      };
+      // The material and loads of fem_study: E0 = 2 GPa, c0 = 0.3 mm, a = 0.1 mm.
+      const double E0 = 2e9, c0 = 3e-4, a = 1e-4, nu = num("nu", 0.3);
+      const double k  = num("k", 0.0);
+      const std::string load_name = arg.count("load") ? arg["load"] : "punch";
+      MeshParameters mesh = recommended_mesh_parameters(a, k, num("truncation", 1e-8));
+      mesh.h_edge                  = num("h_edge", mesh.h_edge);
+      mesh.h_surface               = num("h_surface", mesh.h_surface);
+      mesh.h_far                   = num("h_far", mesh.h_far);
+      mesh.ring_growth             = num("g", mesh.ring_growth);
+      mesh.far_field_size          = num("L", mesh.far_field_size);
+      mesh.surface_layer_thickness = num("layer", 1.0);
+      mesh.near_field_size         = num("R1", mesh.near_field_size);
+      mesh.edge_refinements        = static_cast<unsigned>(num("edge_refinements", mesh.edge_refinements));
+      mesh.axis_refinements        = static_cast<unsigned>(num("axis_refinements", mesh.axis_refinements));
+      mesh.global_refinements      = static_cast<unsigned>(num("global", mesh.global_refinements));
+      DiscretizationParameters disc;
+      disc.degree = static_cast<unsigned>(num("p", disc.degree));
+      DistributedSolverParameters parameters;
+      const std::string solver_name = arg.count("solver") ? arg["solver"] : "direct";
+      if (solver_name == "amg")
+        parameters.method = DistributedSolverParameters::Method::amg_cg;
+      else if (solver_name != "direct")
+        throw std::invalid_argument("fem_mpi: solver = " + solver_name + " outside {direct, amg}");
+      parameters.relative_tolerance    = num("tol", parameters.relative_tolerance);
+      parameters.aggregation_threshold = num("threshold", parameters.aggregation_threshold);
+      parameters.smoother_sweeps       = static_cast<unsigned>(num("sweeps", parameters.smoother_sweeps));
+
+      LoadCase load;
+      if (load_name == "punch")
+        {
+          load.type  = LoadType::flat_punch;
+          load.depth = 1e-3 * a;
+        }
+      else if (load_name == "pressure")
+        {
+          load.type     = LoadType::constant_pressure;
+          load.pressure = 1e6;
+        }
+      else
+        throw std::invalid_argument("fem_mpi: load = " + load_name + " outside {punch, pressure}");
+      const Material material{std::make_shared<PowerLawModulus>(E0, c0, k), nu};
+
+      const auto        start = std::chrono::steady_clock::now();
+      DistributedSolver solver(world, material, mesh, disc, parameters);
+      const DistributedResult r = solver.run(load);
+      const double total = dealii::Utilities::MPI::max(
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), world);
+      if (root)
+        std::printf("load=%s k=%g p=%u np=%u solver=%s dofs=%llu cells=%u force=%.16e depth=%.16e "
+                    "iterations=%u residual=%.1e mismatch=%.1e mesh=%.2f setup=%.2f assemble=%.2f "
+                    "factorize=%.2f solve=%.2f total=%.2f %s\n",
+                    load_name.c_str(), k, disc.degree, r.n_processes, r.solver.c_str(),
+                    static_cast<unsigned long long>(r.n_dofs), r.n_cells, r.force, r.depth, r.iterations,
+                    r.residual, r.energy_mismatch, r.time.mesh, r.time.setup, r.time.assemble,
+                    r.time.factorize, r.time.solve, total, r.message.c_str());
+
+      int failed = r.reliable ? 0 : 1;
+      if (arg.count("compare") && num("compare", 0) != 0)
+        {
+          // The serial reference on process 0 (the others wait): same mesh, same operator, UMFPACK.
+          const double tolerance = num("compare_tol", 1e-10);
+          if (root)
+            {
+              const auto         serial_start = std::chrono::steady_clock::now();
+              AxisymmetricSolver serial(material, mesh, disc);
+              const Result       s = serial.run(load);
+              const double       t = std::chrono::duration<double>(std::chrono::steady_clock::now() - serial_start).count();
+              const double       df = std::abs(r.force / s.force - 1), dd = std::abs(r.depth / s.depth - 1);
+              const bool         same_mesh = s.n_dofs == r.n_dofs;
+              std::printf("serial: dofs=%u force=%.16e depth=%.16e total=%.2f | relative difference: "
+                          "force=%.2e depth=%.2e (tolerance %.1e)\n",
+                          s.n_dofs, s.force, s.depth, t, df, dd, tolerance);
+              if (!same_mesh || !(df <= tolerance) || !(dd <= tolerance))
+                {
+                  std::printf("FAILED: %s\n", same_mesh ? "the distributed answer differs from the serial one" :
+                                                          "different DoF counts (different meshes)");
+                  failed = 1;
+                }
+            }
+          failed = dealii::Utilities::MPI::max(failed, world);
+        }
+      return failed;
+    }
+  catch (const std::exception &e)
+    {
+      std::cerr << "fem_mpi (process " << dealii::Utilities::MPI::this_mpi_process(world) << "): " << e.what()
+                << '\n';
+      return 1;
+    }
+}
