@@ -364,6 +364,30 @@ namespace gradcontact::cases
     }
   } // namespace
 
+  FeProfile fe_profile(const Scene &scene, const std::string &quantity, const std::vector<double> &radii_over_a,
+                       const std::string &normaliser, const double normaliser_r_over_a, const bool per_area)
+  {
+    if (quantity != "pressure" && quantity != "displacement")
+      throw std::invalid_argument("fe_profile: quantity = '" + quantity + "' must be 'pressure' or 'displacement'");
+    Scene s = scene;
+    (quantity == "pressure" ? s.outputs.pressure_radii : s.outputs.displacement_radii) = radii_over_a;
+    (quantity == "pressure" ? s.outputs.displacement_radii : s.outputs.pressure_radii).clear();
+    s.outputs.vtu = false;
+    const FeRun run = run_fe(s, s.discretization.refinements.back(), fs::temp_directory_path());
+    const AnalyticReference closed(s, "closed_form");
+    const double a = closed.radius();
+    const bool needs_r = normaliser == "pressure" || normaliser == "displacement";
+    const double norm = closed.get(normaliser, needs_r ? std::optional<double>(normaliser_r_over_a * a) : std::nullopt);
+    const double area = per_area ? 3.14159265358979323846 * a * a : 1.;
+    FeProfile out;
+    for (const fem::Sample &p : quantity == "pressure" ? run.result.pressure : run.result.displacement)
+      {
+        out.x.push_back(p.r / s.load.a);
+        out.y.push_back(p.value * area / norm);
+      }
+    return out;
+  }
+
   SceneResult run_prm_scene(const Scene &s, const fs::path &folder, const bool verbose)
   {
     if (!s.candidate.profile.empty())

@@ -1,6 +1,8 @@
 #include "figures.h"
 
+#include "fe_scene.h"
 #include "report.h"
+#include "scene.h"
 
 #include <analytic/batch.hpp>
 
@@ -67,6 +69,20 @@ namespace gradcontact::cases
       std::size_t skipped = 0;
       for (const json &c : fig.at("curves"))
         {
+          if (c.contains("fe"))
+            {
+              // FE points from a .prm scene (with overrides), normalised by the scene's closed form.
+              const json &fe = c.at("fe");
+              std::vector<Override> overrides;
+              for (const json &o : fe.value("set", json::array()))
+                overrides.push_back(parse_override(o.get<std::string>()));
+              const fs::path scene_file = fs::path(fe.at("scene").get<std::string>());
+              const Scene scene = read_scene(scene_file.string(), overrides);
+              const FeProfile p = fe_profile(scene, fe.at("quantity"), fe.at("radii").get<std::vector<double>>(),
+                                             fe.at("normaliser"), fe.value("normaliser_r", 0.), fe.value("per_area", false));
+              series.push_back({c.value("title", "FE"), p.x, p.y, true});
+              continue;
+            }
           const json &sweep = c.at("sweep");
           const std::string key = sweep.at("key");
           const double from = sweep.at("from"), to = sweep.at("to");

@@ -6,7 +6,11 @@
 //   {"name", "title", "xlabel", "ylabel", "logx", "logy",
 //    "curves": [{"title", "sweep": {"key", "from", "to", "points", "log"},
 //                "x": {"sweep": true, "scale": 1} | {"request": {...}, "scale": s, "divide_by": {...}},
-//                "y": ... }]}
+//                "y": ... }
+//              | {"title", "fe": {"scene": "cases/default/x.prm", "set": ["Material/k=0.5"],
+//                                 "quantity": "pressure"|"displacement", "radii": [r/a, ...],
+//                                 "normaliser": eval quantity of the scene, "normaliser_r": r/a,
+//                                 "per_area": times pi a^2}}]}
 // Output: reports/figures/<name>.png/.svg with the data and the gnuplot script.
 #pragma once
 
