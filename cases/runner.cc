@@ -42,17 +42,18 @@ namespace gradcontact::cases
         {
           std::vector<fs::path> found;
           for (const auto &entry : fs::directory_iterator(p))
-            if (entry.path().extension() == ".jsonl" || entry.path().extension() == ".prm")
+            if (entry.path().extension() == ".jsonl" || entry.path().extension() == ".prm" ||
+                entry.path().extension() == ".json")
               found.push_back(entry.path());
           std::sort(found.begin(), found.end());
           if (found.empty())
-            throw std::invalid_argument("run: folder '" + a + "' holds no scene (*.prm, *.jsonl)");
+            throw std::invalid_argument("run: folder '" + a + "' holds no scene (*.prm, *.json, *.jsonl)");
           o.scenes.insert(o.scenes.end(), found.begin(), found.end());
         }
       else if (fs::is_regular_file(p))
         {
-          if (p.extension() != ".prm" && p.extension() != ".jsonl")
-            throw std::invalid_argument("run: '" + a + "' is not a scene (*.prm or *.jsonl)");
+          if (p.extension() != ".prm" && p.extension() != ".json" && p.extension() != ".jsonl")
+            throw std::invalid_argument("run: '" + a + "' is not a scene (*.prm, *.json or *.jsonl)");
           o.scenes.push_back(p);
         }
       else
@@ -172,6 +173,8 @@ namespace gradcontact::cases
         }
       Scene scene = read_scene(file.string(), overrides);
       scene.info.name += suffix;
+      if (o.verbose)
+        std::cout << "# " << file.string() << " resolved:\n" << scene.resolved;
       SceneResult s;
       atomic_folder(o.reports / scene.info.name, [&](const fs::path &tmp) {
         s = run_prm_scene(scene, tmp, o.verbose);
@@ -240,8 +243,8 @@ namespace gradcontact::cases
   {
     std::vector<std::string> over;
     const Options o = parse(args, &over);
-    if (o.scenes.size() != 1 || o.scenes.front().extension() != ".prm")
-      throw std::invalid_argument("sweep: name exactly one .prm scene");
+    if (o.scenes.size() != 1 || o.scenes.front().extension() == ".jsonl")
+      throw std::invalid_argument("sweep: name exactly one .prm or .json scene");
     if (over.size() != 2)
       throw std::invalid_argument("sweep: give one --over Section/key=v1,v2,...");
     const Override base = parse_override(over[1]);

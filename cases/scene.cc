@@ -5,6 +5,7 @@
 #include <deal.II/base/utilities.h>
 
 #include <filesystem>
+#include <fstream>
 #include <sstream>
 #include <stdexcept>
 
@@ -280,7 +281,14 @@ namespace gradcontact::cases
       {
         if (!std::filesystem::is_regular_file(file))
           throw std::invalid_argument("no such file");
-        prm.parse_input(file, "", false);
+        if (std::filesystem::path(file).extension() == ".json")
+          {
+            // the same entries as a JSON object of subsections ({"Material": {"k": "0.5"}, ...})
+            std::ifstream in(file);
+            prm.parse_input_from_json(in, false);
+          }
+        else
+          prm.parse_input(file, "", false);
       }
     catch (const std::exception &e)
       {
