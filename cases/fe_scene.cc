@@ -360,6 +360,51 @@ namespace gradcontact::cases
                    [&](double r) { return mdr::displacement(w1d, m, r); });
       if (result.rows.empty())
         throw std::invalid_argument("Candidate: no candidate formula given (depth, force, pressure or displacement)");
+
+      // The same candidate against the FE model: the profile as a custom indenter under contact-radius
+      // control on the recommended mesh, one solve for every quantity.
+      if (s.references.fem)
+        {
+          Scene fe_scene = s;
+          fe_scene.load.control = Control::contact_radius;
+          const auto t0 = std::chrono::steady_clock::now();
+          fem::Settings settings = fem::recommended_settings(a, mp.k, s.discretization.force_tolerance);
+          settings.discretization.degree = s.discretization.degree;
+          fem::AxisymmetricSolver solver(fe_material(fe_scene), settings.mesh, settings.discretization);
+          fem::LoadCase lc;
+          lc.type = fem::LoadType::indenter;
+          lc.profile = fem::Profile::custom(profile.f, 2.);
+          fem::OutputRequest out;
+          for (const double x : s.outputs.pressure_radii)
+            out.pressure_radii.push_back(x * a);
+          for (const double x : s.outputs.displacement_radii)
+            out.displacement_radii.push_back(x * a);
+          const fem::Result fe = solver.run(lc, out);
+          const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+          const auto fe_row = [&](const std::string &quantity, const std::string &metric, const std::string &expression,
+                                  const double fe_value, const double tolerance, const std::optional<double> r) {
+            if (expression.empty())
+              return;
+            try
+              {
+                const double value = r ? parse_expression<2>(quantity, "r,a", expression, constants)->value(dealii::Point<2>(*r, a))
+                                       : at(*parse_expression<1>(quantity, "a", expression, constants), a);
+                result.rows.push_back(compare(quantity, metric, "candidate", "FE", fe_value, value, fe_value, tolerance,
+                                              fe.n_dofs, seconds));
+              }
+            catch (const std::exception &e)
+              {
+                result.rows.push_back(failed(quantity, "candidate", "FE", concise(e)));
+              }
+          };
+          fe_row("depth", "relative", c.depth, fe.depth, s.tolerances.depth, std::nullopt);
+          fe_row("force", "relative", c.force, fe.force, s.tolerances.force, std::nullopt);
+          for (const fem::Sample &p : fe.pressure)
+            fe_row("pressure", "r/a = " + format(p.r / a) + ", relative", c.pressure, p.value, s.tolerances.pressure, p.r);
+          for (const fem::Sample &w : fe.displacement)
+            fe_row("displacement", "r/a = " + format(w.r / a) + ", relative", c.displacement, w.value,
+                   s.tolerances.displacement, w.r);
+        }
       return result;
     }
   } // namespace

@@ -152,6 +152,15 @@ namespace gradcontact::fem
     return p;
   }
 
+  Profile Profile::custom(std::function<double(double)> f, const double growth_exponent)
+  {
+    Profile p;
+    p.shape = Shape::custom;
+    p.function = std::move(f);
+    p.growth_exponent = growth_exponent;
+    return p;
+  }
+
   double Profile::operator()(const double r, const double a) const
   {
     switch (shape)
@@ -164,6 +173,8 @@ namespace gradcontact::fem
           return A * std::pow(r, n);
         case Shape::concave_paraboloid:
           return -h0 * (r / a) * (r / a);
+        case Shape::custom:
+          return function(r);
       }
     return 0; // unreachable
   }
@@ -179,6 +190,8 @@ namespace gradcontact::fem
           return 1.0;
         case Shape::power_law:
           return n;
+        case Shape::custom:
+          return growth_exponent;
       }
     return 0; // unreachable
   }
@@ -204,6 +217,12 @@ namespace gradcontact::fem
         case Shape::concave_paraboloid:
           if (!(h0 >= 0) || !std::isfinite(h0))
             fail("Profile (concave paraboloid)", "h0", h0, "[0, inf)");
+          break;
+        case Shape::custom:
+          if (!function)
+            throw std::invalid_argument("Profile (custom): the profile function is empty");
+          if (!(growth_exponent > 0) || !std::isfinite(growth_exponent))
+            fail("Profile (custom)", "growth_exponent", growth_exponent, "(0, inf)");
           break;
       }
   }

@@ -55,6 +55,7 @@
 #include <deal.II/lac/sparsity_pattern.h>
 #include <deal.II/lac/vector.h>
 
+#include <functional>
 #include <map>
 #include <memory>
 #include <string>
@@ -92,8 +93,9 @@ namespace gradcontact::fem
     {
       paraboloid,        ///< f = r^2 / (2 R)                (9.24)
       cone,              ///< f = r tan(theta)               (9.18)
-      power_law,         ///< f = A r^n                      (9.27)
-      concave_paraboloid ///< f = -h0 r^2 / a^2, r <= a      (9.31)
+      power_law,          ///< f = A r^n                      (9.27)
+      concave_paraboloid, ///< f = -h0 r^2 / a^2, r <= a      (9.31)
+      custom              ///< any convex f(r) given as a function (a user's candidate profile)
     };
     Shape  shape     = Shape::paraboloid;
     double R         = 1.0;
@@ -106,6 +108,11 @@ namespace gradcontact::fem
     static Profile cone(double tan_theta);
     static Profile power_law(double n, double A);
     static Profile concave_paraboloid(double h0);
+    /// Any convex profile with f(0) = 0; `growth_exponent` (f ~ r^n) only seeds the depth and force
+    /// searches of indenter_depth and indenter_force.
+    static Profile custom(std::function<double(double)> f, double growth_exponent);
+    std::function<double(double)> function; ///< custom: f(r)
+    double growth_exponent = 2.0;           ///< custom
 
     /// f(r); `a` is the punch radius (used by the concave paraboloid only).
     double operator()(double r, double a) const;
