@@ -1,3 +1,4 @@
+#include <fem/errors.h>
 #include <fem/axisymmetric_solver.h>
 #include <fem/boundary_ids.h>
 #include <fem/elasticity_assembly.h>
@@ -47,14 +48,6 @@ namespace gradcontact::fem
     constexpr unsigned int max_control_iterations = 60;
     constexpr unsigned int max_modified_dofs      = 200;
 
-    [[noreturn]] void fail(const std::string &where, const std::string &what, const double value,
-                           const std::string &range)
-    {
-      std::ostringstream msg;
-      msg.precision(17);
-      msg << where << ": " << what << " = " << value << " outside " << range;
-      throw std::invalid_argument(msg.str());
-    }
 
     double seconds_since(const std::chrono::steady_clock::time_point &start)
     {
@@ -303,14 +296,7 @@ namespace gradcontact::fem
     // Homogeneous constraints shared by every load: hanging nodes (z-only halvings, edge refinement),
     // u_r = 0 on the axis, u = 0 on the truncation boundary.
     constraints.clear();
-    DoFTools::make_hanging_node_constraints(dof_handler, constraints);
-    const FEValuesExtractors::Scalar radial(0);
-    VectorTools::interpolate_boundary_values(mapping, dof_handler, boundary_id::axis,
-                                             Functions::ZeroFunction<2>(2), constraints,
-                                             fe.component_mask(radial));
-    VectorTools::interpolate_boundary_values(mapping, dof_handler, boundary_id::far_field,
-                                             Functions::ZeroFunction<2>(2), constraints);
-    constraints.close();
+    make_homogeneous_constraints(dof_handler, mapping, fe, constraints);
 
     DynamicSparsityPattern dsp(dof_handler.n_dofs());
     DoFTools::make_sparsity_pattern(dof_handler, dsp, constraints, false);

@@ -1,3 +1,4 @@
+#include <fem/errors.h>
 #include <fem/convergence.h>
 
 #include <chrono>
@@ -14,10 +15,7 @@ namespace gradcontact::fem
   {
     [[noreturn]] void fail(const std::string &what, const double value, const std::string &range)
     {
-      std::ostringstream msg;
-      msg.precision(17);
-      msg << "ConvergenceStudy: " << what << " = " << value << " outside " << range;
-      throw std::invalid_argument(msg.str());
+      fem::fail("ConvergenceStudy", what, value, range);
     }
   } // namespace
 

@@ -1,3 +1,4 @@
+#include <fem/errors.h>
 #include <fem/boundary_ids.h>
 #include <fem/distributed_solver.h>
 #include <fem/elasticity_assembly.h>
@@ -30,10 +31,7 @@ namespace gradcontact::fem
 
     [[noreturn]] void fail(const std::string &what, const double value, const std::string &range)
     {
-      std::ostringstream msg;
-      msg.precision(17);
-      msg << "DistributedSolverParameters: " << what << " = " << value << " outside " << range;
-      throw std::invalid_argument(msg.str());
+      fem::fail("DistributedSolverParameters", what, value, range);
     }
   } // namespace
 
@@ -128,14 +126,7 @@ namespace gradcontact::fem
 
     constraints.clear();
     constraints.reinit(relevant);
-    DoFTools::make_hanging_node_constraints(dof_handler, constraints);
-    const FEValuesExtractors::Scalar radial(0);
-    VectorTools::interpolate_boundary_values(mapping, dof_handler, boundary_id::axis,
-                                             Functions::ZeroFunction<2>(2), constraints,
-                                             fe.component_mask(radial));
-    VectorTools::interpolate_boundary_values(mapping, dof_handler, boundary_id::far_field,
-                                             Functions::ZeroFunction<2>(2), constraints);
-    constraints.close();
+    make_homogeneous_constraints(dof_handler, mapping, fe, constraints);
 
     // The unit punch: the homogeneous constraints plus u_z = 1 on the z-DoFs of the contact faces
     // (every locally relevant one, i.e. on owned and ghost cells). As in the serial solver no contact

@@ -3,12 +3,29 @@
 #include <fem/elasticity_assembly.h>
 #include <fem/gauss_jacobi.h>
 
+#include <deal.II/base/function.h>
+#include <deal.II/dofs/dof_tools.h>
+#include <deal.II/numerics/vector_tools.h>
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
 
 namespace gradcontact::fem
 {
+  void make_homogeneous_constraints(const dealii::DoFHandler<2> &dof_handler, const dealii::Mapping<2> &mapping,
+                                    const dealii::FESystem<2> &fe, dealii::AffineConstraints<double> &constraints)
+  {
+    dealii::DoFTools::make_hanging_node_constraints(dof_handler, constraints);
+    const dealii::FEValuesExtractors::Scalar radial(0);
+    dealii::VectorTools::interpolate_boundary_values(mapping, dof_handler, boundary_id::axis,
+                                                     dealii::Functions::ZeroFunction<2>(2), constraints,
+                                                     fe.component_mask(radial));
+    dealii::VectorTools::interpolate_boundary_values(mapping, dof_handler, boundary_id::far_field,
+                                                     dealii::Functions::ZeroFunction<2>(2), constraints);
+    constraints.close();
+  }
+
   using namespace dealii;
 
   namespace

@@ -24,6 +24,7 @@
 #include <deal.II/fe/fe_system.h>
 #include <deal.II/fe/fe_values.h>
 #include <deal.II/fe/mapping.h>
+#include <deal.II/lac/affine_constraints.h>
 #include <deal.II/lac/full_matrix.h>
 #include <deal.II/lac/vector.h>
 
@@ -34,6 +35,12 @@
 namespace gradcontact::fem
 {
   struct DiscretizationParameters;
+
+  /// The homogeneous constraints every load shares, added to `constraints` (which the caller has
+  /// cleared, and reinit'ed on the relevant DoFs in parallel) and closed: hanging nodes, u_r = 0 on the
+  /// axis, u = 0 on the truncation boundary.
+  void make_homogeneous_constraints(const dealii::DoFHandler<2> &dof_handler, const dealii::Mapping<2> &mapping,
+                                    const dealii::FESystem<2> &fe, dealii::AffineConstraints<double> &constraints);
 
   /// K_cell of a(u, v) for the vector FE (u_r, u_z). Holds the FEValues objects of the three rule
   /// types; one object per thread of assembly.

@@ -1,3 +1,4 @@
+#include <fem/errors.h>
 #include <fem/boundary_ids.h>
 #include <fem/mesh.h>
 
@@ -46,10 +47,7 @@ namespace gradcontact::fem
 
     [[noreturn]] void fail(const std::string &what, const double value, const std::string &range)
     {
-      std::ostringstream msg;
-      msg.precision(17);
-      msg << "MeshParameters: " << what << " = " << value << " outside " << range;
-      throw std::invalid_argument(msg.str());
+      fem::fail("MeshParameters", what, value, range);
     }
 
     std::string read_file(const std::string &path)

@@ -1,3 +1,4 @@
+#include <fem/errors.h>
 #include <fem/gauss_jacobi.h>
 #include <fem/modulus.h>
 
@@ -20,14 +21,6 @@ namespace gradcontact::fem
     // [z1, z2] with z1 > 0 is split at z1 * 2^j: E varies by a bounded factor on each piece.
     constexpr double average_split_ratio = 2.0;
 
-    [[noreturn]] void fail(const std::string &where, const std::string &what, const double value,
-                           const std::string &range)
-    {
-      std::ostringstream msg;
-      msg.precision(17);
-      msg << where << ": " << what << " = " << value << " outside " << range;
-      throw std::invalid_argument(msg.str());
-    }
   } // namespace
 
 
