@@ -238,9 +238,13 @@ namespace gradcontact::fem
           [[fallthrough]];
         case LoadType::indenter:
           profile.validate();
-          if (profile.shape == Profile::Shape::concave_paraboloid)
+          // Under contact-radius control the concave paraboloid is allowed: its radius-controlled state
+          // (edge force zero, tension inside) is a basis state of the adhesive superposition
+          // (fem/adhesion.h); depth and force control assume a convex profile.
+          if (profile.shape == Profile::Shape::concave_paraboloid && type != LoadType::indenter)
             throw std::invalid_argument(
-              "LoadCase (indenter): profile concave_paraboloid needs LoadType::concave_punch");
+              "LoadCase (indenter, depth or force control): profile concave_paraboloid needs "
+              "LoadType::concave_punch or LoadType::indenter");
           break;
         case LoadType::concave_punch:
           profile.validate();
