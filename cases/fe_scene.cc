@@ -1,5 +1,7 @@
 #include "fe_scene.h"
 
+#include "fe_adhesion.h"
+
 #include <analytic/batch.hpp>
 #include <analytic/material.hpp>
 #include <analytic/mdr.hpp>
@@ -110,28 +112,6 @@ namespace gradcontact::cases
     };
 
     // --- the FE side ------------------------------------------------------------------------------------
-    fem::Material fe_material(const Scene &s)
-    {
-      const MaterialParameters &m = s.material;
-      const auto power = std::make_shared<fem::PowerLawModulus>(m.E0, m.c0, m.k);
-      fem::Material material;
-      material.nu = m.nu;
-      switch (m.modulus)
-        {
-          case MaterialParameters::Modulus::power_law:
-            material.modulus = power;
-            break;
-          case MaterialParameters::Modulus::layered:
-            material.modulus = fem::LayeredModulus::uniform(power, m.layers, m.layered_depth * s.load.a);
-            break;
-          case MaterialParameters::Modulus::expression:
-            material.modulus = std::make_shared<fem::ExpressionModulus>(
-              m.expression, std::map<std::string, double>{{"E0", m.E0}, {"c0", m.c0}, {"k", m.k}}, m.k);
-            break;
-        }
-      return material;
-    }
-
     fem::LoadCase fe_load(const LoadParameters &l)
     {
       fem::LoadCase lc;
@@ -189,38 +169,6 @@ namespace gradcontact::cases
         out.vtu_file = (folder / ("fields-" + std::to_string(refinement) + ".vtu")).string();
       fem::Result r = solver.run(fe_load(s.load), out);
       return {refinement, r, std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count()};
-    }
-
-    Row compare(const std::string &quantity, const std::string &metric, const std::string &checked,
-                const std::string &reference, const double ref, const double value, const double scale,
-                const double tolerance, const unsigned int dofs, const double seconds)
-    {
-      Row row;
-      row.quantity = quantity;
-      row.metric = metric;
-      row.method = checked;
-      row.reference = reference;
-      row.reference_value = ref;
-      row.value = value;
-      row.abs_error = std::abs(value - ref);
-      row.rel_error = row.abs_error / std::max(std::abs(scale), 1e-300);
-      row.tolerance = tolerance;
-      row.pass = row.rel_error <= tolerance;
-      row.dofs = dofs;
-      row.seconds = seconds;
-      return row;
-    }
-
-    Row failed(const std::string &quantity, const std::string &checked, const std::string &reference,
-               const std::string &what)
-    {
-      Row row;
-      row.quantity = quantity;
-      row.method = checked;
-      row.reference = reference;
-      row.error = what;
-      row.rel_error = std::numeric_limits<double>::infinity();
-      return row;
     }
 
     // The scalar quantities a scene compares, with the FE value and the reference quantity name.
@@ -409,6 +357,28 @@ namespace gradcontact::cases
     }
   } // namespace
 
+  fem::Material fe_material(const Scene &s)
+  {
+    const MaterialParameters &m = s.material;
+    const auto power = std::make_shared<fem::PowerLawModulus>(m.E0, m.c0, m.k);
+    fem::Material material;
+    material.nu = m.nu;
+    switch (m.modulus)
+      {
+        case MaterialParameters::Modulus::power_law:
+          material.modulus = power;
+          break;
+        case MaterialParameters::Modulus::layered:
+          material.modulus = fem::LayeredModulus::uniform(power, m.layers, m.layered_depth * s.load.a);
+          break;
+        case MaterialParameters::Modulus::expression:
+          material.modulus = std::make_shared<fem::ExpressionModulus>(
+            m.expression, std::map<std::string, double>{{"E0", m.E0}, {"c0", m.c0}, {"k", m.k}}, m.k);
+          break;
+      }
+    return material;
+  }
+
   FeProfile fe_profile(const Scene &scene, const std::string &quantity, const std::vector<double> &radii_over_a,
                        const std::string &normaliser, const double normaliser_r_over_a, const bool per_area)
   {
@@ -435,6 +405,8 @@ namespace gradcontact::cases
 
   SceneResult run_prm_scene(const Scene &s, const fs::path &folder, const bool verbose)
   {
+    if (s.adhesion.enabled(s.load))
+      return run_adhesion_scene(s, folder, verbose);
     if (!s.candidate.profile.empty())
       {
         std::ofstream(folder / "parameters.prm") << s.resolved;

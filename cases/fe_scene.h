@@ -5,6 +5,8 @@
 #include "report.h"
 #include "scene.h"
 
+#include <fem/modulus.h>
+
 #include <filesystem>
 
 namespace gradcontact::cases
@@ -18,6 +20,9 @@ namespace gradcontact::cases
   };
   FeProfile fe_profile(const Scene &scene, const std::string &quantity, const std::vector<double> &radii_over_a,
                        const std::string &normaliser, double normaliser_r_over_a, bool per_area);
+
+  /// The FE material of the scene (power law, layered or expression modulus).
+  fem::Material fe_material(const Scene &scene);
 
   /// Runs the scene and writes its report into `folder` (which the caller makes atomically).
   SceneResult run_prm_scene(const Scene &scene, const std::filesystem::path &folder, bool verbose);

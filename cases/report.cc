@@ -149,4 +149,36 @@ namespace gradcontact::cases
     const std::string command = "cd '" + folder.string() + "' && gnuplot '" + stem + ".gp' > /dev/null 2>&1";
     return std::system(command.c_str()) == 0;
   }
+  Row compare(const std::string &quantity, const std::string &metric, const std::string &checked,
+              const std::string &reference, const double ref, const double value, const double scale,
+              const double tolerance, const unsigned int dofs, const double seconds)
+  {
+    Row row;
+    row.quantity = quantity;
+    row.metric = metric;
+    row.method = checked;
+    row.reference = reference;
+    row.reference_value = ref;
+    row.value = value;
+    row.abs_error = std::abs(value - ref);
+    row.rel_error = row.abs_error / std::max(std::abs(scale), 1e-300);
+    row.tolerance = tolerance;
+    row.pass = row.rel_error <= tolerance;
+    row.dofs = dofs;
+    row.seconds = seconds;
+    return row;
+  }
+
+  Row failed(const std::string &quantity, const std::string &checked, const std::string &reference,
+             const std::string &what)
+  {
+    Row row;
+    row.quantity = quantity;
+    row.method = checked;
+    row.reference = reference;
+    row.error = what;
+    row.rel_error = std::numeric_limits<double>::infinity();
+    return row;
+  }
+
 } // namespace gradcontact::cases

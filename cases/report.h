@@ -23,6 +23,14 @@ namespace gradcontact::cases
     std::string error;      ///< non-empty when a side failed to evaluate
   };
 
+  /// A comparison row: |value - ref| / |scale| against `tolerance`.
+  Row compare(const std::string &quantity, const std::string &metric, const std::string &checked,
+              const std::string &reference, double ref, double value, double scale, double tolerance,
+              unsigned int dofs, double seconds);
+  /// A row for a side that failed to evaluate (its relative error is infinite, so it fails).
+  Row failed(const std::string &quantity, const std::string &checked, const std::string &reference,
+             const std::string &what);
+
   struct SceneResult
   {
     std::string name, description, kind;

@@ -243,6 +243,51 @@ namespace gradcontact::cases
     prm.leave_subsection();
   }
 
+  bool AdhesionParameters::enabled(const LoadParameters &load) const
+  {
+    return work_of_adhesion > 0. || (load.type == LoadParameters::Type::constant_pressure && tensile_strength > 0.);
+  }
+
+  void AdhesionParameters::declare(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Adhesion");
+    prm.declare_entry("work of adhesion", "0", Patterns::Double(0.),
+                      "dgamma [J/m^2]; > 0 makes the scene adhesive (JKR, 9.45-9.68): critical states from the FE "
+                      "model (fem/adhesion.h) against the closed forms and the numerical MDR.");
+    prm.declare_entry("control", "both", Patterns::Selection("force|displacement|both"),
+                      "Critical states under force control, displacement control or both (curved profiles).");
+    prm.declare_entry("tensile strength", "0", Patterns::Double(0.),
+                      "sigma_th [Pa]: the centre mechanism of the concave punch (9.67-9.68); with Load/type = "
+                      "constant pressure the optimal profile p = -sigma_th on r <= a (9.69-9.74).");
+    prm.declare_entry("initial radius", "0", Patterns::Double(0.),
+                      "Start of the critical-radius search [m]; 0: Load/a.");
+    prm.declare_entry("stencil ratio", "1.05", Patterns::Double(1.000001, 2.),
+                      "Ratio of neighbouring FE contact radii in the derivative of the stiffness (G(a)).");
+    prm.declare_entry("local stencil", "true", Patterns::Bool(),
+                      "Finish every critical search with FE radii a_c q^(+-1) (exact fit for any E(z)); the "
+                      "fit is exact for the power law without them.");
+    prm.declare_entry("curve points", "", Patterns::List(Patterns::Double(0.), 0, 50),
+                      "a / a_c (force control) of FE points on the adhesive force-depth curve (9.57, figures "
+                      "9.22-9.23); empty: none.");
+    prm.leave_subsection();
+  }
+  void AdhesionParameters::parse(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Adhesion");
+    work_of_adhesion = prm.get_double("work of adhesion");
+    const std::string c = prm.get("control");
+    force_control = c != "displacement";
+    displacement_control = c != "force";
+    tensile_strength = prm.get_double("tensile strength");
+    initial_radius = prm.get_double("initial radius");
+    stencil_ratio = prm.get_double("stencil ratio");
+    local_stencil = prm.get_bool("local stencil");
+    curve_points.clear();
+    for (const std::string &x : dealii::Utilities::split_string_list(prm.get("curve points")))
+      curve_points.push_back(dealii::Utilities::string_to_double(x));
+    prm.leave_subsection();
+  }
+
   namespace
   {
     void declare_all(ParameterHandler &prm)
@@ -255,6 +300,7 @@ namespace gradcontact::cases
       ReferenceParameters::declare(prm);
       ToleranceParameters::declare(prm);
       CandidateParameters::declare(prm);
+      AdhesionParameters::declare(prm);
     }
   } // namespace
 
@@ -325,6 +371,7 @@ namespace gradcontact::cases
         s.references.parse(prm);
         s.tolerances.parse(prm);
         s.candidate.parse(prm);
+        s.adhesion.parse(prm);
       }
     catch (const std::exception &e)
       {

@@ -101,6 +101,23 @@ namespace gradcontact::cases
     void parse(dealii::ParameterHandler &prm);
   };
 
+  /// JKR adhesion (9.45-9.74) checked by the FE model (fem/adhesion.h). A scene is adhesive when the work of
+  /// adhesion is positive (flat punch, paraboloid, cone, power law, concave punch), or for the optimal profile:
+  /// Load/type = constant pressure with a positive tensile strength (p = -sigma_th on r <= a, 9.69-9.74).
+  struct AdhesionParameters
+  {
+    double work_of_adhesion = 0.;  ///< dgamma [J/m^2]
+    bool force_control = true, displacement_control = true;
+    double tensile_strength = 0.;  ///< sigma_th [Pa]
+    double initial_radius = 0.;    ///< a0 of the critical search [m]; 0: Load/a
+    double stencil_ratio = 1.05;
+    bool local_stencil = true;
+    std::vector<double> curve_points; ///< a / a_c of FE points on the force-depth curve (force control)
+    bool enabled(const LoadParameters &load) const;
+    static void declare(dealii::ParameterHandler &prm);
+    void parse(dealii::ParameterHandler &prm);
+  };
+
   /// A user's candidate closed form for an axisymmetric profile, checked against the numerical MDR.
   struct CandidateParameters
   {
@@ -124,6 +141,7 @@ namespace gradcontact::cases
     ReferenceParameters references;
     ToleranceParameters tolerances;
     CandidateParameters candidate;
+    AdhesionParameters adhesion;
     std::string resolved; ///< every entry after overrides, as a .prm, stored with the report
   };
 
