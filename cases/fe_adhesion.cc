@@ -113,6 +113,69 @@ namespace gradcontact::cases
 
 
 
+  namespace
+  {
+    fem::AdhesiveContact::SettingsFunction fe_settings(const Scene &s, const unsigned int level)
+    {
+      return [&s, level](const double a) {
+        fem::Settings st = fem::recommended_settings(a, s.material.k, s.discretization.force_tolerance);
+        st.discretization.degree = s.discretization.degree;
+        st.mesh.global_refinements = level;
+        if (s.discretization.far_field > 0.)
+          st.mesh.far_field_size = s.discretization.far_field;
+        return st;
+      };
+    }
+
+    std::optional<fem::Profile> fe_profile_of(const LoadParameters &l)
+    {
+      switch (l.type)
+        {
+          case Type::paraboloid:
+            return fem::Profile::paraboloid(l.R);
+          case Type::cone:
+            return fem::Profile::cone(l.tan_theta);
+          case Type::power_law:
+            return fem::Profile::power_law(l.n, l.A);
+          case Type::concave_punch:
+            return fem::Profile::concave_paraboloid(l.h0);
+          default:
+            return std::nullopt;
+        }
+    }
+
+    fem::AdhesionParameters fe_parameters(const AdhesionParameters &ad)
+    {
+      fem::AdhesionParameters parameters;
+      parameters.stencil_ratio = ad.stencil_ratio;
+      parameters.local_stencil = ad.local_stencil;
+      return parameters;
+    }
+  } // namespace
+
+  FeAdhesiveCurve fe_adhesive_curve(const Scene &s, const std::vector<double> &a_over_ac, const bool force_control)
+  {
+    const LoadParameters &l = s.load;
+    if (!(l.type == Type::paraboloid || l.type == Type::cone || l.type == Type::power_law) ||
+        !(s.adhesion.work_of_adhesion > 0.))
+      throw std::invalid_argument("scene " + s.file + ": an FE adhesive curve needs a curved profile (paraboloid, cone, "
+                                  "power law) and Adhesion/work of adhesion > 0");
+    fem::AdhesiveContact model(fe_material(s), fe_profile_of(l), fe_settings(s, s.discretization.refinements.back()),
+                               fe_parameters(s.adhesion));
+    const double a0 = s.adhesion.initial_radius > 0. ? s.adhesion.initial_radius : l.a;
+    const fem::AdhesiveCriticalState c = model.critical_state(
+      s.adhesion.work_of_adhesion, force_control ? fem::AdhesionControl::force : fem::AdhesionControl::displacement, a0);
+    FeAdhesiveCurve curve;
+    for (const double x : a_over_ac)
+      {
+        const fem::AdhesiveState st = model.adhesive_state(x * c.state.radius, s.adhesion.work_of_adhesion);
+        curve.radius.push_back(st.radius);
+        curve.depth.push_back(st.depth);
+        curve.force.push_back(st.force);
+      }
+    return curve;
+  }
+
   SceneResult run_adhesion_scene(const Scene &s, const fs::path &folder, const bool verbose)
   {
     SceneResult result;
@@ -171,14 +234,7 @@ namespace gradcontact::cases
         const auto level_start = std::chrono::steady_clock::now();
         LevelResult lr;
         lr.refinement = level;
-        const auto settings = [&s, level, k](const double a) {
-          fem::Settings st = fem::recommended_settings(a, k, s.discretization.force_tolerance);
-          st.discretization.degree = s.discretization.degree;
-          st.mesh.global_refinements = level;
-          if (s.discretization.far_field > 0.)
-            st.mesh.far_field_size = s.discretization.far_field;
-          return st;
-        };
+        const auto settings = fe_settings(s, level);
         const std::string level_tag = s.discretization.refinements.size() > 1 ? ", refinement " + std::to_string(level) : "";
 
         if (optimal)
@@ -242,28 +298,7 @@ namespace gradcontact::cases
           }
 
         // JKR: the FE model's own critical states.
-        std::optional<fem::Profile> profile;
-        switch (l.type)
-          {
-            case Type::paraboloid:
-              profile = fem::Profile::paraboloid(l.R);
-              break;
-            case Type::cone:
-              profile = fem::Profile::cone(l.tan_theta);
-              break;
-            case Type::power_law:
-              profile = fem::Profile::power_law(l.n, l.A);
-              break;
-            case Type::concave_punch:
-              profile = fem::Profile::concave_paraboloid(l.h0);
-              break;
-            default:
-              break;
-          }
-        fem::AdhesionParameters parameters;
-        parameters.stencil_ratio = ad.stencil_ratio;
-        parameters.local_stencil = ad.local_stencil;
-        fem::AdhesiveContact model(fe_material(s), profile, settings, parameters);
+        fem::AdhesiveContact model(fe_material(s), fe_profile_of(l), settings, fe_parameters(ad));
         const double dgamma = ad.work_of_adhesion;
         const bool power_law_modulus = s.material.modulus == MaterialParameters::Modulus::power_law;
         const auto report_state = [&](const std::string &name, const fem::AdhesiveCriticalState &c, const json &extra,

@@ -8,9 +8,18 @@
 #include "scene.h"
 
 #include <filesystem>
+#include <vector>
 
 namespace gradcontact::cases
 {
+  /// FE adhesive states of the scene's curved profile at a = x a_c, a_c the FE critical radius (force or
+  /// displacement control), for figures.
+  struct FeAdhesiveCurve
+  {
+    std::vector<double> radius, depth, force;
+  };
+  FeAdhesiveCurve fe_adhesive_curve(const Scene &scene, const std::vector<double> &a_over_ac, bool force_control);
+
   /// Runs an adhesive scene (Scene::adhesion enabled) and writes its plots and tables into `folder`.
   SceneResult run_adhesion_scene(const Scene &scene, const std::filesystem::path &folder, bool verbose);
 } // namespace gradcontact::cases

@@ -1,5 +1,6 @@
 #include "figures.h"
 
+#include "fe_adhesion.h"
 #include "fe_scene.h"
 #include "report.h"
 #include "scene.h"
@@ -81,6 +82,36 @@ namespace gradcontact::cases
               const FeProfile p = fe_profile(scene, fe.at("quantity"), fe.at("radii").get<std::vector<double>>(),
                                              fe.at("normaliser"), fe.value("normaliser_r", 0.), fe.value("per_area", false));
               series.push_back({c.value("title", "FE"), p.x, p.y, true});
+              continue;
+            }
+          if (c.contains("fe_adhesion"))
+            {
+              // FE adhesive states (fem/adhesion.h) of a .prm scene at a = x a_c (a_c: the FE critical radius
+              // under the given control); each coordinate is "radius", "depth" or "force", times "scale",
+              // divided by the value of the request "divide_by" when given.
+              const json &fe = c.at("fe_adhesion");
+              std::vector<Override> overrides;
+              for (const json &o : fe.value("set", json::array()))
+                overrides.push_back(parse_override(o.get<std::string>()));
+              const Scene scene = read_scene(fe.at("scene").get<std::string>(), overrides);
+              const FeAdhesiveCurve curve = fe_adhesive_curve(scene, fe.at("a_over_ac").get<std::vector<double>>(),
+                                                              fe.value("control", "force") == "force");
+              const auto axis = [&](const json &spec, const std::vector<double> &radius, const std::vector<double> &depth,
+                                    const std::vector<double> &force) {
+                const std::string q = spec.at("quantity");
+                const std::vector<double> &v = q == "radius" ? radius : q == "depth" ? depth : force;
+                if (q != "radius" && q != "depth" && q != "force")
+                  throw std::invalid_argument("figures: fe_adhesion quantity '" + q + "' is not radius, depth or force");
+                double factor = spec.value("scale", 1.);
+                if (spec.contains("divide_by"))
+                  factor /= batch::prepare(spec.at("divide_by").dump())();
+                std::vector<double> out;
+                for (const double x : v)
+                  out.push_back(x * factor);
+                return out;
+              };
+              series.push_back({c.value("title", "FE"), axis(fe.at("x"), curve.radius, curve.depth, curve.force),
+                                axis(fe.at("y"), curve.radius, curve.depth, curve.force), true});
               continue;
             }
           const json &sweep = c.at("sweep");
