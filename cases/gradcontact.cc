@@ -3,6 +3,7 @@
 //   gradcontact eval [file]          JSON Lines requests (stdin without file) -> one answer a line
 //   gradcontact run <scene|folder>   run scenes, write reports/<scene>/ and reports/summary.md
 //   gradcontact bench                 work-precision benchmarks, write reports/benchmarks/
+//   gradcontact stress                numerical-stability tables, write reports/benchmarks/stability.md
 //   gradcontact --help
 //
 // Sample runs:
@@ -16,6 +17,7 @@
 #include "bench.h"
 #include "figures.h"
 #include "runner.h"
+#include "stress.h"
 
 #include <cstring>
 #include <exception>
@@ -41,6 +43,9 @@ namespace
            "                           draw the chapter's figures (cases/figures) -> reports/figures/\n"
            "  bench [--reports DIR] [--repeat N]\n"
            "                           work-precision benchmarks -> reports/benchmarks/\n"
+           "  stress [--reports DIR] [--mdr-stride N]\n"
+           "                           numerical-stability tables of the analytic module by region and\n"
+           "                           absolute scale -> reports/benchmarks/stability.md\n"
            "  --help                   this text\n";
   }
 
@@ -83,6 +88,8 @@ int main(int argc, char **argv)
         return gradcontact::cases::figures(args);
       if (command == "bench")
         return gradcontact::cases::bench(args);
+      if (command == "stress")
+        return gradcontact::cases::stress(args);
       std::cerr << "gradcontact: unknown command '" << command << "'\n";
       usage(std::cerr);
       return 2;

@@ -1,0 +1,23 @@
+// gradcontact/cases: numerical-stability stress tables of the analytic module (`gradcontact stress`,
+// issue 7).
+//
+// Every row of the high-precision references (tests/data/references.jsonl: 34-digit values of the MDR
+// integrals from mpmath, generated over the stress grid: k to +-0.99, k to 0 from both sides, nu = 0 and
+// nu -> 0.5, c0/a over many decades, r -> a from both sides, r -> 0, r -> infinity) is evaluated by the
+// closed form and the numerical MDR and sorted into the regions of parameter space it belongs to. The
+// absolute scales are stressed by exact similarity: every length of a request times 2^m and every modulus
+// times 2^j (E0 from 1e-3 to 1e12 Pa, lengths from 1e-9 to 1e3 m) changes each quantity by the exact power
+// of two its dimension gives (force ~ E L^2, pressure ~ E, depth ~ L, energy ~ E L^3), so the reference
+// stays exact. Per region and method: rows, worst relative error, the worst row, NaN or inf results
+// (none allowed) and explicit refusals (clear errors that explain a limit).
+#pragma once
+
+#include <string>
+#include <vector>
+
+namespace gradcontact::cases
+{
+  /// `gradcontact stress [--reports DIR] [--references FILE] [--mdr-stride N]`; returns the exit code
+  /// (non-zero when a NaN or inf is returned or a region's worst error exceeds its bound).
+  int stress(const std::vector<std::string> &args);
+} // namespace gradcontact::cases
