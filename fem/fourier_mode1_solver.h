@@ -147,12 +147,25 @@ namespace gradcontact::fem
     Timings      time;
   };
 
+  /// Extra refinement of the surface mesh toward points (r, 0) that are no mesh nodes, e.g. the stick
+  /// radius c where the partial-slip traction has a kink like (c - r)^{(1+k)/2}. Each level splits the
+  /// cells within one cell width of (r, 0): in r only when they are thin (the z-halved surface layer),
+  /// isotropically otherwise.
+  struct SurfaceRefinement
+  {
+    std::vector<double> radii;      ///< physical units, > 0
+    unsigned int        levels = 0; ///< <= 30
+  };
+
+  /// Applies `refinement` to a meridian mesh (serial triangulation).
+  void refine_toward_surface_points(const SurfaceRefinement &refinement, dealii::Triangulation<2> &tria);
+
   class FourierMode1Solver
   {
   public:
     /// The meridian mesh of fem/mesh.h (the same as AxisymmetricSolver's for the same parameters).
     FourierMode1Solver(const Material &material, const MeshParameters &mesh,
-                       const DiscretizationParameters &discretization);
+                       const DiscretizationParameters &discretization, const SurfaceRefinement &refinement = {});
     /// Any meridian mesh in physical units whose boundary faces carry the ids of fem/boundary_ids.h
     /// (axis on r = 0, contact/free_surface on z = 0, far_field where u = 0), e.g. the truncated cylinder
     /// [0, R] x [0, H] of the 3D verification. The contact radius is the largest r of a `contact` face.
@@ -174,7 +187,7 @@ namespace gradcontact::fem
       std::array<std::vector<dealii::types::global_dof_index>, 3> dofs; ///< U, V, W DoFs, same order
     };
 
-    void make_grid(const MeshParameters &mesh);
+    void make_grid(const MeshParameters &mesh, const SurfaceRefinement &refinement);
     void setup_system();
     void assemble_system();
     const dealii::SparseDirectUMFPACK &factorization(bool punch, double &seconds);

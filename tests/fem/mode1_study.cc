@@ -99,7 +99,10 @@ int main(int argc, char **argv)
                   disc.degree, mesh.h_edge, mesh.ring_growth, mesh.far_field_size, mesh.surface_layer_thickness);
 
       const auto         start = std::chrono::steady_clock::now();
-      FourierMode1Solver solver(material, mesh, disc);
+      SurfaceRefinement refine;
+      if (load_name == "slip")
+        refine = {{num("c", 0.5) * a}, static_cast<unsigned>(num("c_levels", 0))};
+      FourierMode1Solver solver(material, mesh, disc, refine);
       if (load_name == "punch")
         {
           const double           delta = 1e-3 * a;
