@@ -649,7 +649,6 @@ namespace gradcontact::fem
     result.n_cells = triangulation.n_active_cells();
     result.mesh    = mesh_info;
 
-    const auto                 start  = std::chrono::steady_clock::now();
     const SparseDirectUMFPACK &direct = factorization(punch, result.time.factorize);
     const auto                 solve_start = std::chrono::steady_clock::now();
     Vector<double>             u(dof_handler.n_dofs()), b(dof_handler.n_dofs()), rhs;
@@ -711,7 +710,6 @@ namespace gradcontact::fem
         result.message += msg.str();
       }
     result.time.solve = seconds_since(solve_start);
-    (void)start;
 
     const auto post = std::chrono::steady_clock::now();
     if (!punch && load.stick_radius > 0)
