@@ -18,6 +18,8 @@
 #include <analytic/normal.hpp>
 #include <analytic/tangential.hpp>
 
+#include <deal.II/base/quadrature_lib.h>
+
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -102,6 +104,8 @@ int main(int argc, char **argv)
       SurfaceRefinement refine;
       if (load_name == "slip")
         refine = {{num("c", 0.5) * a}, static_cast<unsigned>(num("c_levels", 0))};
+      if (load_name == "osc") // toward the stick radius c_A = a (1 - phi)^{1/(k+3)} at the turning point A
+        refine = {{a * std::pow(1 - num("phi", 0.9), 1 / (k + 3))}, static_cast<unsigned>(num("c_levels", 0))};
       FourierMode1Solver solver(material, mesh, disc, refine);
       if (load_name == "punch")
         {
@@ -151,8 +155,55 @@ int main(int argc, char **argv)
           for (const auto &s : t.surface)
             std::printf("  r/a=%.3f U/u0=%.8f V/u0=%.8f W/u0=%.8f\n", s.r / a, s.U / u0, s.V / u0, s.W / u0);
         }
+      else if (load_name == "osc")
+        {
+          // Oscillation between +-F_A = +-phi mu F_N after loading to A (9.81)-(9.86): the unloading
+          // traction (9.82) on one mesh and one factorisation, the stick-zone mean of u_x against
+          // (9.83), and the dissipated energy W = \int_{-F_A}^{F_A} [u_un(F) - u_re(F)] dF with
+          // u_re(F) = -u_un(-F), by Gauss-Legendre in F on FE values and on the closed form.
+          namespace t = gradcontact::tangential;
+          const double R = 50 * a, mu = 0.3, phi = num("phi", 0.9);
+          const t::SphereSlip slip{R, mu};
+          const double F_N = gradcontact::force(medium, gradcontact::Paraboloid{R}, a);
+          const double FA  = phi * mu * F_N;
+          const double cA  = a * std::pow(1 - FA / (mu * F_N), 1 / (k + 3));
+          auto u_fe = [&](const double Fx) {
+            const double c = a * std::pow(1 - (FA - Fx) / (2 * mu * F_N), 1 / (k + 3)); // stick radius
+            std::vector<double> cuts;
+            for (const double b : {cA, c})
+              if (b > 0 && b < a * (1 - 1e-12))
+                cuts.push_back(b);
+            auto tau = [&](const double r) { return t::traction(medium, slip, a, FA, t::Branch::unloading, Fx, r); };
+            // The rigid displacement u0 is the surface displacement where nothing ever slipped,
+            // r <= c_A: in c_A < r <= c the slip accumulated on loading stays (only the change since
+            // A is uniform there).
+            const TangentialResult res = solver.run(TangentialLoad::profile(tau, a, cA, cuts));
+            return res.stick.mean_ux;
+          };
+          for (const double f : {0.5, 0.0, -0.5, -1.0})
+            {
+              const double Fx = f * FA, u = u_fe(Fx);
+              const double ref = t::tangential_displacement(medium, slip, a, FA, t::Branch::unloading, Fx);
+              std::printf("unloading Fx/FA=%+.2f u0_fe=%.12e u0=%.12e err=%.3e\n", f, u, ref, u / ref - 1);
+            }
+          const unsigned int n = static_cast<unsigned>(num("n_gauss", 12));
+          const dealii::QGauss<1> gauss(n);
+          double W_fe = 0, W_quad = 0;
+          for (unsigned int q = 0; q < n; ++q)
+            {
+              const double F = FA * (2 * gauss.point(q)[0] - 1), w = 2 * FA * gauss.weight(q);
+              // The nodes are symmetric: sum_q w_q [u(F_q) + u(-F_q)] = 2 sum_q w_q u(F_q).
+              W_fe += 2 * w * u_fe(F);
+              W_quad += 2 * w * t::tangential_displacement(medium, slip, a, FA, t::Branch::unloading, F);
+            }
+          const double W = t::dissipated_energy(medium, slip, a, FA);
+          std::printf("W_fe=%.12e W_quad(closed form)=%.12e W=%.12e err_fe=%.3e quad_err=%.3e fe_vs_quad=%.3e "
+                      "dofs=%u t_total=%.1f\n", W_fe, W_quad, W, W_fe / W - 1, W_quad / W - 1, W_fe / W_quad - 1,
+                      solver.n_dofs(),
+                      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+        }
       else
-        throw std::invalid_argument("mode1_study: load = " + load_name + " outside {punch, slip}");
+        throw std::invalid_argument("mode1_study: load = " + load_name + " outside {punch, slip, osc}");
     }
   catch (const std::exception &e)
     {

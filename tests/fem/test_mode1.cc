@@ -18,6 +18,8 @@
 
 #include "cylinder_3d.h"
 
+#include <deal.II/base/quadrature_lib.h>
+
 #include <catch2/catch.hpp>
 
 #include <cmath>
@@ -239,4 +241,67 @@ TEST_CASE("For the decoupled pairing (rigid on graded, k = 0.5, nu = 1/(2+k)) th
   // spread 4.3e-6, max |u_y| 1.9e-6 measured (the coupled k = 0.5, nu = 0.3: see fem/README.md).
   REQUIRE(t.stick.relative_spread < 2e-5);
   REQUIRE(t.stick.relative_max_uy < 1e-5);
+}
+
+TEST_CASE("Under an oscillating tangential force the solver shall follow the unloading branch (9.83) and "
+          "give the dissipated energy of Mindlin-Deresiewicz (9.86)-(9.87) at k = 0",
+          "[verification]")
+{
+  // One mesh (8 levels toward the stick radius c_A of the turning point A, F_A = 0.9 mu F_N) and one
+  // factorisation; the traction of (9.82) per load step. The rigid displacement is the mean of u_x over
+  // r <= c_A, where nothing ever slipped (in c_A < r <= b the slip of the loading stays). The loop area
+  // W = \int_{-F_A}^{F_A} [u_un(F) - u_re(F)] dF, u_re(F) = -u_un(-F), by 12-point Gauss-Legendre in F;
+  // the same rule on the closed-form u_un reproduces (9.86) to 2.3e-9, so the quadrature is not the limit.
+  // Measured: branch u0 <= 3.9e-8, W 4.1e-7 (without the levels toward c_A: 6e-5 and 8.4e-5).
+  // Tolerances: 10x the measurement; the issue's target for W is 1e-4.
+  constexpr double branch_tolerance = 4e-7;
+  constexpr double energy_tolerance = 4e-6;
+  namespace t                       = gradcontact::tangential;
+  const double k = 0, nu = 0.3, R = 50 * a, mu = 0.3, phi = 0.9;
+  const auto   medium = gradcontact::medium(gradcontact::GradedHalfSpace{E0, c0, k, nu});
+  const t::SphereSlip slip{R, mu};
+  const double F_N = gradcontact::force(medium, gradcontact::Paraboloid{R}, a);
+  const double FA  = phi * mu * F_N;
+  const double cA  = a * std::pow(1 - phi, 1 / (k + 3));
+  FourierMode1Solver solver(power_law(k, nu), recommended_mesh_parameters(a, k), DiscretizationParameters{},
+                            SurfaceRefinement{{cA}, 8});
+  auto u_fe = [&](const double Fx) {
+    const double b = a * std::pow(1 - (FA - Fx) / (2 * mu * F_N), 1 / (k + 3)); // (9.81)
+    std::vector<double> cuts{cA};
+    if (b > cA && b < a)
+      cuts.push_back(b);
+    auto tau = [&](const double r) { return t::traction(medium, slip, a, FA, t::Branch::unloading, Fx, r); };
+    const TangentialResult res = solver.run(TangentialLoad::profile(tau, a, cA, cuts));
+    CAPTURE(Fx / FA, b / a, cA / a);
+    REQUIRE(res.reliable);
+    // F_x of the quadrature of tau (9.82) against Fx: measured <= 1e-10 at 14 of 15 forces, but 4.1e-6
+    // at Fx = -0.125 F_A (b = 0.7903 a, 4.3e-4 a inside a surface face): not explained yet (the loading
+    // traction (9.80) gives 1e-15 everywhere); bounded here at 2.5x that value, see fem/README.md.
+    CAPTURE(res.force, Fx, res.force / Fx - 1);
+    REQUIRE_THAT(res.force, WithinRel(Fx, 1e-5));
+    return res.stick.mean_ux;
+  };
+  for (const double f : {0.5, -0.5, -1.0})
+    {
+      const double u   = u_fe(f * FA);
+      const double ref = t::tangential_displacement(medium, slip, a, FA, t::Branch::unloading, f * FA);
+      CAPTURE(f, u, ref, u / ref - 1, branch_tolerance);
+      REQUIRE_THAT(u, WithinRel(ref, branch_tolerance));
+    }
+  const dealii::QGauss<1> gauss(12);
+  double                  W_fe = 0;
+  for (unsigned int q = 0; q < gauss.size(); ++q)
+    W_fe += 2 * 2 * FA * gauss.weight(q) * u_fe(FA * (2 * gauss.point(q)[0] - 1)); // symmetric nodes
+  const double W = t::dissipated_energy(medium, slip, a, FA);
+  // Mindlin-Deresiewicz (9.87) for a rigid sphere on one body, derived from the loop of Cattaneo-Mindlin
+  // branches with u0 = 3 mu F_N (2 - nu) / (16 G a) [1 - (1 - F/(mu F_N))^{2/3}]:
+  //   W = 9 mu^2 F_N^2 (2 - nu) / (10 G a) [1 - (1-phi)^{5/3} - 5 phi / 6 (1 + (1-phi)^{2/3})].
+  const double G    = E0 / (2 * (1 + nu));
+  const double W_MD = 9 * mu * mu * F_N * F_N * (2 - nu) / (10 * G * a) *
+                      (1 - std::pow(1 - phi, 5.0 / 3) - 5 * phi / 6 * (1 + std::pow(1 - phi, 2.0 / 3)));
+  CAPTURE(W_fe, W, W_MD, W_fe / W - 1, energy_tolerance);
+  std::cout << "[verification] oscillation k = 0: dissipated energy error " << W_fe / W - 1
+            << " (closed form vs Mindlin-Deresiewicz " << W / W_MD - 1 << ")\n";
+  REQUIRE_THAT(W, WithinRel(W_MD, 1e-12));
+  REQUIRE_THAT(W_fe, WithinRel(W, energy_tolerance));
 }
