@@ -39,8 +39,11 @@ namespace
            "                           run a scene once per value (same options as run)\n"
            "  figures <file.json|folder> [--reports DIR]\n"
            "                           draw the chapter's figures (cases/figures) -> reports/figures/\n"
-           "  bench [--reports DIR] [--repeat N]\n"
-           "                           work-precision benchmarks -> reports/benchmarks/\n"
+           "  bench [--part analytic|fe|peer|all] [--quick] [--reports DIR] [--repeat N]\n"
+           "        [--fe-repeat N] [--peer-scripts DIR]\n"
+           "                           work-precision benchmarks -> reports/benchmarks/ (analytic\n"
+           "                           closed forms; FE degrees 1-4 against wall time and DoFs; the\n"
+           "                           FreeFem++ peer when FreeFem++ is installed)\n"
            "  --help                   this text\n";
   }
 
