@@ -447,14 +447,12 @@ namespace gradcontact::cases
                   idx[i] = i;
                 std::sort(idx.begin(), idx.end(), [&](auto i, auto j) { return s.second.x[i] < s.second.x[j]; });
                 Series c{s.second.title, {}, {}, false};
+                c.linespoints = true;
                 for (const auto i : idx)
                   {
                     c.x.push_back(s.second.x[i]);
                     c.y.push_back(s.second.y[i]);
                   }
-                v.push_back(c);
-                c.points = true;
-                c.title = "";
                 v.push_back(c);
               }
             return v;
