@@ -199,10 +199,20 @@ namespace gradcontact::cases
             cpu = line.substr(line.find(':') + 2);
             break;
           }
+      // The BLAS actually loaded (UMFPACK's speed depends on it, fem/README.md "Profile").
+      std::string blas = "unknown";
+      std::ifstream maps("/proc/self/maps");
+      for (std::string line; std::getline(maps, line);)
+        if ((line.find("/libblas.so") != std::string::npos || line.find("/libopenblas") != std::string::npos) &&
+            line.find('/') != std::string::npos)
+          {
+            blas = line.substr(line.find('/'));
+            break;
+          }
       utsname u{};
       uname(&u);
       std::ostringstream s;
-      s << cpu << " (" << std::thread::hardware_concurrency() << " logical cores)" << "; " << u.sysname << " " << u.release << "; compiler " << __VERSION__ << "; "
+      s << cpu << " (" << std::thread::hardware_concurrency() << " logical cores)" << "; " << u.sysname << " " << u.release << "; BLAS " << blas << "; compiler " << __VERSION__ << "; "
 #ifdef NDEBUG
         << "optimised build (NDEBUG)";
 #else

@@ -572,7 +572,19 @@ namespace gradcontact::cases
                      << fmt(best_ours, "%.2e") << " | " << list(error_ratio_at_equal_time(ot, oe, pt, pe), "t=")
                      << " | " << list(time_ratio_at_equal_error(ot, oe, pt, pe), "e=") << " |\n";
                 }
-            pm << "\nThe plots `fe_<scene>_k<k>_error_vs_time.png` carry both models.\n";
+            pm << "\nThe plots `fe_<scene>_k<k>_error_vs_time.png` carry both models.\n\n"
+               << "## Where the peer stops converging, and why\n\n"
+               << "- k != 0: the peer evaluates E(z) = E0 (z/c0)^k at the Gauss points of qf5pT; in the cells on "
+                  "the surface E is singular (k < 0) or vanishes (k > 0) like z^k, which a Gauss rule does not "
+                  "integrate well, and u_z ~ d - c z^(1-k) under the punch needs thin surface cells, which the "
+                  "peer's isotropic Delaunay mesh does not have. The deal.II model integrates those cells with a "
+                  "Gauss-Jacobi rule exact for z^k times a polynomial and halves them in z to 1e-10 a (k > 0) or "
+                  "1e-4 a (k < 0) under the contact. A FreeFem++ engineer could add both (an anisotropic "
+                  "adaptmesh metric, a mapped quadrature); these scripts do what the usual FreeFem++ "
+                  "model does, as the issue asks.\n"
+               << "- k = 0: the peer converges (P2, edge grading); measured here it is within a factor 1-4 of "
+                  "ours in error at equal time up to about 1.5 s, then flattens at 1.6e-5 (flat punch) and 2e-5 "
+                  "(paraboloid) at its finest level (h_edge 1e-5 a, P2), where degree 3-4 reach 5e-8.\n";
           }
         std::ofstream(folder / "peer.md") << pm.str();
       }
