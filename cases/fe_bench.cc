@@ -437,15 +437,14 @@ namespace gradcontact::cases
               }
           if (by_time.empty())
             continue;
+          // each curve in the order of its runs (mesh level), not of x: timing noise would zig-zag it
           const auto series = [](const std::map<std::string, Series> &m) {
             std::vector<Series> v;
             for (const auto &s : m)
               {
-                // sort each curve by x so the lines do not zig-zag
                 std::vector<std::size_t> idx(s.second.x.size());
                 for (std::size_t i = 0; i < idx.size(); ++i)
                   idx[i] = i;
-                std::sort(idx.begin(), idx.end(), [&](auto i, auto j) { return s.second.x[i] < s.second.x[j]; });
                 Series c{s.second.title, {}, {}, false};
                 c.linespoints = true;
                 for (const auto i : idx)

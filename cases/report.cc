@@ -138,7 +138,7 @@ namespace gradcontact::cases
        << ".svg\n"
        << "set title \"" << title << "\" noenhanced\nset xlabel \"" << xlabel << "\" noenhanced\nset ylabel \"" << ylabel
        << "\" noenhanced\nset grid\nset key top right\n"
-       << (logx ? "set logscale x\n" : "") << (logy ? "set logscale y\n" : "");
+       << (logx ? "set logscale x\n" : "") << (logy ? "set logscale y\nset format y \"%.0e\"\n" : "");
     std::string plot = "plot ";
     for (std::size_t i = 0; i < series.size(); ++i)
       plot += std::string(i ? ", " : "") + "'" + stem + ".dat' index " + std::to_string(i) + " with " +
