@@ -1,4 +1,5 @@
 #include "bench.h"
+#include "fe_bench.h"
 
 #include <analytic/batch.hpp>
 
@@ -15,6 +16,7 @@
 #include <sstream>
 #include <stdexcept>
 #include <sys/utsname.h>
+#include <thread>
 
 #ifndef GRADCONTACT_SOURCE_DIR
 #  define GRADCONTACT_SOURCE_DIR "."
@@ -33,6 +35,10 @@ namespace gradcontact::cases
       fs::path references = fs::path(GRADCONTACT_SOURCE_DIR) / "tests/data/references.jsonl";
       int repeat = 5;
       std::size_t numerical_stride = 5; // numerical MDR on every 5th row of a family (ms per row)
+      std::string part = "all";         // analytic | fe | peer | all
+      bool quick = false;
+      int fe_repeat = 3;
+      fs::path peer_scripts = fs::path(GRADCONTACT_SOURCE_DIR) / "cases/peers/freefem";
     };
 
     /// One family: case/quantity, with its rows (requests without method) and references.
@@ -64,12 +70,35 @@ namespace gradcontact::cases
             o.reports = value("--reports");
           else if (args[i] == "--references")
             o.references = value("--references");
-          else if (args[i] == "--repeat")
+          else if (args[i] == "--repeat" || args[i] == "--fe-repeat")
             {
-              o.repeat = std::stoi(value("--repeat"));
-              if (o.repeat < 1 || o.repeat > 1000)
-                throw std::invalid_argument("bench: --repeat = " + std::to_string(o.repeat) + " is outside [1, 1000]");
+              const std::string name = args[i], text = value(name.c_str());
+              int n = 0;
+              try
+                {
+                  std::size_t used = 0;
+                  n = std::stoi(text, &used);
+                  if (used != text.size())
+                    throw std::invalid_argument(text);
+                }
+              catch (const std::logic_error &)
+                {
+                  throw std::invalid_argument("bench: " + name + " = '" + text + "' is not an integer in [1, 1000]");
+                }
+              if (n < 1 || n > 1000)
+                throw std::invalid_argument("bench: " + name + " = " + std::to_string(n) + " is outside [1, 1000]");
+              (name == "--repeat" ? o.repeat : o.fe_repeat) = n;
             }
+          else if (args[i] == "--part")
+            {
+              o.part = value("--part");
+              if (o.part != "analytic" && o.part != "fe" && o.part != "peer" && o.part != "all")
+                throw std::invalid_argument("bench: --part = '" + o.part + "' is not one of analytic, fe, peer, all");
+            }
+          else if (args[i] == "--quick")
+            o.quick = true;
+          else if (args[i] == "--peer-scripts")
+            o.peer_scripts = value("--peer-scripts");
           else
             throw std::invalid_argument("bench: unknown argument '" + args[i] + "'");
         }
@@ -170,10 +199,20 @@ namespace gradcontact::cases
             cpu = line.substr(line.find(':') + 2);
             break;
           }
+      // The BLAS actually loaded (UMFPACK's speed depends on it, fem/README.md "Profile").
+      std::string blas = "unknown";
+      std::ifstream maps("/proc/self/maps");
+      for (std::string line; std::getline(maps, line);)
+        if ((line.find("/libblas.so") != std::string::npos || line.find("/libopenblas") != std::string::npos) &&
+            line.find('/') != std::string::npos)
+          {
+            blas = line.substr(line.find('/'));
+            break;
+          }
       utsname u{};
       uname(&u);
       std::ostringstream s;
-      s << cpu << "; " << u.sysname << " " << u.release << "; compiler " << __VERSION__ << "; "
+      s << cpu << " (" << std::thread::hardware_concurrency() << " logical cores)" << "; " << u.sysname << " " << u.release << "; BLAS " << blas << "; compiler " << __VERSION__ << "; "
 #ifdef NDEBUG
         << "optimised build (NDEBUG)";
 #else
@@ -190,55 +229,88 @@ namespace gradcontact::cases
     }
   } // namespace
 
+  namespace
+  {
+    /// analytic.{csv,md} into `tmp`.
+    void analytic_part(const Options &o, const fs::path &tmp)
+    {
+      const auto families = load(o.references);
+      if (families.empty())
+        throw std::runtime_error("bench: the reference table is empty");
+      std::ofstream csv(tmp / "analytic.csv");
+      csv << "family,method,rows,refused,min_seconds,median_seconds,worst_relative_error\n";
+      std::ostringstream md;
+      md << "# Analytic benchmarks: time per evaluation against error\n\n"
+         << "Machine: " << machine() << ".  \n"
+         << "Each family is every row of `tests/data/references.jsonl` with that case and quantity (the numerical "
+            "MDR every "
+         << o.numerical_stride << "th row), evaluated " << o.repeat
+         << " times (the numerical MDR once); times are per evaluation of a parsed request (batch::prepare), including "
+            "the look-up of its inputs, minimum and median over the repetitions. Errors are the worst relative error "
+            "against the 34-digit references.\n\n"
+         << "| family | rows | closed form min [ns] | median [ns] | worst error | numerical MDR min [ms] | median [ms] | "
+            "worst error |\n|---|---|---|---|---|---|---|---|\n";
+      for (const auto &entry : families)
+        {
+          const Timing closed = measure(entry.second, "closed_form", 1, o.repeat);
+          Timing numeric = measure(entry.second, "numerical_mdr", o.numerical_stride, 1);
+          const bool has_numeric = numeric.rows > 0;
+          std::cerr << entry.first << ": closed " << fmt(closed.min * 1e9) << " ns, error " << fmt(closed.worst_error)
+                    << (has_numeric ? "; numerical " + fmt(numeric.min * 1e3) + " ms, error " + fmt(numeric.worst_error) : "")
+                    << "\n";
+          csv << entry.first << ",closed_form," << closed.rows << ',' << closed.refused << ',' << closed.min << ','
+              << closed.median << ',' << closed.worst_error << '\n';
+          if (has_numeric)
+            csv << entry.first << ",numerical_mdr," << numeric.rows << ',' << numeric.refused << ',' << numeric.min << ','
+                << numeric.median << ',' << numeric.worst_error << '\n';
+          md << "| " << entry.first << " | " << closed.rows << " | " << fmt(closed.min * 1e9, "%.0f") << " | "
+             << fmt(closed.median * 1e9, "%.0f") << " | " << fmt(closed.worst_error, "%.1e") << " | "
+             << (has_numeric ? fmt(numeric.min * 1e3, "%.3f") : "-") << " | "
+             << (has_numeric ? fmt(numeric.median * 1e3, "%.3f") : "-") << " | "
+             << (has_numeric ? fmt(numeric.worst_error, "%.1e") + (numeric.refused ? " (" + std::to_string(numeric.refused) + " refused)" : "") : "-")
+             << " |\n";
+        }
+      std::ofstream(tmp / "analytic.md") << md.str();
+    }
+  } // namespace
+
   int bench(const std::vector<std::string> &args)
   {
     const Options o = parse(args);
-    const auto families = load(o.references);
-    if (families.empty())
-      throw std::runtime_error("bench: the reference table is empty");
-
+    // Every part writes into a temporary folder; the files of an earlier run that this run does not
+    // rewrite (another part) are carried over, then the folder replaces reports/benchmarks in one rename,
+    // so a failed run leaves the old report as it was.
     const fs::path folder = o.reports / "benchmarks";
     const fs::path tmp = o.reports / ".benchmarks.tmp";
     fs::remove_all(tmp);
     fs::create_directories(tmp);
-    std::ofstream csv(tmp / "analytic.csv");
-    csv << "family,method,rows,refused,min_seconds,median_seconds,worst_relative_error\n";
-    std::ostringstream md;
-    md << "# Analytic benchmarks: time per evaluation against error\n\n"
-       << "Machine: " << machine() << ".  \n"
-       << "Each family is every row of `tests/data/references.jsonl` with that case and quantity (the numerical "
-          "MDR every "
-       << o.numerical_stride << "th row), evaluated " << o.repeat
-       << " times (the numerical MDR once); times are per evaluation of a parsed request (batch::prepare), including "
-          "the look-up of its inputs, minimum and median over the repetitions. Errors are the worst relative error "
-          "against the 34-digit references.\n\n"
-       << "| family | rows | closed form min [ns] | median [ns] | worst error | numerical MDR min [ms] | median [ms] | "
-          "worst error |\n|---|---|---|---|---|---|---|---|\n";
-    for (const auto &entry : families)
+    try
       {
-        const Timing closed = measure(entry.second, "closed_form", 1, o.repeat);
-        Timing numeric = measure(entry.second, "numerical_mdr", o.numerical_stride, 1);
-        const bool has_numeric = numeric.rows > 0;
-        std::cerr << entry.first << ": closed " << fmt(closed.min * 1e9) << " ns, error " << fmt(closed.worst_error)
-                  << (has_numeric ? "; numerical " + fmt(numeric.min * 1e3) + " ms, error " + fmt(numeric.worst_error) : "")
-                  << "\n";
-        csv << entry.first << ",closed_form," << closed.rows << ',' << closed.refused << ',' << closed.min << ','
-            << closed.median << ',' << closed.worst_error << '\n';
-        if (has_numeric)
-          csv << entry.first << ",numerical_mdr," << numeric.rows << ',' << numeric.refused << ',' << numeric.min << ','
-              << numeric.median << ',' << numeric.worst_error << '\n';
-        md << "| " << entry.first << " | " << closed.rows << " | " << fmt(closed.min * 1e9, "%.0f") << " | "
-           << fmt(closed.median * 1e9, "%.0f") << " | " << fmt(closed.worst_error, "%.1e") << " | "
-           << (has_numeric ? fmt(numeric.min * 1e3, "%.3f") : "-") << " | "
-           << (has_numeric ? fmt(numeric.median * 1e3, "%.3f") : "-") << " | "
-           << (has_numeric ? fmt(numeric.worst_error, "%.1e") + (numeric.refused ? " (" + std::to_string(numeric.refused) + " refused)" : "") : "-")
-           << " |\n";
+        if (o.part == "analytic" || o.part == "all")
+          analytic_part(o, tmp);
+        if (o.part != "analytic")
+          {
+            FeBenchOptions fe;
+            fe.quick = o.quick;
+            fe.repeat = o.quick ? 1 : o.fe_repeat;
+            fe.with_fe = true;
+            fe.with_peer = (o.part == "peer" || o.part == "all");
+            fe.peer_scripts = o.peer_scripts;
+            run_fe_bench(fe, tmp, machine());
+          }
+        if (fs::is_directory(folder))
+          for (const auto &entry : fs::directory_iterator(folder))
+            if (!fs::exists(tmp / entry.path().filename()))
+              fs::copy(entry.path(), tmp / entry.path().filename(), fs::copy_options::recursive);
       }
-    std::ofstream(tmp / "analytic.md") << md.str();
-    csv.close();
+    catch (...)
+      {
+        fs::remove_all(tmp);
+        throw;
+      }
     fs::remove_all(folder);
     fs::rename(tmp, folder);
-    std::cout << "wrote " << (folder / "analytic.md").string() << "\n";
+    std::cout << "wrote " << folder.string() << "/ (part " << o.part << (o.quick ? ", quick" : "") << ")\n";
     return 0;
   }
 } // namespace gradcontact::cases

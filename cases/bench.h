@@ -4,6 +4,10 @@
 // numerical MDR quantity, each with its worst relative error against the 34-digit references of
 // tests/data/references.jsonl (an independent mpmath evaluation of the MDR integrals). Several
 // repetitions; minimum and median are reported with the machine and the build.
+//
+// FE part (cases/fe_bench.h): the deal.II model's error against wall time and DoFs, degrees 1-4 on a
+// ladder of meshes, flat punch and paraboloid at k = -0.5, 0, 0.5; peer part: the same scenes in
+// FreeFem++ (cases/peers/freefem), when FreeFem++ is on PATH, and the ratios of the two.
 #pragma once
 
 #include <string>
@@ -11,6 +15,9 @@
 
 namespace gradcontact::cases
 {
-  /// `gradcontact bench [--reports DIR] [--references FILE] [--repeat N]`; returns the exit code.
+  /// `gradcontact bench [--part analytic|fe|peer|all] [--quick] [--reports DIR] [--references FILE]
+  /// [--repeat N] [--fe-repeat N] [--peer-scripts DIR]`; returns the exit code. `peer` runs the FE part
+  /// too (the ratios need both); `--quick` is the small FE set (k = 0, degrees 1-2, two levels, one
+  /// repetition) for the smoke test. Writes reports/benchmarks/ through a temporary folder.
   int bench(const std::vector<std::string> &args);
 } // namespace gradcontact::cases

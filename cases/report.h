@@ -65,6 +65,7 @@ namespace gradcontact::cases
     std::string title;
     std::vector<double> x, y;
     bool points = false;
+    bool linespoints = false; ///< line through the points, each marked (a sweep of runs)
   };
   bool write_plot(const std::filesystem::path &folder, const std::string &stem, const std::string &title,
                   const std::string &xlabel, const std::string &ylabel, const std::vector<Series> &series,
