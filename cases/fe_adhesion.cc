@@ -400,6 +400,30 @@ namespace gradcontact::cases
                             }
                       }
                   }
+                // p(r) and w(r) of the FE critical state (force control) against the closed form at the same
+                // radius (9.53-9.54, 9.58-9.59): one more FE solve.
+                if (force_state && (!s.outputs.pressure_radii.empty() || !s.outputs.displacement_radii.empty()))
+                  {
+                    std::vector<double> pr, wr;
+                    for (const double x : s.outputs.pressure_radii)
+                      pr.push_back(x * force_state->state.radius);
+                    for (const double x : s.outputs.displacement_radii)
+                      wr.push_back(x * force_state->state.radius);
+                    const auto prof = model.profiles(force_state->state.radius, dgamma, pr, wr);
+                    const double ac = force_state->state.radius, t = seconds_since(level_start);
+                    double p_scale = 0., w_scale = std::abs(prof.state.depth);
+                    for (const fem::Sample &p : prof.pressure)
+                      p_scale = std::max(p_scale, std::abs(p.value));
+                    for (const fem::Sample &p : prof.pressure)
+                      check("adhesive pressure p(r)", "critical state (force control), r/a_c = " + format(p.r / ac) +
+                              ", relative to max |p|" + level_tag,
+                            p.value, "pressure", {{"a", ac}, {"r", p.r}}, s.tolerances.pressure, force_state->max_dofs, t, p_scale);
+                    for (const fem::Sample &w : prof.displacement)
+                      check("adhesive displacement w(r)", "critical state (force control), r/a_c = " + format(w.r / ac) +
+                              ", relative to |d_c|" + level_tag,
+                            w.value, "displacement", {{"a", ac}, {"r", w.r}}, s.tolerances.displacement, force_state->max_dofs, t,
+                            w_scale);
+                  }
                 // FE points on the adhesive force-depth curve (force control, figures 9.22-9.23).
                 if (force_state && !ad.curve_points.empty() && level == s.discretization.refinements.back())
                   {

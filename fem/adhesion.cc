@@ -408,4 +408,39 @@ namespace gradcontact::fem
       }
     return h0;
   }
+
+
+  AdhesiveContact::Profiles AdhesiveContact::profiles(const double a, const double dgamma,
+                                                      const std::vector<double> &pressure_radii,
+                                                      const std::vector<double> &displacement_radii)
+  {
+    Profiles out;
+    out.state = adhesive_state(a, dgamma);
+    Settings st = settings(a);
+    st.mesh.contact_radius = a;
+    AxisymmetricSolver solver(material, st.mesh, st.discretization);
+    OutputRequest request;
+    request.pressure_radii     = pressure_radii;
+    request.displacement_radii = displacement_radii;
+    LoadCase punch;
+    punch.type  = LoadType::flat_punch;
+    punch.depth = 1.;
+    const Result unit = solver.run(punch, request);
+    Result       profile_state; // zero for the flat punch
+    if (profile)
+      {
+        LoadCase indenter;
+        indenter.type    = LoadType::indenter;
+        indenter.profile = *profile;
+        profile_state    = solver.run(indenter, request);
+      }
+    const double delta = out.state.delta;
+    for (std::size_t i = 0; i < unit.pressure.size(); ++i)
+      out.pressure.push_back({unit.pressure[i].r, (profile ? profile_state.pressure[i].value : 0.) -
+                                                    delta * unit.pressure[i].value});
+    for (std::size_t i = 0; i < unit.displacement.size(); ++i)
+      out.displacement.push_back({unit.displacement[i].r, (profile ? profile_state.displacement[i].value : 0.) -
+                                                            delta * unit.displacement[i].value});
+    return out;
+  }
 } // namespace gradcontact::fem

@@ -123,6 +123,16 @@ namespace gradcontact::fem
     /// h0 at which the two mechanisms of the concave punch coincide (the states scale linearly with h0).
     double transition_h0(double a, double dgamma, double sigma_th);
 
+    /// The adhesive state at contact radius a with its surface profiles (one more FE solve at a):
+    /// p(r) = p_n(r) - delta p_1(r) (r <= a) and w(r) = w_n(r) - delta w_1(r) (9.53-9.54 for the paraboloid).
+    struct Profiles
+    {
+      AdhesiveState       state;
+      std::vector<Sample> pressure, displacement;
+    };
+    Profiles profiles(double a, double dgamma, const std::vector<double> &pressure_radii,
+                      const std::vector<double> &displacement_radii);
+
     unsigned int radii_solved() const { return nodes.size(); }
 
   private:
