@@ -90,28 +90,41 @@ namespace gradcontact::cases
               // under the given control); each coordinate is "radius", "depth" or "force", times "scale",
               // divided by the value of the request "divide_by" when given.
               const json &fe = c.at("fe_adhesion");
-              std::vector<Override> overrides;
-              for (const json &o : fe.value("set", json::array()))
-                overrides.push_back(parse_override(o.get<std::string>()));
-              const Scene scene = read_scene(fe.at("scene").get<std::string>(), overrides);
-              const FeAdhesiveCurve curve = fe_adhesive_curve(scene, fe.at("a_over_ac").get<std::vector<double>>(),
-                                                              fe.value("control", "force") == "force");
-              const auto axis = [&](const json &spec, const std::vector<double> &radius, const std::vector<double> &depth,
-                                    const std::vector<double> &force) {
-                const std::string q = spec.at("quantity");
-                const std::vector<double> &v = q == "radius" ? radius : q == "depth" ? depth : force;
-                if (q != "radius" && q != "depth" && q != "force")
-                  throw std::invalid_argument("figures: fe_adhesion quantity '" + q + "' is not radius, depth or force");
-                double factor = spec.value("scale", 1.);
-                if (spec.contains("divide_by"))
-                  factor /= batch::prepare(spec.at("divide_by").dump())();
-                std::vector<double> out;
-                for (const double x : v)
-                  out.push_back(x * factor);
-                return out;
-              };
-              series.push_back({c.value("title", "FE"), axis(fe.at("x"), curve.radius, curve.depth, curve.force),
-                                axis(fe.at("y"), curve.radius, curve.depth, curve.force), true});
+              // "variants": one FE point per list of extra overrides (e.g. one per k); otherwise one scene.
+              std::vector<std::vector<std::string>> variants = {{}};
+              if (fe.contains("variants"))
+                variants = fe.at("variants").get<std::vector<std::vector<std::string>>>();
+              Series points{c.value("title", "FE"), {}, {}, true};
+              for (const std::vector<std::string> &variant : variants)
+                {
+                  std::vector<Override> overrides;
+                  for (const json &o : fe.value("set", json::array()))
+                    overrides.push_back(parse_override(o.get<std::string>()));
+                  for (const std::string &o : variant)
+                    overrides.push_back(parse_override(o));
+                  const Scene scene = read_scene(fe.at("scene").get<std::string>(), overrides);
+                  const FeAdhesiveCurve curve = fe_adhesive_curve(scene, fe.at("a_over_ac").get<std::vector<double>>(),
+                                                                  fe.value("control", "force") == "force");
+                  const auto axis = [&](const json &spec) {
+                    const std::string q = spec.at("quantity");
+                    if (q != "radius" && q != "depth" && q != "force" && q != "k")
+                      throw std::invalid_argument("figures: fe_adhesion quantity '" + q + "' is not radius, depth, force or k");
+                    double factor = spec.value("scale", 1.);
+                    if (spec.contains("divide_by"))
+                      factor /= batch::prepare(spec.at("divide_by").dump())();
+                    std::vector<double> out;
+                    for (std::size_t i = 0; i < curve.radius.size(); ++i)
+                      out.push_back(factor * (q == "radius" ? curve.radius[i]
+                                              : q == "depth" ? curve.depth[i]
+                                              : q == "force" ? curve.force[i]
+                                                             : scene.material.k));
+                    return out;
+                  };
+                  const std::vector<double> x = axis(fe.at("x")), y = axis(fe.at("y"));
+                  points.x.insert(points.x.end(), x.begin(), x.end());
+                  points.y.insert(points.y.end(), y.begin(), y.end());
+                }
+              series.push_back(points);
               continue;
             }
           const json &sweep = c.at("sweep");
