@@ -327,10 +327,37 @@ namespace gradcontact::cases
             else if (l.type == Type::concave_punch)
               {
                 report_state("periphery (9.65-9.66)", model.periphery_state(l.a, dgamma), {{"mechanism", "periphery"}}, false);
+                // p(r) in the critical states (9.66, 9.68) against the closed form, relative to max |p|.
+                const auto critical_pressure = [&](const std::string &name, const double delta, const json &mechanism) {
+                  if (s.outputs.pressure_radii.empty())
+                    return;
+                  std::vector<double> pr;
+                  for (const double x : s.outputs.pressure_radii)
+                    pr.push_back(x * l.a);
+                  const auto prof = model.profiles_at_delta(l.a, delta, pr, {});
+                  double scale = 0.;
+                  for (const fem::Sample &p : prof.pressure)
+                    scale = std::max(scale, std::abs(p.value));
+                  for (const fem::Sample &p : prof.pressure)
+                    {
+                      // The centre state is defined by p(0) = -sigma_th: that row would hold by construction.
+                      if (name == "centre" && p.r == 0.)
+                        continue;
+                      json extra = mechanism;
+                      extra["r"] = p.r;
+                      check("critical pressure p(r)", name + ", r/a = " + format(p.r / l.a) + ", relative to max |p|" + level_tag,
+                            p.value, "pressure", extra, s.tolerances.pressure, lr.dofs, seconds_since(level_start), scale);
+                    }
+                };
+                {
+                  const fem::AdhesiveCriticalState pc = model.periphery_state(l.a, dgamma);
+                  critical_pressure("periphery", pc.state.delta, {{"mechanism", "periphery"}});
+                }
                 if (ad.tensile_strength > 0.)
                   {
-                    report_state("centre (9.67-9.68)", model.centre_state(l.a, dgamma, ad.tensile_strength),
-                                 {{"mechanism", "centre"}}, false);
+                    const fem::AdhesiveCriticalState cc = model.centre_state(l.a, dgamma, ad.tensile_strength);
+                    report_state("centre (9.67-9.68)", cc, {{"mechanism", "centre"}}, false);
+                    critical_pressure("centre", cc.state.delta, {{"mechanism", "centre"}});
                     try
                       {
                         const double h_star = model.transition_h0(l.a, dgamma, ad.tensile_strength);

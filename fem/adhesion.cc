@@ -414,8 +414,23 @@ namespace gradcontact::fem
                                                       const std::vector<double> &pressure_radii,
                                                       const std::vector<double> &displacement_radii)
   {
+    const AdhesiveState st = adhesive_state(a, dgamma);
+    Profiles out = profiles_at_delta(a, st.delta, pressure_radii, displacement_radii);
+    out.state = st;
+    return out;
+  }
+
+
+
+  AdhesiveContact::Profiles AdhesiveContact::profiles_at_delta(const double a, const double delta,
+                                                               const std::vector<double> &pressure_radii,
+                                                               const std::vector<double> &displacement_radii)
+  {
+    if (!std::isfinite(delta))
+      fail("AdhesiveContact::profiles_at_delta", "delta", delta, "finite");
     Profiles out;
-    out.state = adhesive_state(a, dgamma);
+    out.state.radius = a;
+    out.state.delta  = delta;
     Settings st = settings(a);
     st.mesh.contact_radius = a;
     AxisymmetricSolver solver(material, st.mesh, st.discretization);
@@ -434,7 +449,6 @@ namespace gradcontact::fem
         indenter.profile = *profile;
         profile_state    = solver.run(indenter, request);
       }
-    const double delta = out.state.delta;
     for (std::size_t i = 0; i < unit.pressure.size(); ++i)
       out.pressure.push_back({unit.pressure[i].r, (profile ? profile_state.pressure[i].value : 0.) -
                                                     delta * unit.pressure[i].value});

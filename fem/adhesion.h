@@ -132,6 +132,9 @@ namespace gradcontact::fem
     };
     Profiles profiles(double a, double dgamma, const std::vector<double> &pressure_radii,
                       const std::vector<double> &displacement_radii);
+    /// The same for a given pull-back delta (e.g. the centre mechanism of the concave punch).
+    Profiles profiles_at_delta(double a, double delta, const std::vector<double> &pressure_radii,
+                               const std::vector<double> &displacement_radii);
 
     unsigned int radii_solved() const { return nodes.size(); }
 
