@@ -478,6 +478,16 @@ namespace gradcontact::cases
                 }
               profiles.push_back(u);
               tractions.push_back(tau);
+              try
+                {
+                  // 9.83: the stick zone r <= c_A moves rigidly by u0(F).
+                  const double u_theory = branch_u("unloading", F) / uA;
+                  profiles.push_back({"9.83: " + label->first, {0., o.cA / a}, {u_theory, u_theory}, false});
+                }
+              catch (const std::exception &)
+                {
+                  // the unloading u0 row above reports the failed reference
+                }
             }
           if (verbose)
             std::cerr << "  F/F_A = " << f << ": u0 = " << r.stick.mean_ux << " (" << r.n_dofs << " DoFs, "
