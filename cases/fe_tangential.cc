@@ -351,6 +351,14 @@ namespace gradcontact::cases
       double u0_scene = 0.;
       for (const double x : c_over_a)
         {
+          if (x >= 1.)
+            {
+              // c = a: no slip yet, tau = 0 and F_x = u0 = 0 exactly (the start of the curve); no FE solve, no row
+              // (the stick-zone statistics of a zero field are 0/0).
+              if (verbose)
+                std::cerr << "  c/a = 1: the unloaded state (tau = 0), no FE row\n";
+              continue;
+            }
           const double c = x * a;
           const bool main = std::abs(x - tp.stick_radius) < 1e-9;
           const fem::TangentialResult r =
@@ -565,6 +573,8 @@ namespace gradcontact::cases
         Mode1Model model(s, radii);
         for (const double c : radii)
           {
+            if (c >= a)
+              continue; // the unloaded state c = a (tau = 0)
             const fem::TangentialResult r = solve_partial_slip(s, model, medium, c, {});
             curve.displacement.push_back(r.stick.mean_ux);
             curve.force.push_back(r.force);

@@ -300,12 +300,12 @@ namespace gradcontact::cases
     prm.declare_entry("friction coefficient", "0.3", Patterns::Double(0.),
                       "Coulomb friction coefficient mu, > 0 (partial slip, oscillation).");
     prm.declare_entry("stick radius", "0.5", Patterns::Double(0., 1.),
-                      "Partial slip: stick radius c / a, in (0, 1] (c = a: no slip yet).");
+                      "Partial slip: stick radius c / a, in (0, 1] (c = a: no slip yet, tau = 0: no FE row at that point).");
     prm.declare_entry("amplitude", "0.9", Patterns::Double(0., 1.),
                       "Oscillation: F_A / (mu F_N), in (0, 1); 1 and above is gross slip.");
     prm.declare_entry("load steps", "5", Patterns::Integer(2, 50),
-                      "FE points on the F_x(u0) curve (partial slip: c/a = i / steps, i = 1..steps - 1, and 1 - "
-                      "small) or on the unloading branch F = F_A .. -F_A (oscillation), 2..50.");
+                      "FE points on the F_x(u0) curve (partial slip: c/a = i / steps, i = 1..steps - 1, and "
+                      "Tangential/stick radius) or on the unloading branch F/F_A = 1 .. -1 (oscillation), 2..50.");
     prm.declare_entry("Holl ratio", "false", Patterns::Bool(),
                       "Use the decoupled pairing nu = 1 / (2 + k) of 9.3.1 instead of Material/nu; needs k in (0, 1).");
     prm.declare_entry("stick levels", "8", Patterns::Integer(0, 30),
