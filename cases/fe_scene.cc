@@ -1,6 +1,7 @@
 #include "fe_scene.h"
 
 #include "fe_adhesion.h"
+#include "fe_tangential.h"
 
 #include <analytic/batch.hpp>
 #include <analytic/material.hpp>
@@ -405,6 +406,14 @@ namespace gradcontact::cases
 
   SceneResult run_prm_scene(const Scene &s, const fs::path &folder, const bool verbose)
   {
+    if (s.tangential.enabled())
+      {
+        if (s.adhesion.enabled(s.load))
+          throw std::invalid_argument("scene " + s.file + ": Tangential/study is set and the scene is adhesive "
+                                      "(Adhesion/work of adhesion or tensile strength > 0): tangential contact is "
+                                      "non-adhesive (9.75-9.87); choose one");
+        return run_tangential_scene(s, folder, verbose);
+      }
     if (s.adhesion.enabled(s.load))
       return run_adhesion_scene(s, folder, verbose);
     if (!s.candidate.profile.empty())

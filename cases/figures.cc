@@ -2,6 +2,7 @@
 
 #include "fe_adhesion.h"
 #include "fe_scene.h"
+#include "fe_tangential.h"
 #include "report.h"
 #include "scene.h"
 
@@ -125,6 +126,32 @@ namespace gradcontact::cases
                   points.y.insert(points.y.end(), y.begin(), y.end());
                 }
               series.push_back(points);
+              continue;
+            }
+          if (c.contains("fe_tangential"))
+            {
+              // FE points of a tangential .prm scene (cases/fe_tangential.h): partial slip, (u0, F_x) at the stick
+              // radii of the F_x(u0) curve; oscillation, the hysteresis loop. Each coordinate is "displacement"
+              // or "force", times "scale", divided by the value of the request "divide_by" when given.
+              const json &fe = c.at("fe_tangential");
+              std::vector<Override> overrides;
+              for (const json &o : fe.value("set", json::array()))
+                overrides.push_back(parse_override(o.get<std::string>()));
+              const Scene scene = read_scene(fe.at("scene").get<std::string>(), overrides);
+              const FeTangentialCurve curve = fe_tangential_curve(scene);
+              const auto axis = [&](const json &spec) {
+                const std::string q = spec.at("quantity");
+                if (q != "displacement" && q != "force")
+                  throw std::invalid_argument("figures: fe_tangential quantity '" + q + "' is not displacement or force");
+                double factor = spec.value("scale", 1.);
+                if (spec.contains("divide_by"))
+                  factor /= batch::prepare(spec.at("divide_by").dump())();
+                std::vector<double> out;
+                for (const double x : q == "displacement" ? curve.displacement : curve.force)
+                  out.push_back(x * factor);
+                return out;
+              };
+              series.push_back({c.value("title", "FE"), axis(fe.at("x")), axis(fe.at("y")), true});
               continue;
             }
           const json &sweep = c.at("sweep");

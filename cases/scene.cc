@@ -288,6 +288,60 @@ namespace gradcontact::cases
     prm.leave_subsection();
   }
 
+  void TangentialParameters::declare(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Tangential");
+    prm.declare_entry("study", "none", Patterns::Selection("none|stiffness|partial slip|oscillation"),
+                      "Tangential contact by the Fourier mode-1 FE model (fem/fourier_mode1_solver.h): none; "
+                      "stiffness (Load/type = flat punch: K_T of 9.78-9.79, alpha = K_N / K_T, Mindlin at k = 0); "
+                      "partial slip (Load/type = paraboloid: the traction mu [p(r; a) - p(r; c)] of 9.80, F_x and the "
+                      "stick-zone displacement, the F_x(u0) curve); oscillation (paraboloid: +-F_A after loading, "
+                      "9.81-9.87: unloading branch, hysteresis loop, dissipated energy, points A to E).");
+    prm.declare_entry("friction coefficient", "0.3", Patterns::Double(0.),
+                      "Coulomb friction coefficient mu, > 0 (partial slip, oscillation).");
+    prm.declare_entry("stick radius", "0.5", Patterns::Double(0., 1.),
+                      "Partial slip: stick radius c / a, in (0, 1] (c = a: no slip yet, tau = 0: no FE row at that point).");
+    prm.declare_entry("amplitude", "0.9", Patterns::Double(0., 1.),
+                      "Oscillation: F_A / (mu F_N), in (0, 1); 1 and above is gross slip.");
+    prm.declare_entry("load steps", "5", Patterns::Integer(2, 50),
+                      "FE points on the F_x(u0) curve (partial slip: c/a = i / steps, i = 1..steps - 1, and "
+                      "Tangential/stick radius) or on the unloading branch F/F_A = 1 .. -1 (oscillation), 2..50.");
+    prm.declare_entry("Holl ratio", "false", Patterns::Bool(),
+                      "Use the decoupled pairing nu = 1 / (2 + k) of 9.3.1 instead of Material/nu; needs k in (0, 1).");
+    prm.declare_entry("stick levels", "8", Patterns::Integer(0, 30),
+                      "Surface refinement levels toward the stick radii (the kink of tau at c; fem/README.md).");
+    prm.declare_entry("assumption tolerance", "1e-4", Patterns::Double(0.),
+                      "Tolerance of the measured assumption error of 9.80 (relative spread of u_x over the stick "
+                      "zone, max |u_y| / mean u_x), both compared with 0.");
+    prm.leave_subsection();
+  }
+  void TangentialParameters::parse(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Tangential");
+    const std::string st = prm.get("study");
+    study = st == "stiffness"      ? Study::stiffness
+            : st == "partial slip" ? Study::partial_slip
+            : st == "oscillation"  ? Study::oscillation
+                                   : Study::none;
+    friction_coefficient = prm.get_double("friction coefficient");
+    stick_radius = prm.get_double("stick radius");
+    amplitude = prm.get_double("amplitude");
+    load_steps = prm.get_integer("load steps");
+    holl_ratio = prm.get_bool("Holl ratio");
+    stick_levels = prm.get_integer("stick levels");
+    assumption_tolerance = prm.get_double("assumption tolerance");
+    prm.leave_subsection();
+    // The patterns admit the closed ends; the open ones are checked here (9.80: 0 < c <= a; F_A < mu F_N).
+    if (!(friction_coefficient > 0.))
+      throw std::invalid_argument("Tangential/friction coefficient = " + format(friction_coefficient) +
+                                  " must be in (0, inf)");
+    if (!(stick_radius > 0. && stick_radius <= 1.))
+      throw std::invalid_argument("Tangential/stick radius = " + format(stick_radius) + " must be c/a in (0, 1]");
+    if (!(amplitude > 0. && amplitude < 1.))
+      throw std::invalid_argument("Tangential/amplitude = " + format(amplitude) +
+                                  " must be F_A/(mu F_N) in (0, 1); at 1 and above the sphere slides (gross slip)");
+  }
+
   namespace
   {
     void declare_all(ParameterHandler &prm)
@@ -301,6 +355,7 @@ namespace gradcontact::cases
       ToleranceParameters::declare(prm);
       CandidateParameters::declare(prm);
       AdhesionParameters::declare(prm);
+      TangentialParameters::declare(prm);
     }
   } // namespace
 
@@ -372,6 +427,7 @@ namespace gradcontact::cases
         s.tolerances.parse(prm);
         s.candidate.parse(prm);
         s.adhesion.parse(prm);
+        s.tangential.parse(prm);
       }
     catch (const std::exception &e)
       {

@@ -130,6 +130,30 @@ namespace gradcontact::cases
     void parse(dealii::ParameterHandler &prm);
   };
 
+  /// Tangential contact (9.75-9.87) checked by the Fourier mode-1 FE model (fem/fourier_mode1_solver.h). A scene
+  /// is tangential when `study` is not none; cases/fe_tangential.h runs it.
+  struct TangentialParameters
+  {
+    enum class Study
+    {
+      none,
+      stiffness,    ///< Load/type = flat punch: K_T (9.78-9.79), alpha = K_N / K_T, Mindlin at k = 0
+      partial_slip, ///< Load/type = paraboloid: the Ciavarella-Jaeger traction (9.80), F_x(u0)
+      oscillation   ///< Load/type = paraboloid: +-F_A after loading to A (9.81-9.87), hysteresis, dissipation
+    };
+    Study study = Study::none;
+    double friction_coefficient = 0.3; ///< mu > 0
+    double stick_radius = 0.5;         ///< c / a in (0, 1] (partial slip)
+    double amplitude = 0.9;            ///< F_A / (mu F_N) in (0, 1) (oscillation)
+    unsigned int load_steps = 5;       ///< FE points on the F_x(u0) curve or the unloading branch
+    bool holl_ratio = false;           ///< nu = 1 / (2 + k) (the decoupled pairing), k > 0 only
+    unsigned int stick_levels = 8;     ///< SurfaceRefinement levels toward the stick radii
+    double assumption_tolerance = 1e-4; ///< of the measured assumption error (spread, |u_y|), against 0
+    bool enabled() const { return study != Study::none; }
+    static void declare(dealii::ParameterHandler &prm);
+    void parse(dealii::ParameterHandler &prm);
+  };
+
   struct Scene
   {
     std::string file;
@@ -142,6 +166,7 @@ namespace gradcontact::cases
     ToleranceParameters tolerances;
     CandidateParameters candidate;
     AdhesionParameters adhesion;
+    TangentialParameters tangential;
     std::string resolved; ///< every entry after overrides, as a .prm, stored with the report
   };
 
