@@ -9,6 +9,7 @@
 // Tolerances are the measured errors (fem/README.md, "Fourier mode 1") with a margin, each with its
 // reason; they are not loosened to pass.
 #include <fem/axisymmetric_solver.h>
+#include <fem/convergence.h>
 #include <fem/fourier_mode1_solver.h>
 #include <fem/modulus.h>
 
@@ -304,4 +305,31 @@ TEST_CASE("Under an oscillating tangential force the solver shall follow the unl
             << " (closed form vs Mindlin-Deresiewicz " << W / W_MD - 1 << ")\n";
   REQUIRE_THAT(W, WithinRel(W_MD, 1e-12));
   REQUIRE_THAT(W_fe, WithinRel(W, energy_tolerance));
+}
+
+TEST_CASE("The mode-1 tangential stiffness shall converge at the energy rate 2p under uniform h-refinement",
+          "[verification]")
+{
+  // Requirement (issue 6): asserted convergence of the mode-1 model. Degree 1, k = 0, nu = 0.3, uniform
+  // refinements 0-2 of the recommended mesh, K_T against Mindlin's 8 G a / (2 - nu) (independent of the
+  // MDR). K_T is an energy (u.Au / delta^2), so the error falls as h^(2p) = h^2.
+  const double nu = 0.3, G = E0 / (2 * (1 + nu)), K_ref = 8 * G * a / (2 - nu);
+  std::vector<double> log_h, err;
+  for (unsigned int level = 0; level <= 2; ++level)
+    {
+      Settings s = recommended_settings(a, 0., 1e-5);
+      s.discretization.degree     = 1;
+      s.mesh.global_refinements   = level;
+      FourierMode1Solver solver(power_law(0., nu), s.mesh, s.discretization);
+      const TangentialResult r = solver.run(TangentialLoad::flat_punch(1e-7));
+      log_h.push_back(std::log(std::ldexp(1., -static_cast<int>(level))));
+      err.push_back(std::abs(r.stiffness / K_ref - 1));
+      std::cout << "mode-1 K_T h-study level=" << level << " dofs=" << r.n_dofs << " error=" << err.back() << "\n";
+    }
+  const double order = observed_order(log_h, err);
+  CAPTURE(err[0], err[1], err[2], order);
+  CHECK(err[2] < err[1]);
+  CHECK(err[1] < err[0]);
+  CHECK(order > 1.7);
+  CHECK(order < 2.5);
 }
