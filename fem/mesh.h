@@ -41,7 +41,9 @@ namespace gradcontact::fem
     double          far_field_size  = 1e10; ///< L / a
     double          ring_growth     = 1.15; ///< target ratio g of consecutive far-field rings
     unsigned int    edge_refinements = 0;   ///< isotropic refinements at (a, 0)
-    unsigned int    axis_refinements = 0;   ///< isotropic refinements at (0, 0) (cone: p singular there)
+    unsigned int    axis_refinements = 0;   ///< isotropic refinement cycles at (0, 0) (cone: p singular there)
+    double          axis_grading     = 3.0; ///< per cycle, refine cells whose centre is within
+                                            ///< axis_grading diameters of (0, 0); 0: the corner cell only
     double          surface_layer_thickness = 1.0; ///< target thickness of the surface cells / a
     double          halving_radius          = 1.05; ///< z-halvings where r <= halving_radius a
     unsigned int    global_refinements      = 0;    ///< uniform refinements after step 1 (h-studies)

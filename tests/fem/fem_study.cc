@@ -3,8 +3,8 @@
 //
 //   fem_study load=punch k=0 p=3 h_edge=1e-5 h_surface=0.25 h_far=3 g=1.15 L=1e8 layer=1e-10 R1=4
 //             edge_refinements=0 global=0 repeat=1
-// load = punch | paraboloid | cone | power (n=, A=) | pressure; every key is optional (defaults: the
-// recommended parameters for k). Prints one line per run: key=value pairs.
+// load = punch | paraboloid | cone | power (n=, A=) | pressure; pointwise=1 prints p(r) per sample;
+// every key is optional (defaults: the recommended parameters for k). Prints one line per run: key=value pairs.
 #include <fem/axisymmetric_solver.h>
 #include <fem/modulus.h>
 
@@ -125,6 +125,8 @@ int main(int argc, char **argv)
           for (const Sample &s : r.pressure)
             {
               const double p = gradcontact::pressure(medium, power, a_cmp, s.r);
+              if (arg.count("pointwise"))
+                std::printf("r/a=%.6e p_fe=%.10e p_exact=%.10e rel=%.3e\n", s.r / a_ref, s.value, p, s.value / p - 1);
               p_err += (s.value - p) * (s.value - p) * s.r;
               p_norm += p * p * s.r;
             }
