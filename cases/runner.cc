@@ -33,7 +33,39 @@ namespace gradcontact::cases
       fs::path reports = "reports";
       bool quiet = false;
       bool verbose = false;
+      // --shard i/N: this process runs the items (scenes of `run`, values of `sweep`) whose 0-based
+      // position j has j % N == i, so N independent jobs (an array job, one per node or rank group)
+      // share a sweep without any communication; each writes summary.shard-i-of-N.md.
+      unsigned int shard = 0;
+      unsigned int shards = 1;
+
+      bool mine(const std::size_t j) const { return j % shards == shard; }
     };
+
+    void parse_shard(Options &o, const std::string &text)
+    {
+      const auto slash = text.find('/');
+      std::size_t used_i = 0, used_n = 0;
+      long i = -1, n = 0;
+      try
+        {
+          if (slash != std::string::npos)
+            {
+              i = std::stol(text.substr(0, slash), &used_i);
+              n = std::stol(text.substr(slash + 1), &used_n);
+            }
+        }
+      catch (const std::exception &)
+        {
+          i = -1;
+        }
+      if (slash == std::string::npos || used_i != slash || used_n != text.size() - slash - 1 || n < 1 ||
+          n > 100000 || i < 0 || i >= n)
+        throw std::invalid_argument("run: --shard '" + text +
+                                    "' is not i/N with N in [1, 100000] and i in [0, N - 1] (0-based shard index)");
+      o.shard = static_cast<unsigned int>(i);
+      o.shards = static_cast<unsigned int>(n);
+    }
 
     void add_scenes(Options &o, const std::string &a)
     {
@@ -79,6 +111,8 @@ namespace gradcontact::cases
             o.quiet = true;
           else if (a == "--verbose")
             o.verbose = true;
+          else if (a == "--shard")
+            parse_shard(o, value());
           else if (a == "--help-scene")
             {
               std::cout << scene_documentation();
@@ -198,8 +232,11 @@ namespace gradcontact::cases
 
     int finish(const std::vector<SceneResult> &results, const Options &o)
     {
-      const fs::path summary = o.reports / "summary.md";
-      const fs::path tmp = o.reports / ".summary.md.tmp";
+      const std::string name = o.shards == 1 ? "summary.md"
+                                              : "summary.shard-" + std::to_string(o.shard) + "-of-" +
+                                                  std::to_string(o.shards) + ".md";
+      const fs::path summary = o.reports / name;
+      const fs::path tmp = o.reports / ("." + name + ".tmp");
       {
         std::ofstream md(tmp);
         md << "# gradcontact summary\n\n| scene | comparisons | worst error | failed | seconds | report |\n"
@@ -228,6 +265,8 @@ namespace gradcontact::cases
     const auto start = std::chrono::steady_clock::now();
     for (std::size_t i = 0; i < o.scenes.size(); ++i)
       {
+        if (!o.mine(i))
+          continue;
         if (progress)
           std::cerr << "[" << i + 1 << "/" << o.scenes.size() << "] " << o.scenes[i].string() << " (" << std::fixed
                     << std::setprecision(1)
@@ -256,8 +295,11 @@ namespace gradcontact::cases
       throw std::invalid_argument("sweep: --over " + over[1] + " lists no value");
     fs::create_directories(o.reports);
     std::vector<SceneResult> results;
-    for (const std::string &v : values)
+    for (std::size_t j = 0; j < values.size(); ++j)
       {
+        if (!o.mine(j))
+          continue;
+        const std::string &v = values[j];
         std::vector<Override> overrides = o.overrides;
         overrides.push_back({base.path, v});
         results.push_back(run_one(o.scenes.front(), overrides, o, "-" + base.path.back() + "=" + v));

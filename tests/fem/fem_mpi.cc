@@ -12,6 +12,7 @@
 #include <fem/modulus.h>
 
 #include <deal.II/base/mpi.h>
+#include <deal.II/base/utilities.h>
 
 #include <chrono>
 #include <cmath>
@@ -90,14 +91,20 @@ int main(int argc, char **argv)
       const DistributedResult r = solver.run(load);
       const double total = dealii::Utilities::MPI::max(
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), world);
+      // Peak resident memory (VmHWM) of the largest process and of all processes together [MB].
+      dealii::Utilities::System::MemoryStats memory;
+      dealii::Utilities::System::get_memory_stats(memory);
+      const double peak_mb = static_cast<double>(memory.VmHWM) / 1024;
+      const double peak_max = dealii::Utilities::MPI::max(peak_mb, world);
+      const double peak_sum = dealii::Utilities::MPI::sum(peak_mb, world);
       if (root)
         std::printf("load=%s k=%g p=%u np=%u solver=%s dofs=%llu cells=%u force=%.16e depth=%.16e "
                     "iterations=%u residual=%.1e mismatch=%.1e mesh=%.2f setup=%.2f assemble=%.2f "
-                    "factorize=%.2f solve=%.2f total=%.2f %s\n",
+                    "factorize=%.2f solve=%.2f total=%.2f peak_mb_max=%.0f peak_mb_sum=%.0f %s\n",
                     load_name.c_str(), k, disc.degree, r.n_processes, r.solver.c_str(),
                     static_cast<unsigned long long>(r.n_dofs), r.n_cells, r.force, r.depth, r.iterations,
                     r.residual, r.energy_mismatch, r.time.mesh, r.time.setup, r.time.assemble,
-                    r.time.factorize, r.time.solve, total, r.message.c_str());
+                    r.time.factorize, r.time.solve, total, peak_max, peak_sum, r.message.c_str());
 
       int failed = r.reliable ? 0 : 1;
       if (arg.count("compare") && num("compare", 0) != 0)
