@@ -14,6 +14,7 @@
 
 #include <cmath>
 #include <limits>
+#include <map>
 #include <sstream>
 #include <stdexcept>
 
@@ -162,6 +163,25 @@ namespace gradcontact::fem
             }
     punch_constraints.close();
 
+    // The radii of the owned contact z-DoFs (the indenter's prescribed u_z = -f(r)) and the edge DoF.
+    {
+      std::map<types::global_dof_index, Point<2>> support;
+      DoFTools::map_dofs_to_support_points(mapping, dof_handler, support);
+      owned_contact_r.clear();
+      edge_dof = numbers::invalid_dof_index;
+      for (const auto d : owned_contact_dofs)
+        {
+          const double r = support.at(d)[0];
+          owned_contact_r.push_back(r);
+          if (std::abs(r - mesh_parameters.contact_radius) < 1e-9 * mesh_parameters.contact_radius)
+            edge_dof = d;
+        }
+      const int edges = Utilities::MPI::sum(edge_dof != numbers::invalid_dof_index ? 1 : 0, communicator);
+      if (edges != 1)
+        throw std::runtime_error("DistributedSolver: found " + std::to_string(edges) +
+                                 " contact z-DoFs at the contact edge r = a; expected one");
+    }
+
     // The centre z-DoF, on the owner of a cell with the vertex (0, 0): its value is w_c.
     const double a = mesh_parameters.contact_radius;
     std::vector<types::global_dof_index> cell_dofs(fe.n_dofs_per_cell());
@@ -293,10 +313,12 @@ namespace gradcontact::fem
   DistributedResult DistributedSolver::run(const LoadCase &load)
   {
     load.validate();
-    if (load.type != LoadType::flat_punch && load.type != LoadType::constant_pressure)
+    if (load.type != LoadType::flat_punch && load.type != LoadType::constant_pressure &&
+        load.type != LoadType::indenter)
       throw std::invalid_argument("DistributedSolver::run: LoadCase::type = " +
                                   std::to_string(static_cast<int>(load.type)) +
-                                  " is not supported; valid: flat_punch, constant_pressure");
+                                  " is not supported; valid: flat_punch, constant_pressure, indenter "
+                                  "(contact-radius control)");
     const double      a = mesh_parameters.contact_radius;
     DistributedResult result;
     result.time        = setup_time;
@@ -304,6 +326,7 @@ namespace gradcontact::fem
     result.n_cells     = triangulation.n_global_active_cells();
     result.n_processes = Utilities::MPI::n_mpi_processes(communicator);
     result.mesh        = mesh_info;
+    result.contact_radius = a;
 
     MPI_Barrier(communicator);
     const auto start = std::chrono::steady_clock::now();
@@ -324,6 +347,66 @@ namespace gradcontact::fem
         work         = force * load.depth;
         result.force = 2 * numbers::PI * force;
         result.depth = load.depth;
+      }
+    else if (load.type == LoadType::indenter)
+      {
+        // u = d u1 + u2 (axisymmetric_solver.cc, LoadType::indenter): u1 the unit punch, u2 with
+        // u_z = g2 = -f(r) on the contact z-DoFs. Its right-hand side is -A g2 on the free rows; A was
+        // assembled with the homogeneous constraints only, so (A g2)_i is the coupling of row i to the
+        // contact DoFs, and zero on rows constrained by `constraints`. The contact rows of the
+        // contact-constrained matrix are decoupled (diagonal only) and overwritten after the solve.
+        Vector u1, u2, g2(owned, communicator), b2(owned, communicator);
+        solve(true, unit_punch_rhs, u1, result);
+        const double factorize = result.time.factorize;
+        punch_constraints.distribute(u1);
+        for (std::size_t i = 0; i < owned_contact_dofs.size(); ++i)
+          g2[owned_contact_dofs[i]] = -load.profile(owned_contact_r[i], a);
+        g2.compress(VectorOperation::insert);
+        stiffness.vmult(b2, g2);
+        b2 *= -1.0;
+        for (const auto d : owned_contact_dofs)
+          b2[d] = 0;
+        b2.compress(VectorOperation::insert);
+        solve(true, b2, u2, result);
+        result.time.factorize = factorize;
+        for (const auto d : owned_contact_dofs)
+          u2[d] = g2[d];
+        u2.compress(VectorOperation::insert);
+        constraints.distribute(u2);
+        Vector reaction1(owned, communicator), reaction2(owned, communicator);
+        stiffness.vmult(reaction1, u1);
+        stiffness.vmult(reaction2, u2);
+        const bool   owner = edge_dof != numbers::invalid_dof_index;
+        const double r1 = Utilities::MPI::sum(owner ? reaction1[edge_dof] : 0.0, communicator);
+        const double r2 = Utilities::MPI::sum(owner ? reaction2[edge_dof] : 0.0, communicator);
+        const double d  = -r2 / r1;
+        u = u2;
+        u.add(d, u1);
+        double force = 0, work_local = 0, min_force = std::numeric_limits<double>::max(), max_force = 0;
+        for (const auto i : owned_contact_dofs)
+          {
+            const double R = d * reaction1[i] + reaction2[i];
+            force += R;
+            work_local += R * u[i];
+            min_force = std::min(min_force, R);
+            max_force = std::max(max_force, R);
+          }
+        force     = Utilities::MPI::sum(force, communicator);
+        work      = Utilities::MPI::sum(work_local, communicator);
+        min_force = Utilities::MPI::min(min_force, communicator);
+        max_force = Utilities::MPI::max(max_force, communicator);
+        result.force = 2 * numbers::PI * force;
+        result.depth = d;
+        result.min_relative_contact_force = max_force > 0 ? min_force / max_force : min_force;
+        // As in the serial solver: nodal forces of degree >= 2 elements are not sign-definite where
+        // p -> 0; consistent states measured >= -3e-5.
+        if (result.min_relative_contact_force < -1e-3)
+          {
+            result.consistent_contact = false;
+            std::ostringstream msg;
+            msg << "tensile nodal contact force (min/max = " << result.min_relative_contact_force << "); ";
+            result.message += msg.str();
+          }
       }
     else
       {

@@ -6,8 +6,12 @@
 // from fem/modulus.h. On meshes without z-only halvings the mesh, hence the discrete problem, is the
 // one of the serial solver, and the answers agree to the accuracy of the linear solvers.
 //
-// Loads. LoadType::flat_punch (u_z = d on r <= a, no shear) and LoadType::constant_pressure (p0 on
-// r <= a); the other load types throw std::invalid_argument. The flat punch is solved as d times the
+// Loads. LoadType::flat_punch (u_z = d on r <= a, no shear), LoadType::constant_pressure (p0 on
+// r <= a) and LoadType::indenter (any Profile in frictionless contact on r <= a, the mesh's contact
+// radius: contact-radius control as in the serial solver, u = d u1 + u2 with u2 the state u_z = -f(r)
+// on the contact and d from a vanishing nodal force at the edge node r = a; both share the one
+// factorisation or preconditioner of the contact-constrained matrix); the other load types throw
+// std::invalid_argument. The flat punch is solved as d times the
 // unit punch u1 (u_z = 1 on the contact z-DoFs, an inhomogeneous AffineConstraints), so one matrix and
 // one preconditioner or factorisation serve every depth. Force from the reaction,
 //   F = 2 pi sum_{i in contact} (A u)_i = 2 pi a(u, phi),   phi = sum of the contact z-basis functions,
@@ -72,7 +76,11 @@ namespace gradcontact::fem
   struct DistributedResult
   {
     double force = 0; ///< F_N, compressive positive
-    double depth = 0; ///< d (flat punch) or w_c = u_z(0, 0) (constant pressure)
+    double depth = 0; ///< d (flat punch, indenter) or w_c = u_z(0, 0) (constant pressure)
+    double contact_radius = 0; ///< a (the mesh's contact radius)
+    /// indenter: min nodal contact force / max (>= -1e-3 for a consistent state, as in the serial solver)
+    double min_relative_contact_force = 0;
+    bool   consistent_contact = true; ///< indenter: no tensile nodal contact force beyond the tolerance
 
     dealii::types::global_dof_index n_dofs = 0;
     unsigned int n_cells     = 0; ///< active cells of the whole mesh
@@ -148,6 +156,8 @@ namespace gradcontact::fem
     Matrix punch_matrix;    ///< A with `punch_constraints`
     Vector unit_punch_rhs;  ///< the right-hand side of the unit punch
     std::vector<dealii::types::global_dof_index> owned_contact_dofs; ///< locally owned contact z-DoFs
+    std::vector<double> owned_contact_r; ///< their radii
+    dealii::types::global_dof_index edge_dof; ///< the contact z-DoF at r = a (owner only; else invalid)
     dealii::types::global_dof_index centre_dof; ///< the z-DoF at (0, 0)
     LinearSolver punch_solver, free_solver;
     Timings      setup_time;
