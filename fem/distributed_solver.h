@@ -78,7 +78,7 @@ namespace gradcontact::fem
     double force = 0; ///< F_N, compressive positive
     double depth = 0; ///< d (flat punch, indenter) or w_c = u_z(0, 0) (constant pressure)
     double contact_radius = 0; ///< a (the mesh's contact radius)
-    /// indenter: min nodal contact force / max (>= -1e-3 for a consistent state, as in the serial solver)
+    /// indenter: fem/contact_check.h's min_relative_contact_force (>= -1e-3 for a consistent state)
     double min_relative_contact_force = 0;
     bool   consistent_contact = true; ///< indenter: no tensile nodal contact force beyond the tolerance
 

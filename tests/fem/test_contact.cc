@@ -3,6 +3,7 @@
 // analytic/normal.hpp (an independent code path: the MDR closed forms of chapter 9), linked here only.
 // Every tolerance is a measured error (fem/README.md) times a margin of 2.5-5 with its reason.
 #include <fem/axisymmetric_solver.h>
+#include <fem/contact_check.h>
 #include <fem/convergence.h>
 #include <fem/modulus.h>
 
@@ -303,4 +304,23 @@ TEST_CASE("The convergence-study helper shall tabulate h and p refinement with f
     // (3.14 over 1..3): the edge singularity (h_edge = 1e-3 a here) takes over at p = 4.
     CHECK(rows[3].order >= 1.5);
   }
+}
+
+
+TEST_CASE("The contact sign check shall flag tensile zones, not the sign changes of single nodal forces",
+          "[fem]")
+{
+  using gradcontact::fem::min_relative_contact_force;
+  // Hand-made nodal forces, centre first; the expected values are worked out by hand from the rule in
+  // fem/contact_check.h (a node is tensile when its force and the smaller partial sum are both < 0).
+  CHECK(min_relative_contact_force({1, 2, 3, 4}) == Approx(0.25)); // smallest node force / max
+  // One negative node next to the large edge force (degree-3 nodes at a steep edge): inner sum 7,
+  // outer sum 9 at that node, so nothing is tensile; the smallest value is the first node, 1 / 10.
+  CHECK(min_relative_contact_force({1, 2, 2, 3, -1, 10}) == Approx(0.1));
+  // A tensile ring at the edge: the last node and the sum outside it are -1: -1 / 3.
+  CHECK(min_relative_contact_force({3, 3, 2, -0.5, -1}) == Approx(-1.0 / 3));
+  // A tensile centre (a concave punch short of complete contact): -1 / 3 at the centre node.
+  CHECK(min_relative_contact_force({-1, -0.5, 2, 3, 3}) == Approx(-1.0 / 3));
+  CHECK(min_relative_contact_force({}) == 0);
+  CHECK(min_relative_contact_force({0, 0}) == 0);
 }
