@@ -1,5 +1,6 @@
 #include <fem/errors.h>
 #include <fem/axisymmetric_solver.h>
+#include <fem/contact_check.h>
 #include <fem/boundary_ids.h>
 #include <fem/elasticity_assembly.h>
 
@@ -889,14 +890,13 @@ namespace gradcontact::fem
     const auto post = std::chrono::steady_clock::now();
     if (constrained)
       {
-        // Consistency of the contact: nodal forces >= 0 in the contact, gap >= 0 outside.
-        double max_force = 0, min_force = std::numeric_limits<double>::max();
+        // Consistency of the contact: no tensile zone in the contact (fem/contact_check.h: a negative
+        // nodal force counts only when a partial sum of the contact forces is tensile too), gap >= 0
+        // outside. `active` is ordered by radius.
+        std::vector<double> forces;
         for (const auto d : active)
-          {
-            max_force = std::max(max_force, std::abs(reaction[d]));
-            min_force = std::min(min_force, reaction[d]);
-          }
-        result.min_relative_contact_force = min_force / max_force;
+          forces.push_back(reaction[d]);
+        result.min_relative_contact_force = min_relative_contact_force(forces);
         double min_gap = std::numeric_limits<double>::max();
         if (load.type == LoadType::indenter || load.type == LoadType::indenter_depth ||
             load.type == LoadType::indenter_force)

@@ -176,8 +176,9 @@ namespace gradcontact::fem
     std::vector<Sample> pressure;     ///< p(r), compressive positive
     std::vector<Sample> displacement; ///< w(r) = u_z(r, 0), into the material positive
 
-    /// Contact consistency: smallest nodal contact pressure / largest (>= 0 when consistent) and
-    /// smallest gap outside the contact relative to the depth (>= 0 when consistent).
+    /// Contact consistency: the most tensile contact node of fem/contact_check.h relative to the
+    /// largest nodal force (>= -1e-3 when consistent) and the smallest gap outside the contact relative
+    /// to the depth (>= -1e-3 when consistent).
     double min_relative_contact_force = 0;
     double min_relative_gap           = 0;
     bool   consistent_contact         = true; ///< both checks passed (complete contact for the concave punch)
