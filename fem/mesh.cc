@@ -105,6 +105,40 @@ namespace gradcontact::fem
             }
     }
 
+    /// gmsh returns collapsed quads where the grading is too steep: h_edge = 1e-6 with h_surface = 0.5
+    /// gave 12 cells of zero area at (a, 0) and a singular matrix in UMFPACK (h_edge = 1e-6 with
+    /// h_surface = 0.25, and 1e-7 with 0.25, are fine). Such a mesh is refused here: a cell whose
+    /// bilinear map has a corner Jacobian <= 1e-12 of its largest is degenerate or inverted.
+    void check_cells(const Triangulation<2> &tria, const MeshParameters &p)
+    {
+      unsigned int bad = 0;
+      Point<2>     first;
+      for (const auto &cell : tria.active_cell_iterators())
+        {
+          // deal.II's vertex order: 0 (0,0), 1 (1,0), 2 (0,1), 3 (1,1); at each corner the cross product
+          // of the two edges leaving it, counter-clockwise.
+          const auto cross = [&](const unsigned int o, const unsigned int a, const unsigned int b) {
+            const Tensor<1, 2> u = cell->vertex(a) - cell->vertex(o), v = cell->vertex(b) - cell->vertex(o);
+            return u[0] * v[1] - u[1] * v[0];
+          };
+          const double j[4] = {cross(0, 1, 2), cross(1, 3, 0), cross(3, 2, 1), cross(2, 0, 3)};
+          const double largest = std::max({std::abs(j[0]), std::abs(j[1]), std::abs(j[2]), std::abs(j[3])});
+          if (!(std::min({j[0], j[1], j[2], j[3]}) > 1e-12 * largest))
+            if (bad++ == 0)
+              first = cell->center();
+        }
+      if (bad > 0)
+        {
+          std::ostringstream msg;
+          msg << "make_mesh: gmsh made " << bad << " degenerate or inverted cells (the first at (r, z) / a = ("
+              << first[0] << ", " << first[1] << ")) from h_edge = " << p.h_edge << " and h_surface = "
+              << p.h_surface << " (ratio " << p.h_surface / p.h_edge
+              << "): this grading is too steep for gmsh; raise h_edge or lower h_surface (h_surface = 0.25 "
+                 "measured to work with h_edge down to 1e-7), or use NearFieldMesher::deal_ii";
+          throw std::invalid_argument(msg.str());
+        }
+    }
+
     /// Step 1 with gmsh, cached by the .geo text and its parameters.
     MeshInfo gmsh_near_field(const MeshParameters &p, Triangulation<2> &tria)
     {
@@ -161,6 +195,7 @@ namespace gradcontact::fem
       grid_in.attach_triangulation(tria);
       std::ifstream in(msh);
       grid_in.read_msh(in);
+      check_cells(tria, p);
       return info;
     }
 

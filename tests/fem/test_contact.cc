@@ -324,3 +324,25 @@ TEST_CASE("The contact sign check shall flag tensile zones, not the sign changes
   CHECK(min_relative_contact_force({}) == 0);
   CHECK(min_relative_contact_force({0, 0}) == 0);
 }
+
+
+TEST_CASE("A near-field mesh that gmsh collapses shall be refused with the parameters that caused it",
+          "[fem]")
+{
+  // Measured: h_edge = 1e-6 with h_surface = 0.5 gives 12 zero-area cells at (a, 0); before the check
+  // UMFPACK stopped on a singular matrix with deal.II's generic message.
+  MeshParameters p = recommended_mesh_parameters(a, 0.0);
+  p.h_edge    = 1e-6;
+  p.h_surface = 0.5;
+  try
+    {
+      AxisymmetricSolver solver(power_law_material(0.0), p, DiscretizationParameters{});
+      FAIL("no error for a collapsed gmsh mesh");
+    }
+  catch (const std::invalid_argument &e)
+    {
+      const std::string what = e.what();
+      CHECK_THAT(what, Catch::Matchers::Contains("degenerate or inverted cells") &&
+                         Catch::Matchers::Contains("h_edge = 1e-06") && Catch::Matchers::Contains("h_surface = 0.5"));
+    }
+}
