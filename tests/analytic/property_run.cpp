@@ -1,6 +1,7 @@
 // property_run: the randomized property run of the analytic module at any size (issue 7).
 //
 //   property_run [--points N] [--seed S] [--mdr-stride M] [--timeout T] [--report FILE]
+//                [--inject crash:I|hang:I]   (self-test of the detector: point I crashes or hangs)
 //
 // Requirement: over N random valid requests (tests/analytic/random_requests.hpp, every case and quantity
 // of the vocabulary, E0 1e6..1e12 Pa, c0 1e-6..1 m, k in [-0.95, 0.95], nu in [0, 0.4999]) the closed
@@ -55,6 +56,8 @@ namespace
     long          mdr_stride = 100; ///< numerical MDR on every M-th point (0: never)
     double        timeout    = 60.; ///< seconds without an answer that count as a hang
     std::string   report;
+    std::string   inject;       ///< "crash" or "hang" at point inject_point (self-test only)
+    long          inject_point = -1;
   };
 
   long parse_integer(const std::string &name, const std::string &text, const long lo, const long hi)
@@ -96,6 +99,15 @@ namespace
           o.timeout = static_cast<double>(parse_integer(a, value(), 1, 86400));
         else if (a == "--report")
           o.report = value();
+        else if (a == "--inject")
+          {
+            const std::string v = value();
+            const auto        colon = v.find(':');
+            o.inject = v.substr(0, colon);
+            if (colon == std::string::npos || (o.inject != "crash" && o.inject != "hang"))
+              throw std::invalid_argument("property_run: --inject = '" + v + "' is not crash:I or hang:I");
+            o.inject_point = parse_integer("--inject point", v.substr(colon + 1), 0, 1000000000);
+          }
         else
           throw std::invalid_argument("property_run: unknown argument '" + a +
                                       "' (--points N --seed S --mdr-stride M --timeout T --report FILE)");
@@ -126,6 +138,13 @@ namespace
   {
     for (long i = first; i < o.points; ++i)
       {
+        if (i == o.inject_point)
+          {
+            if (o.inject == "crash")
+              std::raise(SIGSEGV);
+            for (;;)
+              pause(); // hang until the parent kills us
+          }
         const auto   start  = std::chrono::steady_clock::now();
         const json   q      = request(o, i);
         const auto   closed = evaluate(q, "closed_form");
@@ -255,7 +274,7 @@ namespace
             // the point after the last reported one hung or crashed: record it and skip it
             (hung ? t.hangs : t.crashes) += 1;
             t.failures.push_back("point " + std::to_string(next) + ": " +
-                                 (hung ? "hang (no answer within " + std::to_string(o.timeout) + " s)" :
+                                 (hung ? "hang (no answer within " + std::to_string(static_cast<long>(o.timeout)) + " s)" :
                                          WIFSIGNALED(status) ? std::string("crash (signal ") +
                                                                  strsignal(WTERMSIG(status)) + ")" :
                                                                "crash (exit " + std::to_string(WEXITSTATUS(status)) + ")") +

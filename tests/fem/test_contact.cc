@@ -272,11 +272,13 @@ TEST_CASE("Geometric layers shall converge to the pointwise modulus with the obs
   // Requirement (issue 7, "Stress at the edges"): N geometric layers with exact layer averages over
   // 0 <= z <= 10 a, first thickness t1 = 10 a / N^3 (the ratio follows from N and the depth), k = 0.5,
   // below 10 a the pointwise field. The layering error alone: layered minus pointwise force on the same
-  // mesh (surface cells 1e-9 a, thinner than t1 = 1e-8 a at N = 1000). Measured on the recommended mesh
-  // against the closed form (fem/README.md): 1.57e-3, 2.74e-4, 4.55e-5 (N = 100, 300, 1000), order 1.55,
-  // against 0.54 for uniform layers. First layer ~ t1^{1-k} ~ N^-1.5 and the interior (k ln q)^2 ~
-  // (ln N / N)^2: the first layer dominates.
-  constexpr double min_geometric_order = GEOMETRIC_MIN, max_geometric_order = GEOMETRIC_MAX;
+  // mesh (surface cells 1e-9 a, thinner than every t1). Measured on the recommended mesh against the
+  // closed form (fem/README.md): 9.55e-3, 1.57e-3, 2.74e-4 (N = 30, 100, 300), order 1.54 (1.54 also over
+  // N = 100, 300, 1000), against 0.54 for uniform layers. First layer ~ t1^{1/2} ~ N^-1.5, interior
+  // (k ln q)^2 ~ (ln N / N)^2: the first layer dominates. This coarse degree-2 mesh gives 1.60e-3 and
+  // 2.58e-4 at N = 100, 300 but only 2.3e-5 instead of 4.6e-5 at N = 1000 (its own discretisation error,
+  // 5.5e-4, no longer cancels), so the test stops at N = 300.
+  constexpr double min_geometric_order = 1.35, max_geometric_order = 1.75;
   const double k = 0.5, depth = 10 * a;
   MeshParameters mesh = recommended_mesh_parameters(a, k);
   mesh.h_edge         = 1e-3;
@@ -289,7 +291,7 @@ TEST_CASE("Geometric layers shall converge to the pointwise modulus with the obs
   punch.depth = 1e-3 * a;
   const double F_pointwise = AxisymmetricSolver(power_law_material(k), mesh, disc).run(punch).force;
   std::vector<double> x, error;
-  for (const unsigned int N : {100u, 300u, 1000u})
+  for (const unsigned int N : {30u, 100u, 300u})
     {
       const double first = depth / (double(N) * N * N);
       Material layered{LayeredModulus::geometric_to_depth(std::make_shared<PowerLawModulus>(E0, c0, k), N, first,
