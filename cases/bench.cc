@@ -39,6 +39,7 @@ namespace gradcontact::cases
       bool quick = false;
       int fe_repeat = 3;
       fs::path peer_scripts = fs::path(GRADCONTACT_SOURCE_DIR) / "cases/peers/freefem";
+      std::vector<std::string> scenes; // --scene a,b: FE scenes to run (empty: all)
     };
 
     /// One family: case/quantity, with its rows (requests without method) and references.
@@ -97,6 +98,13 @@ namespace gradcontact::cases
             }
           else if (args[i] == "--quick")
             o.quick = true;
+          else if (args[i] == "--scene")
+            {
+              // comma-separated; the names are checked by run_fe_bench
+              std::istringstream list(value("--scene"));
+              for (std::string name; std::getline(list, name, ',');)
+                o.scenes.push_back(name);
+            }
           else if (args[i] == "--peer-scripts")
             o.peer_scripts = value("--peer-scripts");
           else
@@ -296,6 +304,7 @@ namespace gradcontact::cases
             fe.with_fe = true;
             fe.with_peer = (o.part == "peer" || o.part == "all");
             fe.peer_scripts = o.peer_scripts;
+            fe.scenes = o.scenes;
             run_fe_bench(fe, tmp, machine());
           }
         if (fs::is_directory(folder))

@@ -2,9 +2,12 @@
 
 #include "report.h"
 
+#include <fem/adhesion.h>
 #include <fem/axisymmetric_solver.h>
+#include <fem/fourier_mode1_solver.h>
 #include <fem/modulus.h>
 
+#include <analytic/adhesion.hpp>
 #include <analytic/material.hpp>
 #include <analytic/normal.hpp>
 
@@ -36,8 +39,31 @@ namespace gradcontact::cases
     constexpr double punch_depth = 1e-3 * a;
     constexpr double paraboloid_radius = 50 * a;
     constexpr unsigned int fe_levels = 5, peer_levels = 5;
+    // JKR pull-off of the paraboloid (test_adhesion.cc's scene): work of adhesion, J/m^2.
+    constexpr double jkr_dgamma = 0.05;
+    // The pull-off search starts this factor off the closed-form critical radius (as the h-convergence
+    // test of test_adhesion.cc does): the FE search, not the reference, finds a_c.
+    constexpr double jkr_start_factor = 1.2;
     const std::array<double, 3> all_k{{-0.5, 0.0, 0.5}};
-    const std::array<const char *, 2> loads{{"flat_punch", "paraboloid"}};
+    // Levels of the adhesive and tangential scenes in the quick set (ctest bench.fe_quick_smoke).
+    constexpr unsigned int quick_levels_new_scenes = 1;
+    const std::array<const char *, 4> loads{{"flat_punch", "paraboloid", "jkr_paraboloid", "tangential_punch"}};
+    /// The peer models the normal scenes only.
+    bool peer_models(const std::string &load) { return load == "flat_punch" || load == "paraboloid"; }
+    /// Mesh levels and repetitions per scene. A pull-off costs 7 FE solves (one per contact radius) and
+    /// the mode-1 system has 3/2 the DoFs of the axisymmetric one: measured with one repetition (OpenBLAS,
+    /// shared machine), levels 0-2 of the pull-off took 105 / 197 / 275 s and levels 0-3 of the tangential
+    /// punch 32 / 65 / 76 / 169 s over degrees 1-4 and three k (918 s in all). To keep the whole bench
+    /// near 40 min they run levels 0-1 and 0-2, once each (a pull-off row already times 7 solves): 170 s
+    /// and 72 s of runs, 243 s in all, measured on a less loaded machine.
+    unsigned int levels_of(const std::string &load)
+    {
+      return load == "jkr_paraboloid" ? 2 : load == "tangential_punch" ? 3 : fe_levels;
+    }
+    int repeats_of(const std::string &load, const int repeat)
+    {
+      return (load == "jkr_paraboloid" || load == "tangential_punch") ? 1 : repeat;
+    }
     constexpr double inf = std::numeric_limits<double>::infinity();
 
     double seconds_since(const std::chrono::steady_clock::time_point &start)
@@ -75,6 +101,10 @@ namespace gradcontact::cases
       const Medium m = medium(GradedHalfSpace{E0, c0, k, nu});
       if (load == "flat_punch")
         return {force(m, FlatPunch{a}, punch_depth), 0.};
+      if (load == "jkr_paraboloid") // pull-off force under force control, a_c (9.55), F_c (9.56)
+        return {jkr::critical_state(m, Paraboloid{paraboloid_radius}, jkr_dgamma, jkr::Control::force).force, 0.};
+      if (load == "tangential_punch") // F_x = K_T delta, K_T = 2 h_T E0 a^{1+k} / ((1+k) c0^k) (9.78)-(9.79)
+        return {2 * m.cT0 * std::pow(a, 1 + k) / ((1 + k) * std::pow(c0, k)) * punch_depth, 0.};
       return {force(m, Paraboloid{paraboloid_radius}, a), depth(m, Paraboloid{paraboloid_radius}, a)};
     }
 
@@ -125,7 +155,7 @@ namespace gradcontact::cases
       fem::DiscretizationParameters discretization;
       discretization.degree = degree;
       fem::LoadCase loadcase;
-      if (load == "flat_punch")
+      if (load == "flat_punch" || load == "tangential_punch")
         {
           loadcase.type = fem::LoadType::flat_punch;
           loadcase.depth = punch_depth;
@@ -143,20 +173,57 @@ namespace gradcontact::cases
               const auto start = std::chrono::steady_clock::now();
               const double cpu = process_cpu_seconds();
               const fem::Material material{std::make_shared<fem::PowerLawModulus>(E0, c0, k), nu};
-              fem::AxisymmetricSolver solver(material, mesh, discretization);
-              const fem::Result r = solver.run(loadcase);
+              fem::Timings time;
+              double F = 0, d = 0;
+              if (load == "jkr_paraboloid")
+                {
+                  // One model per contact radius, each on the level's mesh graded toward that radius.
+                  fem::AdhesiveContact sphere(material, fem::Profile::paraboloid(paraboloid_radius),
+                                              [&](const double contact_radius) {
+                                                fem::Settings settings{fe_mesh_level(contact_radius, k, level),
+                                                                       discretization};
+                                                settings.mesh.cache_directory = mesh_cache.string();
+                                                return settings;
+                                              });
+                  const Medium m = medium(GradedHalfSpace{E0, c0, k, nu});
+                  const double a0 = jkr_start_factor *
+                    jkr::critical_state(m, Paraboloid{paraboloid_radius}, jkr_dgamma, jkr::Control::force).radius;
+                  const fem::AdhesiveCriticalState c =
+                    sphere.critical_state(jkr_dgamma, fem::AdhesionControl::force, a0);
+                  F = c.state.force;
+                  row.dofs = c.max_dofs;
+                  row.note = std::to_string(c.radii_solved) + " FE radii";
+                }
+              else if (load == "tangential_punch")
+                {
+                  fem::FourierMode1Solver solver(material, mesh, discretization);
+                  const fem::TangentialResult r = solver.run(fem::TangentialLoad::flat_punch(punch_depth));
+                  F = r.force;
+                  time = r.time;
+                  row.dofs = r.n_dofs;
+                  if (!r.reliable)
+                    row.note = r.message;
+                }
+              else
+                {
+                  fem::AxisymmetricSolver solver(material, mesh, discretization);
+                  const fem::Result r = solver.run(loadcase);
+                  F = r.force;
+                  d = r.depth;
+                  time = r.time;
+                  row.dofs = r.n_dofs;
+                  if (!r.reliable || !r.consistent_contact)
+                    row.note = r.message;
+                }
               s.wall.push_back(seconds_since(start));
               s.cpu.push_back(process_cpu_seconds() - cpu);
-              s.mesh.push_back(r.time.mesh);
-              s.setup.push_back(r.time.setup);
-              s.assemble.push_back(r.time.assemble);
-              s.factorize.push_back(r.time.factorize);
-              s.solve.push_back(r.time.solve);
-              s.postprocess.push_back(r.time.postprocess);
-              row.dofs = r.n_dofs;
-              set_errors(row, r.force, r.depth);
-              if (!r.reliable || !r.consistent_contact)
-                row.note = r.message;
+              s.mesh.push_back(time.mesh);
+              s.setup.push_back(time.setup);
+              s.assemble.push_back(time.assemble);
+              s.factorize.push_back(time.factorize);
+              s.solve.push_back(time.solve);
+              s.postprocess.push_back(time.postprocess);
+              set_errors(row, F, d);
             }
           s.finish(row);
         }
@@ -298,6 +365,8 @@ namespace gradcontact::cases
 
     std::string phase_split(const WorkPrecisionRow &r)
     {
+      if (r.load == "jkr_paraboloid") // a search over several models: no single split
+        return "-";
       if (r.model == "FreeFem++")
         return fmt(r.mesh, "%.3f") + " / - / " + fmt(r.assemble, "%.3f") + " (incl. fact.) / " + fmt(r.solve, "%.3f") +
                " / " + fmt(r.postprocess, "%.3f");
@@ -364,7 +433,17 @@ namespace gradcontact::cases
   {
     const std::vector<double> ks = o.quick ? std::vector<double>{0.0} : std::vector<double>(all_k.begin(), all_k.end());
     const unsigned int max_degree = o.quick ? 2 : 4;
-    const unsigned int n_levels = o.quick ? 2 : fe_levels;
+    // quick: the two coarsest levels of the normal scenes, the coarsest of the adhesive and tangential ones
+    const auto n_levels = [&](const std::string &load) {
+      return o.quick ? (peer_models(load) ? 2u : quick_levels_new_scenes) : levels_of(load);
+    };
+    for (const auto &scene : o.scenes)
+      if (std::find(loads.begin(), loads.end(), scene) == loads.end())
+        throw std::invalid_argument("bench: --scene = '" + scene +
+                                    "' is not one of flat_punch, paraboloid, jkr_paraboloid, tangential_punch");
+    const auto selected = [&](const std::string &load) {
+      return o.scenes.empty() || std::find(o.scenes.begin(), o.scenes.end(), load) != o.scenes.end();
+    };
     const unsigned int n_peer_levels = o.quick ? 2 : peer_levels;
     const fs::path mesh_cache = folder / "mesh-cache";
     bool peer = o.with_peer && freefem_available(o.freefem);
@@ -374,20 +453,24 @@ namespace gradcontact::cases
 
     std::vector<WorkPrecisionRow> rows;
     const auto start = std::chrono::steady_clock::now();
+    std::vector<std::string> run_loads;
     for (const std::string load : loads)
+      if (selected(load) && (!o.quick || peer_models(load) || quick_levels_new_scenes > 0))
+        run_loads.push_back(load);
+    for (const std::string &load : run_loads)
       for (const double k : ks)
         {
           if (o.with_fe)
             for (unsigned int degree = 1; degree <= max_degree; ++degree)
-              for (unsigned int level = 0; level < n_levels; ++level)
+              for (unsigned int level = 0; level < n_levels(load); ++level)
                 {
-                  rows.push_back(run_ours(load, k, degree, level, o.repeat, mesh_cache));
+                  rows.push_back(run_ours(load, k, degree, level, repeats_of(load, o.repeat), mesh_cache));
                   const auto &r = rows.back();
                   std::cerr << "bench fe: " << load << " k=" << k << " degree " << degree << " level " << level
                             << ": " << r.dofs << " DoFs, error " << fmt(r.error) << ", " << fmt(r.wall_min)
                             << " s" << (r.note.empty() ? "" : " (" + r.note + ")") << "\n";
                 }
-          if (peer)
+          if (peer && peer_models(load))
             for (unsigned int level = 0; level < n_peer_levels; ++level)
               {
                 rows.push_back(run_peer(o, load, k, level, fe_mesh_level(a, k, 0).far_field_size));
@@ -478,6 +561,17 @@ namespace gradcontact::cases
        << "- Scenes: flat punch (radius a, depth 1e-3 a, force against (9.16)); paraboloid R = 50 a under "
           "contact-radius control (force F(a) and depth d(a) against the Hertz-type closed forms; the error is the "
           "larger of the two). E0 = 2 GPa, c0 = 3 a, a = 0.1 mm, nu = 0.3.\n"
+       << "- jkr_paraboloid: the JKR pull-off force of the paraboloid R = 50 a, dgamma = 0.05 J/m^2, under force "
+          "control, from `AdhesiveContact::critical_state` (`fem/adhesion.h`: one FE model per contact radius, "
+          "each on the level's mesh graded toward that radius; the search starts 1.2 a_c off), against F_c of "
+          "(9.55)-(9.56) (`jkr::critical_state` of `analytic/adhesion.hpp`; at k = 0 JKR's -3/2 pi dgamma R). "
+          "The time is the whole search (all radii, noted in the row); DoFs are those of the largest model; "
+          "there is no phase split. Levels 0-1, one repetition (7 FE radii per row).\n"
+       << "- tangential_punch: the tangential flat punch (U = V = delta = 1e-3 a on r <= a, W free) of "
+          "`FourierMode1Solver` (`fem/fourier_mode1_solver.h`, Fourier mode 1, 3 fields), force F_x = K_T delta "
+          "against the MDR K_T = 2 h_T E0 a^(1+k) / ((1+k) c0^k) (9.78)-(9.79) (`h_T` of "
+          "`analytic/material.hpp`; at k = 0 Mindlin's 8 G a / (2 - nu)). Levels 0-2 (the mode-1 system has "
+          "3/2 the DoFs), one repetition.\n"
        << "- deal.II model (`fem/`): FE_Q degree 1-4; mesh level 0-4 = h_edge 1e-2 .. 1e-6 a, ring growth "
           "1.6, 1.4, 1.3, 1.15, 1.15 (`fe_mesh_level` in `cases/fe_bench.cc`); L/a and the surface layer from "
           "`recommended_mesh_parameters(a, k)` (L/a = 1e16, 1.1e8, 2.3e5 for k = -0.5, 0, 0.5).\n"
@@ -549,6 +643,8 @@ namespace gradcontact::cases
             for (const std::string load : loads)
               for (const double k : ks)
                 {
+                  if (!peer_models(load) || !selected(load))
+                    continue;
                   std::vector<double> ot, oe, pt, pe;
                   double best_ours = inf, best_peer = inf;
                   for (const auto &r : rows)

@@ -4,7 +4,9 @@
 // Scenes (both models, both references from analytic/normal.hpp, an independent path):
 //   flat punch, depth d = 1e-3 a:        relative error of F against (9.16);
 //   paraboloid R = 50 a, contact radius a: relative errors of F(a) and d(a) against the Hertz-type closed
-//                                          forms; the scene's error is the larger of the two.
+//                                          forms; the scene's error is the larger of the two;
+//   JKR paraboloid, dgamma = 0.05 J/m^2:  pull-off force (force control) against (9.56), analytic/adhesion.hpp;
+//   tangential flat punch, delta = 1e-3 a: F_x of the Fourier-mode-1 model against the MDR K_T delta (9.78).
 // E0 = 2 GPa, c0 = 3 a, a = 0.1 mm, nu = 0.3, k in {-0.5, 0, 0.5}.
 //
 // deal.II model: FE degrees 1..4 on a ladder of meshes (`fe_mesh_level`), L/a and the surface layer
@@ -29,6 +31,8 @@ namespace gradcontact::cases
     bool                with_fe = true, with_peer = false;
     std::filesystem::path peer_scripts; ///< folder of flat_punch.edp and paraboloid.edp
     std::string         freefem = "FreeFem++";
+    /// Scenes to run (flat_punch, paraboloid, jkr_paraboloid, tangential_punch); empty: all.
+    std::vector<std::string> scenes;
   };
 
   /// One run of one model on one mesh, timed over the repetitions (a comparison is a value, STYLE 7).

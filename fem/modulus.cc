@@ -153,6 +153,47 @@ namespace gradcontact::fem
     return std::make_shared<LayeredModulus>(std::move(base), z);
   }
 
+  double LayeredModulus::geometric_ratio(const unsigned int n_layers, const double first_thickness,
+                                         const double depth)
+  {
+    if (n_layers == 0)
+      fail("LayeredModulus::geometric_ratio", "n_layers", 0, "[1, inf)");
+    if (!(depth > 0.0) || !std::isfinite(depth))
+      fail("LayeredModulus::geometric_ratio", "depth", depth, "(0, inf)");
+    // A relative slack of 1e-12 lets first_thickness = depth / N (uniform layers) through despite rounding.
+    if (!(first_thickness > 0.0) || first_thickness > depth / n_layers * (1 + 1e-12))
+      fail("LayeredModulus::geometric_ratio", "first_thickness", first_thickness,
+           "(0, depth / n_layers = " + std::to_string(depth / n_layers) + "]");
+    if (n_layers == 1 || first_thickness >= depth / n_layers)
+      return 1.0;
+    // Total thickness t1 (q^N - 1)/(q - 1) = t1 expm1(N x)/expm1(x), x = ln q, increases with x from
+    // N t1 <= depth at x = 0; the last layer alone is t1 q^{N-1} <= depth, so x <= ln(depth/t1)/(N-1).
+    const auto total = [&](const double x) {
+      return x == 0.0 ? n_layers * first_thickness : first_thickness * std::expm1(n_layers * x) / std::expm1(x);
+    };
+    double lo = 0.0, hi = std::log(depth / first_thickness) / (n_layers - 1.0);
+    for (unsigned int i = 0; i < 200 && hi - lo > 1e-15 * hi; ++i)
+      {
+        const double mid = 0.5 * (lo + hi);
+        (total(mid) < depth ? lo : hi) = mid;
+      }
+    return std::exp(0.5 * (lo + hi));
+  }
+
+  std::shared_ptr<LayeredModulus> LayeredModulus::geometric_to_depth(std::shared_ptr<const ModulusField> base,
+                                                                     const unsigned int n_layers,
+                                                                     const double first_thickness,
+                                                                     const double depth)
+  {
+    const double q      = geometric_ratio(n_layers, first_thickness, depth);
+    auto         layers = geometric(base, n_layers, first_thickness, q);
+    // Put the last interface exactly at `depth` (the bisection leaves a relative 1e-15 there).
+    // (The constructor checks that the interfaces still increase.)
+    std::vector<double> z = layers->interfaces;
+    z.back()              = depth;
+    return std::make_shared<LayeredModulus>(std::move(base), std::move(z));
+  }
+
   double LayeredModulus::value(const double z) const
   {
     const auto it = std::lower_bound(interfaces.begin(), interfaces.end(), z);

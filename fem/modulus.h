@@ -74,6 +74,15 @@ namespace gradcontact::fem
     static std::shared_ptr<LayeredModulus> geometric(std::shared_ptr<const ModulusField> base,
                                                      unsigned int n_layers, double first_thickness,
                                                      double ratio);
+    /// N geometric layers of first thickness `first_thickness` that end exactly at `depth`: the ratio q
+    /// solves first_thickness (q^N - 1) / (q - 1) = depth (q = 1 when N first_thickness = depth).
+    /// Needs 0 < first_thickness <= depth / N (q >= 1: layers that thicken downward); N = 1 is one
+    /// layer over [0, depth] for first_thickness = depth.
+    static std::shared_ptr<LayeredModulus> geometric_to_depth(std::shared_ptr<const ModulusField> base,
+                                                              unsigned int n_layers, double first_thickness,
+                                                              double depth);
+    /// The ratio q of geometric_to_depth (bisection in ln q to round-off).
+    static double geometric_ratio(unsigned int n_layers, double first_thickness, double depth);
 
     double value(double z) const override;
     std::vector<double> discontinuities() const override { return interfaces; }

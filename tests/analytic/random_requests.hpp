@@ -2,6 +2,9 @@
 // for the property tests. Fixed seeds: a failing point can be replayed.
 #pragma once
 
+#include <analytic/material.hpp>
+#include <analytic/normal.hpp>
+
 #include <nlohmann/json.hpp>
 
 #include <cmath>
@@ -148,4 +151,22 @@ namespace gradcontact::testing
     std::mt19937_64 rng_;
     double fraction_ = 0.5;
   };
+
+  /// Replaces the test-only fraction keys of a request by absolute loads (F_N from the closed form only
+  /// picks a valid load; comparisons do not depend on it).
+  inline nlohmann::json resolve(nlohmann::json q)
+  {
+    if (q.contains("FA_fraction"))
+      {
+        const nlohmann::json material = q["material"];
+        const Medium m = medium(GradedHalfSpace{material["E0"], material["c0"], material["k"], material["nu"]});
+        const double FN = force(m, Paraboloid{q["geometry"]["R"].get<double>()}, q["a"].get<double>());
+        const double FA = q["FA_fraction"].get<double>() * q["mu"].get<double>() * FN;
+        q["FA"] = FA;
+        q["Fx"] = q["Fx_fraction"].get<double>() * FA;
+        q.erase("FA_fraction");
+        q.erase("Fx_fraction");
+      }
+    return q;
+  }
 } // namespace gradcontact::testing

@@ -4,6 +4,9 @@
 //   fem_study load=punch k=0 p=3 h_edge=1e-5 h_surface=0.25 h_far=3 g=1.15 L=1e8 layer=1e-10 R1=4
 //             edge_refinements=0 global=0 repeat=1
 // load = punch | paraboloid | cone | power (n=, A=) | pressure; pointwise=1 prints p(r) per sample;
+// layers=N layer_depth=D/a: N layers with the exact layer means of the power law over [0, D a], uniform, or
+// with layer_kind=geometric layer_first=t1/a geometric ones (first thickness t1, ratio from D, N);
+// subdiv=m: QIterated copies in cells crossing a layer interface (default 8);
 // every key is optional (defaults: the recommended parameters for k). Prints one line per run: key=value pairs.
 #include <fem/axisymmetric_solver.h>
 #include <fem/modulus.h>
@@ -55,13 +58,29 @@ int main(int argc, char **argv)
       DiscretizationParameters disc;
       disc.degree                  = static_cast<unsigned>(num("p", disc.degree));
       disc.extra_quadrature_points = static_cast<unsigned>(num("extra_q", disc.extra_quadrature_points));
+      disc.discontinuity_subdivisions =
+        static_cast<unsigned>(num("subdiv", disc.discontinuity_subdivisions));
 
       const auto start = std::chrono::steady_clock::now();
       Material   material{std::make_shared<PowerLawModulus>(E0, c0, k), nu};
+      double layer_ratio = 0;
       if (arg.count("layers"))
-        material.modulus = LayeredModulus::uniform(std::make_shared<PowerLawModulus>(E0, c0, k),
-                                                   static_cast<unsigned>(num("layers", 1)),
-                                                   num("layer_depth", 1.0) * a);
+        {
+          const auto         base     = std::make_shared<PowerLawModulus>(E0, c0, k);
+          const unsigned int n_layers = static_cast<unsigned>(num("layers", 1));
+          const double       depth    = num("layer_depth", 1.0) * a;
+          const std::string  kind     = arg.count("layer_kind") ? arg["layer_kind"] : "uniform";
+          if (kind == "uniform")
+            material.modulus = LayeredModulus::uniform(base, n_layers, depth);
+          else if (kind == "geometric")
+            {
+              const double first = num("layer_first", 1.0 / n_layers * depth / a) * a;
+              layer_ratio        = LayeredModulus::geometric_ratio(n_layers, first, depth);
+              material.modulus   = LayeredModulus::geometric_to_depth(base, n_layers, first, depth);
+            }
+          else
+            throw std::invalid_argument("fem_study: layer_kind = '" + kind + "' is not uniform or geometric");
+        }
       AxisymmetricSolver solver(material, mesh, disc);
       const gradcontact::Medium medium =
         gradcontact::medium(gradcontact::GradedHalfSpace{E0, c0, k, nu});
@@ -136,14 +155,15 @@ int main(int argc, char **argv)
         }
       std::printf("load=%s control=%s k=%g p=%u h_edge=%g L=%g dofs=%u F_error=%.3e a_error=%.3e d_error=%.3e "
                   "w1.5_error=%.2e w10_error=%.2e p_L2=%.2e iterations=%u set=%u mismatch=%.1e mesh=%.2f "
-                  "setup=%.2f assemble=%.2f factorize=%.2f solve=%.2f post=%.2f total=%.2f rings=%u %s\n",
+                  "setup=%.2f assemble=%.2f factorize=%.2f solve=%.2f post=%.2f total=%.2f rings=%u "
+                  "layer_ratio=%.6g %s\n",
                   load_name.c_str(), control.c_str(), k, disc.degree, mesh.h_edge, mesh.far_field_size,
                   r.n_dofs, r.force / reference - 1,
                   load_name == "punch" ? 0.0 : r.contact_radius / a_ref - 1,
                   load_name == "punch" ? 0.0 : r.depth / gradcontact::depth(medium, power, a_ref) - 1,
                   w_err[0], w_err[1], p_err, r.iterations, r.active_set_size, r.energy_mismatch, r.time.mesh,
                   r.time.setup, r.time.assemble, r.time.factorize, r.time.solve, r.time.postprocess, total,
-                  r.mesh.n_rings, r.message.c_str());
+                  r.mesh.n_rings, layer_ratio, r.message.c_str());
       return 0;
     }
   catch (const std::exception &e)

@@ -1,0 +1,347 @@
+// property_run: the randomized property run of the analytic module at any size (issue 7).
+//
+//   property_run [--points N] [--seed S] [--mdr-stride M] [--timeout T] [--report FILE]
+//                [--inject crash:I|hang:I]   (self-test of the detector: point I crashes or hangs)
+//
+// Requirement: over N random valid requests (tests/analytic/random_requests.hpp, every case and quantity
+// of the vocabulary, E0 1e6..1e12 Pa, c0 1e-6..1 m, k in [-0.95, 0.95], nu in [0, 0.4999]) the closed
+// forms shall return no NaN or inf, no unexplained error, shall not hang (no answer within T seconds)
+// and shall not crash; every M-th point is also evaluated by the numerical MDR (the independent path) and
+// shall agree within 1e-9, or 1e-12 of the scale where the value crosses zero (the tolerances of
+// test_closed_vs_mdr.cpp). Point i is the first request of RandomRequests(S + i): any point is replayed
+// from its number alone (printed for every failure).
+//
+// Hangs and crashes cannot be caught in-process, so the points run in a child process that reports each
+// point over a pipe; the parent records a crash (the child died on a signal) or a hang (no report within
+// T s: the child is killed) at the point after the last reported one and restarts a child after it.
+// Exit code 0 when every count of a failure is zero. --report writes a markdown summary (through a
+// temporary file renamed at the end: a failed run leaves no half-written report).
+#include <analytic/batch.hpp>
+
+#include "random_requests.hpp"
+
+#include <algorithm>
+#include <cerrno>
+#include <chrono>
+#include <cmath>
+#include <csignal>
+#include <cstdio>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <map>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include <poll.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+using namespace gradcontact;
+using nlohmann::json;
+
+namespace
+{
+  // test_closed_vs_mdr.cpp: closed forms ~1e-13, nested quadrature ~1e-11, conditioning at random points.
+  constexpr double tol_closed_vs_mdr = 1e-9;
+  constexpr double relative_floor    = 1e-12;
+
+  struct Options
+  {
+    long          points     = 1000000;
+    unsigned long seed       = 20261123;
+    long          mdr_stride = 100; ///< numerical MDR on every M-th point (0: never)
+    double        timeout    = 60.; ///< seconds without an answer that count as a hang
+    std::string   report;
+    std::string   inject;       ///< "crash" or "hang" at point inject_point (self-test only)
+    long          inject_point = -1;
+  };
+
+  long parse_integer(const std::string &name, const std::string &text, const long lo, const long hi)
+  {
+    std::size_t used = 0;
+    long        v    = 0;
+    try
+      {
+        v = std::stol(text, &used);
+      }
+    catch (const std::logic_error &)
+      {
+        used = 0;
+      }
+    if (used == 0 || used != text.size() || v < lo || v > hi)
+      throw std::invalid_argument("property_run: " + name + " = '" + text + "' is not an integer in [" +
+                                  std::to_string(lo) + ", " + std::to_string(hi) + "]");
+    return v;
+  }
+
+  Options parse(int argc, char **argv)
+  {
+    Options o;
+    for (int i = 1; i < argc; ++i)
+      {
+        const std::string a = argv[i];
+        const auto value = [&]() -> std::string {
+          if (i + 1 == argc)
+            throw std::invalid_argument("property_run: " + a + " needs a value");
+          return argv[++i];
+        };
+        if (a == "--points")
+          o.points = parse_integer(a, value(), 1, 1000000000);
+        else if (a == "--seed")
+          o.seed = static_cast<unsigned long>(parse_integer(a, value(), 0, 1L << 62));
+        else if (a == "--mdr-stride")
+          o.mdr_stride = parse_integer(a, value(), 0, 1000000000);
+        else if (a == "--timeout")
+          o.timeout = static_cast<double>(parse_integer(a, value(), 1, 86400));
+        else if (a == "--report")
+          o.report = value();
+        else if (a == "--inject")
+          {
+            const std::string v = value();
+            const auto        colon = v.find(':');
+            o.inject = v.substr(0, colon);
+            if (colon == std::string::npos || (o.inject != "crash" && o.inject != "hang"))
+              throw std::invalid_argument("property_run: --inject = '" + v + "' is not crash:I or hang:I");
+            o.inject_point = parse_integer("--inject point", v.substr(colon + 1), 0, 1000000000);
+          }
+        else
+          throw std::invalid_argument("property_run: unknown argument '" + a +
+                                      "' (--points N --seed S --mdr-stride M --timeout T --report FILE)");
+      }
+    return o;
+  }
+
+  json request(const Options &o, const long i) { return testing::resolve(testing::RandomRequests(o.seed + i).next()); }
+
+  batch::Answer evaluate(json q, const char *method)
+  {
+    q["method"] = method;
+    return batch::evaluate(q.dump());
+  }
+
+  /// Outcome of one point, one line over the pipe: "<i> <code> <seconds> <mdr difference>\n".
+  enum Code : int
+  {
+    ok = 0,          ///< finite value
+    refused = 1,     ///< an explicit error message (a valid refusal, e.g. no critical state)
+    nonfinite = 2,   ///< NaN or inf (batch reports it as an internal error)
+    unexplained = 3, ///< any other internal or empty error
+    disagrees = 4,   ///< closed form and numerical MDR differ beyond the tolerance, or one refuses alone
+  };
+
+  /// The child: evaluates points [first, n) and reports each.
+  [[noreturn]] void child(const Options &o, const long first, const int fd)
+  {
+    for (long i = first; i < o.points; ++i)
+      {
+        if (i == o.inject_point)
+          {
+            if (o.inject == "crash")
+              std::raise(SIGSEGV);
+            for (;;)
+              pause(); // hang until the parent kills us
+          }
+        const auto   start  = std::chrono::steady_clock::now();
+        const json   q      = request(o, i);
+        const auto   closed = evaluate(q, "closed_form");
+        int          code   = ok;
+        double       diff   = -1; // no comparison
+        if (!closed.ok)
+          code = closed.error.find("non-finite") != std::string::npos ? nonfinite :
+                 (closed.error.empty() || closed.error.find("internal error") != std::string::npos) ? unexplained :
+                                                                                                    refused;
+        else if (!std::isfinite(closed.value))
+          code = nonfinite;
+        if (code <= refused && o.mdr_stride > 0 && i % o.mdr_stride == 0)
+          {
+            const auto numeric = evaluate(q, "numerical_mdr");
+            if (numeric.ok != closed.ok)
+              code = disagrees;
+            else if (closed.ok)
+              {
+                const double scale = std::max(std::abs(numeric.value), std::abs(closed.value));
+                const double d     = std::abs(closed.value - numeric.value);
+                diff               = d / std::max(scale, 1e-300);
+                if (!(diff <= tol_closed_vs_mdr || d <= relative_floor * scale))
+                  code = disagrees;
+              }
+          }
+        const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        char         line[128];
+        const int    len = std::snprintf(line, sizeof line, "%ld %d %.6e %.6e\n", i, code, seconds, diff);
+        if (write(fd, line, len) != len)
+          _exit(3);
+      }
+    _exit(0);
+  }
+
+  struct Tally
+  {
+    long   evaluated = 0, counts[5] = {0, 0, 0, 0, 0}, hangs = 0, crashes = 0, compared = 0;
+    double slowest = 0;
+    long   slowest_point = -1;
+    std::map<std::string, double> worst; ///< case/quantity -> worst closed vs numerical difference
+    std::vector<std::string> failures;   ///< "point i: what" (replay: RandomRequests(seed + i))
+  };
+
+  const char *code_name(const int c)
+  {
+    static const char *names[] = {"ok", "refused", "NaN or inf", "unexplained error", "closed form vs numerical MDR"};
+    return names[c];
+  }
+
+  /// Runs every point in children; returns the tally.
+  Tally run(const Options &o)
+  {
+    Tally t;
+    long  next = 0;
+    while (next < o.points)
+      {
+        int fds[2];
+        if (pipe(fds) != 0)
+          throw std::runtime_error(std::string("property_run: pipe failed: ") + std::strerror(errno));
+        const pid_t pid = fork();
+        if (pid < 0)
+          throw std::runtime_error(std::string("property_run: fork failed: ") + std::strerror(errno));
+        if (pid == 0)
+          {
+            close(fds[0]);
+            child(o, next, fds[1]);
+          }
+        close(fds[1]);
+        std::string buffer;
+        bool        hung = false;
+        for (;;)
+          {
+            pollfd p{fds[0], POLLIN, 0};
+            const int ready = poll(&p, 1, static_cast<int>(o.timeout * 1000));
+            if (ready < 0 && errno == EINTR)
+              continue;
+            if (ready == 0)
+              {
+                hung = true;
+                kill(pid, SIGKILL); // our own child, by its id
+                break;
+              }
+            char      chunk[1 << 16];
+            const auto n = read(fds[0], chunk, sizeof chunk);
+            if (n <= 0)
+              break; // the child closed the pipe: finished or died
+            buffer.append(chunk, n);
+            std::size_t start = 0, end;
+            while ((end = buffer.find('\n', start)) != std::string::npos)
+              {
+                long   i;
+                int    code;
+                double seconds, diff;
+                if (std::sscanf(buffer.c_str() + start, "%ld %d %le %le", &i, &code, &seconds, &diff) == 4)
+                  {
+                    ++t.evaluated;
+                    ++t.counts[code];
+                    if (seconds > t.slowest)
+                      {
+                        t.slowest       = seconds;
+                        t.slowest_point = i;
+                      }
+                    if (diff >= 0)
+                      {
+                        ++t.compared;
+                        const json q = request(o, i);
+                        const std::string key = q["case"].get<std::string>() + "/" + q["quantity"].get<std::string>();
+                        t.worst[key] = std::max(t.worst[key], diff);
+                      }
+                    if (code >= nonfinite)
+                      t.failures.push_back("point " + std::to_string(i) + ": " + code_name(code) + ": " +
+                                           request(o, i).dump());
+                    next = i + 1;
+                    if (next % 100000 == 0)
+                      std::cerr << "property_run: " << next << " points\n";
+                  }
+                start = end + 1;
+              }
+            buffer.erase(0, start);
+          }
+        close(fds[0]);
+        int status = 0;
+        waitpid(pid, &status, 0);
+        const bool clean = !hung && WIFEXITED(status) && WEXITSTATUS(status) == 0;
+        if (!clean && next < o.points)
+          {
+            // the point after the last reported one hung or crashed: record it and skip it
+            (hung ? t.hangs : t.crashes) += 1;
+            t.failures.push_back("point " + std::to_string(next) + ": " +
+                                 (hung ? "hang (no answer within " + std::to_string(static_cast<long>(o.timeout)) + " s)" :
+                                         WIFSIGNALED(status) ? std::string("crash (signal ") +
+                                                                 strsignal(WTERMSIG(status)) + ")" :
+                                                               "crash (exit " + std::to_string(WEXITSTATUS(status)) + ")") +
+                                 ": " + request(o, next).dump());
+            ++next;
+          }
+      }
+    return t;
+  }
+} // namespace
+
+int main(int argc, char **argv)
+{
+  try
+    {
+      const Options o = parse(argc, argv);
+      std::cout << "property_run: " << o.points << " points, seed " << o.seed << ", numerical MDR on every "
+                << o.mdr_stride << "th, hang after " << o.timeout << " s\n";
+      const auto   start   = std::chrono::steady_clock::now();
+      const Tally  t       = run(o);
+      const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+      const long   failed  = t.counts[nonfinite] + t.counts[unexplained] + t.counts[disagrees] + t.hangs + t.crashes;
+
+      std::ostringstream md;
+      md << "# Randomized property run of the analytic module (`property_run`)\n\n"
+         << "Points: " << o.points << " (seed " << o.seed << ", point i = first request of RandomRequests(seed + i)); "
+         << "numerical MDR on every " << o.mdr_stride << "th point; hang = no answer within " << o.timeout
+         << " s. Wall time: " << seconds << " s (" << 1e6 * seconds / std::max(1L, o.points) << " us per point).\n\n"
+         << "| outcome | points |\n|---|---|\n"
+         << "| evaluated | " << t.evaluated << " |\n"
+         << "| finite value | " << t.counts[ok] << " |\n"
+         << "| explicit refusal | " << t.counts[refused] << " |\n"
+         << "| NaN or inf | " << t.counts[nonfinite] << " |\n"
+         << "| unexplained error | " << t.counts[unexplained] << " |\n"
+         << "| hang | " << t.hangs << " |\n"
+         << "| crash | " << t.crashes << " |\n"
+         << "| compared with the numerical MDR | " << t.compared << " |\n"
+         << "| disagreement beyond 1e-9 | " << t.counts[disagrees] << " |\n\n"
+         << "Slowest point: " << t.slowest << " s (point " << t.slowest_point << ").\n\n"
+         << "Worst closed-form vs numerical-MDR difference per case/quantity:\n\n";
+      for (const auto &w : t.worst)
+        md << "- " << w.first << ": " << w.second << "\n";
+      if (!t.failures.empty())
+        {
+          md << "\n## Failures (first 50)\n\n";
+          for (std::size_t i = 0; i < t.failures.size() && i < 50; ++i)
+            md << "- " << t.failures[i] << "\n";
+        }
+      std::cout << md.str();
+      if (!o.report.empty())
+        {
+          const std::filesystem::path file = o.report, tmp = file.string() + ".tmp";
+          if (file.has_parent_path())
+            std::filesystem::create_directories(file.parent_path());
+          {
+            std::ofstream out(tmp);
+            out << md.str();
+            if (!out)
+              throw std::runtime_error("property_run: cannot write " + tmp.string());
+          }
+          std::filesystem::rename(tmp, file);
+        }
+      return failed == 0 ? 0 : 1;
+    }
+  catch (const std::exception &e)
+    {
+      std::cerr << e.what() << '\n';
+      return 2;
+    }
+}
