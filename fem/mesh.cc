@@ -349,8 +349,9 @@ namespace gradcontact::fem
     // resolves the pressure near the axis; thinner than 1e-7 a the solve becomes garbage (issue 3,
     // and the energy-mismatch check here: 2e-4 at 1e-7 a, 3e-3 at 1e-8 a for k = -0.5).
     constexpr double stiff_surface_layer = 1e-4;
-    if (!(s > -1 && s < 1))
-      fail("surface_exponent", s, "(-1, 1)");
+    // s = 1: the Gibson medium (9.42), solved by the mixed formulation only (Material::validate).
+    if (!(s > -1 && s <= 1))
+      fail("surface_exponent", s, "(-1, 1]");
     if (!(truncation_tolerance > 0 && truncation_tolerance < 1))
       fail("truncation_tolerance", truncation_tolerance, "(0, 1)");
     MeshParameters p;

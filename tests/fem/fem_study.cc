@@ -4,6 +4,10 @@
 //   fem_study load=punch k=0 p=3 h_edge=1e-5 h_surface=0.25 h_far=3 g=1.15 L=1e8 layer=1e-10 R1=4
 //             edge_refinements=0 global=0 repeat=1
 // load = punch | paraboloid | cone | power (n=, A=) | pressure; pointwise=1 prints p(r) per sample;
+// formulation = displacement | mixed | automatic (nu -> 0.5, fem/README.md "Mixed formulation");
+// k = 1 (with nu = 0.5, mixed) is the Gibson medium: references from the Winkler law p = 2 E0 w / (3 c0)
+// (9.44); load=pressure then also prints w inside / outside and the transition width at r = a.
+//   fem_study load=pressure k=1 nu=0.5 formulation=mixed
 // every key is optional (defaults: the recommended parameters for k). Prints one line per run: key=value pairs.
 #include <fem/axisymmetric_solver.h>
 #include <fem/modulus.h>
@@ -55,6 +59,15 @@ int main(int argc, char **argv)
       DiscretizationParameters disc;
       disc.degree                  = static_cast<unsigned>(num("p", disc.degree));
       disc.extra_quadrature_points = static_cast<unsigned>(num("extra_q", disc.extra_quadrature_points));
+      const std::string formulation = arg.count("formulation") ? arg["formulation"] : "displacement";
+      if (formulation == "mixed")
+        disc.formulation = Formulation::mixed;
+      else if (formulation == "automatic")
+        disc.formulation = Formulation::automatic;
+      else if (formulation != "displacement")
+        throw std::invalid_argument("fem_study: formulation = '" + formulation +
+                                    "' outside {displacement, mixed, automatic}");
+      const bool gibson = (k == 1.0);
 
       const auto start = std::chrono::steady_clock::now();
       Material   material{std::make_shared<PowerLawModulus>(E0, c0, k), nu};
@@ -63,8 +76,10 @@ int main(int argc, char **argv)
                                                    static_cast<unsigned>(num("layers", 1)),
                                                    num("layer_depth", 1.0) * a);
       AxisymmetricSolver solver(material, mesh, disc);
+      // The closed forms of chapter 9.1 need k < 1; the Gibson medium (k = 1) has the Winkler law.
       const gradcontact::Medium medium =
-        gradcontact::medium(gradcontact::GradedHalfSpace{E0, c0, k, nu});
+        gradcontact::medium(gradcontact::GradedHalfSpace{E0, c0, gibson ? 0.0 : k, nu});
+      const double winkler = gradcontact::gibson_winkler_modulus(E0, c0); // p / w, 9.44
 
       LoadCase load;
       double   reference = 0;
@@ -83,10 +98,19 @@ int main(int argc, char **argv)
         {
           load.type  = LoadType::flat_punch;
           load.depth = 1e-3 * a;
-          reference  = gradcontact::force(medium, gradcontact::FlatPunch{a}, load.depth);
+          reference  = gibson ? M_PI * a * a * winkler * load.depth
+                              : gradcontact::force(medium, gradcontact::FlatPunch{a}, load.depth);
+        }
+      else if (load_name == "pressure")
+        {
+          load.type     = LoadType::constant_pressure;
+          load.pressure = 1e6;
+          reference     = M_PI * a * a * load.pressure;
         }
       else
         {
+          if (gibson)
+            throw std::invalid_argument("fem_study: k = 1 (Gibson) supports load = punch | pressure");
           load.profile = Profile::power_law(power.n, power.A);
           if (control == "radius")
             load.type = LoadType::indenter;
@@ -104,7 +128,12 @@ int main(int argc, char **argv)
         }
       OutputRequest out;
       const double  a_ref = load_name == "punch" || control == "radius" ? a : a_true;
-      if (load_name != "punch")
+      // Constant pressure: w on 0 .. 2 a (the Winkler comparison and the transition at r = a).
+      constexpr unsigned int n_w = 2000;
+      if (load_name == "pressure")
+        for (unsigned int i = 0; i <= n_w; ++i)
+          out.displacement_radii.push_back(2 * a * i / n_w);
+      else if (load_name != "punch")
         {
           out.displacement_radii = {1.5 * a_ref, 10 * a_ref};
           for (unsigned int i = 0; i < 400; ++i)
@@ -113,7 +142,35 @@ int main(int argc, char **argv)
       const Result r     = solver.run(load, out);
       const double total = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
       double w_err[2] = {0, 0}, p_err = 0, p_norm = 0;
-      if (load_name != "punch")
+      if (load_name == "pressure")
+        {
+          // w against the Winkler value 3 c0 p0 / (2 E0) (Gibson) or w(r) of (9.40): max relative error
+          // inside r <= 0.9 a and outside r >= 1.1 a (relative to w_c), and the transition width: from
+          // the last r with w >= 0.9 w_W to the first with w <= 0.1 w_W (Gibson only).
+          const double w_winkler = load.pressure / winkler;
+          double in = 0, out_max = 0, r90 = 0, r10 = 2 * a;
+          for (const Sample &s : r.displacement)
+            {
+              const double w_ref = gibson ? (s.r <= a ? w_winkler : 0.0)
+                                          : gradcontact::displacement(medium, gradcontact::UniformPressure{a, load.pressure}, s.r);
+              const double scale = gibson ? w_winkler : gradcontact::centre_displacement(medium, gradcontact::UniformPressure{a, load.pressure});
+              if (s.r <= 0.9 * a)
+                in = std::max(in, std::abs(s.value - w_ref) / scale);
+              if (s.r >= 1.1 * a)
+                out_max = std::max(out_max, std::abs(s.value - w_ref) / scale);
+              if (s.value >= 0.9 * w_winkler)
+                r90 = s.r;
+              if (s.value <= 0.1 * w_winkler && s.r < r10 && s.r > a / 2)
+                r10 = s.r;
+              if (arg.count("pointwise"))
+                std::printf("r/a=%.6e w_fe=%.10e w_ref=%.10e\n", s.r / a, s.value, w_ref);
+            }
+          std::printf("pressure: w_c/w_ref-1=%.3e max|w-w_ref|/w_c in r<=0.9a=%.3e out r>=1.1a=%.3e "
+                      "w(a)/w_winkler=%.4f transition(0.9->0.1 w_W)/a=%.3e\n",
+                      r.depth / (gibson ? w_winkler : gradcontact::centre_displacement(medium, gradcontact::UniformPressure{a, load.pressure})) - 1,
+                      in, out_max, r.displacement[n_w / 2].value / w_winkler, (r10 - r90) / a);
+        }
+      else if (load_name != "punch")
         {
           // FE radius control: compare at the FE depth; depth/force control: at the closed-form state.
           const double a_cmp = control == "radius" ? gradcontact::contact_radius_from_depth(medium, power, r.depth) : a_true;
@@ -134,13 +191,14 @@ int main(int argc, char **argv)
           if (control == "radius")
             reference = gradcontact::force(medium, power, a_cmp);
         }
+      std::printf("formulation=%s nu=%g ", r.formulation == Formulation::mixed ? "mixed" : "displacement", nu);
       std::printf("load=%s control=%s k=%g p=%u h_edge=%g L=%g dofs=%u F_error=%.3e a_error=%.3e d_error=%.3e "
                   "w1.5_error=%.2e w10_error=%.2e p_L2=%.2e iterations=%u set=%u mismatch=%.1e mesh=%.2f "
                   "setup=%.2f assemble=%.2f factorize=%.2f solve=%.2f post=%.2f total=%.2f rings=%u %s\n",
                   load_name.c_str(), control.c_str(), k, disc.degree, mesh.h_edge, mesh.far_field_size,
                   r.n_dofs, r.force / reference - 1,
-                  load_name == "punch" ? 0.0 : r.contact_radius / a_ref - 1,
-                  load_name == "punch" ? 0.0 : r.depth / gradcontact::depth(medium, power, a_ref) - 1,
+                  load_name == "punch" || load_name == "pressure" ? 0.0 : r.contact_radius / a_ref - 1,
+                  load_name == "punch" || load_name == "pressure" ? 0.0 : r.depth / gradcontact::depth(medium, power, a_ref) - 1,
                   w_err[0], w_err[1], p_err, r.iterations, r.active_set_size, r.energy_mismatch, r.time.mesh,
                   r.time.setup, r.time.assemble, r.time.factorize, r.time.solve, r.time.postprocess, total,
                   r.mesh.n_rings, r.message.c_str());
