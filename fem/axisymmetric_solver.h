@@ -85,7 +85,8 @@ namespace gradcontact::fem
   };
 
   /// `automatic` switches to the mixed formulation from this nu on (measured, fem/README.md "Mixed
-  /// formulation": at nu = 0.45 the displacement formulation's p(r) error has already grown).
+  /// formulation", k = 0, degree 3: at nu = 0.45 the mixed flat-punch force error is 5.7e-7 against
+  /// 1.3e-6, the paraboloid p(r) 3.7e-6 against 1.6e-6; from nu = 0.49 on the mixed one wins both).
   inline constexpr double automatic_mixed_threshold = 0.45;
 
   struct DiscretizationParameters

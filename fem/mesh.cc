@@ -358,7 +358,10 @@ namespace gradcontact::fem
     p.contact_radius = contact_radius;
     p.far_field_size = std::clamp(std::pow(truncation_constant / truncation_tolerance, 1 / (1 + s)),
                                   min_far_field, max_far_field);
-    p.surface_layer_thickness = (s > 0) ? singular_surface_layer : (s < 0) ? stiff_surface_layer : 1.0;
+    // s = 1 (Gibson, nu = 1/2): the displacement is regular at z = 0 (w = p / k_W); measured with the
+    // mixed formulation, degree 3: constant-pressure w inside 7.2e-6 with no layer, 1.0e-5 with 1e-10 a.
+    p.surface_layer_thickness =
+      (s >= 1) ? 1.0 : (s > 0) ? singular_surface_layer : (s < 0) ? stiff_surface_layer : 1.0;
     p.validate();
     return p;
   }

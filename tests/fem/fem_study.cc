@@ -8,6 +8,7 @@
 // k = 1 (with nu = 0.5, mixed) is the Gibson medium: references from the Winkler law p = 2 E0 w / (3 c0)
 // (9.44); load=pressure then also prints w inside / outside and the transition width at r = a.
 //   fem_study load=pressure k=1 nu=0.5 formulation=mixed
+// vtu=file.vtu writes the fields (u_r, u_z, and q when mixed, E);
 // every key is optional (defaults: the recommended parameters for k). Prints one line per run: key=value pairs.
 #include <fem/axisymmetric_solver.h>
 #include <fem/modulus.h>
@@ -15,6 +16,7 @@
 #include <analytic/material.hpp>
 #include <analytic/normal.hpp>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -131,14 +133,29 @@ int main(int argc, char **argv)
       // Constant pressure: w on 0 .. 2 a (the Winkler comparison and the transition at r = a).
       constexpr unsigned int n_w = 2000;
       if (load_name == "pressure")
-        for (unsigned int i = 0; i <= n_w; ++i)
-          out.displacement_radii.push_back(2 * a * i / n_w);
-      else if (load_name != "punch")
+        {
+          for (unsigned int i = 0; i <= n_w; ++i)
+            out.displacement_radii.push_back(2 * a * i / n_w);
+          // and a (1 -+ t), t = 1e-9 .. 1e-1 with 20 points per decade, for the transition width
+          for (int j = 0; j <= 160; ++j)
+            for (const double sign : {-1.0, 1.0})
+              out.displacement_radii.push_back(a * (1 + sign * std::pow(10.0, -9 + j / 20.0)));
+          std::sort(out.displacement_radii.begin(), out.displacement_radii.end());
+        }
+      else if (load_name == "punch")
+        {
+          // p(r) of the punch (singular at r = a): L2 and max pointwise error over r < 0.99 a
+          for (unsigned int i = 0; i < 400; ++i)
+            out.pressure_radii.push_back(0.99 * a * (i + 0.5) / 400);
+        }
+      else
         {
           out.displacement_radii = {1.5 * a_ref, 10 * a_ref};
           for (unsigned int i = 0; i < 400; ++i)
             out.pressure_radii.push_back(0.99 * a_ref * (i + 0.5) / 400);
         }
+      if (arg.count("vtu"))
+        out.vtu_file = arg["vtu"];
       const Result r     = solver.run(load, out);
       const double total = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
       double w_err[2] = {0, 0}, p_err = 0, p_norm = 0;
@@ -146,9 +163,12 @@ int main(int argc, char **argv)
         {
           // w against the Winkler value 3 c0 p0 / (2 E0) (Gibson) or w(r) of (9.40): max relative error
           // inside r <= 0.9 a and outside r >= 1.1 a (relative to w_c), and the transition width: from
-          // the last r with w >= 0.9 w_W to the first with w <= 0.1 w_W (Gibson only).
+          // first r where w leaves w_W by more than 10 % (1 %) to the last r where |w| exceeds 10 % (1 %)
+          // of w_W (Gibson only).
           const double w_winkler = load.pressure / winkler;
-          double in = 0, out_max = 0, r90 = 0, r10 = 2 * a;
+          double in = 0, out_max = 0;
+          // first r off the inside value / last r off zero by more than 10 % and 1 % of w_W
+          double first_off[2] = {2 * a, 2 * a}, last_off[2] = {0, 0};
           for (const Sample &s : r.displacement)
             {
               const double w_ref = gibson ? (s.r <= a ? w_winkler : 0.0)
@@ -158,19 +178,41 @@ int main(int argc, char **argv)
                 in = std::max(in, std::abs(s.value - w_ref) / scale);
               if (s.r >= 1.1 * a)
                 out_max = std::max(out_max, std::abs(s.value - w_ref) / scale);
-              if (s.value >= 0.9 * w_winkler)
-                r90 = s.r;
-              if (s.value <= 0.1 * w_winkler && s.r < r10 && s.r > a / 2)
-                r10 = s.r;
+              for (unsigned int b = 0; b < 2; ++b)
+                {
+                  const double band = (b == 0 ? 0.1 : 0.01) * w_winkler;
+                  if (std::abs(s.value - w_winkler) > band)
+                    first_off[b] = std::min(first_off[b], s.r);
+                  if (std::abs(s.value) > band)
+                    last_off[b] = std::max(last_off[b], s.r);
+                }
               if (arg.count("pointwise"))
                 std::printf("r/a=%.6e w_fe=%.10e w_ref=%.10e\n", s.r / a, s.value, w_ref);
             }
           std::printf("pressure: w_c/w_ref-1=%.3e max|w-w_ref|/w_c in r<=0.9a=%.3e out r>=1.1a=%.3e "
-                      "w(a)/w_winkler=%.4f transition(0.9->0.1 w_W)/a=%.3e\n",
+                      "w(a)/w_winkler=%.4f transition_10%%/a=%.3e transition_1%%/a=%.3e\n",
                       r.depth / (gibson ? w_winkler : gradcontact::centre_displacement(medium, gradcontact::UniformPressure{a, load.pressure})) - 1,
-                      in, out_max, r.displacement[n_w / 2].value / w_winkler, (r10 - r90) / a);
+                      in, out_max, r.displacement[n_w / 2 + 161].value / w_winkler, (last_off[0] - first_off[0]) / a,
+                      (last_off[1] - first_off[1]) / a);
         }
-      else if (load_name != "punch")
+      else if (load_name == "punch")
+        {
+          double p_max = 0;
+          for (const Sample &s : r.pressure)
+            {
+              const double p = gibson ? winkler * load.depth
+                                      : gradcontact::pressure(medium, gradcontact::FlatPunch{a}, load.depth, s.r);
+              p_err += (s.value - p) * (s.value - p) * s.r;
+              p_norm += p * p * s.r;
+              p_max = std::max(p_max, std::abs(s.value / p - 1));
+            }
+          p_err = std::sqrt(p_err / p_norm);
+          // How close the power law is to the Winkler limit (9.44): closed-form force over pi a^2 k_W d.
+          std::printf("punch: p_max_rel=%.3e F_closed/F_winkler=%.6f\n", p_max,
+                      gibson ? 1.0 : gradcontact::force(medium, gradcontact::FlatPunch{a}, load.depth) /
+                                       (M_PI * a * a * winkler * load.depth));
+        }
+      else
         {
           // FE radius control: compare at the FE depth; depth/force control: at the closed-form state.
           const double a_cmp = control == "radius" ? gradcontact::contact_radius_from_depth(medium, power, r.depth) : a_true;
