@@ -120,6 +120,7 @@ namespace gradcontact::cases
       return [&s, level](const double a) {
         fem::Settings st = fem::recommended_settings(a, s.material.k, s.discretization.force_tolerance);
         st.discretization.degree = s.discretization.degree;
+        set_fe_formulation(s, st.discretization);
         st.mesh.global_refinements = level;
         if (s.discretization.far_field > 0.)
           st.mesh.far_field_size = s.discretization.far_field;

@@ -157,6 +157,7 @@ namespace gradcontact::cases
       const auto start = std::chrono::steady_clock::now();
       fem::Settings settings = fem::recommended_settings(s.load.a, s.material.k, s.discretization.force_tolerance);
       settings.discretization.degree = s.discretization.degree;
+      set_fe_formulation(s, settings.discretization);
       settings.mesh.global_refinements = refinement;
       if (s.discretization.far_field > 0.)
         settings.mesh.far_field_size = s.discretization.far_field;
@@ -323,6 +324,7 @@ namespace gradcontact::cases
           const auto t0 = std::chrono::steady_clock::now();
           fem::Settings settings = fem::recommended_settings(a, mp.k, s.discretization.force_tolerance);
           settings.discretization.degree = s.discretization.degree;
+          set_fe_formulation(s, settings.discretization);
           fem::AxisymmetricSolver solver(fe_material(fe_scene), settings.mesh, settings.discretization);
           fem::LoadCase lc;
           lc.type = fem::LoadType::indenter;
@@ -361,6 +363,20 @@ namespace gradcontact::cases
       return result;
     }
   } // namespace
+
+  void set_fe_formulation(const Scene &s, fem::DiscretizationParameters &discretization)
+  {
+    const std::string &f = s.discretization.formulation;
+    if (f == "mixed")
+      discretization.formulation = fem::Formulation::mixed;
+    else if (f == "automatic")
+      discretization.formulation = fem::Formulation::automatic;
+    else if (f == "displacement")
+      discretization.formulation = fem::Formulation::displacement;
+    else
+      throw std::invalid_argument("Discretization/formulation = '" + f +
+                                  "' outside {displacement, mixed, automatic}");
+  }
 
   fem::Material fe_material(const Scene &s)
   {

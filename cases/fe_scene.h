@@ -9,6 +9,11 @@
 
 #include <filesystem>
 
+namespace gradcontact::fem
+{
+  struct DiscretizationParameters;
+}
+
 namespace gradcontact::cases
 {
   /// FE samples of a profile (quantity "pressure" or "displacement") at radii r/a, for figures: x = r/a,
@@ -23,6 +28,9 @@ namespace gradcontact::cases
 
   /// The FE material of the scene (power law, layered or expression modulus).
   fem::Material fe_material(const Scene &scene);
+
+  /// Sets the FE formulation of the scene (Discretization/formulation) in `discretization`.
+  void set_fe_formulation(const Scene &scene, fem::DiscretizationParameters &discretization);
 
   /// Runs the scene and writes its report into `folder` (which the caller makes atomically).
   SceneResult run_prm_scene(const Scene &scene, const std::filesystem::path &folder, bool verbose);

@@ -120,6 +120,7 @@ namespace gradcontact::cases
       {
         settings = fem::recommended_settings(s.load.a, s.material.k, s.discretization.force_tolerance);
         settings.discretization.degree = s.discretization.degree;
+        set_fe_formulation(s, settings.discretization); // mode 1: throws for mixed (not supported)
         settings.mesh.global_refinements = s.discretization.refinements.back();
         if (s.discretization.far_field > 0.)
           settings.mesh.far_field_size = s.discretization.far_field;

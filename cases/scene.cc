@@ -50,7 +50,7 @@ namespace gradcontact::cases
     prm.declare_entry("E0", "1e9", Patterns::Double(0.), "E0 of E(z) = E0 (z/c0)^k (9.1) [Pa], > 0.");
     prm.declare_entry("c0", "1e-3", Patterns::Double(0.), "Characteristic depth c0 [m], > 0.");
     prm.declare_entry("k", "0.5", Patterns::Double(-1., 1.), "Exponent k of the grading, -1 < k < 1.");
-    prm.declare_entry("nu", "0.3", Patterns::Double(0., 0.5), "Poisson ratio, 0 <= nu < 1/2 for the FE model.");
+    prm.declare_entry("nu", "0.3", Patterns::Double(0., 0.5), "Poisson ratio, 0 <= nu <= 1/2; the FE model needs Discretization/formulation = mixed (or automatic) at nu = 1/2.");
     prm.declare_entry("modulus", "power law", Patterns::Selection("power law|layered|expression"),
                       "How the FE model represents E(z): pointwise power law, N layers with exact layer "
                       "averages, or an expression in z.");
@@ -132,6 +132,10 @@ namespace gradcontact::cases
     prm.declare_entry("force tolerance", "1e-6", Patterns::Double(1e-12, 1.),
                       "The wanted relative force error: selects the recommended mesh (fem/README.md).");
     prm.declare_entry("far field", "0", Patterns::Double(0.), "L/a of the truncated domain; 0: the recommended one.");
+    prm.declare_entry("formulation", "displacement", Patterns::Selection("displacement|mixed|automatic"),
+                      "FE unknowns: displacement; mixed (u and q = lambda div u, Taylor-Hood: nu -> 0.5 without "
+                      "locking, nu = 0.5, the Gibson medium k = 1); automatic (mixed for nu >= 0.45). "
+                      "fem/README.md, \"Mixed formulation\".");
     prm.leave_subsection();
   }
   void DiscretizationParameters::parse(ParameterHandler &prm)
@@ -143,6 +147,7 @@ namespace gradcontact::cases
       refinements.push_back(dealii::Utilities::string_to_int(s));
     force_tolerance = prm.get_double("force tolerance");
     far_field = prm.get_double("far field");
+    formulation = prm.get("formulation");
     prm.leave_subsection();
   }
 

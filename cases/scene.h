@@ -70,6 +70,7 @@ namespace gradcontact::cases
     std::vector<unsigned int> refinements = {0}; ///< uniform refinements; several = a convergence study
     double force_tolerance = 1e-6; ///< picks the recommended mesh (fem::recommended_settings)
     double far_field = 0.;         ///< L/a; 0: the recommended one
+    std::string formulation = "displacement"; ///< FE unknowns: displacement | mixed | automatic (fem::Formulation)
     static void declare(dealii::ParameterHandler &prm);
     void parse(dealii::ParameterHandler &prm);
   };

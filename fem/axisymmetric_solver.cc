@@ -82,6 +82,41 @@ namespace gradcontact::fem
     if (discontinuity_subdivisions < 1 || discontinuity_subdivisions > 64)
       fail("DiscretizationParameters", "discontinuity_subdivisions", discontinuity_subdivisions,
            "[1, 64]");
+    if (formulation != Formulation::displacement && formulation != Formulation::mixed &&
+        formulation != Formulation::automatic)
+      fail("DiscretizationParameters", "formulation", static_cast<int>(formulation),
+           "{displacement, mixed, automatic}");
+    if (formulation == Formulation::mixed && degree < 2)
+      fail("DiscretizationParameters (mixed formulation)", "degree", degree,
+           "[2, 4] (the pressure space is FE_Q(degree - 1))");
+  }
+
+
+
+  Formulation resolve_formulation(const DiscretizationParameters &discretization, const double nu)
+  {
+    Formulation f = discretization.formulation;
+    if (f == Formulation::automatic)
+      f = (nu >= automatic_mixed_threshold) ? Formulation::mixed : Formulation::displacement;
+    if (f == Formulation::mixed && discretization.degree < 2)
+      fail("DiscretizationParameters (mixed formulation, nu = " + std::to_string(nu) + ")", "degree",
+           discretization.degree, "[2, 4] (the pressure space is FE_Q(degree - 1))");
+    return f;
+  }
+
+
+
+  void require_displacement_formulation(const DiscretizationParameters &discretization, const double nu,
+                                        const std::string &where)
+  {
+    if (resolve_formulation(discretization, nu) == Formulation::mixed)
+      {
+        std::ostringstream msg;
+        msg << where << ": not supported with the mixed formulation (DiscretizationParameters::formulation = "
+            << (discretization.formulation == Formulation::mixed ? "mixed" : "automatic") << ", nu = " << nu
+            << "); use Formulation::displacement with nu < 0.5";
+        throw std::invalid_argument(msg.str());
+      }
   }
 
 
@@ -263,13 +298,36 @@ namespace gradcontact::fem
 
 
 
+  namespace
+  {
+    /// Validates the discretisation, then the material for the formulation it resolves to.
+    Formulation checked_formulation(const Material &material, const DiscretizationParameters &discretization)
+    {
+      discretization.validate();
+      const Formulation f = resolve_formulation(discretization, material.nu);
+      material.validate(f == Formulation::mixed);
+      return f;
+    }
+
+    /// (u_r, u_z) in FE_Q(p), plus q in FE_Q(p - 1) for the mixed formulation (Taylor-Hood).
+    FESystem<2> make_fe(const unsigned int degree, const Formulation formulation)
+    {
+      if (formulation == Formulation::mixed)
+        return FESystem<2>(FE_Q<2>(degree), 2, FE_Q<2>(degree - 1), 1);
+      return FESystem<2>(FE_Q<2>(degree), 2);
+    }
+  } // namespace
+
+
+
   AxisymmetricSolver::AxisymmetricSolver(const Material &material_,
                                          const MeshParameters &mesh_,
                                          const DiscretizationParameters &discretization_)
-    : material((material_.validate(), material_))
+    : material((checked_formulation(material_, discretization_), material_))
     , mesh_parameters((mesh_.validate(), mesh_))
-    , discretization((discretization_.validate(), discretization_))
-    , fe(FE_Q<2>(discretization_.degree), 2)
+    , discretization(discretization_)
+    , used_formulation(resolve_formulation(discretization_, material_.nu))
+    , fe(make_fe(discretization_.degree, used_formulation))
     , dof_handler(triangulation)
   {
     make_grid();
@@ -661,6 +719,7 @@ namespace gradcontact::fem
     result.time           = setup_time;
     result.n_dofs         = dof_handler.n_dofs();
     result.n_cells        = triangulation.n_active_cells();
+    result.formulation    = used_formulation;
     result.mesh           = mesh_info;
     result.contact_radius = a;
     result.edge_node_radius = a;
@@ -943,7 +1002,9 @@ namespace gradcontact::fem
   {
     DataOut<2> data_out;
     data_out.attach_dof_handler(dof_handler);
-    const std::vector<std::string> names{"u_r", "u_z"};
+    std::vector<std::string> names{"u_r", "u_z"};
+    if (used_formulation == Formulation::mixed)
+      names.push_back("q"); // q = lambda div u (mixed formulation)
     data_out.add_data_vector(u, names);
     Vector<float> modulus(triangulation.n_active_cells());
     for (const auto &cell : triangulation.active_cell_iterators())

@@ -11,7 +11,20 @@
 //   a(u, v) = \int_\Omega [ lambda tr eps(u) tr eps(v) + 2 mu (eps_rr eps_rr + eps_zz eps_zz + eps_tt eps_tt)
 //                          + mu gamma_rz(u) gamma_rz(v) ] r dr dz,
 //   l(v)    = \int_{z=0} p(r) v_z r dr.
-// Forces are 2 pi times the meridian-plane quantities. Boundary conditions: u_r = 0 on the axis (r = 0);
+// Forces are 2 pi times the meridian-plane quantities.
+//
+// Mixed (displacement-pressure, Taylor-Hood) formulation, DiscretizationParameters::formulation. As nu
+// -> 1/2 the term lambda tr eps tr eps locks the displacement elements (the force survives at degree 3,
+// the pressure p(r) oscillates, fem/README.md). With q = lambda div u, div u = tr eps = d u_r/dr + u_r/r
+// + d u_z/dz, the unknowns (u, q) in FE_Q(p)^2 x FE_Q(p-1) solve the symmetric saddle-point problem
+//   \int [ 2 mu (eps_rr eps_rr + eps_zz eps_zz + eps_tt eps_tt) + mu gamma_rz gamma_rz ](u, v) r dr dz
+//     + \int q div v r dr dz = l(v)                      for all v,
+//   \int s div u r dr dz - \int s q / lambda r dr dz = 0  for all s,
+// with 1/lambda = (1 + nu)(1 - 2 nu) / (nu E(z)) = 0 at nu = 1/2 (the incompressible limit, and with
+// E = E0 z / c0 the Gibson medium 9.42). Eliminating q gives back a(u, v); at the discrete solution
+// U.AU = a(u, u) + \int q div u r = the strain energy, so the energy check, the reactions and every
+// surface quantity below are the same expressions on the displacement DoFs of the larger system.
+// UMFPACK factorises the indefinite matrix (pivoting). Boundary conditions: u_r = 0 on the axis (r = 0);
 // u = 0 on the truncation boundary at L; on z = 0 either traction free, a prescribed pressure, or the
 // rigid indenter. The cells touching z = 0 are integrated with a Gauss-Jacobi rule exact for z^s times a
 // polynomial when E ~ z^s there (fem/gauss_jacobi.h).
@@ -63,14 +76,38 @@
 
 namespace gradcontact::fem
 {
+  /// Which unknowns the axisymmetric solver uses (header comment above).
+  enum class Formulation
+  {
+    displacement, ///< (u_r, u_z) in FE_Q(p); -1 < nu < 1/2; locks as nu -> 1/2
+    mixed,        ///< (u_r, u_z) in FE_Q(p), q = lambda div u in FE_Q(p-1); 0 < nu <= 1/2, p >= 2
+    automatic     ///< mixed for nu >= automatic_mixed_threshold, else displacement
+  };
+
+  /// `automatic` switches to the mixed formulation from this nu on (measured, fem/README.md "Mixed
+  /// formulation", k = 0, degree 3: at nu = 0.45 the mixed flat-punch force error is 5.7e-7 against
+  /// 1.3e-6, the paraboloid p(r) 3.7e-6 against 1.6e-6; from nu = 0.49 on the mixed one wins both).
+  inline constexpr double automatic_mixed_threshold = 0.45;
+
   struct DiscretizationParameters
   {
-    unsigned int degree = 3;                  ///< FE_Q degree, 1..4
+    unsigned int degree = 3;                  ///< FE_Q degree, 1..4 (of the displacement; 2..4 when mixed)
     unsigned int extra_quadrature_points = 2; ///< points per direction: degree + this
     unsigned int discontinuity_subdivisions = 8; ///< QIterated copies in cells crossing a jump of E
+    Formulation  formulation = Formulation::displacement;
 
     void validate() const;
   };
+
+  /// The formulation used for Poisson ratio nu: displacement or mixed (never automatic). Throws
+  /// std::invalid_argument when the result is mixed and the degree is 1 (FE_Q(0) does not exist).
+  Formulation resolve_formulation(const DiscretizationParameters &discretization, double nu);
+
+  /// For the solvers without the mixed formulation (distributed, Fourier mode 1): throws
+  /// std::invalid_argument "<where>: not supported with the mixed formulation" when
+  /// resolve_formulation gives mixed.
+  void require_displacement_formulation(const DiscretizationParameters &discretization, double nu,
+                                        const std::string &where);
 
   /// A mesh and a discretisation chosen together.
   struct Settings
@@ -188,8 +225,9 @@ namespace gradcontact::fem
     double energy_mismatch = 0;
     bool   reliable        = true; ///< energy_mismatch small enough (else `message` says why)
 
-    unsigned int n_dofs  = 0;
+    unsigned int n_dofs  = 0; ///< all DoFs (displacement and, when mixed, pressure)
     unsigned int n_cells = 0;
+    Formulation  formulation = Formulation::displacement; ///< the one used (never automatic)
     MeshInfo     mesh;
     Timings      time;
   };
@@ -206,6 +244,8 @@ namespace gradcontact::fem
     Result run(const LoadCase &load, const OutputRequest &outputs = {});
 
     unsigned int n_dofs() const { return dof_handler.n_dofs(); }
+    /// displacement or mixed (resolved from DiscretizationParameters::formulation and nu).
+    Formulation formulation() const { return used_formulation; }
     const dealii::Triangulation<2> &get_triangulation() const { return triangulation; }
 
   private:
@@ -252,6 +292,7 @@ namespace gradcontact::fem
     const Material                 material;
     const MeshParameters           mesh_parameters;
     const DiscretizationParameters discretization;
+    const Formulation              used_formulation; ///< displacement or mixed
 
     dealii::Triangulation<2>  triangulation;
     MeshInfo                  mesh_info;

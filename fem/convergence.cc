@@ -21,9 +21,9 @@ namespace gradcontact::fem
 
   void ConvergenceStudy::validate() const
   {
-    material.validate();
-    base.mesh.validate();
     base.discretization.validate();
+    material.validate(resolve_formulation(base.discretization, material.nu) == Formulation::mixed);
+    base.mesh.validate();
     load.validate();
     if (n_levels < 1 || n_levels > 7)
       fail("n_levels", n_levels, "[1, 7]");

@@ -75,7 +75,9 @@ namespace gradcontact::fem
     : communicator(checked(communicator_))
     , material((material_.validate(), material_))
     , mesh_parameters((mesh_.validate(), mesh_))
-    , discretization((discretization_.validate(), discretization_))
+    , discretization((discretization_.validate(),
+                      require_displacement_formulation(discretization_, material_.nu, "DistributedSolver"),
+                      discretization_))
     , solver_parameters((solver_.validate(), solver_))
     , triangulation(communicator)
     , fe(FE_Q<2>(discretization_.degree), 2)

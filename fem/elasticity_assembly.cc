@@ -17,12 +17,16 @@ namespace gradcontact::fem
                                     const dealii::FESystem<2> &fe, dealii::AffineConstraints<double> &constraints)
   {
     dealii::DoFTools::make_hanging_node_constraints(dof_handler, constraints);
+    const unsigned int                       n_components = fe.n_components();
     const dealii::FEValuesExtractors::Scalar radial(0);
     dealii::VectorTools::interpolate_boundary_values(mapping, dof_handler, boundary_id::axis,
-                                                     dealii::Functions::ZeroFunction<2>(2), constraints,
-                                                     fe.component_mask(radial));
+                                                     dealii::Functions::ZeroFunction<2>(n_components),
+                                                     constraints, fe.component_mask(radial));
+    // u = 0 on the truncation boundary; the pressure q of the mixed formulation stays free there.
+    const dealii::FEValuesExtractors::Vector displacement(0);
     dealii::VectorTools::interpolate_boundary_values(mapping, dof_handler, boundary_id::far_field,
-                                                     dealii::Functions::ZeroFunction<2>(2), constraints);
+                                                     dealii::Functions::ZeroFunction<2>(n_components),
+                                                     constraints, fe.component_mask(displacement));
     constraints.close();
   }
 
@@ -49,6 +53,10 @@ namespace gradcontact::fem
     , jumps(material_.modulus->discontinuities())
     , cell_matrix(fe_.n_dofs_per_cell(), fe_.n_dofs_per_cell())
     , B(fe_.n_dofs_per_cell())
+    , mixed(fe_.n_components() == 3)
+    , inverse_lambda_factor(mixed ? (1 + material_.nu) * (1 - 2 * material_.nu) / material_.nu : 0.0)
+    , trace(fe_.n_dofs_per_cell())
+    , psi(fe_.n_dofs_per_cell())
   {
     const unsigned int n_q = n_points(discretization);
     regular    = std::make_unique<FEValues<2>>(mapping, fe, QGauss<2>(n_q), cell_flags);
@@ -57,6 +65,12 @@ namespace gradcontact::fem
     for (unsigned int f = 0; f < 4; ++f)
       surface[f] = std::make_unique<FEValues<2>>(mapping, fe, surface_cell_quadrature(n_q, s, f, distance[f]),
                                                  cell_flags);
+    // K_qq in the surface cells: 1/E ~ z^{-s}, Gauss-Jacobi with exponent -s (needs s < 1; at s = 1,
+    // the Gibson medium, nu = 1/2 and K_qq = 0).
+    if (mixed && inverse_lambda_factor != 0.0 && s != 0.0)
+      for (unsigned int f = 0; f < 4; ++f)
+        surface_inverse[f] = std::make_unique<FEValues<2>>(
+          mapping, fe, surface_cell_quadrature(n_q, -s, f, distance_inverse[f]), cell_flags);
   }
 
 
@@ -96,6 +110,38 @@ namespace gradcontact::fem
 
     const unsigned int dofs_per_cell = fe.n_dofs_per_cell();
     cell_matrix                      = 0;
+    if (mixed)
+      {
+        // K_uu: the deviatoric-like part 2 mu eps:eps with the rule of the displacement formulation
+        // (no lambda term: lambda div u div v is replaced by the q blocks).
+        for (const unsigned int q : fe_values->quadrature_point_indices())
+          {
+            const Point<2> &x       = fe_values->quadrature_point(q);
+            const double    r       = x[0];
+            const double    modulus = (xi ? E.value(x[1]) / std::pow((*xi)[q], s) : E.value(x[1]));
+            const double    mu      = c_mu * modulus;
+            const double    weight  = r * fe_values->JxW(q);
+            for (unsigned int i = 0; i < dofs_per_cell; ++i)
+              {
+                const unsigned int  c    = fe.system_to_component_index(i).first;
+                const double        phi  = fe_values->shape_value(i, q);
+                const Tensor<1, 2> &grad = fe_values->shape_grad(i, q);
+                B[i] = (c == 0) ? std::array<double, 4>{{grad[0], 0.0, phi / r, grad[1]}} :
+                       (c == 1) ? std::array<double, 4>{{0.0, grad[1], 0.0, grad[0]}} :
+                                  std::array<double, 4>{{0.0, 0.0, 0.0, 0.0}};
+              }
+            for (unsigned int i = 0; i < dofs_per_cell; ++i)
+              for (unsigned int j = 0; j <= i; ++j)
+                cell_matrix(i, j) += (2 * mu * (B[i][0] * B[j][0] + B[i][1] * B[j][1] + B[i][2] * B[j][2]) +
+                                      mu * B[i][3] * B[j][3]) *
+                                     weight;
+          }
+        add_mixed_blocks(cell, straddles, surface_face);
+        for (unsigned int i = 0; i < dofs_per_cell; ++i)
+          for (unsigned int j = i + 1; j < dofs_per_cell; ++j)
+            cell_matrix(i, j) = cell_matrix(j, i);
+        return cell_matrix;
+      }
     for (const unsigned int q : fe_values->quadrature_point_indices())
       {
         const Point<2> &x = fe_values->quadrature_point(q);
@@ -132,6 +178,59 @@ namespace gradcontact::fem
       for (unsigned int j = i + 1; j < dofs_per_cell; ++j)
         cell_matrix(i, j) = cell_matrix(j, i);
     return cell_matrix;
+  }
+
+
+
+  void CellStiffness::add_mixed_blocks(const DoFHandler<2>::active_cell_iterator &cell, const bool straddles,
+                                       const unsigned int surface_face)
+  {
+    const ModulusField &E             = *material.modulus;
+    const unsigned int  dofs_per_cell = fe.n_dofs_per_cell();
+    // Surface cells with E ~ z^s, s != 0: K_qq needs its own rule (Gauss-Jacobi, exponent -s).
+    const bool singular_qq = surface_face != numbers::invalid_unsigned_int && s != 0.0 && !straddles;
+    const bool qq_here     = inverse_lambda_factor != 0.0 && !singular_qq;
+
+    // K_uq = \int tr B_i psi_j r and, where 1/E is regular, K_qq = -\int psi_i psi_j / lambda r.
+    FEValues<2> &plain = straddles ? *subdivided : *regular;
+    plain.reinit(cell);
+    for (const unsigned int q : plain.quadrature_point_indices())
+      {
+        const Point<2> &x      = plain.quadrature_point(q);
+        const double    r      = x[0];
+        const double    weight = r * plain.JxW(q);
+        for (unsigned int i = 0; i < dofs_per_cell; ++i)
+          {
+            const unsigned int  c    = fe.system_to_component_index(i).first;
+            const double        phi  = plain.shape_value(i, q);
+            const Tensor<1, 2> &grad = plain.shape_grad(i, q);
+            trace[i] = (c == 0) ? grad[0] + phi / r : (c == 1) ? grad[1] : 0.0; // div of the shape function
+            psi[i]   = (c == 2) ? phi : 0.0;
+          }
+        const double inverse_lambda = qq_here ? inverse_lambda_factor / E.value(x[1]) : 0.0;
+        for (unsigned int i = 0; i < dofs_per_cell; ++i)
+          for (unsigned int j = 0; j <= i; ++j)
+            cell_matrix(i, j) += (trace[i] * psi[j] + psi[i] * trace[j] - inverse_lambda * psi[i] * psi[j]) * weight;
+      }
+    if (!(singular_qq && inverse_lambda_factor != 0.0))
+      return;
+
+    // K_qq in a surface cell: the weights contain xi^{-s}, so the integrand is multiplied by xi^s:
+    // xi^s / E(z) = 1 / (E(z) / xi^s) is the regular factor.
+    FEValues<2>               &inverse = *surface_inverse[surface_face];
+    const std::vector<double> &xi      = distance_inverse[surface_face];
+    inverse.reinit(cell);
+    for (const unsigned int q : inverse.quadrature_point_indices())
+      {
+        const Point<2> &x = inverse.quadrature_point(q);
+        const double    factor =
+          inverse_lambda_factor * std::pow(xi[q], s) / E.value(x[1]) * x[0] * inverse.JxW(q);
+        for (unsigned int i = 0; i < dofs_per_cell; ++i)
+          psi[i] = (fe.system_to_component_index(i).first == 2) ? inverse.shape_value(i, q) : 0.0;
+        for (unsigned int i = 0; i < dofs_per_cell; ++i)
+          for (unsigned int j = 0; j <= i; ++j)
+            cell_matrix(i, j) -= factor * psi[i] * psi[j];
+      }
   }
 
 

@@ -12,6 +12,14 @@
 // that face, whose weights contain xi^s (xi the reference distance from the face), so that the integrand
 // is E(z) / xi^s, a regular function (fem/gauss_jacobi.h).
 //
+// Mixed formulation (fe with a third, pressure component q in FE_Q(p-1); fem/axisymmetric_solver.h):
+//   K_uu = \int [ 2 mu (B_i,rr B_j,rr + B_i,zz B_j,zz + B_i,tt B_j,tt) + mu B_i,rz B_j,rz ] r dr dz,
+//   K_uq = \int tr B_i psi_j r dr dz,   K_qq = - \int psi_i psi_j / lambda r dr dz,
+// each block with the rule that is exact or regular for its integrand: K_uu (carries E) with the rule
+// above; K_uq (polynomial, no E) with plain Gauss (QIterated across a jump), since Gauss-Jacobi would
+// leave the integrand divided by xi^s; K_qq (carries 1/E ~ z^{-s}) with Gauss-Jacobi of exponent -s in
+// the surface cells, integrand xi^s / E(z) regular there. K_qq vanishes at nu = 1/2.
+//
 // Surface load. p(r) = p0 on the faces with boundary id `contact`, pushing into the material (+z):
 //   b_i = \int_face p0 phi_{i,z} r dr.
 #ifndef GRADCONTACT_FEM_ELASTICITY_ASSEMBLY_H
@@ -42,8 +50,9 @@ namespace gradcontact::fem
   void make_homogeneous_constraints(const dealii::DoFHandler<2> &dof_handler, const dealii::Mapping<2> &mapping,
                                     const dealii::FESystem<2> &fe, dealii::AffineConstraints<double> &constraints);
 
-  /// K_cell of a(u, v) for the vector FE (u_r, u_z). Holds the FEValues objects of the three rule
-  /// types; one object per thread of assembly.
+  /// K_cell of a(u, v) for the vector FE (u_r, u_z), or of the mixed form for (u_r, u_z, q) when `fe`
+  /// has three components. Holds the FEValues objects of the three rule types; one object per thread
+  /// of assembly.
   class CellStiffness
   {
   public:
@@ -63,6 +72,15 @@ namespace gradcontact::fem
     std::array<std::vector<double>, 4>         distance;         ///< xi_q per surface rule
     dealii::FullMatrix<double>                 cell_matrix;
     std::vector<std::array<double, 4>>         B;
+
+    // Mixed formulation only.
+    const bool   mixed;
+    const double inverse_lambda_factor; ///< 1/lambda = this / E: (1 + nu)(1 - 2 nu) / nu (0 at nu = 1/2)
+    std::array<std::unique_ptr<dealii::FEValues<2>>, 4> surface_inverse; ///< Gauss-Jacobi, exponent -s
+    std::array<std::vector<double>, 4>         distance_inverse;
+    std::vector<double>                        trace, psi;
+    void add_mixed_blocks(const dealii::DoFHandler<2>::active_cell_iterator &cell, bool straddles,
+                          unsigned int surface_face);
   };
 
   /// b_cell of the constant pressure p0 on the `contact` faces of `cell` (zero if it has none).

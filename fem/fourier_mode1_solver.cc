@@ -331,7 +331,9 @@ namespace gradcontact::fem
                                          const DiscretizationParameters &discretization_,
                                          const SurfaceRefinement &refinement)
     : material((material_.validate(), material_))
-    , discretization((discretization_.validate(), discretization_))
+    , discretization((discretization_.validate(),
+                      require_displacement_formulation(discretization_, material_.nu, "FourierMode1Solver"),
+                      discretization_))
     , fe(FE_Q<2>(discretization_.degree), 3)
     , dof_handler(triangulation)
   {
@@ -344,7 +346,9 @@ namespace gradcontact::fem
   FourierMode1Solver::FourierMode1Solver(const Material &material_, const Triangulation<2> &mesh,
                                          const DiscretizationParameters &discretization_)
     : material((material_.validate(), material_))
-    , discretization((discretization_.validate(), discretization_))
+    , discretization((discretization_.validate(),
+                      require_displacement_formulation(discretization_, material_.nu, "FourierMode1Solver"),
+                      discretization_))
     , fe(FE_Q<2>(discretization_.degree), 3)
     , dof_handler(triangulation)
   {

@@ -384,15 +384,19 @@ namespace gradcontact::fem
     // resolves the pressure near the axis; thinner than 1e-7 a the solve becomes garbage (issue 3,
     // and the energy-mismatch check here: 2e-4 at 1e-7 a, 3e-3 at 1e-8 a for k = -0.5).
     constexpr double stiff_surface_layer = 1e-4;
-    if (!(s > -1 && s < 1))
-      fail("surface_exponent", s, "(-1, 1)");
+    // s = 1: the Gibson medium (9.42), solved by the mixed formulation only (Material::validate).
+    if (!(s > -1 && s <= 1))
+      fail("surface_exponent", s, "(-1, 1]");
     if (!(truncation_tolerance > 0 && truncation_tolerance < 1))
       fail("truncation_tolerance", truncation_tolerance, "(0, 1)");
     MeshParameters p;
     p.contact_radius = contact_radius;
     p.far_field_size = std::clamp(std::pow(truncation_constant / truncation_tolerance, 1 / (1 + s)),
                                   min_far_field, max_far_field);
-    p.surface_layer_thickness = (s > 0) ? singular_surface_layer : (s < 0) ? stiff_surface_layer : 1.0;
+    // s = 1 (Gibson, nu = 1/2): the displacement is regular at z = 0 (w = p / k_W); measured with the
+    // mixed formulation, degree 3: constant-pressure w inside 7.2e-6 with no layer, 1.0e-5 with 1e-10 a.
+    p.surface_layer_thickness =
+      (s >= 1) ? 1.0 : (s > 0) ? singular_surface_layer : (s < 0) ? stiff_surface_layer : 1.0;
     p.validate();
     return p;
   }

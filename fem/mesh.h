@@ -71,6 +71,8 @@ namespace gradcontact::fem
   /// L/a such that the truncation error C (a/L)^{1+s}, C <= 1.1, is below `truncation_tolerance`
   /// (within [1e4, 1e16]); z-halvings to 1e-10 a for s > 0 (u_z ~ z^{1-s} is singular there), to
   /// 1e-4 a for s < 0 (sigma_rr ~ E is singular; thinner cells ruin the condition), none for s = 0.
+  /// -1 < s <= 1 (s = 1: the Gibson medium, mixed formulation only; no surface layer, its displacement
+  /// is regular at z = 0).
   MeshParameters recommended_mesh_parameters(double contact_radius, double surface_exponent,
                                              double truncation_tolerance = 1e-8);
 

@@ -68,8 +68,9 @@ namespace gradcontact::fem
       fail("PowerLawModulus", "E0", E0, "(0, inf)");
     if (!(c0 > 0.0) || !std::isfinite(c0))
       fail("PowerLawModulus", "c0", c0, "(0, inf)");
-    if (!(k > -1.0 && k < 1.0))
-      fail("PowerLawModulus", "k", k, "(-1, 1)");
+    // k = 1 is the Gibson medium (9.42); whether a solver accepts it is decided by Material::validate.
+    if (!(k > -1.0 && k <= 1.0))
+      fail("PowerLawModulus", "k", k, "(-1, 1]");
   }
 
   double PowerLawModulus::value(const double z) const
@@ -254,11 +255,29 @@ namespace gradcontact::fem
 
 
 
-  void Material::validate() const
+  void Material::validate(const bool mixed) const
   {
     if (!modulus)
       throw std::invalid_argument("Material: modulus field is null");
-    if (!(nu > -1.0 && nu < 0.5))
-      fail("Material", "nu", nu, "(-1, 0.5) (incompressible nu = 0.5 needs a mixed formulation)");
+    if (std::isnan(nu))
+      fail("Material", "nu", nu, mixed ? "(0, 0.5]" : "(-1, 0.5)");
+    if (!mixed && !(nu > -1.0 && nu < 0.5))
+      fail("Material", "nu", nu, "(-1, 0.5) (incompressible nu = 0.5 needs the mixed formulation)");
+    // The mixed formulation carries 1/lambda = (1 + nu)(1 - 2 nu) / (nu E): finite for nu > 0 only.
+    if (mixed && !(nu > 0.0 && nu <= 0.5))
+      fail("Material (mixed formulation)", "nu", nu, "(0, 0.5]");
+    const double s = modulus->surface_exponent();
+    if (s >= 1.0)
+      {
+        // E ~ z at the surface: the Gibson medium (9.42-9.44), an incompressible limit. With nu < 1/2
+        // or the displacement formulation the FE model is not meant for it (and the closed forms of
+        // chapter 9.1 need k < 1).
+        if (!mixed)
+          fail("Material", "modulus surface exponent", s,
+               "(-1, 1) (s = 1, the Gibson medium, needs nu = 0.5 and the mixed formulation)");
+        if (!(s == 1.0 && nu == 0.5))
+          fail("Material (mixed formulation)", "modulus surface exponent", s,
+               "(-1, 1), or 1 with nu = 0.5 (the Gibson medium 9.42; nu = " + std::to_string(nu) + ")");
+      }
   }
 } // namespace gradcontact::fem

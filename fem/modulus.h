@@ -3,7 +3,9 @@
 // The half-space occupies z > 0 (z points into the material); the Poisson ratio nu is constant.
 // Three fields are provided, all behind ModulusField so that the assembly never knows which one it sees:
 //
-//   PowerLawModulus     E(z) = E0 (z / c0)^k,  -1 < k < 1                                   (9.1)
+//   PowerLawModulus     E(z) = E0 (z / c0)^k,  -1 < k <= 1                                  (9.1)
+//                       (k = 1 with nu = 1/2 is the Gibson medium, 9.42-9.44: only the mixed
+//                       formulation of the axisymmetric solver accepts it, see Material::validate)
 //   LayeredModulus      N layers [z_{i-1}, z_i] with the exact layer averages of another field,
 //                       E_i = (z_i - z_{i-1})^{-1} \int_{z_{i-1}}^{z_i} E(z) dz, and that field below
 //                       the last interface
@@ -45,7 +47,8 @@ namespace gradcontact::fem
     virtual std::string description() const = 0;
   };
 
-  /// E(z) = E0 (z/c0)^k (9.1), E0 > 0, c0 > 0, -1 < k < 1.
+  /// E(z) = E0 (z/c0)^k (9.1), E0 > 0, c0 > 0, -1 < k <= 1. k = 1 (E = E0 z / c0) is the Gibson
+  /// medium (9.42) when nu = 1/2; a Material with k = 1 is valid only for the mixed formulation.
   class PowerLawModulus : public ModulusField
   {
   public:
@@ -113,14 +116,18 @@ namespace gradcontact::fem
     double exponent;
   };
 
-  /// The graded body: E(z) and a constant Poisson ratio, -1 < nu < 1/2.
+  /// The graded body: E(z) and a constant Poisson ratio, -1 < nu < 1/2 (displacement formulation) or
+  /// 0 < nu <= 1/2 (mixed formulation, fem/axisymmetric_solver.h).
   struct Material
   {
     std::shared_ptr<const ModulusField> modulus;
     double nu = 0.3;
 
     /// Throws std::invalid_argument naming the offending member, its value and the valid range.
-    void validate() const;
+    /// `mixed`: the displacement-pressure formulation, which accepts nu = 1/2 and, with nu = 1/2 only,
+    /// a surface exponent s = 1 (the Gibson medium E = E0 z / c0, 9.42). Without it: -1 < nu < 1/2 and
+    /// -1 < s < 1.
+    void validate(bool mixed = false) const;
   };
 } // namespace gradcontact::fem
 

@@ -7,6 +7,11 @@
 // layers=N layer_depth=D/a: N layers with the exact layer means of the power law over [0, D a], uniform, or
 // with layer_kind=geometric layer_first=t1/a geometric ones (first thickness t1, ratio from D, N);
 // subdiv=m: QIterated copies in cells crossing a layer interface (default 8);
+// formulation = displacement | mixed | automatic (nu -> 0.5, fem/README.md "Mixed formulation");
+// k = 1 (with nu = 0.5, mixed) is the Gibson medium: references from the Winkler law p = 2 E0 w / (3 c0)
+// (9.44); load=pressure then also prints w inside / outside and the transition width at r = a.
+//   fem_study load=pressure k=1 nu=0.5 formulation=mixed
+// vtu=file.vtu writes the fields (u_r, u_z, and q when mixed, E);
 // every key is optional (defaults: the recommended parameters for k). Prints one line per run: key=value pairs.
 #include <fem/axisymmetric_solver.h>
 #include <fem/modulus.h>
@@ -14,6 +19,7 @@
 #include <analytic/material.hpp>
 #include <analytic/normal.hpp>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -60,6 +66,15 @@ int main(int argc, char **argv)
       disc.extra_quadrature_points = static_cast<unsigned>(num("extra_q", disc.extra_quadrature_points));
       disc.discontinuity_subdivisions =
         static_cast<unsigned>(num("subdiv", disc.discontinuity_subdivisions));
+      const std::string formulation = arg.count("formulation") ? arg["formulation"] : "displacement";
+      if (formulation == "mixed")
+        disc.formulation = Formulation::mixed;
+      else if (formulation == "automatic")
+        disc.formulation = Formulation::automatic;
+      else if (formulation != "displacement")
+        throw std::invalid_argument("fem_study: formulation = '" + formulation +
+                                    "' outside {displacement, mixed, automatic}");
+      const bool gibson = (k == 1.0);
 
       const auto start = std::chrono::steady_clock::now();
       Material   material{std::make_shared<PowerLawModulus>(E0, c0, k), nu};
@@ -82,8 +97,10 @@ int main(int argc, char **argv)
             throw std::invalid_argument("fem_study: layer_kind = '" + kind + "' is not uniform or geometric");
         }
       AxisymmetricSolver solver(material, mesh, disc);
+      // The closed forms of chapter 9.1 need k < 1; the Gibson medium (k = 1) has the Winkler law.
       const gradcontact::Medium medium =
-        gradcontact::medium(gradcontact::GradedHalfSpace{E0, c0, k, nu});
+        gradcontact::medium(gradcontact::GradedHalfSpace{E0, c0, gibson ? 0.0 : k, nu});
+      const double winkler = gradcontact::gibson_winkler_modulus(E0, c0); // p / w, 9.44
 
       LoadCase load;
       double   reference = 0;
@@ -102,10 +119,19 @@ int main(int argc, char **argv)
         {
           load.type  = LoadType::flat_punch;
           load.depth = 1e-3 * a;
-          reference  = gradcontact::force(medium, gradcontact::FlatPunch{a}, load.depth);
+          reference  = gibson ? M_PI * a * a * winkler * load.depth
+                              : gradcontact::force(medium, gradcontact::FlatPunch{a}, load.depth);
+        }
+      else if (load_name == "pressure")
+        {
+          load.type     = LoadType::constant_pressure;
+          load.pressure = 1e6;
+          reference     = M_PI * a * a * load.pressure;
         }
       else
         {
+          if (gibson)
+            throw std::invalid_argument("fem_study: k = 1 (Gibson) supports load = punch | pressure");
           load.profile = Profile::power_law(power.n, power.A);
           if (control == "radius")
             load.type = LoadType::indenter;
@@ -123,16 +149,89 @@ int main(int argc, char **argv)
         }
       OutputRequest out;
       const double  a_ref = load_name == "punch" || control == "radius" ? a : a_true;
-      if (load_name != "punch")
+      // Constant pressure: w on 0 .. 2 a (the Winkler comparison and the transition at r = a).
+      constexpr unsigned int n_w = 2000;
+      if (load_name == "pressure")
+        {
+          for (unsigned int i = 0; i <= n_w; ++i)
+            out.displacement_radii.push_back(2 * a * i / n_w);
+          // and a (1 -+ t), t = 1e-9 .. 1e-1 with 20 points per decade, for the transition width
+          for (int j = 0; j <= 160; ++j)
+            for (const double sign : {-1.0, 1.0})
+              out.displacement_radii.push_back(a * (1 + sign * std::pow(10.0, -9 + j / 20.0)));
+          std::sort(out.displacement_radii.begin(), out.displacement_radii.end());
+        }
+      else if (load_name == "punch")
+        {
+          // p(r) of the punch (singular at r = a): L2 and max pointwise error over r < 0.99 a
+          for (unsigned int i = 0; i < 400; ++i)
+            out.pressure_radii.push_back(0.99 * a * (i + 0.5) / 400);
+        }
+      else
         {
           out.displacement_radii = {1.5 * a_ref, 10 * a_ref};
           for (unsigned int i = 0; i < 400; ++i)
             out.pressure_radii.push_back(0.99 * a_ref * (i + 0.5) / 400);
         }
+      if (arg.count("vtu"))
+        out.vtu_file = arg["vtu"];
       const Result r     = solver.run(load, out);
       const double total = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
       double w_err[2] = {0, 0}, p_err = 0, p_norm = 0;
-      if (load_name != "punch")
+      if (load_name == "pressure")
+        {
+          // w against the Winkler value 3 c0 p0 / (2 E0) (Gibson) or w(r) of (9.40): max relative error
+          // inside r <= 0.9 a and outside r >= 1.1 a (relative to w_c), and the transition width: from
+          // first r where w leaves w_W by more than 10 % (1 %) to the last r where |w| exceeds 10 % (1 %)
+          // of w_W (Gibson only).
+          const double w_winkler = load.pressure / winkler;
+          double in = 0, out_max = 0;
+          // first r off the inside value / last r off zero by more than 10 % and 1 % of w_W
+          double first_off[2] = {2 * a, 2 * a}, last_off[2] = {0, 0};
+          for (const Sample &s : r.displacement)
+            {
+              const double w_ref = gibson ? (s.r <= a ? w_winkler : 0.0)
+                                          : gradcontact::displacement(medium, gradcontact::UniformPressure{a, load.pressure}, s.r);
+              const double scale = gibson ? w_winkler : gradcontact::centre_displacement(medium, gradcontact::UniformPressure{a, load.pressure});
+              if (s.r <= 0.9 * a)
+                in = std::max(in, std::abs(s.value - w_ref) / scale);
+              if (s.r >= 1.1 * a)
+                out_max = std::max(out_max, std::abs(s.value - w_ref) / scale);
+              for (unsigned int b = 0; b < 2; ++b)
+                {
+                  const double band = (b == 0 ? 0.1 : 0.01) * w_winkler;
+                  if (std::abs(s.value - w_winkler) > band)
+                    first_off[b] = std::min(first_off[b], s.r);
+                  if (std::abs(s.value) > band)
+                    last_off[b] = std::max(last_off[b], s.r);
+                }
+              if (arg.count("pointwise"))
+                std::printf("r/a=%.6e w_fe=%.10e w_ref=%.10e\n", s.r / a, s.value, w_ref);
+            }
+          std::printf("pressure: w_c/w_ref-1=%.3e max|w-w_ref|/w_c in r<=0.9a=%.3e out r>=1.1a=%.3e "
+                      "w(a)/w_winkler=%.4f transition_10%%/a=%.3e transition_1%%/a=%.3e\n",
+                      r.depth / (gibson ? w_winkler : gradcontact::centre_displacement(medium, gradcontact::UniformPressure{a, load.pressure})) - 1,
+                      in, out_max, r.displacement[n_w / 2 + 161].value / w_winkler, (last_off[0] - first_off[0]) / a,
+                      (last_off[1] - first_off[1]) / a);
+        }
+      else if (load_name == "punch")
+        {
+          double p_max = 0;
+          for (const Sample &s : r.pressure)
+            {
+              const double p = gibson ? winkler * load.depth
+                                      : gradcontact::pressure(medium, gradcontact::FlatPunch{a}, load.depth, s.r);
+              p_err += (s.value - p) * (s.value - p) * s.r;
+              p_norm += p * p * s.r;
+              p_max = std::max(p_max, std::abs(s.value / p - 1));
+            }
+          p_err = std::sqrt(p_err / p_norm);
+          // How close the power law is to the Winkler limit (9.44): closed-form force over pi a^2 k_W d.
+          std::printf("punch: p_max_rel=%.3e F_closed/F_winkler=%.6f\n", p_max,
+                      gibson ? 1.0 : gradcontact::force(medium, gradcontact::FlatPunch{a}, load.depth) /
+                                       (M_PI * a * a * winkler * load.depth));
+        }
+      else
         {
           // FE radius control: compare at the FE depth; depth/force control: at the closed-form state.
           const double a_cmp = control == "radius" ? gradcontact::contact_radius_from_depth(medium, power, r.depth) : a_true;
@@ -153,14 +252,15 @@ int main(int argc, char **argv)
           if (control == "radius")
             reference = gradcontact::force(medium, power, a_cmp);
         }
+      std::printf("formulation=%s nu=%g ", r.formulation == Formulation::mixed ? "mixed" : "displacement", nu);
       std::printf("load=%s control=%s k=%g p=%u h_edge=%g L=%g dofs=%u F_error=%.3e a_error=%.3e d_error=%.3e "
                   "w1.5_error=%.2e w10_error=%.2e p_L2=%.2e iterations=%u set=%u mismatch=%.1e mesh=%.2f "
                   "setup=%.2f assemble=%.2f factorize=%.2f solve=%.2f post=%.2f total=%.2f rings=%u "
                   "layer_ratio=%.6g %s\n",
                   load_name.c_str(), control.c_str(), k, disc.degree, mesh.h_edge, mesh.far_field_size,
                   r.n_dofs, r.force / reference - 1,
-                  load_name == "punch" ? 0.0 : r.contact_radius / a_ref - 1,
-                  load_name == "punch" ? 0.0 : r.depth / gradcontact::depth(medium, power, a_ref) - 1,
+                  load_name == "punch" || load_name == "pressure" ? 0.0 : r.contact_radius / a_ref - 1,
+                  load_name == "punch" || load_name == "pressure" ? 0.0 : r.depth / gradcontact::depth(medium, power, a_ref) - 1,
                   w_err[0], w_err[1], p_err, r.iterations, r.active_set_size, r.energy_mismatch, r.time.mesh,
                   r.time.setup, r.time.assemble, r.time.factorize, r.time.solve, r.time.postprocess, total,
                   r.mesh.n_rings, layer_ratio, r.message.c_str());

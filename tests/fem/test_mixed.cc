@@ -1,0 +1,239 @@
+// Tests of the mixed (Taylor-Hood displacement-pressure) formulation of the axisymmetric solver and of
+// the Gibson medium (issue 7, fem/README.md "Mixed formulation (nu -> 0.5) and the Gibson medium").
+// References: classical closed forms written out here (Boussinesq's flat punch, Hertz's pressure, the
+// Winkler law of the Gibson medium 9.44) and the closed forms of analytic/normal.hpp for k = 0.5, an
+// independent code path. Every tolerance is a measured error times a stated margin.
+#include <fem/axisymmetric_solver.h>
+#include <fem/fourier_mode1_solver.h>
+#include <fem/modulus.h>
+
+#include <analytic/material.hpp>
+#include <analytic/normal.hpp>
+
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <iostream>
+#include <memory>
+#include <stdexcept>
+
+using namespace gradcontact::fem;
+using Catch::Matchers::Contains;
+using Catch::Matchers::WithinRel;
+
+namespace
+{
+  constexpr double E0 = 2.0e9;
+  constexpr double c0 = 3.0e-4;
+  constexpr double a  = 1.0e-4;
+  constexpr double pi = 3.14159265358979323846;
+
+  DiscretizationParameters mixed(const unsigned int degree = 3)
+  {
+    DiscretizationParameters d;
+    d.degree      = degree;
+    d.formulation = Formulation::mixed;
+    return d;
+  }
+
+  /// Relative L2 error of p(r) over the samples (weight r), against `exact`.
+  template <typename F>
+  double pressure_l2_error(const Result &r, const F &exact)
+  {
+    double e = 0, n = 0;
+    for (const Sample &s : r.pressure)
+      {
+        const double p = exact(s.r);
+        e += (s.value - p) * (s.value - p) * s.r;
+        n += p * p * s.r;
+      }
+    return std::sqrt(e / n);
+  }
+
+  /// p(r) at 400 points of r < 0.99 a (the edge itself is excluded: p -> 0 like a square root there).
+  OutputRequest pressure_samples()
+  {
+    OutputRequest out;
+    for (unsigned int i = 0; i < 400; ++i)
+      out.pressure_radii.push_back(0.99 * a * (i + 0.5) / 400);
+    return out;
+  }
+} // namespace
+
+
+
+// Measured (default mesh for k = 0, degree 3, 81 039 DoFs, nu = 0.5): flat punch 5.7e-7, paraboloid p(r)
+// L2 4.1e-6, F 8.0e-8; the displacement formulation at nu = 0.4999 on the same mesh: p(r) L2 2.7e-3
+// (volumetric locking). Tolerances: 4x the measured errors.
+constexpr double mixed_punch_tolerance    = 2.5e-6;
+constexpr double mixed_pressure_tolerance = 1.6e-5;
+
+TEST_CASE("The mixed formulation shall give Boussinesq's punch force and Hertz's pressure at nu = 0.5 (k = 0)",
+          "[fem]")
+{
+  const double nu = 0.5;
+  Material     material{std::make_shared<PowerLawModulus>(E0, c0, 0.0), nu};
+  AxisymmetricSolver solver(material, recommended_mesh_parameters(a, 0.0), mixed());
+  REQUIRE(solver.formulation() == Formulation::mixed);
+  const double E_star = E0 / (1 - nu * nu);
+
+  // Boussinesq: F = 2 E* a d (9.16 with k = 0).
+  LoadCase punch;
+  punch.type         = LoadType::flat_punch;
+  punch.depth        = 1e-3 * a;
+  const Result    rp = solver.run(punch);
+  const double    Fb = 2 * E_star * a * punch.depth;
+  CAPTURE(rp.force, Fb, rp.force / Fb - 1, rp.energy_mismatch, rp.n_dofs, rp.message);
+  REQUIRE(rp.reliable);
+  CHECK_THAT(rp.force, WithinRel(Fb, mixed_punch_tolerance));
+
+  // Hertz: p(r) = (2 E* a / (pi R)) sqrt(1 - r^2/a^2), d = a^2 / R.
+  const double R = 50 * a;
+  LoadCase     sphere;
+  sphere.type        = LoadType::indenter;
+  sphere.profile     = Profile::paraboloid(R);
+  const Result rs    = solver.run(sphere, pressure_samples());
+  const double p_err = pressure_l2_error(rs, [&](const double r) {
+    return 2 * E_star * a / (pi * R) * std::sqrt(1 - r * r / (a * a));
+  });
+  const double d_hertz = a * a / R;
+  std::cout << "[fem] mixed, nu = 0.5, k = 0: punch F " << rp.force / Fb - 1 << ", Hertz p L2 " << p_err
+            << ", d " << rs.depth / d_hertz - 1 << ", " << rs.n_dofs << " DoFs\n";
+  CAPTURE(p_err, rs.depth / d_hertz - 1, rs.energy_mismatch, rs.message);
+  REQUIRE(rs.reliable);
+  REQUIRE(rs.consistent_contact);
+  CHECK(p_err <= mixed_pressure_tolerance);
+  CHECK_THAT(rs.depth, WithinRel(d_hertz, mixed_punch_tolerance));
+}
+
+
+
+// k = 0.5, nu = 0.5 against the closed forms of chapter 9.1 (analytic/normal.hpp), on a mesh cheaper
+// than the recommended one (degree 3, h_edge = 1e-3 a, rings g = 1.6, surface layer 1e-6 a).
+// Measured: punch force 1.55e-5, paraboloid p(r) L2 1.34e-5 (a(d) -1.25e-5), 2.5x margin. (The
+// recommended mesh, 190 378 DoFs: 3.7e-7 and 3.2e-6, 10-20 s, too slow for [fem].)
+constexpr double mixed_k05_punch_tolerance    = 4e-5;
+constexpr double mixed_k05_pressure_tolerance = 3.5e-5;
+
+TEST_CASE("The mixed formulation shall match the power-law closed forms at k = 0.5, nu = 0.5", "[fem]")
+{
+  const double k = 0.5, nu = 0.5;
+  Material     material{std::make_shared<PowerLawModulus>(E0, c0, k), nu};
+  MeshParameters mesh          = recommended_mesh_parameters(a, k);
+  mesh.h_edge                  = 1e-3;
+  mesh.ring_growth             = 1.6;
+  mesh.surface_layer_thickness = 1e-6;
+  AxisymmetricSolver        solver(material, mesh, mixed());
+  const gradcontact::Medium m = gradcontact::medium(gradcontact::GradedHalfSpace{E0, c0, k, nu});
+
+  LoadCase punch;
+  punch.type         = LoadType::flat_punch;
+  punch.depth        = 1e-3 * a;
+  const Result rp    = solver.run(punch);
+  const double F_ref = gradcontact::force(m, gradcontact::FlatPunch{a}, punch.depth);
+
+  const gradcontact::PowerLaw f = gradcontact::as_power_law(gradcontact::Paraboloid{50 * a});
+  LoadCase                    sphere;
+  sphere.type          = LoadType::indenter;
+  sphere.profile       = Profile::paraboloid(50 * a);
+  const Result rs      = solver.run(sphere, pressure_samples());
+  const double a_fe    = gradcontact::contact_radius_from_depth(m, f, rs.depth); // compare at the FE depth
+  const double p_err   = pressure_l2_error(rs, [&](const double r) { return gradcontact::pressure(m, f, a_fe, r); });
+  std::cout << "[fem] mixed, nu = 0.5, k = 0.5: punch F " << rp.force / F_ref - 1 << ", paraboloid p L2 "
+            << p_err << ", a(d) " << a_fe / a - 1 << ", " << rp.n_dofs << " DoFs\n";
+  CAPTURE(rp.force / F_ref - 1, p_err, a_fe / a - 1, rp.energy_mismatch, rs.energy_mismatch, rs.message);
+  REQUIRE(rp.reliable);
+  REQUIRE(rs.reliable);
+  REQUIRE(rs.consistent_contact);
+  CHECK_THAT(rp.force, WithinRel(F_ref, mixed_k05_punch_tolerance));
+  CHECK(p_err <= mixed_k05_pressure_tolerance);
+}
+
+
+
+// The Gibson medium (9.42-9.44): E = E0 z / c0, nu = 1/2 behaves as a Winkler foundation,
+// p = k_W w with k_W = 2 E0 / (3 c0): under p0 on r <= a, w = p0 / k_W inside and 0 outside; a flat
+// punch at depth d carries F = pi a^2 k_W d. Mesh: degree 3, h_edge = 1e-3 a, g = 1.6, no surface layer
+// (the Gibson displacement is regular at z = 0). Measured (33 591 DoFs): |w - p0/k_W| / (p0/k_W) 1.8e-5
+// inside (r <= 0.9 a), 8.4e-5 outside (1.1 a <= r <= 4 a), punch force 8.9e-5; 2.4x margin. (The
+// recommended mesh, 57 279 DoFs, h_edge 1e-5 a: 7.2e-6 inside, 8.7e-8 outside.)
+constexpr double gibson_displacement_tolerance = 2e-4;
+constexpr double gibson_punch_tolerance        = 2e-4;
+
+TEST_CASE("The mixed formulation shall give the Winkler response of the Gibson medium (k = 1, nu = 0.5)",
+          "[fem]")
+{
+  Material       material{std::make_shared<PowerLawModulus>(E0, c0, 1.0), 0.5};
+  MeshParameters mesh          = recommended_mesh_parameters(a, 1.0);
+  mesh.h_edge                  = 1e-3;
+  mesh.ring_growth             = 1.6;
+  mesh.surface_layer_thickness = 1.0;
+  AxisymmetricSolver solver(material, mesh, mixed());
+  const double       k_W = 2 * E0 / (3 * c0); // 9.44, written out (not from the analytic library)
+
+  LoadCase pressure;
+  pressure.type     = LoadType::constant_pressure;
+  pressure.pressure = 1e6;
+  OutputRequest out;
+  // inside away from the edge (r <= 0.9 a) and outside (r >= 1.1 a)
+  for (unsigned int i = 0; i <= 90; ++i)
+    out.displacement_radii.push_back(a * i / 100.0);
+  for (unsigned int i = 110; i <= 400; ++i)
+    out.displacement_radii.push_back(a * i / 100.0);
+  const Result rw        = solver.run(pressure, out);
+  const double w_winkler = pressure.pressure / k_W;
+  double       inside = 0, outside = 0;
+  for (const Sample &s : rw.displacement)
+    (s.r < a ? inside : outside) =
+      std::max(s.r < a ? inside : outside, std::abs(s.value - (s.r < a ? w_winkler : 0.0)) / w_winkler);
+
+  LoadCase punch;
+  punch.type         = LoadType::flat_punch;
+  punch.depth        = 1e-3 * a;
+  const Result rp    = solver.run(punch);
+  const double F_ref = pi * a * a * k_W * punch.depth;
+  std::cout << "[fem] Gibson: w inside " << inside << ", outside " << outside << " (of p0/k_W), punch F "
+            << rp.force / F_ref - 1 << ", " << rp.n_dofs << " DoFs\n";
+  CAPTURE(inside, outside, rp.force / F_ref - 1, rw.energy_mismatch, rp.energy_mismatch, rw.message);
+  REQUIRE(rw.reliable);
+  REQUIRE(rp.reliable);
+  CHECK(inside <= gibson_displacement_tolerance);
+  CHECK(outside <= gibson_displacement_tolerance);
+  CHECK_THAT(rp.force, WithinRel(F_ref, gibson_punch_tolerance));
+}
+
+
+
+TEST_CASE("Bad input to the mixed formulation and the Gibson medium shall throw, naming the parameter", "[fem]")
+{
+  const MeshParameters mesh = recommended_mesh_parameters(a, 0.0);
+  const auto           power_law = [](const double k, const double nu) {
+    return Material{std::make_shared<PowerLawModulus>(E0, c0, k), nu};
+  };
+  // nu = 0.5 needs the mixed formulation
+  REQUIRE_THROWS_WITH(AxisymmetricSolver(power_law(0.0, 0.5), mesh, DiscretizationParameters{}),
+                      Contains("nu = 0.5") && Contains("mixed"));
+  // k = 1 (Gibson) needs the mixed formulation and nu = 0.5
+  REQUIRE_THROWS_WITH(AxisymmetricSolver(power_law(1.0, 0.3), mesh, DiscretizationParameters{}),
+                      Contains("surface exponent = 1"));
+  REQUIRE_THROWS_WITH(AxisymmetricSolver(power_law(1.0, 0.49), mesh, mixed()),
+                      Contains("surface exponent = 1") && Contains("nu = 0.5"));
+  REQUIRE_THROWS_WITH(PowerLawModulus(E0, c0, 1.5), Contains("k = 1.5") && Contains("(-1, 1]"));
+  // the pressure space FE_Q(degree - 1) needs degree >= 2; 1/lambda needs nu > 0
+  REQUIRE_THROWS_WITH(AxisymmetricSolver(power_law(0.0, 0.5), mesh, mixed(1)),
+                      Contains("degree = 1") && Contains("[2, 4]"));
+  DiscretizationParameters automatic;
+  automatic.degree      = 1;
+  automatic.formulation = Formulation::automatic;
+  REQUIRE_THROWS_WITH(AxisymmetricSolver(power_law(0.0, 0.499), mesh, automatic), Contains("degree = 1"));
+  REQUIRE_THROWS_WITH(AxisymmetricSolver(power_law(0.0, 0.0), mesh, mixed()),
+                      Contains("nu = 0") && Contains("(0, 0.5]"));
+  // solvers without the mixed formulation say so
+  REQUIRE_THROWS_WITH(FourierMode1Solver(power_law(0.0, 0.3), mesh, mixed()),
+                      Contains("FourierMode1Solver: not supported with the mixed formulation"));
+  // automatic resolves by nu
+  DiscretizationParameters a3;
+  a3.formulation = Formulation::automatic;
+  CHECK(resolve_formulation(a3, 0.3) == Formulation::displacement);
+  CHECK(resolve_formulation(a3, automatic_mixed_threshold) == Formulation::mixed);
+}
