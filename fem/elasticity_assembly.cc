@@ -110,38 +110,8 @@ namespace gradcontact::fem
 
     const unsigned int dofs_per_cell = fe.n_dofs_per_cell();
     cell_matrix                      = 0;
-    if (mixed)
-      {
-        // K_uu: the deviatoric-like part 2 mu eps:eps with the rule of the displacement formulation
-        // (no lambda term: lambda div u div v is replaced by the q blocks).
-        for (const unsigned int q : fe_values->quadrature_point_indices())
-          {
-            const Point<2> &x       = fe_values->quadrature_point(q);
-            const double    r       = x[0];
-            const double    modulus = (xi ? E.value(x[1]) / std::pow((*xi)[q], s) : E.value(x[1]));
-            const double    mu      = c_mu * modulus;
-            const double    weight  = r * fe_values->JxW(q);
-            for (unsigned int i = 0; i < dofs_per_cell; ++i)
-              {
-                const unsigned int  c    = fe.system_to_component_index(i).first;
-                const double        phi  = fe_values->shape_value(i, q);
-                const Tensor<1, 2> &grad = fe_values->shape_grad(i, q);
-                B[i] = (c == 0) ? std::array<double, 4>{{grad[0], 0.0, phi / r, grad[1]}} :
-                       (c == 1) ? std::array<double, 4>{{0.0, grad[1], 0.0, grad[0]}} :
-                                  std::array<double, 4>{{0.0, 0.0, 0.0, 0.0}};
-              }
-            for (unsigned int i = 0; i < dofs_per_cell; ++i)
-              for (unsigned int j = 0; j <= i; ++j)
-                cell_matrix(i, j) += (2 * mu * (B[i][0] * B[j][0] + B[i][1] * B[j][1] + B[i][2] * B[j][2]) +
-                                      mu * B[i][3] * B[j][3]) *
-                                     weight;
-          }
-        add_mixed_blocks(cell, straddles, surface_face);
-        for (unsigned int i = 0; i < dofs_per_cell; ++i)
-          for (unsigned int j = i + 1; j < dofs_per_cell; ++j)
-            cell_matrix(i, j) = cell_matrix(j, i);
-        return cell_matrix;
-      }
+    // K_uu. The mixed formulation keeps only 2 mu eps:eps (lambda div u div v is replaced by the q blocks
+    // of add_mixed_blocks), and the rows of its q shape functions are zero here.
     for (const unsigned int q : fe_values->quadrature_point_indices())
       {
         const Point<2> &x = fe_values->quadrature_point(q);
@@ -149,7 +119,7 @@ namespace gradcontact::fem
         // With the Gauss-Jacobi rule JxW contains xi^s, so E is divided by it: E(z)/xi^s is the
         // regular factor (E0 (h(x)/c0)^k for the power law, h the local cell height).
         const double modulus = (xi ? E.value(x[1]) / std::pow((*xi)[q], s) : E.value(x[1]));
-        const double lambda  = c_lambda * modulus;
+        const double lambda  = mixed ? 0.0 : c_lambda * modulus;
         const double mu      = c_mu * modulus;
         const double weight  = r * fe_values->JxW(q);
 
@@ -159,7 +129,8 @@ namespace gradcontact::fem
             const double        phi  = fe_values->shape_value(i, q);
             const Tensor<1, 2> &grad = fe_values->shape_grad(i, q);
             B[i] = (c == 0) ? std::array<double, 4>{{grad[0], 0.0, phi / r, grad[1]}} :
-                              std::array<double, 4>{{0.0, grad[1], 0.0, grad[0]}};
+                   (c == 1) ? std::array<double, 4>{{0.0, grad[1], 0.0, grad[0]}} :
+                              std::array<double, 4>{{0.0, 0.0, 0.0, 0.0}};
           }
         for (unsigned int i = 0; i < dofs_per_cell; ++i)
           {
@@ -174,6 +145,8 @@ namespace gradcontact::fem
               }
           }
       }
+    if (mixed)
+      add_mixed_blocks(cell, straddles, surface_face);
     for (unsigned int i = 0; i < dofs_per_cell; ++i)
       for (unsigned int j = i + 1; j < dofs_per_cell; ++j)
         cell_matrix(i, j) = cell_matrix(j, i);

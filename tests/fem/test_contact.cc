@@ -15,6 +15,7 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <functional>
 #include <fstream>
 #include <iostream>
 #include <memory>
@@ -105,6 +106,37 @@ namespace
   constexpr double controlled_force_tolerance  = 1e-5; // issue target
   constexpr double controlled_radius_tolerance = 1e-4; // issue target
   constexpr unsigned int max_control_iterations = 6;
+
+  /// Layered minus pointwise flat-punch force on one coarse mesh (degree 2, h_edge 1e-3 a, g 1.6,
+  /// surface cells `surface_layer` a thin), one row per N: x = ln(1/N) and the relative error, for
+  /// observed_order. `layered(N)` is the layered modulus of N layers; every run must be reliable.
+  std::pair<std::vector<double>, std::vector<double>>
+  layering_errors(const double k, const double surface_layer, const std::vector<unsigned int> &Ns,
+                  const std::function<std::shared_ptr<const ModulusField>(unsigned int)> &layered,
+                  const std::string &label)
+  {
+    MeshParameters mesh = recommended_mesh_parameters(a, k);
+    mesh.h_edge         = 1e-3;
+    mesh.ring_growth    = 1.6;
+    mesh.surface_layer_thickness = surface_layer;
+    DiscretizationParameters disc;
+    disc.degree = 2;
+    LoadCase punch;
+    punch.type  = LoadType::flat_punch;
+    punch.depth = 1e-3 * a;
+    const double F_pointwise = AxisymmetricSolver(power_law_material(k), mesh, disc).run(punch).force;
+    std::vector<double> x, error;
+    for (const unsigned int N : Ns)
+      {
+        const Result r = AxisymmetricSolver(Material{layered(N), nu}, mesh, disc).run(punch);
+        CAPTURE(N, r.energy_mismatch, r.message);
+        REQUIRE(r.reliable);
+        x.push_back(std::log(1.0 / N));
+        error.push_back(r.force / F_pointwise - 1);
+        std::cout << "[verification] " << label << " N = " << N << ": " << error.back() << '\n';
+      }
+    return {x, error};
+  }
 } // namespace
 
 
@@ -241,25 +273,10 @@ TEST_CASE("The layered modulus shall converge to the pointwise one with the obse
   // need N ~ 1e5 uniform layers.
   constexpr double min_layer_order = 0.45, max_layer_order = 0.7;
   const double k = 0.5;
-  MeshParameters mesh = recommended_mesh_parameters(a, k);
-  mesh.h_edge         = 1e-3;
-  mesh.ring_growth    = 1.6;
-  mesh.surface_layer_thickness = 1e-6;
-  DiscretizationParameters disc;
-  disc.degree = 2;
-  LoadCase punch;
-  punch.type  = LoadType::flat_punch;
-  punch.depth = 1e-3 * a;
-  const double F_pointwise = AxisymmetricSolver(power_law_material(k), mesh, disc).run(punch).force;
-  std::vector<double> x, error;
-  for (const unsigned int N : {8u, 16u, 32u})
-    {
-      Material layered{LayeredModulus::uniform(std::make_shared<PowerLawModulus>(E0, c0, k), N, a), nu};
-      const double F = AxisymmetricSolver(layered, mesh, disc).run(punch).force;
-      x.push_back(std::log(1.0 / N));
-      error.push_back(F / F_pointwise - 1);
-      std::cout << "[verification] layered N = " << N << ": " << error.back() << '\n';
-    }
+  const auto [x, error] = layering_errors(
+    k, 1e-6, {8u, 16u, 32u},
+    [&](const unsigned int N) { return LayeredModulus::uniform(std::make_shared<PowerLawModulus>(E0, c0, k), N, a); },
+    "layered");
   const double order = observed_order(x, error);
   CAPTURE(error[0], error[1], error[2], order);
   std::cout << "[verification] layered order " << order << '\n';
@@ -281,29 +298,13 @@ TEST_CASE("Geometric layers shall converge to the pointwise modulus with the obs
   // 5.5e-4, no longer cancels), so the test stops at N = 300.
   constexpr double min_geometric_order = 1.35, max_geometric_order = 1.75;
   const double k = 0.5, depth = 10 * a;
-  MeshParameters mesh = recommended_mesh_parameters(a, k);
-  mesh.h_edge         = 1e-3;
-  mesh.ring_growth    = 1.6;
-  mesh.surface_layer_thickness = 1e-9;
-  DiscretizationParameters disc;
-  disc.degree = 2;
-  LoadCase punch;
-  punch.type  = LoadType::flat_punch;
-  punch.depth = 1e-3 * a;
-  const double F_pointwise = AxisymmetricSolver(power_law_material(k), mesh, disc).run(punch).force;
-  std::vector<double> x, error;
-  for (const unsigned int N : {30u, 100u, 300u})
-    {
-      const double first = depth / (double(N) * N * N);
-      Material layered{LayeredModulus::geometric_to_depth(std::make_shared<PowerLawModulus>(E0, c0, k), N, first,
-                                                          depth), nu};
-      const Result r = AxisymmetricSolver(layered, mesh, disc).run(punch);
-      CAPTURE(N, r.energy_mismatch, r.message);
-      REQUIRE(r.reliable);
-      x.push_back(std::log(1.0 / N));
-      error.push_back(r.force / F_pointwise - 1);
-      std::cout << "[verification] geometric layers N = " << N << ": " << error.back() << '\n';
-    }
+  const auto [x, error] = layering_errors(
+    k, 1e-9, {30u, 100u, 300u},
+    [&](const unsigned int N) {
+      return LayeredModulus::geometric_to_depth(std::make_shared<PowerLawModulus>(E0, c0, k), N,
+                                                depth / (double(N) * N * N), depth);
+    },
+    "geometric layers");
   const double order = observed_order(x, error);
   CAPTURE(error[0], error[1], error[2], order);
   std::cout << "[verification] geometric layers order " << order << '\n';
