@@ -172,6 +172,45 @@ namespace gradcontact::batch
 
     // --- helpers for the numerical path --------------------------------------------------------
 
+    // The numerical MDR's critical state in the request's bracket (a_lo, a_hi), or by default in nine
+    // decades either side of c0, moved by nine decades toward the end where the scan found the minimum,
+    // up to four times: the critical radius of a tip with n + k -> 0 falls far below c0 (5.5e-16 m for
+    // n = 1, k = -0.9, c0 = 1.2e-4 m, a row of the 34-digit references). A minimum still on an end is
+    // refused with mdr::critical_state's "no critical state" message.
+    mdr::CriticalState bracketed_critical_state(const Request &q, const mdr::Profile &f, const Medium &m,
+                                                const double dgamma, const mdr::Control control)
+    {
+      if (q.has("a_lo") || q.has("a_hi"))
+        return mdr::critical_state(f, m, dgamma, control, q.has("a_lo") ? q.number("a_lo") : m.c0 * 1e-9,
+                                   q.has("a_hi") ? q.number("a_hi") : m.c0 * 1e9);
+      double lo = m.c0 * 1e-9, hi = m.c0 * 1e9;
+      for (int shift = 0;; ++shift)
+        {
+          try
+            {
+              return mdr::critical_state(f, m, dgamma, control, lo, hi);
+            }
+          catch (const DomainError &e)
+            {
+              const std::string what = e.what();
+              const bool low = what.find("lower end of the bracket") != std::string::npos;
+              const bool high = what.find("upper end of the bracket") != std::string::npos;
+              if (shift == 4 || !(low || high))
+                throw;
+              if (low)
+                {
+                  hi = lo * 10.;
+                  lo *= 1e-9;
+                }
+              else
+                {
+                  lo = hi / 10.;
+                  hi *= 1e9;
+                }
+            }
+        }
+    }
+
     // Solves increasing(x) = target for x > 0 by expanding a bracket geometrically from `start`.
     double solve_increasing(const std::function<double(double)> &increasing, const double target,
                             const double start, const char *what)
@@ -558,13 +597,9 @@ namespace gradcontact::batch
                                  m, q.number("r"));
       };
       const auto numeric_critical = [](const Request &q) {
-        const Medium m = q.medium();
-        // Default bracket: nine decades either side of c0 (override with a_lo, a_hi).
-        const double lo = q.has("a_lo") ? q.number("a_lo") : m.c0 * 1e-9;
-        const double hi = q.has("a_hi") ? q.number("a_hi") : m.c0 * 1e9;
         const mdr::Control control =
           q.control() == jkr::Control::force ? mdr::Control::force : mdr::Control::displacement;
-        return mdr::critical_state(power_law_profile(q), m, q.number("dgamma"), control, lo, hi);
+        return bracketed_critical_state(q, power_law_profile(q), q.medium(), q.number("dgamma"), control);
       };
       t.numerical_mdr["contact_radius"] = [](const Request &q) {
         const Medium m = q.medium();
@@ -573,10 +608,8 @@ namespace gradcontact::batch
         const double target = by_depth ? q.number("d") : q.number("F");
         check::finite("contact_radius", by_depth ? "d" : "F", target);
         const mdr::Profile f = power_law_profile(q);
-        const double lo = q.has("a_lo") ? q.number("a_lo") : m.c0 * 1e-9;
-        const double hi = q.has("a_hi") ? q.number("a_hi") : m.c0 * 1e9;
-        const mdr::CriticalState c = mdr::critical_state(
-          f, m, dgamma, by_depth ? mdr::Control::displacement : mdr::Control::force, lo, hi);
+        const mdr::CriticalState c = bracketed_critical_state(
+          q, f, m, dgamma, by_depth ? mdr::Control::displacement : mdr::Control::force);
         const auto value = [&](const double a) {
           return by_depth ? numeric_depth(f, m, a, dgamma) : numeric_force(f, m, a, dgamma);
         };

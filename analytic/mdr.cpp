@@ -297,8 +297,8 @@ namespace gradcontact::mdr
     if (best == 0 || best == n_scan - 1)
       throw DomainError(std::string(fn) + ": no critical state in a in [" + check::format(a_lo) + ", " +
                         check::format(a_hi) + "]: the minimum of " +
-                        (control == Control::force ? "F_N(a)" : "d(a)") +
-                        " lies on the end of the bracket");
+                        (control == Control::force ? "F_N(a)" : "d(a)") + " lies on the " +
+                        (best == 0 ? "lower" : "upper") + " end of the bracket");
 
     // 2. Brent's method in log a.
     const auto in_log = [&](const double s) { return objective(a_lo * std::exp(s)); };

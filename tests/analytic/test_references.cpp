@@ -9,6 +9,7 @@
 #include <catch2/catch.hpp>
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <fstream>
 #include <map>
 
@@ -48,7 +49,7 @@ namespace
   {
     for (const Exception &e : exceptions)
       if (group.rfind(e.group_prefix, 0) == 0 && (std::string(e.method).empty() || method == e.method))
-        return e.tolerance;
+        return std::max(e.tolerance, default_tolerance); // an exception loosens, never tightens
     return default_tolerance;
   }
 
