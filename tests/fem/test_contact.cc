@@ -137,6 +137,17 @@ namespace
       }
     return {x, error};
   }
+
+  /// The order fitted over the three rows of layering_errors, required within [lowest, highest].
+  void require_order(const std::vector<double> &x, const std::vector<double> &error, const std::string &label,
+                     const double lowest, const double highest)
+  {
+    const double order = observed_order(x, error);
+    CAPTURE(error[0], error[1], error[2], order);
+    std::cout << "[verification] " << label << " order " << order << '\n';
+    REQUIRE(order >= lowest);
+    REQUIRE(order <= highest);
+  }
 } // namespace
 
 
@@ -277,11 +288,7 @@ TEST_CASE("The layered modulus shall converge to the pointwise one with the obse
     k, 1e-6, {8u, 16u, 32u},
     [&](const unsigned int N) { return LayeredModulus::uniform(std::make_shared<PowerLawModulus>(E0, c0, k), N, a); },
     "layered");
-  const double order = observed_order(x, error);
-  CAPTURE(error[0], error[1], error[2], order);
-  std::cout << "[verification] layered order " << order << '\n';
-  REQUIRE(order >= min_layer_order);
-  REQUIRE(order <= max_layer_order);
+  require_order(x, error, "layered", min_layer_order, max_layer_order);
 }
 
 TEST_CASE("Geometric layers shall converge to the pointwise modulus with the observed order in N",
@@ -305,11 +312,7 @@ TEST_CASE("Geometric layers shall converge to the pointwise modulus with the obs
                                                 depth / (double(N) * N * N), depth);
     },
     "geometric layers");
-  const double order = observed_order(x, error);
-  CAPTURE(error[0], error[1], error[2], order);
-  std::cout << "[verification] geometric layers order " << order << '\n';
-  REQUIRE(order >= min_geometric_order);
-  REQUIRE(order <= max_geometric_order);
+  require_order(x, error, "geometric layers", min_geometric_order, max_geometric_order);
 }
 
 TEST_CASE("LayeredModulus::geometric_to_depth shall end at the depth and reject a first layer too thick",
