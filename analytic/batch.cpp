@@ -173,42 +173,15 @@ namespace gradcontact::batch
     // --- helpers for the numerical path --------------------------------------------------------
 
     // The numerical MDR's critical state in the request's bracket (a_lo, a_hi), or by default in nine
-    // decades either side of c0, moved by nine decades toward the end where the scan found the minimum,
-    // up to four times: the critical radius of a tip with n + k -> 0 falls far below c0 (5.5e-16 m for
-    // n = 1, k = -0.9, c0 = 1.2e-4 m, a row of the 34-digit references). A minimum still on an end is
-    // refused with mdr::critical_state's "no critical state" message.
+    // decades either side of c0, moved toward a minimum found on its end up to four times: the critical
+    // radius of a tip with n + k -> 0 falls far below c0 (5.5e-16 m for n = 1, k = -0.9, c0 = 1.2e-4 m,
+    // a row of the 34-digit references).
     mdr::CriticalState bracketed_critical_state(const Request &q, const mdr::Profile &f, const Medium &m,
                                                 const double dgamma, const mdr::Control control)
     {
-      if (q.has("a_lo") || q.has("a_hi"))
-        return mdr::critical_state(f, m, dgamma, control, q.has("a_lo") ? q.number("a_lo") : m.c0 * 1e-9,
-                                   q.has("a_hi") ? q.number("a_hi") : m.c0 * 1e9);
-      double lo = m.c0 * 1e-9, hi = m.c0 * 1e9;
-      for (int shift = 0;; ++shift)
-        {
-          try
-            {
-              return mdr::critical_state(f, m, dgamma, control, lo, hi);
-            }
-          catch (const DomainError &e)
-            {
-              const std::string what = e.what();
-              const bool low = what.find("lower end of the bracket") != std::string::npos;
-              const bool high = what.find("upper end of the bracket") != std::string::npos;
-              if (shift == 4 || !(low || high))
-                throw;
-              if (low)
-                {
-                  hi = lo * 10.;
-                  lo *= 1e-9;
-                }
-              else
-                {
-                  lo = hi / 10.;
-                  hi *= 1e9;
-                }
-            }
-        }
+      const bool given = q.has("a_lo") || q.has("a_hi");
+      return mdr::critical_state(f, m, dgamma, control, q.has("a_lo") ? q.number("a_lo") : m.c0 * 1e-9,
+                                 q.has("a_hi") ? q.number("a_hi") : m.c0 * 1e9, given ? 0 : 4);
     }
 
     // Solves increasing(x) = target for x > 0 by expanding a bracket geometrically from `start`.

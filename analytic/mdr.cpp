@@ -266,7 +266,7 @@ namespace gradcontact::mdr
   }
 
   CriticalState critical_state(const Profile &profile, const Medium &m, const double dgamma,
-                               const Control control, const double a_lo, const double a_hi)
+                               const Control control, double a_lo, double a_hi, const unsigned int bracket_shifts)
   {
     const char *fn = "mdr critical_state";
     validate(fn, m);
@@ -283,16 +283,34 @@ namespace gradcontact::mdr
       return control == Control::force ? force_of(a) : depth_of(a);
     };
 
-    // 1. A log-spaced scan brackets the global minimum.
+    // 1. A log-spaced scan brackets the global minimum; a minimum on an end moves the bracket toward it
+    //    (bracket_shifts times at most).
     constexpr int n_scan = 49;
-    const double ratio = std::log(a_hi / a_lo) / (n_scan - 1);
-    std::vector<double> values(n_scan);
+    double ratio = 0;
     int best = 0;
-    for (int i = 0; i < n_scan; ++i)
+    for (unsigned int shift = 0;; ++shift)
       {
-        values[i] = objective(a_lo * std::exp(ratio * i));
-        if (values[i] < values[best])
-          best = i;
+        ratio = std::log(a_hi / a_lo) / (n_scan - 1);
+        std::vector<double> values(n_scan);
+        best = 0;
+        for (int i = 0; i < n_scan; ++i)
+          {
+            values[i] = objective(a_lo * std::exp(ratio * i));
+            if (values[i] < values[best])
+              best = i;
+          }
+        if ((best != 0 && best != n_scan - 1) || shift == bracket_shifts)
+          break;
+        if (best == 0)
+          {
+            a_hi = a_lo * 10.;
+            a_lo *= 1e-9;
+          }
+        else
+          {
+            a_lo = a_hi / 10.;
+            a_hi *= 1e9;
+          }
       }
     if (best == 0 || best == n_scan - 1)
       throw DomainError(std::string(fn) + ": no critical state in a in [" + check::format(a_lo) + ", " +

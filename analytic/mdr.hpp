@@ -99,7 +99,9 @@ namespace gradcontact::mdr
   /// The critical (pull-off) state of an adhesive indentation, found by minimising F_N(a) (force
   /// control) or d(a) (displacement control) over a in [a_lo, a_hi] (a log-spaced scan, Brent's
   /// method, then the root of a central-difference derivative), not from 9.48. DomainError when the
-  /// minimum lies on the end of the bracket (no critical state inside it).
+  /// minimum lies on the end of the bracket (no critical state inside it). With bracket_shifts > 0 a
+  /// minimum on an end first moves the bracket by nine decades toward that end (keeping one decade of
+  /// overlap), at most bracket_shifts times.
   CriticalState critical_state(const Profile &profile, const Medium &m, double dgamma, Control control,
-                               double a_lo, double a_hi);
+                               double a_lo, double a_hi, unsigned int bracket_shifts = 0);
 } // namespace gradcontact::mdr

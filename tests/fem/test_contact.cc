@@ -148,6 +148,17 @@ namespace
     REQUIRE(order >= lowest);
     REQUIRE(order <= highest);
   }
+
+  /// The coarse mesh of the convergence studies: recommended for k, but h_edge 1e-3 a, rings g = 1.6,
+  /// h_far 1.5 a (tens of thousands of DoFs at level 0).
+  MeshParameters coarse_test_mesh(const double k)
+  {
+    MeshParameters mesh = recommended_mesh_parameters(a, k);
+    mesh.ring_growth    = 1.6;
+    mesh.h_edge         = 1e-3;
+    mesh.h_far          = 1.5;
+    return mesh;
+  }
 } // namespace
 
 
@@ -347,10 +358,7 @@ TEST_CASE("The convergence-study helper shall tabulate h and p refinement with f
   const double       k = 0.0;
   ConvergenceStudy   study;
   study.material = power_law_material(k);
-  study.base.mesh = recommended_mesh_parameters(a, k);
-  study.base.mesh.ring_growth = 1.6;
-  study.base.mesh.h_edge      = 1e-3;
-  study.base.mesh.h_far       = 1.5;
+  study.base.mesh = coarse_test_mesh(k);
   study.base.discretization.degree = 2;
   study.load.type  = LoadType::flat_punch;
   study.load.depth = 1e-3 * a;
@@ -436,10 +444,7 @@ TEST_CASE("The paraboloid and the cone shall converge under h-refinement with th
   const Indenter       ind  = make_indenter(name);
   ConvergenceStudy     study;
   study.material  = power_law_material(k);
-  study.base.mesh = recommended_mesh_parameters(a, k);
-  study.base.mesh.ring_growth = 1.6;
-  study.base.mesh.h_edge      = 1e-3;
-  study.base.mesh.h_far       = 1.5;
+  study.base.mesh = coarse_test_mesh(k);
   study.base.mesh.axis_refinements = name == "cone" ? axis_refinements : 0;
   study.base.discretization.degree = 1;
   study.load.type    = LoadType::indenter;
