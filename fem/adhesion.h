@@ -1,5 +1,5 @@
 // Adhesive (JKR) contact from the FE model alone: energy release rate, force-depth-radius curves and
-// critical states (issue 5). Nothing here comes from the MDR or any closed form.
+// critical states. Nothing here comes from the MDR or any closed form.
 //
 // The JKR superposition (chapter 9.2, 9.45-9.49, and Johnson-Kendall-Roberts 1971). At contact radius a,
 // the adhesive state is the non-adhesive state of that radius (the depth d_n(a) at which the contact edge

@@ -1,5 +1,5 @@
 // Axisymmetric (Fourier mode 0) linear elasticity of a graded half-space with frictionless normal
-// contact of rigid indenters: the FE reference of gradcontact (issue 3).
+// contact of rigid indenters: the FE reference of gradcontact.
 //
 // Geometry and unknowns. The meridian plane (r, z), z into the material, is the deal.II dim = 2 domain
 // with x = r, y = z (fem/mesh.h). The displacement is u = (u_r, u_z), with u_z > 0 into the material.
@@ -45,8 +45,8 @@
 //   constant_pressure  p = p0 on r <= a (9.37-9.40); the depth reported is the centre displacement w_c.
 //
 // Force. From the reaction, F = 2 pi sum_{i in contact} (A u - b)_i = 2 pi [a(u, phi) - l(phi)] with phi
-// the sum of the contact z-basis functions (1 on the contact); issue 3 measured it 1000x more accurate
-// than integrating sigma_zz. The pressure p(r) is recovered consistently from the same nodal reactions,
+// the sum of the contact z-basis functions (1 on the contact); measured 1000x more accurate than
+// integrating sigma_zz. The pressure p(r) is recovered consistently from the same nodal reactions,
 // M p = R with M the r-weighted mass matrix of the contact line.
 //
 // Everything that does not depend on the load (mesh, DoFs, constraints, sparsity, stiffness matrix and
@@ -55,151 +55,27 @@
 #ifndef GRADCONTACT_FEM_AXISYMMETRIC_SOLVER_H
 #define GRADCONTACT_FEM_AXISYMMETRIC_SOLVER_H
 
+#include <fem/direct_system.h>
+#include <fem/discretization.h>
+#include <fem/loads.h>
 #include <fem/mesh.h>
 #include <fem/modulus.h>
+#include <fem/surface_trace.h>
 
 #include <deal.II/dofs/dof_handler.h>
 #include <deal.II/fe/fe_system.h>
 #include <deal.II/fe/mapping_q1.h>
 #include <deal.II/grid/tria.h>
 #include <deal.II/lac/affine_constraints.h>
-#include <deal.II/lac/sparse_direct.h>
-#include <deal.II/lac/sparse_matrix.h>
-#include <deal.II/lac/sparsity_pattern.h>
 #include <deal.II/lac/vector.h>
 
-#include <functional>
 #include <map>
-#include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace gradcontact::fem
 {
-  /// Which unknowns the axisymmetric solver uses (header comment above).
-  enum class Formulation
-  {
-    displacement, ///< (u_r, u_z) in FE_Q(p); -1 < nu < 1/2; locks as nu -> 1/2
-    mixed,        ///< (u_r, u_z) in FE_Q(p), q = lambda div u in FE_Q(p-1); 0 < nu <= 1/2, p >= 2
-    automatic     ///< mixed for nu >= automatic_mixed_threshold, else displacement
-  };
-
-  /// `automatic` switches to the mixed formulation from this nu on (measured, fem/README.md "Mixed
-  /// formulation", k = 0, degree 3: at nu = 0.45 the mixed flat-punch force error is 5.7e-7 against
-  /// 1.3e-6, the paraboloid p(r) 3.7e-6 against 1.6e-6; from nu = 0.49 on the mixed one wins both).
-  inline constexpr double automatic_mixed_threshold = 0.45;
-
-  struct DiscretizationParameters
-  {
-    unsigned int degree = 3;                  ///< FE_Q degree, 1..4 (of the displacement; 2..4 when mixed)
-    unsigned int extra_quadrature_points = 2; ///< points per direction: degree + this
-    unsigned int discontinuity_subdivisions = 8; ///< QIterated copies in cells crossing a jump of E
-    Formulation  formulation = Formulation::displacement;
-
-    void validate() const;
-  };
-
-  /// The formulation used for Poisson ratio nu: displacement or mixed (never automatic). Throws
-  /// std::invalid_argument when the result is mixed and the degree is 1 (FE_Q(0) does not exist).
-  Formulation resolve_formulation(const DiscretizationParameters &discretization, double nu);
-
-  /// For the solvers without the mixed formulation (distributed, Fourier mode 1): throws
-  /// std::invalid_argument "<where>: not supported with the mixed formulation" when
-  /// resolve_formulation gives mixed.
-  void require_displacement_formulation(const DiscretizationParameters &discretization, double nu,
-                                        const std::string &where);
-
-  /// A mesh and a discretisation chosen together.
-  struct Settings
-  {
-    MeshParameters           mesh;
-    DiscretizationParameters discretization;
-  };
-
-  /// The measured cheapest settings (fem/README.md, "Flat-punch accuracy") for a modulus E ~ z^s at the
-  /// surface and a wanted relative force error. force_tolerance >= 1e-6: degree 3, h_edge = 1e-5 a,
-  /// rings g = 1.15 (flat punch 3.8e-7 / 7.9e-7 / 2.1e-6 for k = -0.5 / 0 / 0.5). Below: degree 4,
-  /// h_edge = 1e-6 a, h_far = 4 a, g = 1.3 (k = 0: 5.2e-8 in about 2 s; k = -0.5: 1.1e-7 in 6 s; k = 0.5
-  /// stays near 1e-6, limited by the u_z ~ z^{1-k} surface layer), and z-halvings only under r <= a.
-  Settings recommended_settings(double contact_radius, double surface_exponent, double force_tolerance);
-
-  /// A rigid axisymmetric indenter profile f(r), f(0) = 0, z into the material.
-  struct Profile
-  {
-    enum class Shape
-    {
-      paraboloid,        ///< f = r^2 / (2 R)                (9.24)
-      cone,              ///< f = r tan(theta)               (9.18)
-      power_law,          ///< f = A r^n                      (9.27)
-      concave_paraboloid, ///< f = -h0 r^2 / a^2, r <= a      (9.31)
-      custom              ///< any convex f(r) given as a function (a user's candidate profile)
-    };
-    Shape  shape     = Shape::paraboloid;
-    double R         = 1.0;
-    double tan_theta = 0.0;
-    double n         = 2.0;
-    double A         = 0.0;
-    double h0        = 0.0;
-
-    static Profile paraboloid(double R);
-    static Profile cone(double tan_theta);
-    static Profile power_law(double n, double A);
-    static Profile concave_paraboloid(double h0);
-    /// Any convex profile with f(0) = 0; `growth_exponent` (f ~ r^n) only seeds the depth and force
-    /// searches of indenter_depth and indenter_force.
-    static Profile custom(std::function<double(double)> f, double growth_exponent);
-    std::function<double(double)> function; ///< custom: f(r)
-    double growth_exponent = 2.0;           ///< custom
-
-    /// f(r); `a` is the punch radius (used by the concave paraboloid only).
-    double operator()(double r, double a) const;
-    /// The power n of f ~ r^n (2, 1, n; 2 for the concave paraboloid).
-    double exponent() const;
-    void   validate() const;
-  };
-
-  enum class LoadType
-  {
-    flat_punch,       ///< prescribed depth d on r <= a
-    indenter,         ///< curved indenter, contact radius a (mesh), depth found
-    indenter_depth,   ///< curved indenter at a given depth, contact radius found on the same mesh
-    indenter_force,   ///< curved indenter at a given force, depth and contact radius found
-    concave_punch,    ///< concave paraboloid, centre displacement d0, complete contact checked
-    constant_pressure ///< p0 on r <= a
-  };
-
-  struct LoadCase
-  {
-    LoadType type     = LoadType::flat_punch;
-    double   depth    = 0.0; ///< d (flat punch, indenter_depth) or d0 (concave punch)
-    double   force    = 0.0; ///< F_N (indenter_force)
-    Profile  profile;        ///< indenter and concave punch
-    double   pressure = 0.0; ///< p0 (constant pressure)
-
-    void validate() const;
-  };
-
-  /// Only what is asked for is computed.
-  struct OutputRequest
-  {
-    std::vector<double> pressure_radii;     ///< sample p(r) here (r <= a)
-    std::vector<double> displacement_radii; ///< sample w(r) = u_z(r, 0) here (any r <= L)
-    std::string         vtu_file;           ///< write the fields here when not empty
-  };
-
-  struct Sample
-  {
-    double r;
-    double value;
-  };
-
-  struct Timings
-  {
-    double mesh = 0, setup = 0, assemble = 0; ///< once per solver (copied into every result)
-    double factorize = 0;                     ///< this run (0 if the factorisation was reused)
-    double solve = 0, postprocess = 0;        ///< this run
-  };
-
   struct Result
   {
     double force          = 0; ///< F_N, compressive positive
@@ -249,29 +125,37 @@ namespace gradcontact::fem
     const dealii::Triangulation<2> &get_triangulation() const { return triangulation; }
 
   private:
-    struct SurfaceFace
+    /// The solved state of one load case, before its checks and outputs.
+    struct State
     {
-      double                                 r0, r1;
-      bool                                   contact;
-      std::vector<double>                    r;    ///< support points of the z-DoFs, ascending
-      std::vector<dealii::types::global_dof_index> dofs; ///< the z-DoFs in the same order
+      dealii::Vector<double> u, reaction; ///< displacement, reactions A u - b
+      std::vector<dealii::types::global_dof_index> active; ///< prescribed surface z-DoFs (contact)
+      std::vector<double> g;            ///< their prescribed values
+      double work         = 0;          ///< work of the prescribed displacements and loads, per 2 pi
+      bool   constrained  = true;       ///< a rigid contact (false: a prescribed pressure)
+      double contact_edge = 0;          ///< radius of the outermost contact node
     };
 
     void make_grid();
     void setup_system();
     void assemble_system();
-    const dealii::SparseDirectUMFPACK &factorization(bool contact_constrained, double &seconds);
-    /// u with u_z = g on the contact DoFs (if contact_constrained) and load b; reactions into R.
-    dealii::Vector<double> solve(bool contact_constrained, const std::vector<double> &g,
-                                 const dealii::Vector<double> &b, dealii::Vector<double> &reaction,
-                                 double &factorize_seconds);
+
+    /// The load cases on the mesh's contact zone r <= a (flat punch, indenter, concave punch), a
+    /// prescribed pressure, and depth or force control (the contact set searched over the vertices).
+    State solve_radius_controlled(const LoadCase &load, Result &result);
+    State solve_pressure(const LoadCase &load, Result &result);
+    State solve_depth_or_force_controlled(const LoadCase &load, Result &result);
+    /// The energy check and, for a contact, the sign check of the contact forces and the gap outside.
+    void check(const LoadCase &load, const State &state, Result &result) const;
+    /// p(r), w(r) and the VTU file, as asked.
+    void sample(const LoadCase &load, const State &state, const OutputRequest &outputs, Result &result) const;
+
     dealii::Vector<double> pressure_load(double p0) const;
-    std::vector<double>    recover_pressure(const dealii::Vector<double> &reaction, double edge) const;
     double evaluate_on_surface(const std::vector<double> &nodal, double r, double contact_edge = -1) const;
 
     /// Depth or force control on this mesh: the contact set {r <= r_j}, r_j a surface vertex, is found
-    /// by a bracketing search over j; each trial is the radius-controlled state of that set, built from
-    /// the contact-constrained factorisation by a small dense correction (see the .cc).
+    /// by a bracketing search over j (ContactSetSearch in the .cc); each trial is the radius-controlled
+    /// state of that set, built from the contact-constrained factorisation by a small dense correction.
     struct TrialSet
     {
       unsigned int                                 vertex;   ///< index into surface_vertex_r
@@ -281,6 +165,7 @@ namespace gradcontact::fem
       double depth = 0;                ///< d at which the edge node carries no force
       double F1 = 0, F2 = 0;           ///< F(d) / (2 pi) = d F1 + F2
     };
+    class ContactSetSearch;
     TrialSet trial_set(unsigned int vertex, const Profile &profile, const dealii::Vector<double> &u1,
                        const dealii::Vector<double> &u2, const dealii::Vector<double> &Au1,
                        const dealii::Vector<double> &Au2);
@@ -301,14 +186,11 @@ namespace gradcontact::fem
     const dealii::MappingQ1<2> mapping;
 
     dealii::AffineConstraints<double> constraints; ///< hanging nodes, axis, far field (homogeneous)
-    dealii::SparsityPattern           sparsity_pattern;
-    dealii::SparseMatrix<double>      stiffness;             ///< A (unconstrained on the surface)
-    dealii::SparseMatrix<double>      contact_stiffness;     ///< A with the contact z-DoFs eliminated
-    std::unique_ptr<dealii::SparseDirectUMFPACK> free_solver, contact_solver;
+    DirectSystem                      system;      ///< A, and A with the contact z-DoFs eliminated
 
     std::vector<dealii::types::global_dof_index> contact_dofs; ///< z-DoFs on r <= a, ascending r
     std::vector<double>                          contact_r;
-    std::vector<SurfaceFace>                     surface_faces; ///< ascending r
+    std::vector<SurfaceFace>                     surface_faces; ///< ascending r; dofs[1]: the z-DoFs
     std::vector<double>                          dof_r;         ///< r of every DoF (support point)
     std::vector<dealii::types::global_dof_index> surface_dofs;  ///< z-DoFs on z = 0, ascending r
     std::vector<double>                          surface_vertex_r; ///< vertices on z = 0, ascending

@@ -1,4 +1,4 @@
-// Convergence studies of the axisymmetric model (issue 3): one struct in, a table of rows out, so that
+// Convergence studies of the axisymmetric model: one struct in, a table of rows out, so that
 // the runner (cases/) writes convergence reports and the [verification] tests assert observed orders
 // from the same code.
 //

@@ -1,8 +1,8 @@
 // The axisymmetric graded half-space on a distributed triangulation (p4est) with Trilinos linear algebra:
-// the variant of fem/axisymmetric_solver.h for runs that outgrow one process (issue 3, last step).
+// the variant of fem/axisymmetric_solver.h for runs that outgrow one process.
 //
 // Same model, same discrete operator: the coarse mesh comes from make_coarse_mesh and is refined by
-// refine_mesh (fem/mesh.h), the cell matrices and loads from fem/elasticity_assembly.h, the material
+// refine_mesh (fem/mesh.h), the cell matrices and loads from fem/graded_elasticity.h, the material
 // from fem/modulus.h. On meshes without z-only halvings the mesh, hence the discrete problem, is the
 // one of the serial solver, and the answers agree to the accuracy of the linear solvers.
 //
@@ -34,7 +34,8 @@
 #ifndef GRADCONTACT_FEM_DISTRIBUTED_SOLVER_H
 #define GRADCONTACT_FEM_DISTRIBUTED_SOLVER_H
 
-#include <fem/axisymmetric_solver.h>
+#include <fem/discretization.h>
+#include <fem/loads.h>
 #include <fem/mesh.h>
 #include <fem/modulus.h>
 

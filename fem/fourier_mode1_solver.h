@@ -1,5 +1,5 @@
 // Fourier mode n = 1 of linear elasticity of the graded half-space: a load in x on an axisymmetric
-// body, solved on the same meridian (r, z) mesh as the axisymmetric solver (issue 6, tangential contact).
+// body, solved on the same meridian (r, z) mesh as the axisymmetric solver (tangential contact).
 //
 // Geometry and unknowns. deal.II dim = 2 with x = r, y = z, z into the material (fem/mesh.h). The
 // displacement of a load in x (the plane theta = 0 contains e_x) has the form
@@ -47,7 +47,7 @@
 //                max_theta u_x = max(U, V), min_theta u_x = min(U, V), max_theta |u_y| = |U - V| / 2 and
 //                mean u_x = (2 / c^2) \int_0^c (U + V)/2 r dr.
 //
-// Quadrature: the stiffness uses the rules of elasticity_assembly.h (Gauss-Jacobi in the cells at z = 0
+// Quadrature: the stiffness uses the rules of graded_elasticity.h (Gauss-Jacobi in the cells at z = 0
 // when E ~ z^s there); the traction integrals are split at `radius` and at the breakpoints of tau
 // (a kink such as the stick radius c) and graded geometrically toward them, 8 Gauss points per piece.
 //
@@ -56,18 +56,17 @@
 #ifndef GRADCONTACT_FEM_FOURIER_MODE1_SOLVER_H
 #define GRADCONTACT_FEM_FOURIER_MODE1_SOLVER_H
 
-#include <fem/axisymmetric_solver.h>
+#include <fem/direct_system.h>
+#include <fem/discretization.h>
 #include <fem/mesh.h>
 #include <fem/modulus.h>
+#include <fem/surface_trace.h>
 
 #include <deal.II/dofs/dof_handler.h>
 #include <deal.II/fe/fe_system.h>
 #include <deal.II/fe/mapping_q1.h>
 #include <deal.II/grid/tria.h>
 #include <deal.II/lac/affine_constraints.h>
-#include <deal.II/lac/sparse_direct.h>
-#include <deal.II/lac/sparse_matrix.h>
-#include <deal.II/lac/sparsity_pattern.h>
 #include <deal.II/lac/vector.h>
 
 #include <array>
@@ -180,17 +179,9 @@ namespace gradcontact::fem
     const dealii::Triangulation<2> &get_triangulation() const { return triangulation; }
 
   private:
-    struct SurfaceFace
-    {
-      double                                       r0, r1;
-      std::vector<double>                          r;       ///< support points, ascending
-      std::array<std::vector<dealii::types::global_dof_index>, 3> dofs; ///< U, V, W DoFs, same order
-    };
-
     void make_grid(const MeshParameters &mesh, const SurfaceRefinement &refinement);
     void setup_system();
     void assemble_system();
-    const dealii::SparseDirectUMFPACK &factorization(bool punch, double &seconds);
     dealii::Vector<double> traction_load(const TangentialLoad &load) const;
     /// Field `component` (0 U, 1 V, 2 W) of the nodal vector on z = 0 at r.
     double surface_value(const dealii::Vector<double> &u, unsigned int component, double r) const;
@@ -208,13 +199,10 @@ namespace gradcontact::fem
     const dealii::MappingQ1<2> mapping;
 
     dealii::AffineConstraints<double> constraints; ///< hanging nodes, axis (W = 0, V = U), far field
-    dealii::SparsityPattern           sparsity_pattern;
-    dealii::SparseMatrix<double>      stiffness;       ///< condensed A (meridian, without the pi)
-    dealii::SparseMatrix<double>      punch_stiffness; ///< A with the punch DoFs eliminated
-    std::unique_ptr<dealii::SparseDirectUMFPACK> free_solver, punch_solver;
+    DirectSystem                      system; ///< A (meridian, without the pi), and A with the punch DoFs eliminated
 
     std::vector<dealii::types::global_dof_index> punch_dofs; ///< free U, V DoFs on r <= a
-    std::vector<SurfaceFace>                     surface_faces; ///< ascending r
+    std::vector<SurfaceFace>                     surface_faces; ///< ascending r; dofs: U, V, W
     Timings                                      setup_time;
   };
 } // namespace gradcontact::fem

@@ -381,8 +381,8 @@ namespace gradcontact::fem
     // Thinnest surface layer for s > 0: the error of u_z ~ z^{1-s} falls like t^{1-s}.
     constexpr double singular_surface_layer = 1e-10;
     // For s < 0 the stresses sigma_rr ~ E eps_rr blow up at the surface: a graded layer to 1e-4 a
-    // resolves the pressure near the axis; thinner than 1e-7 a the solve becomes garbage (issue 3,
-    // and the energy-mismatch check here: 2e-4 at 1e-7 a, 3e-3 at 1e-8 a for k = -0.5).
+    // resolves the pressure near the axis; thinner than 1e-7 a the solve becomes garbage (the
+    // energy-mismatch check: 2e-4 at 1e-7 a, 3e-3 at 1e-8 a for k = -0.5).
     constexpr double stiff_surface_layer = 1e-4;
     // s = 1: the Gibson medium (9.42), solved by the mixed formulation only (Material::validate).
     if (!(s > -1 && s <= 1))

@@ -8,7 +8,7 @@
 //     committed), or, as fallback, a deal.II tensor-product grid with geometric steps;
 //  2. far-field rings: the outer boundary polyline P_i of the near field scaled by g, g^2, ..., g^n,
 //     g^n R1 = L / a, each ring one layer of quads between the polylines g^{j-1} P_i and g^j P_i.
-//     The truncation error of the force falls like (a/L)^{1+k} (issue 3), so L/a = 1e8..1e14 is wanted
+//     The truncation error of the force falls like (a/L)^{1+k}, so L/a = 1e8..1e14 is wanted
 //     and costs only n = log(L / (R1 a)) / log g rings;
 //  3. deal.II refinement: `edge_refinements` isotropic refinements of the cells at (a, 0), then z-only
 //     halvings (anisotropic, parallel to the surface) of the surface cells with r <= halving_radius a

@@ -14,7 +14,7 @@
 // A field may be singular at the surface like z^s (s = k for the power law). It reports s through
 // surface_exponent(); the assembly then integrates the cells touching z = 0 with a Gauss-Jacobi rule that
 // is exact for z^s times a polynomial (fem/gauss_jacobi.h) and asks for the regular factor E(z) / (z/h)^s.
-// Plain Gauss points under-estimate the flat-punch force by 0.4-1.3 % for k < 0 (issue 3).
+// Plain Gauss points under-estimate the flat-punch force by 0.4-1.3 % for k < 0.
 #ifndef GRADCONTACT_FEM_MODULUS_H
 #define GRADCONTACT_FEM_MODULUS_H
 

@@ -1,0 +1,63 @@
+// The linear system of a serial FE model solved by a sparse direct method, with a fixed set P of
+// DoFs whose values can be prescribed (a rigid indenter's contact zone, a tangential punch):
+//   A u = b + R,  u_i = g_i on P (prescribed solves) or R = 0 (free solves),
+// R the reactions, non-zero on P only. P is eliminated symmetrically: a copy of A has the rows and
+// columns of P zeroed and its diagonal kept, the right-hand side is b - A g_ext off P and
+// A_ii g_i on P. Both matrices are factorised (UMFPACK) on first use and kept, so every further load
+// case costs one back substitution. A is condensed with the model's homogeneous constraints (hanging
+// nodes, axis, far field): the rows of constrained DoFs carry their diagonal entry only.
+//
+// The energy check of fem/discretization.h compares u.Au, over the unconstrained DoFs, with the work
+// of the loads.
+#ifndef GRADCONTACT_FEM_DIRECT_SYSTEM_H
+#define GRADCONTACT_FEM_DIRECT_SYSTEM_H
+
+#include <deal.II/base/types.h>
+#include <deal.II/dofs/dof_handler.h>
+#include <deal.II/lac/affine_constraints.h>
+#include <deal.II/lac/sparse_direct.h>
+#include <deal.II/lac/sparse_matrix.h>
+#include <deal.II/lac/sparsity_pattern.h>
+#include <deal.II/lac/vector.h>
+
+#include <memory>
+#include <vector>
+
+namespace gradcontact::fem
+{
+  class DirectSystem
+  {
+  public:
+    /// The sparsity of `dof_handler` under `constraints` (kept by reference: it must outlive this).
+    void reinit(const dealii::DoFHandler<2> &dof_handler, const dealii::AffineConstraints<double> &constraints);
+
+    /// A, to be assembled (condensed with the constraints) before set_prescribed_dofs.
+    dealii::SparseMatrix<double>       &matrix() { return stiffness; }
+    const dealii::SparseMatrix<double> &matrix() const { return stiffness; }
+    const dealii::SparsityPattern      &sparsity() const { return sparsity_pattern; }
+
+    /// Fixes P (unconstrained DoFs) and builds the eliminated copy of A; drops cached factorisations.
+    void set_prescribed_dofs(const std::vector<dealii::types::global_dof_index> &dofs);
+    const std::vector<dealii::types::global_dof_index> &prescribed_dofs() const { return prescribed; }
+
+    /// Solves with u = g on P (`prescribe`, g in the order of prescribed_dofs()) or without (g unused),
+    /// load b (condensed: zero in the rows of constrained DoFs). Returns u with the constraints
+    /// distributed; `reaction` = A u - b. `factorize_seconds`: the time of a factorisation done now, else 0.
+    dealii::Vector<double> solve(bool prescribe, const std::vector<double> &g, const dealii::Vector<double> &b,
+                                 dealii::Vector<double> &reaction, double &factorize_seconds);
+
+    /// u.Au over the unconstrained DoFs (the constrained rows of A hold dummy diagonal entries).
+    double energy(const dealii::Vector<double> &u) const;
+
+  private:
+    const dealii::SparseDirectUMFPACK &factorization(bool prescribe, double &seconds);
+
+    const dealii::AffineConstraints<double>     *constraints = nullptr;
+    dealii::SparsityPattern                      sparsity_pattern;
+    dealii::SparseMatrix<double>                 stiffness, eliminated;
+    std::unique_ptr<dealii::SparseDirectUMFPACK> free_solver, prescribed_solver;
+    std::vector<dealii::types::global_dof_index> prescribed;
+  };
+} // namespace gradcontact::fem
+
+#endif

@@ -1,0 +1,110 @@
+// The vocabulary every FE model of gradcontact shares: how the graded half-space is discretised
+// (element degree, quadrature, formulation), a mesh and a discretisation chosen together, the timings
+// a result reports, and the checks of a solved state with their tolerances.
+//
+// Nothing here belongs to one solver: the axisymmetric (Fourier mode 0), the Fourier mode-1 and the
+// distributed solvers, and the validation models built on them, include this header, not each other.
+#ifndef GRADCONTACT_FEM_DISCRETIZATION_H
+#define GRADCONTACT_FEM_DISCRETIZATION_H
+
+#include <fem/mesh.h>
+
+#include <chrono>
+#include <string>
+
+namespace gradcontact::fem
+{
+  /// Which unknowns a solver uses. The mixed one (Taylor-Hood: displacement in FE_Q(p), the pressure
+  /// q = lambda div u in FE_Q(p - 1)) does not lock as nu -> 1/2 (fem/graded_elasticity.h).
+  enum class Formulation
+  {
+    displacement, ///< displacement only; -1 < nu < 1/2; locks as nu -> 1/2
+    mixed,        ///< displacement and q = lambda div u; 0 < nu <= 1/2, degree >= 2
+    automatic     ///< mixed for nu >= automatic_mixed_threshold, else displacement
+  };
+
+  /// `automatic` switches to the mixed formulation from this nu on: at nu = 0.45 (k = 0, degree 3) the
+  /// two formulations are about equally accurate (flat-punch force 5.7e-7 mixed against 1.3e-6, the
+  /// paraboloid p(r) 3.7e-6 against 1.6e-6); from nu = 0.49 on the mixed one is better in both.
+  inline constexpr double automatic_mixed_threshold = 0.45;
+
+  struct DiscretizationParameters
+  {
+    unsigned int degree = 3;                     ///< FE_Q degree, 1..4 (of the displacement; 2..4 when mixed)
+    unsigned int extra_quadrature_points = 2;    ///< points per direction: degree + this
+    unsigned int discontinuity_subdivisions = 8; ///< QIterated copies in cells crossing a jump of E
+    Formulation  formulation = Formulation::displacement;
+
+    /// Throws std::invalid_argument naming the entry, its value and the valid range.
+    void validate() const;
+  };
+
+  /// The formulation used for Poisson ratio nu: displacement or mixed (never automatic). Throws
+  /// std::invalid_argument when the result is mixed and the degree is 1 (FE_Q(0) does not exist).
+  Formulation resolve_formulation(const DiscretizationParameters &discretization, double nu);
+
+  /// For the solvers without the mixed formulation (distributed, Fourier mode 1): throws
+  /// std::invalid_argument "<where>: not supported with the mixed formulation" when
+  /// resolve_formulation gives mixed.
+  void require_displacement_formulation(const DiscretizationParameters &discretization, double nu,
+                                        const std::string &where);
+
+  /// A mesh and a discretisation chosen together.
+  struct Settings
+  {
+    MeshParameters           mesh;
+    DiscretizationParameters discretization;
+  };
+
+  /// The cheapest settings measured for a modulus E ~ z^s at the surface (s = surface_exponent: k for
+  /// the power law, 0 for a layered or finite-surface modulus) and a wanted relative force error
+  /// (fem/README.md, "Accuracy and cost"). force_tolerance >= 1e-6: degree 3, h_edge = 1e-5 a, rings
+  /// g = 1.15 (flat punch 3.8e-7 / 7.9e-7 / 2.1e-6 for k = -0.5 / 0 / 0.5). Below: degree 4,
+  /// h_edge = 1e-6 a, h_far = 4 a, g = 1.3 (k = 0: 5.2e-8 in about 2 s; k = -0.5: 1.1e-7 in 6 s; k = 0.5
+  /// stays near 1e-6, limited by the u_z ~ z^{1-k} surface layer), and z-halvings only under r <= a.
+  Settings recommended_settings(double contact_radius, double surface_exponent, double force_tolerance);
+
+  /// Wall-clock seconds of the phases of a solve.
+  struct Timings
+  {
+    double mesh = 0, setup = 0, assemble = 0; ///< once per solver (copied into every result)
+    double factorize = 0;                     ///< this run (0 if the factorisation was reused)
+    double solve = 0, postprocess = 0;        ///< this run
+  };
+
+  /// Seconds since `start` (steady clock).
+  inline double seconds_since(const std::chrono::steady_clock::time_point &start)
+  {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  }
+
+  /// Relative tolerance of "this support point sits at r = a": support points are exact up to
+  /// round-off.
+  inline constexpr double node_tolerance = 1e-10;
+
+  /// The energy check of a linear solve. At the discrete solution u.Au equals the work of the
+  /// prescribed displacements and loads; a relative mismatch above this means the solver returned
+  /// garbage (an ill-conditioned system): sound meshes measured <= 4e-9, 3.7e-7 at k = -0.5 with
+  /// 1e-5 a surface cells; 2e-4 .. 3e-3 once k < 0 surface cells are thinner than 1e-7 a.
+  inline constexpr double energy_mismatch_tolerance = 1e-6;
+
+  /// A contact state is inconsistent when a nodal contact force (relative to the largest) or a gap
+  /// (relative to the depth) falls below -this. Not round-off: the nodal forces of Lagrange elements
+  /// of degree >= 2 are not sign-definite where p vanishes like (a - r)^{(1+k)/2}; consistent states
+  /// measured down to -3e-5 (degree 3), a violated complete contact of the concave punch is O(1).
+  inline constexpr double consistency_tolerance = 1e-3;
+
+  /// The outcome of the energy check.
+  struct EnergyCheck
+  {
+    double      mismatch = 0; ///< |energy - work| / |energy|
+    bool        reliable = true;
+    std::string message;      ///< empty when reliable
+  };
+
+  /// |energy - work| / |energy| against energy_mismatch_tolerance; the message names the thinnest
+  /// surface cell (the usual cause) and `details` (e.g. the linear residual of an iterative solve).
+  EnergyCheck check_energy(double energy, double work, double min_surface_cell, const std::string &details = "");
+} // namespace gradcontact::fem
+
+#endif

@@ -1,0 +1,296 @@
+#include <fem/boundary_ids.h>
+#include <fem/gauss_jacobi.h>
+#include <fem/graded_elasticity.h>
+
+#include <deal.II/base/function.h>
+#include <deal.II/base/quadrature_lib.h>
+#include <deal.II/dofs/dof_tools.h>
+#include <deal.II/numerics/vector_tools.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace gradcontact::fem
+{
+  using namespace dealii;
+
+  namespace
+  {
+    const UpdateFlags cell_flags =
+      update_values | update_gradients | update_quadrature_points | update_JxW_values;
+
+    unsigned int n_points(const DiscretizationParameters &d)
+    {
+      return d.degree + d.extra_quadrature_points;
+    }
+  } // namespace
+
+
+
+  GradedCellRules::GradedCellRules(const Material &material, const FESystem<2> &fe, const Mapping<2> &mapping,
+                                   const DiscretizationParameters &discretization, const bool inverse_rules)
+    : s(material.modulus->surface_exponent())
+    , jumps(material.modulus->discontinuities())
+  {
+    const unsigned int n_q = n_points(discretization);
+    regular    = std::make_unique<FEValues<2>>(mapping, fe, QGauss<2>(n_q), cell_flags);
+    subdivided = std::make_unique<FEValues<2>>(
+      mapping, fe, QIterated<2>(QGauss<1>(n_q), discretization.discontinuity_subdivisions), cell_flags);
+    for (unsigned int f = 0; f < 4; ++f)
+      surface[f] = std::make_unique<FEValues<2>>(mapping, fe, surface_cell_quadrature(n_q, s, f, distance[f]),
+                                                 cell_flags);
+    // 1/E ~ z^{-s}: Gauss-Jacobi with exponent -s (needs s < 1; at s = 1, the Gibson medium, nu = 1/2
+    // and no integrand carries 1/E).
+    if (inverse_rules && s != 0.0)
+      for (unsigned int f = 0; f < 4; ++f)
+        surface_inverse[f] = std::make_unique<FEValues<2>>(
+          mapping, fe, surface_cell_quadrature(n_q, -s, f, distance_inverse[f]), cell_flags);
+  }
+
+
+
+  GradedCellRules::Choice GradedCellRules::select(const DoFHandler<2>::active_cell_iterator &cell)
+  {
+    Choice choice{regular.get(), nullptr, false, numbers::invalid_unsigned_int};
+    for (const unsigned int f : cell->face_indices())
+      if (cell->face(f)->at_boundary() && boundary_id::is_surface(cell->face(f)->boundary_id()))
+        choice.surface_face = f;
+    double z_min = std::numeric_limits<double>::max(), z_max = -z_min;
+    for (const unsigned int v : cell->vertex_indices())
+      {
+        z_min = std::min(z_min, cell->vertex(v)[1]);
+        z_max = std::max(z_max, cell->vertex(v)[1]);
+      }
+    choice.straddles =
+      std::any_of(jumps.begin(), jumps.end(), [&](const double z) { return z > z_min && z < z_max; });
+
+    // A jump inside the cell wins over the surface rule (QIterated resolves the jump; E is bounded
+    // away from the surface there).
+    if (choice.straddles)
+      choice.values = subdivided.get();
+    else if (choice.surface_face != numbers::invalid_unsigned_int && s != 0.0)
+      {
+        choice.values = surface[choice.surface_face].get();
+        choice.xi     = &distance[choice.surface_face];
+      }
+    choice.values->reinit(cell);
+    return choice;
+  }
+
+
+
+  FEValues<2> &GradedCellRules::plain(const DoFHandler<2>::active_cell_iterator &cell, const bool straddles)
+  {
+    FEValues<2> &values = straddles ? *subdivided : *regular;
+    values.reinit(cell);
+    return values;
+  }
+
+
+
+  FEValues<2> &GradedCellRules::inverse(const DoFHandler<2>::active_cell_iterator &cell, const unsigned int face,
+                                        const std::vector<double> *&xi)
+  {
+    Assert(surface_inverse[face], ExcMessage("inverse rules were not built"));
+    surface_inverse[face]->reinit(cell);
+    xi = &distance_inverse[face];
+    return *surface_inverse[face];
+  }
+
+
+
+  template <class Strain>
+  GradedElasticityCell<Strain>::GradedElasticityCell(const Material &material_, const FESystem<2> &fe_,
+                                                     const Mapping<2> &mapping,
+                                                     const DiscretizationParameters &discretization)
+    : material(material_)
+    , fe(fe_)
+    , mixed(fe_.n_components() == Strain::n_displacement_components + 1)
+    , inverse_lambda_factor(mixed ? (1 + material_.nu) * (1 - 2 * material_.nu) / material_.nu : 0.0)
+    , rules(material_, fe_, mapping, discretization, mixed && inverse_lambda_factor != 0.0)
+    , cell_matrix(fe_.n_dofs_per_cell(), fe_.n_dofs_per_cell())
+    , B(fe_.n_dofs_per_cell())
+    , trace(fe_.n_dofs_per_cell())
+    , psi(fe_.n_dofs_per_cell())
+  {}
+
+
+
+  template <class Strain>
+  const FullMatrix<double> &GradedElasticityCell<Strain>::matrix(const DoFHandler<2>::active_cell_iterator &cell)
+  {
+    const ModulusField &E        = *material.modulus;
+    const double        nu       = material.nu;
+    const double        c_lambda = nu / ((1 + nu) * (1 - 2 * nu));
+    const double        c_mu     = 1 / (2 * (1 + nu));
+    const double        s        = rules.surface_exponent();
+
+    const GradedCellRules::Choice choice    = rules.select(cell);
+    FEValues<2>                  &fe_values = *choice.values;
+    const std::vector<double>    *xi        = choice.xi;
+
+    const unsigned int dofs_per_cell = fe.n_dofs_per_cell();
+    cell_matrix                      = 0;
+    // K_uu. The mixed formulation keeps only 2 mu eps:eps (lambda div u div v is replaced by the q blocks
+    // of add_mixed_blocks), and the rows of its q shape functions are zero here.
+    for (const unsigned int q : fe_values.quadrature_point_indices())
+      {
+        const Point<2> &x = fe_values.quadrature_point(q);
+        const double    r = x[0];
+        // With the Gauss-Jacobi rule JxW contains xi^s, so E is divided by it: E(z)/xi^s is the
+        // regular factor (E0 (h(x)/c0)^k for the power law, h the local cell height).
+        const double modulus = (xi ? E.value(x[1]) / std::pow((*xi)[q], s) : E.value(x[1]));
+        const double lambda  = mixed ? 0.0 : c_lambda * modulus;
+        const double mu      = c_mu * modulus;
+        const double weight  = r * fe_values.JxW(q);
+
+        for (unsigned int i = 0; i < dofs_per_cell; ++i)
+          {
+            const unsigned int c = fe.system_to_component_index(i).first;
+            B[i] = (c < Strain::n_displacement_components) ?
+                     Strain::of(c, fe_values.shape_value(i, q), fe_values.shape_grad(i, q), r) :
+                     typename Strain::Vector{};
+          }
+        for (unsigned int i = 0; i < dofs_per_cell; ++i)
+          {
+            const auto  &Bi   = B[i];
+            const double tr_i = Bi[0] + Bi[1] + Bi[2];
+            for (unsigned int j = 0; j <= i; ++j)
+              {
+                const auto  &Bj     = B[j];
+                const double tr_j   = Bj[0] + Bj[1] + Bj[2];
+                const double normal = Bi[0] * Bj[0] + Bi[1] * Bj[1] + Bi[2] * Bj[2];
+                double       shear_term;
+                if constexpr (Strain::n_shear == 1)
+                  shear_term = mu * Bi[3] * Bj[3];
+                else
+                  {
+                    double shear = Bi[3] * Bj[3];
+                    for (unsigned int m = 4; m < 3 + Strain::n_shear; ++m)
+                      shear += Bi[m] * Bj[m];
+                    shear_term = mu * shear;
+                  }
+                cell_matrix(i, j) += (lambda * tr_i * tr_j + 2 * mu * normal + shear_term) * weight;
+              }
+          }
+      }
+    if (mixed)
+      add_mixed_blocks(cell, choice);
+    for (unsigned int i = 0; i < dofs_per_cell; ++i)
+      for (unsigned int j = i + 1; j < dofs_per_cell; ++j)
+        cell_matrix(i, j) = cell_matrix(j, i);
+    return cell_matrix;
+  }
+
+
+
+  template <class Strain>
+  void GradedElasticityCell<Strain>::add_mixed_blocks(const DoFHandler<2>::active_cell_iterator &cell,
+                                                      const GradedCellRules::Choice          &choice)
+  {
+    const ModulusField &E             = *material.modulus;
+    const double        s             = rules.surface_exponent();
+    const unsigned int  dofs_per_cell = fe.n_dofs_per_cell();
+    const unsigned int  pressure      = Strain::n_displacement_components;
+    // Surface cells with E ~ z^s, s != 0: K_qq needs its own rule (Gauss-Jacobi, exponent -s).
+    const bool singular_qq =
+      choice.surface_face != numbers::invalid_unsigned_int && s != 0.0 && !choice.straddles;
+    const bool qq_here = inverse_lambda_factor != 0.0 && !singular_qq;
+
+    // K_uq = \int tr B_i psi_j r and, where 1/E is regular, K_qq = -\int psi_i psi_j / lambda r.
+    FEValues<2> &plain = rules.plain(cell, choice.straddles);
+    for (const unsigned int q : plain.quadrature_point_indices())
+      {
+        const Point<2> &x      = plain.quadrature_point(q);
+        const double    r      = x[0];
+        const double    weight = r * plain.JxW(q);
+        for (unsigned int i = 0; i < dofs_per_cell; ++i)
+          {
+            const unsigned int c   = fe.system_to_component_index(i).first;
+            const double       phi = plain.shape_value(i, q);
+            if (c < pressure)
+              {
+                const auto b = Strain::of(c, phi, plain.shape_grad(i, q), r);
+                trace[i]     = b[0] + b[1] + b[2]; // div of the shape function
+              }
+            else
+              trace[i] = 0.0;
+            psi[i] = (c == pressure) ? phi : 0.0;
+          }
+        const double inverse_lambda = qq_here ? inverse_lambda_factor / E.value(x[1]) : 0.0;
+        for (unsigned int i = 0; i < dofs_per_cell; ++i)
+          for (unsigned int j = 0; j <= i; ++j)
+            cell_matrix(i, j) += (trace[i] * psi[j] + psi[i] * trace[j] - inverse_lambda * psi[i] * psi[j]) * weight;
+      }
+    if (!(singular_qq && inverse_lambda_factor != 0.0))
+      return;
+
+    // K_qq in a surface cell: the weights contain xi^{-s}, so the integrand is multiplied by xi^s:
+    // xi^s / E(z) = 1 / (E(z) / xi^s) is the regular factor.
+    const std::vector<double> *xi      = nullptr;
+    FEValues<2>               &inverse = rules.inverse(cell, choice.surface_face, xi);
+    for (const unsigned int q : inverse.quadrature_point_indices())
+      {
+        const Point<2> &x = inverse.quadrature_point(q);
+        const double    factor =
+          inverse_lambda_factor * std::pow((*xi)[q], s) / E.value(x[1]) * x[0] * inverse.JxW(q);
+        for (unsigned int i = 0; i < dofs_per_cell; ++i)
+          psi[i] = (fe.system_to_component_index(i).first == pressure) ? inverse.shape_value(i, q) : 0.0;
+        for (unsigned int i = 0; i < dofs_per_cell; ++i)
+          for (unsigned int j = 0; j <= i; ++j)
+            cell_matrix(i, j) -= factor * psi[i] * psi[j];
+      }
+  }
+
+  template class GradedElasticityCell<AxisymmetricStrain>;
+  template class GradedElasticityCell<Mode1Strain>;
+
+
+
+  void make_homogeneous_constraints(const DoFHandler<2> &dof_handler, const Mapping<2> &mapping,
+                                    const FESystem<2> &fe, AffineConstraints<double> &constraints)
+  {
+    DoFTools::make_hanging_node_constraints(dof_handler, constraints);
+    const unsigned int                       n_components = fe.n_components();
+    const FEValuesExtractors::Scalar radial(0);
+    VectorTools::interpolate_boundary_values(mapping, dof_handler, boundary_id::axis,
+                                                     Functions::ZeroFunction<2>(n_components),
+                                                     constraints, fe.component_mask(radial));
+    // u = 0 on the truncation boundary; the pressure q of the mixed formulation stays free there.
+    const FEValuesExtractors::Vector displacement(0);
+    VectorTools::interpolate_boundary_values(mapping, dof_handler, boundary_id::far_field,
+                                                     Functions::ZeroFunction<2>(n_components),
+                                                     constraints, fe.component_mask(displacement));
+    constraints.close();
+  }
+
+  CellPressureLoad::CellPressureLoad(const FESystem<2> &fe_, const Mapping<2> &mapping,
+                                     const DiscretizationParameters &discretization)
+    : fe(fe_)
+    , face_values(mapping, fe_, QGauss<1>(n_points(discretization)),
+                  update_values | update_quadrature_points | update_JxW_values)
+    , cell_rhs(fe_.n_dofs_per_cell())
+  {}
+
+
+
+  const Vector<double> &CellPressureLoad::vector(const DoFHandler<2>::active_cell_iterator &cell,
+                                                 const double p0, bool &loaded)
+  {
+    cell_rhs = 0;
+    loaded   = false;
+    for (const unsigned int f : cell->face_indices())
+      if (cell->face(f)->at_boundary() && cell->face(f)->boundary_id() == boundary_id::contact)
+        {
+          loaded = true;
+          face_values.reinit(cell, f);
+          for (const unsigned int q : face_values.quadrature_point_indices())
+            for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
+              if (fe.system_to_component_index(i).first == 1)
+                cell_rhs(i) +=
+                  p0 * face_values.shape_value(i, q) * face_values.quadrature_point(q)[0] * face_values.JxW(q);
+        }
+    return cell_rhs;
+  }
+} // namespace gradcontact::fem

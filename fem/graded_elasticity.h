@@ -1,0 +1,196 @@
+// The cell integrals of linear elasticity of the graded half-space, one integrand for every FE model:
+// generic over the strain operator (the axisymmetric Fourier mode 0, the Fourier mode 1 of a load in x,
+// and the mixed displacement-pressure form of either), with one set of quadrature rules.
+//
+// Strain operator. A shape function phi of displacement component c has a strain vector
+// B = (eps_1, eps_2, eps_3, gamma_1, ..., gamma_m): three normal strains first, then m engineering
+// shear strains. With lambda = c_lambda E(z), mu = c_mu E(z), c_lambda = nu / ((1 + nu)(1 - 2 nu)),
+// c_mu = 1 / (2 (1 + nu)) and tr B = eps_1 + eps_2 + eps_3,
+//   K_ij = \int_cell [ lambda tr B_i tr B_j + 2 mu sum_n B_i,n B_j,n + mu sum_s B_i,s B_j,s ] r dr dz.
+// Mode 0 (u_r, u_z), m = 1:   B = (eps_rr, eps_zz, eps_tt, gamma_rz),
+//   eps_rr = d u_r / dr, eps_zz = d u_z / dz, eps_tt = u_r / r, gamma_rz = d u_r / dz + d u_z / dr.
+// Mode 1 (U, V, W) of u_r = U cos, u_theta = -V sin, u_z = W cos (fem/fourier_mode1_solver.h), m = 3:
+//   B = (eps_rr, eps_zz, eps_tt, gamma_rz, gamma_rt, gamma_tz) without the cos / sin factors,
+//   U: (U_r, 0, U/r, U_z, U/r, 0),  V: (0, 0, -V/r, 0, V_r - V/r, V_z),  W: (0, W_z, 0, W_r, 0, W/r);
+//   the integral over theta of cos^2 and sin^2 is pi, so the 3D energy is pi times the meridian form.
+// A 3D operator (Voigt order, m = 3, weight 1 instead of r) fits the same integrand.
+//
+// Mixed formulation (a pressure component q = lambda div u in FE_Q(p-1) after the displacement
+// components; fem/axisymmetric_solver.h):
+//   K_uu = \int [ 2 mu sum_n B_i,n B_j,n + mu sum_s B_i,s B_j,s ] r dr dz,
+//   K_uq = \int tr B_i psi_j r dr dz,   K_qq = - \int psi_i psi_j / lambda r dr dz,
+// each block with the rule that is exact or regular for its integrand: K_uu (carries E) with the rule
+// below; K_uq (polynomial, no E) with plain Gauss (QIterated across a jump), since Gauss-Jacobi would
+// leave the integrand divided by xi^s; K_qq (carries 1/E ~ z^{-s}) with Gauss-Jacobi of exponent -s in
+// the surface cells, integrand xi^s / E(z) regular there. K_qq vanishes at nu = 1/2.
+//
+// Quadrature per cell: QGauss(degree + extra) in the bulk; QIterated copies of it where a jump of E
+// crosses the cell; in the cells with a face on z = 0, when E ~ z^s there (s != 0), Gauss-Jacobi across
+// that face, whose weights contain xi^s (xi the reference distance from the face), so that the integrand
+// is E(z) / xi^s, a regular function (fem/gauss_jacobi.h).
+//
+// Surface load. p(r) = p0 on the faces with boundary id `contact`, pushing into the material (+z):
+//   b_i = \int_face p0 phi_{i,z} r dr.
+#ifndef GRADCONTACT_FEM_GRADED_ELASTICITY_H
+#define GRADCONTACT_FEM_GRADED_ELASTICITY_H
+
+#include <fem/discretization.h>
+#include <fem/modulus.h>
+
+#include <deal.II/base/tensor.h>
+#include <deal.II/dofs/dof_handler.h>
+#include <deal.II/fe/fe_system.h>
+#include <deal.II/fe/fe_values.h>
+#include <deal.II/fe/mapping.h>
+#include <deal.II/lac/affine_constraints.h>
+#include <deal.II/lac/full_matrix.h>
+#include <deal.II/lac/sparse_matrix.h>
+#include <deal.II/lac/vector.h>
+
+#include <array>
+#include <memory>
+#include <vector>
+
+namespace gradcontact::fem
+{
+  /// Axisymmetric (Fourier mode 0) strains of (u_r, u_z): (eps_rr, eps_zz, eps_tt, gamma_rz).
+  struct AxisymmetricStrain
+  {
+    static constexpr unsigned int n_displacement_components = 2;
+    static constexpr unsigned int n_shear                   = 1;
+    using Vector = std::array<double, 3 + n_shear>;
+    /// B of the shape function phi (gradient `grad`) of displacement component c at radius r.
+    static Vector of(unsigned int c, double phi, const dealii::Tensor<1, 2> &grad, double r)
+    {
+      return (c == 0) ? Vector{{grad[0], 0.0, phi / r, grad[1]}} : Vector{{0.0, grad[1], 0.0, grad[0]}};
+    }
+  };
+
+  /// Fourier mode-1 strains of (U, V, W) (header): (eps_rr, eps_zz, eps_tt, gamma_rz, gamma_rt, gamma_tz).
+  struct Mode1Strain
+  {
+    static constexpr unsigned int n_displacement_components = 3;
+    static constexpr unsigned int n_shear                   = 3;
+    using Vector = std::array<double, 3 + n_shear>;
+    static Vector of(unsigned int c, double phi, const dealii::Tensor<1, 2> &grad, double r)
+    {
+      switch (c)
+        {
+          case 0:
+            return {{grad[0], 0.0, phi / r, grad[1], phi / r, 0.0}};
+          case 1:
+            return {{0.0, 0.0, -phi / r, 0.0, grad[0] - phi / r, grad[1]}};
+          default:
+            return {{0.0, grad[1], 0.0, grad[0], 0.0, phi / r}};
+        }
+    }
+  };
+
+  /// The quadrature rules of a graded cell (header): the FEValues of the bulk rule, the QIterated rule
+  /// of cells crossed by a jump of E, and the Gauss-Jacobi rules of the cells on z = 0 (per reference
+  /// face, for the exponent s of E and, when asked, for -s of 1/E). One object per thread of assembly.
+  class GradedCellRules
+  {
+  public:
+    GradedCellRules(const Material &material, const dealii::FESystem<2> &fe, const dealii::Mapping<2> &mapping,
+                    const DiscretizationParameters &discretization, bool inverse_rules);
+
+    /// The rule chosen for one cell, reinit'ed on it.
+    struct Choice
+    {
+      dealii::FEValues<2>       *values;       ///< the rule for integrands carrying E
+      const std::vector<double> *xi;           ///< Gauss-Jacobi: reference distance of each point, else null
+      bool                       straddles;    ///< a jump of E crosses the cell
+      unsigned int               surface_face; ///< face on z = 0, or numbers::invalid_unsigned_int
+    };
+    Choice select(const dealii::DoFHandler<2>::active_cell_iterator &cell);
+
+    /// Bulk or QIterated rule (polynomial integrands), reinit'ed on `cell`.
+    dealii::FEValues<2> &plain(const dealii::DoFHandler<2>::active_cell_iterator &cell, bool straddles);
+    /// Gauss-Jacobi of exponent -s across `face` (integrands carrying 1/E), reinit'ed; xi in `xi`.
+    dealii::FEValues<2> &inverse(const dealii::DoFHandler<2>::active_cell_iterator &cell, unsigned int face,
+                                 const std::vector<double> *&xi);
+
+    double surface_exponent() const { return s; }
+
+  private:
+    const double                                       s;
+    const std::vector<double>                          jumps;
+    std::unique_ptr<dealii::FEValues<2>>               regular, subdivided;
+    std::array<std::unique_ptr<dealii::FEValues<2>>, 4> surface, surface_inverse;
+    std::array<std::vector<double>, 4>                 distance, distance_inverse;
+  };
+
+  /// K_cell of graded elasticity for the strain operator `Strain`; when `fe` has one component more
+  /// than Strain::n_displacement_components, the last one is the pressure q of the mixed formulation.
+  template <class Strain>
+  class GradedElasticityCell
+  {
+  public:
+    GradedElasticityCell(const Material &material, const dealii::FESystem<2> &fe,
+                         const dealii::Mapping<2> &mapping, const DiscretizationParameters &discretization);
+
+    /// The cell matrix (full, symmetric), valid until the next call.
+    const dealii::FullMatrix<double> &matrix(const dealii::DoFHandler<2>::active_cell_iterator &cell);
+
+  private:
+    void add_mixed_blocks(const dealii::DoFHandler<2>::active_cell_iterator &cell,
+                          const GradedCellRules::Choice &choice);
+
+    const Material                      material;
+    const dealii::FESystem<2>          &fe;
+    const bool                          mixed;
+    const double                        inverse_lambda_factor; ///< 1/lambda = this / E (0 at nu = 1/2)
+    GradedCellRules                     rules;
+    dealii::FullMatrix<double>          cell_matrix;
+    std::vector<typename Strain::Vector> B;
+    std::vector<double>                 trace, psi;
+  };
+
+  /// The axisymmetric cell stiffness (mode 0, displacement or mixed).
+  using CellStiffness = GradedElasticityCell<AxisymmetricStrain>;
+  /// The mode-1 cell stiffness.
+  using Mode1CellStiffness = GradedElasticityCell<Mode1Strain>;
+
+  extern template class GradedElasticityCell<AxisymmetricStrain>;
+  extern template class GradedElasticityCell<Mode1Strain>;
+
+  /// Adds the cell matrices of `cell_integrand` (any class with matrix(cell), e.g. CellStiffness) over
+  /// all active cells into `matrix`, condensed with `constraints` (serial triangulation).
+  template <class CellIntegrand>
+  void assemble_matrix(const dealii::DoFHandler<2> &dof_handler, const dealii::AffineConstraints<double> &constraints,
+                       CellIntegrand &cell_integrand, dealii::SparseMatrix<double> &matrix)
+  {
+    std::vector<dealii::types::global_dof_index> local_dof_indices(dof_handler.get_fe().n_dofs_per_cell());
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      {
+        cell->get_dof_indices(local_dof_indices);
+        constraints.distribute_local_to_global(cell_integrand.matrix(cell), local_dof_indices, matrix);
+      }
+  }
+
+  /// The homogeneous constraints every load of the axisymmetric model shares, added to `constraints`
+  /// (which the caller has cleared, and reinit'ed on the relevant DoFs in parallel) and closed:
+  /// hanging nodes, u_r = 0 on the axis, u = 0 on the truncation boundary.
+  void make_homogeneous_constraints(const dealii::DoFHandler<2> &dof_handler, const dealii::Mapping<2> &mapping,
+                                    const dealii::FESystem<2> &fe, dealii::AffineConstraints<double> &constraints);
+
+  /// b_cell of the constant pressure p0 on the `contact` faces of `cell` (zero if it has none).
+  class CellPressureLoad
+  {
+  public:
+    CellPressureLoad(const dealii::FESystem<2> &fe, const dealii::Mapping<2> &mapping,
+                     const DiscretizationParameters &discretization);
+
+    /// The cell vector, valid until the next call; `loaded` is false when the cell has no contact face.
+    const dealii::Vector<double> &vector(const dealii::DoFHandler<2>::active_cell_iterator &cell, double p0,
+                                         bool &loaded);
+
+  private:
+    const dealii::FESystem<2>  &fe;
+    dealii::FEFaceValues<2>     face_values;
+    dealii::Vector<double>      cell_rhs;
+  };
+} // namespace gradcontact::fem
+
+#endif

@@ -1,0 +1,210 @@
+#include <fem/boundary_ids.h>
+#include <fem/discretization.h>
+#include <fem/errors.h>
+#include <fem/surface_trace.h>
+
+#include <deal.II/base/quadrature_lib.h>
+#include <deal.II/grid/tria_accessor.h>
+#include <deal.II/grid/tria_iterator.h>
+#include <deal.II/lac/lapack_full_matrix.h>
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <string>
+
+namespace gradcontact::fem
+{
+  using namespace dealii;
+
+  double lagrange(const std::vector<double> &x, const std::vector<double> &y, const double r)
+  {
+    double sum = 0;
+    for (unsigned int i = 0; i < x.size(); ++i)
+      {
+        double l = 1;
+        for (unsigned int j = 0; j < x.size(); ++j)
+          if (j != i)
+            l *= (r - x[j]) / (x[i] - x[j]);
+        sum += l * y[i];
+      }
+    return sum;
+  }
+
+
+
+  std::vector<SurfaceFace> collect_surface_faces(const DoFHandler<2> &dof_handler,
+                                                 const std::vector<double> &support_r,
+                                                 const unsigned int n_components)
+  {
+    const FiniteElement<2>              &fe = dof_handler.get_fe();
+    std::vector<types::global_dof_index> face_dofs(fe.n_dofs_per_face());
+    std::vector<SurfaceFace>             faces;
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      for (const unsigned int f : cell->face_indices())
+        if (cell->face(f)->at_boundary() && boundary_id::is_surface(cell->face(f)->boundary_id()))
+          {
+            cell->face(f)->get_dof_indices(face_dofs);
+            SurfaceFace face;
+            face.contact = (cell->face(f)->boundary_id() == boundary_id::contact);
+            face.dofs.resize(n_components);
+            for (unsigned int i = 0; i < face_dofs.size(); ++i)
+              {
+                const unsigned int c = fe.face_system_to_component_index(i, f).first;
+                if (c < n_components)
+                  face.dofs[c].push_back(face_dofs[i]);
+              }
+            for (auto &list : face.dofs)
+              std::sort(list.begin(), list.end(),
+                        [&](const auto x, const auto y) { return support_r[x] < support_r[y]; });
+            for (const auto d : face.dofs[0])
+              face.r.push_back(support_r[d]);
+            face.r0 = face.r.front();
+            face.r1 = face.r.back();
+            faces.push_back(std::move(face));
+          }
+    std::sort(faces.begin(), faces.end(), [](const SurfaceFace &x, const SurfaceFace &y) { return x.r0 < y.r0; });
+    return faces;
+  }
+
+
+
+  const SurfaceFace *find_face(const std::vector<SurfaceFace> &faces, const double r, const double limit)
+  {
+    const double end = (limit == std::numeric_limits<double>::max()) ? limit : limit * (1 + node_tolerance);
+    for (const SurfaceFace &face : faces)
+      if (r >= face.r0 && r <= face.r1 && face.r1 <= end)
+        return &face;
+    return nullptr;
+  }
+
+
+
+  void add_graded_interval(const double x0, const double x1, const bool graded_left, const bool graded_right,
+                           const GradedRule &rule, std::vector<std::pair<double, double>> &points)
+  {
+    const QGauss<1> gauss(rule.n_points);
+    auto add = [&](const double y0, const double y1) {
+      for (unsigned int q = 0; q < gauss.size(); ++q)
+        points.emplace_back(y0 + (y1 - y0) * gauss.point(q)[0], (y1 - y0) * gauss.weight(q));
+    };
+    if (!graded_left && !graded_right)
+      return add(x0, x1);
+    // Split at the middle if both ends are graded; grade each half toward its end.
+    const double mid = graded_left && graded_right ? 0.5 * (x0 + x1) : (graded_left ? x1 : x0);
+    if (graded_left)
+      {
+        double hi = mid, length = mid - x0;
+        for (unsigned int j = 0; j < rule.pieces; ++j)
+          {
+            const double lo = (j + 1 == rule.pieces) ? x0 : x0 + length * rule.ratio;
+            add(lo, hi);
+            hi = lo;
+            length *= rule.ratio;
+          }
+      }
+    if (graded_right)
+      {
+        double lo = mid, length = x1 - mid;
+        for (unsigned int j = 0; j < rule.pieces; ++j)
+          {
+            const double hi = (j + 1 == rule.pieces) ? x1 : x1 - length * rule.ratio;
+            add(lo, hi);
+            lo = hi;
+            length *= rule.ratio;
+          }
+      }
+  }
+
+
+
+  std::vector<std::vector<double>> traction_integrals(const std::vector<SurfaceFace> &faces,
+                                                      const std::function<double(double)> &t, const double radius,
+                                                      std::vector<double> cuts, const GradedRule &rule,
+                                                      const char *where)
+  {
+    cuts.push_back(radius);
+    std::sort(cuts.begin(), cuts.end());
+    auto is_cut = [&](const double x) {
+      return std::any_of(cuts.begin(), cuts.end(), [&](const double c) { return std::abs(x - c) <= node_tolerance * c; });
+    };
+    std::vector<std::vector<double>> integrals(faces.size());
+    for (unsigned int k = 0; k < faces.size(); ++k)
+      {
+        const SurfaceFace &face = faces[k];
+        const unsigned int n    = face.r.size();
+        integrals[k].assign(n, 0.0);
+        if (face.r0 >= radius * (1 - node_tolerance))
+          continue;
+        // Pieces of [r0, min(r1, radius)] between the cuts; grade toward a cut inside or at the end.
+        std::vector<double> ends{face.r0};
+        for (const double c : cuts)
+          if (c > face.r0 * (1 + node_tolerance) && c < face.r1 * (1 - node_tolerance))
+            ends.push_back(c);
+        ends.push_back(std::min(face.r1, radius));
+        std::vector<std::pair<double, double>> points;
+        for (unsigned int j = 0; j + 1 < ends.size(); ++j)
+          add_graded_interval(ends[j], ends[j + 1], is_cut(ends[j]), is_cut(ends[j + 1]), rule, points);
+        std::vector<double> unit(n, 0.0);
+        for (const auto &[r, w] : points)
+          {
+            const double value = t(r);
+            if (!std::isfinite(value))
+              fail(where, "tau(r) at r = " + std::to_string(r), value, "finite values");
+            for (unsigned int i = 0; i < n; ++i)
+              {
+                std::fill(unit.begin(), unit.end(), 0.0);
+                unit[i] = 1;
+                integrals[k][i] += value * lagrange(face.r, unit, r) * r * w;
+              }
+          }
+      }
+    return integrals;
+  }
+
+
+
+  std::vector<double> recover_line_density(const std::vector<SurfaceFace> &faces, const unsigned int c,
+                                           const Vector<double> &forces, const double edge,
+                                           const unsigned int n_gauss, const std::size_t n_dofs)
+  {
+    const double limit = edge * (1 + node_tolerance);
+    std::map<types::global_dof_index, unsigned int> index;
+    for (const SurfaceFace &face : faces)
+      if (face.r1 <= limit)
+        for (const auto d : face.dofs[c])
+          index.emplace(d, index.size());
+    const unsigned int       m = index.size();
+    LAPACKFullMatrix<double> M(m, m);
+    const QGauss<1>          quadrature(n_gauss);
+    for (const SurfaceFace &face : faces)
+      if (face.r1 <= limit)
+        {
+          const auto &dofs = face.dofs[c];
+          for (unsigned int q = 0; q < quadrature.size(); ++q)
+            {
+              const double        r = face.r0 + (face.r1 - face.r0) * quadrature.point(q)[0];
+              const double        w = quadrature.weight(q) * (face.r1 - face.r0) * r;
+              std::vector<double> phi(dofs.size());
+              for (unsigned int i = 0; i < dofs.size(); ++i)
+                {
+                  std::vector<double> unit(dofs.size(), 0.0);
+                  unit[i] = 1;
+                  phi[i]  = lagrange(face.r, unit, r);
+                }
+              for (unsigned int i = 0; i < dofs.size(); ++i)
+                for (unsigned int j = 0; j < dofs.size(); ++j)
+                  M(index[dofs[i]], index[dofs[j]]) += phi[i] * phi[j] * w;
+            }
+        }
+    Vector<double> p(m);
+    for (const auto &[dof, i] : index)
+      p[i] = forces[dof];
+    M.compute_lu_factorization();
+    M.solve(p);
+    std::vector<double> nodal(n_dofs, 0.0);
+    for (const auto &[dof, i] : index)
+      nodal[dof] = p[i];
+    return nodal;
+  }
+} // namespace gradcontact::fem
