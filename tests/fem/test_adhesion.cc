@@ -1,4 +1,4 @@
-// Tests of the FE adhesive (JKR) contact, fem/adhesion.h (issue 5). References: the JKR closed forms of
+// Tests of the FE adhesive (JKR) contact, fem/adhesion.h. References: the JKR closed forms of
 // analytic/adhesion.hpp (9.50-9.68, the MDR path, independent of the FE model) and, at k = 0, the
 // classical JKR pull-off forces -3/2 pi dgamma R and -5/6 pi dgamma R (Johnson-Kendall-Roberts 1971,
 // Maugis 2000), which involve neither code.
@@ -60,7 +60,7 @@ namespace
 
 TEST_CASE("The FE energy release rate scales as the power law predicts: a K'(a)/K(a) = 1 + k", "[fem]")
 {
-  // Requirement (issue 5): G(a) from the derivative of the FE flat-punch compliance, checked against the
+  // Requirement: G(a) from the derivative of the FE flat-punch compliance, checked against the
   // scaling identity K ~ a^(1+k) of the power-law medium (dimensional analysis, no closed form).
   const double    k = GENERATE(-0.5, 0.0, 0.5);
   AdhesiveContact punch(power_law_material(k), std::nullopt, test_settings(k));
@@ -88,7 +88,7 @@ TEST_CASE("The FE flat-punch pull-off force and depth agree with 9.51-9.52", "[f
 
 TEST_CASE("The FE paraboloid pull-off reproduces 9.55-9.56 and, at k = 0, JKR", "[fem]")
 {
-  // Requirement (issue 5): pull-off force, critical radius and critical depth within 1e-4 of the closed
+  // Requirement: pull-off force, critical radius and critical depth within 1e-4 of the closed
   // forms under both controls. Measured at degree 2 (fem/README.md, "Adhesion"): <= 3.5e-5.
   const double    k = GENERATE(-0.5, 0.0, 0.5);
   AdhesiveContact sphere(power_law_material(k), Profile::paraboloid(R), test_settings(k));
@@ -137,7 +137,7 @@ TEST_CASE("The FE adhesion model rejects bad input with the parameter named", "[
 
 TEST_CASE("The FE power-law pull-off agrees with 9.60-9.61 and a profile without one is reported", "[fem]")
 {
-  // Requirement (issue 5): power-law profiles f = A r^n; a critical state exists only for 2n + k - 1 > 0
+  // Requirement: power-law profiles f = A r^n; a critical state exists only for 2n + k - 1 > 0
   // (9.60), otherwise "no critical state", never a number.
   const double    k = 0.;
   const double    n = 1.75, A = 0.02 * std::pow(1e-4, 1 - n);
@@ -160,7 +160,7 @@ TEST_CASE("The FE power-law pull-off agrees with 9.60-9.61 and a profile without
 
 TEST_CASE("The FE concave punch separates at the periphery or the centre as 9.65-9.68 predict", "[fem]")
 {
-  // Requirement (issue 5): both mechanisms and the h0 where one takes over from the other.
+  // Requirement: both mechanisms and the h0 where one takes over from the other.
   const double k        = GENERATE(-0.5, 0.0, 0.5);
   const double a        = 1e-4;
   const double sigma_th = 3e6 * std::pow(a / c0, k); // comparable to the edge mechanism for every k
@@ -199,7 +199,7 @@ TEST_CASE("The FE concave punch separates at the periphery or the centre as 9.65
 
 TEST_CASE("The FE surface under a constant tension -sigma_th has the optimal shape 9.71-9.73", "[fem]")
 {
-  // Requirement (issue 5): load the FE model with p = -sigma_th on r < a and compare w(r) (9.71) and the
+  // Requirement: load the FE model with p = -sigma_th on r < a and compare w(r) (9.71) and the
   // centre displacement (9.72); the optimal profile (9.73) is w_c - w(r).
   const double k = GENERATE(-0.5, 0.0, 0.5);
   const double a = 1e-4, sigma_th = 1e6;
@@ -229,7 +229,7 @@ TEST_CASE("The FE surface under a constant tension -sigma_th has the optimal sha
 
 TEST_CASE("The FE pull-off force converges at the energy rate 2p under uniform h-refinement", "[verification]")
 {
-  // Requirement (issue 5): asserted convergence of the FE pull-off force. Degree 1, k = 0, both controls,
+  // Requirement: asserted convergence of the FE pull-off force. Degree 1, k = 0, both controls,
   // uniform refinements 0-2 of every radius's mesh, against 9.56 (= JKR at k = 0). Measured (fem/README.md,
   // "Adhesion"): errors 2.5e-3 -> 6.4e-4 -> 1.6e-4 (force control), order 2.02 over the last three levels.
   const double k = 0.;

@@ -1,5 +1,5 @@
 // Tests of curved indenters, depth and force control, surface displacement, pressure, layered E, VTU
-// output and the convergence-study helper (fem/), issue 3. References: the closed forms of
+// output and the convergence-study helper (fem/). References: the closed forms of
 // analytic/normal.hpp (an independent code path: the MDR closed forms of chapter 9), linked here only.
 // Every tolerance is a measured error (fem/README.md) times a margin of 2.5-5 with its reason.
 #include <fem/axisymmetric_solver.h>
@@ -85,7 +85,7 @@ namespace
   // Radius control, default settings (degree 3, h_edge = 1e-5 a), the mesh graded toward the axis
   // (axis_refinements) for the cone and n = 1.5 whose pressure is singular there. Measured (k = 0 / 0.5):
   // (k = -0.5: force 5.8e-8, w(1.5 a) 2.2e-8, w(10 a) 1.8e-6)
-  // force at the FE depth <= 1.5e-6 (issue target 1e-5); w(1.5 a) <= 1.2e-6 and w(10 a) <= 9.8e-6
+  // force at the FE depth <= 1.5e-6 (required: 1e-5); w(1.5 a) <= 1.2e-6 and w(10 a) <= 9.8e-6
   // (target 1e-5: the 10 a error is the far-field ring resolution, h ~ 0.15 r there);
   // pressure L2 over r < 0.99 a: see pressure_l2_tolerance.
   // Axis grading (MeshParameters::axis_grading = 3, 12 cycles): every cell whose centre is within 3
@@ -99,12 +99,12 @@ namespace
   constexpr double indenter_force_tolerance = 5e-6;
   constexpr double near_displacement_tolerance = 5e-6;
   constexpr double far_displacement_tolerance  = 2e-5; // measured 9.8e-6 at k = 0.5: above the 1e-5 target
-  constexpr double pressure_l2_tolerance       = 1e-4; // the issue's target, for every indenter
+  constexpr double pressure_l2_tolerance       = 1e-4; // the required bound, for every indenter
   // Depth and force control on the mesh graded at a, the answer at a / (1 + 1e-4): measured force
   // error at the given depth 1.1e-7, contact radius 1e-6 .. 1e-5 (the interpolation between the two
   // vertices that bracket the transition), 3 trial sets.
-  constexpr double controlled_force_tolerance  = 1e-5; // issue target
-  constexpr double controlled_radius_tolerance = 1e-4; // issue target
+  constexpr double controlled_force_tolerance  = 1e-5; // the required bound
+  constexpr double controlled_radius_tolerance = 1e-4; // the required bound
   constexpr unsigned int max_control_iterations = 6;
 
   /// Layered minus pointwise flat-punch force on one coarse mesh (degree 2, h_edge 1e-3 a, g 1.6,
@@ -305,7 +305,7 @@ TEST_CASE("The layered modulus shall converge to the pointwise one with the obse
 TEST_CASE("Geometric layers shall converge to the pointwise modulus with the observed order in N",
           "[verification]")
 {
-  // Requirement (issue 7, "Stress at the edges"): N geometric layers with exact layer averages over
+  // Requirement ("Stress at the edges"): N geometric layers with exact layer averages over
   // 0 <= z <= 10 a, first thickness t1 = 10 a / N^3 (the ratio follows from N and the depth), k = 0.5,
   // below 10 a the pointwise field. The layering error alone: layered minus pointwise force on the same
   // mesh (surface cells 1e-9 a, thinner than every t1). Measured on the recommended mesh against the

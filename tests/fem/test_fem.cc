@@ -1,4 +1,4 @@
-// Tests of the axisymmetric FE model of the graded half-space (fem/), issue 3.
+// Tests of the axisymmetric FE model of the graded half-space (fem/).
 //
 // References are the chapter's closed forms, written out here (the FE library never sees them):
 //   h_N(k, nu)                                                         (9.5)-(9.7)
@@ -64,7 +64,7 @@ namespace
   constexpr double flat_punch_tolerance = 5e-6;
   // Paraboloid under contact-radius control: the depth from the edge-node criterion has an O(h_edge)
   // error, measured 4.0e-7 / 6.7e-7 / 8.0e-7 for k = 0 / 0.5 / -0.5 (1.8e-5 for k = -0.5 without the
-  // surface layer). The force at the FE depth: 1.1e-7 / 1.4e-6 / 6.6e-8; the issue's targets are 1e-5
+  // surface layer). The force at the FE depth: 1.1e-7 / 1.4e-6 / 6.6e-8; the required bounds are 1e-5
   // (force at given depth) and 1e-4 (contact radius at given depth).
   constexpr double paraboloid_depth_tolerance = 5e-6;
   constexpr double paraboloid_force_tolerance = 1e-5;
@@ -125,7 +125,7 @@ TEST_CASE("The solver shall reject bad input with a message naming the parameter
       }
     return "";
   };
-  // k = 1 is the Gibson medium since issue 7 (valid for the mixed formulation with nu = 0.5 only).
+  // k = 1 is the Gibson medium (valid for the mixed formulation with nu = 0.5 only).
   CHECK_THAT(message_of([] { PowerLawModulus(E0, c0, 1.0000001); }), Catch::Contains("k = 1.0000001"));
   CHECK_THAT(message_of([] { Material{std::make_shared<PowerLawModulus>(E0, c0, 1.0), 0.3}.validate(); }),
              Catch::Contains("surface exponent = 1"));
@@ -193,7 +193,7 @@ TEST_CASE("The solver shall reproduce the flat-punch force (9.16) and the parabo
   out.displacement_radii = {1.5 * a, 10 * a, 1000 * a};
   const Result hertz  = solver.run(sphere, out);
   // The FE gives a point (a, d, F) of its force-depth-radius curve; compare the force and the contact
-  // radius at the FE depth (the issue's targets 1e-5 and 1e-4), and the depth at the given radius.
+  // radius at the FE depth (the required bounds 1e-5 and 1e-4), and the depth at the given radius.
   const double d_ref   = a * a / ((1 + k) * R);
   auto         force_at_radius = [&](const double r) {
     return 4 * h_N(k, nu) * E0 * std::pow(r, k + 3) /

@@ -1,4 +1,4 @@
-// Tests of the Fourier-mode-1 (tangential) FE model, fem/fourier_mode1_solver.h (issue 6).
+// Tests of the Fourier-mode-1 (tangential) FE model, fem/fourier_mode1_solver.h.
 //
 // References, each from a path independent of the code under test:
 //   3D           an independent 3D deal.II model of the same truncated cylinder (cylinder_3d.h)
@@ -203,7 +203,7 @@ TEST_CASE("For the decoupled pairing (rigid on graded, k = 0.5, nu = 1/(2+k)) th
           "[slow]")
 {
   // Measured (fem/README.md): K_T 3.06e-6 (limited by the u_z ~ z^{1-k} surface layer, as the normal
-  // punch's 2.1e-6); the issue's target is 1e-5. Mean u_x over the stick zone c = a/2 against u0:
+  // punch's 2.1e-6); the required bound is 1e-5. Mean u_x over the stick zone c = a/2 against u0:
   // -2.7e-6 (8 levels toward c; spread of u_x 4.3e-6, max |u_y| 1.9e-6: the theory holds for this
   // pairing); F_x of the traction against (9.80): 2e-16 (quadrature only). 3.7x margin on u0.
   constexpr double K_T_tolerance     = 1e-5;
@@ -254,7 +254,7 @@ TEST_CASE("Under an oscillating tangential force the solver shall follow the unl
   // W = \int_{-F_A}^{F_A} [u_un(F) - u_re(F)] dF, u_re(F) = -u_un(-F), by 12-point Gauss-Legendre in F;
   // the same rule on the closed-form u_un reproduces (9.86) to 2.3e-9, so the quadrature is not the limit.
   // Measured: branch u0 <= 3.9e-8, W 4.1e-7 (without the levels toward c_A: 6e-5 and 8.4e-5).
-  // Tolerances: 10x the measurement; the issue's target for W is 1e-4.
+  // Tolerances: 10x the measurement; the required bound for W is 1e-4.
   constexpr double branch_tolerance = 4e-7;
   constexpr double energy_tolerance = 4e-6;
   namespace t                       = gradcontact::tangential;
@@ -310,7 +310,7 @@ TEST_CASE("Under an oscillating tangential force the solver shall follow the unl
 TEST_CASE("The mode-1 tangential stiffness shall converge at the energy rate 2p under uniform h-refinement",
           "[verification]")
 {
-  // Requirement (issue 6): asserted convergence of the mode-1 model. Degree 1, k = 0, nu = 0.3, uniform
+  // Requirement: asserted convergence of the mode-1 model. Degree 1, k = 0, nu = 0.3, uniform
   // refinements 0-2 of the recommended mesh, K_T against Mindlin's 8 G a / (2 - nu) (independent of the
   // MDR). K_T is an energy (u.Au / delta^2), so the error falls as h^(2p) = h^2.
   const double nu = 0.3, G = E0 / (2 * (1 + nu)), K_ref = 8 * G * a / (2 - nu);

@@ -1,4 +1,4 @@
-// A randomized property run of the FE model (issue 7): a few hundred small FE runs over random materials,
+// A randomized property run of the FE model: a few hundred small FE runs over random materials,
 // meshes and loads must each end in finite answers or in a clear exception (std::invalid_argument naming
 // a parameter, std::runtime_error explaining a failure), never NaN, inf, a hang or a crash. Failures it
 // finds become regression tests in test_fem.cc / test_contact.cc.
