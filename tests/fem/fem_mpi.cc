@@ -11,6 +11,8 @@
 #include <fem/distributed_solver.h>
 #include <fem/modulus.h>
 
+#include "study_arguments.h"
+
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/utilities.h>
 
@@ -32,37 +34,20 @@ int main(int argc, char **argv)
   const bool         root  = dealii::Utilities::MPI::this_mpi_process(world) == 0;
   try
     {
-      std::map<std::string, std::string> arg;
-      for (int i = 1; i < argc; ++i)
-        {
-          const std::string s  = argv[i];
-          const auto        eq = s.find('=');
-          if (eq == std::string::npos)
-            throw std::invalid_argument("fem_mpi: argument '" + s + "' is not key=value");
-          arg[s.substr(0, eq)] = s.substr(eq + 1);
-        }
-      auto num = [&](const std::string &key, const double fallback) {
-        return arg.count(key) ? std::stod(arg[key]) : fallback;
-      };
+      const testing::StudyArguments args(argc, argv, "fem_mpi");
+      auto num = [&](const std::string &key, const double fallback) { return args.num(key, fallback); };
       // The material and loads of fem_study: E0 = 2 GPa, c0 = 0.3 mm, a = 0.1 mm.
       const double E0 = 2e9, c0 = 3e-4, a = 1e-4, nu = num("nu", 0.3);
       const double k  = num("k", 0.0);
-      const std::string load_name = arg.count("load") ? arg["load"] : "punch";
+      const std::string load_name = args.text("load", "punch");
       MeshParameters mesh = recommended_mesh_parameters(a, k, num("truncation", 1e-8));
-      mesh.h_edge                  = num("h_edge", mesh.h_edge);
-      mesh.h_surface               = num("h_surface", mesh.h_surface);
-      mesh.h_far                   = num("h_far", mesh.h_far);
-      mesh.ring_growth             = num("g", mesh.ring_growth);
-      mesh.far_field_size          = num("L", mesh.far_field_size);
-      mesh.surface_layer_thickness = num("layer", 1.0);
-      mesh.near_field_size         = num("R1", mesh.near_field_size);
-      mesh.edge_refinements        = static_cast<unsigned>(num("edge_refinements", mesh.edge_refinements));
-      mesh.axis_refinements        = static_cast<unsigned>(num("axis_refinements", mesh.axis_refinements));
-      mesh.global_refinements      = static_cast<unsigned>(num("global", mesh.global_refinements));
+      // The surface layer defaults to a (p4est cannot make the z-only surface halvings).
+      mesh.surface_layer_thickness = 1.0;
+      args.apply(mesh);
       DiscretizationParameters disc;
-      disc.degree = static_cast<unsigned>(num("p", disc.degree));
+      args.apply(disc);
       DistributedSolverParameters parameters;
-      const std::string solver_name = arg.count("solver") ? arg["solver"] : "direct";
+      const std::string solver_name = args.text("solver", "direct");
       if (solver_name == "amg")
         parameters.method = DistributedSolverParameters::Method::amg_cg;
       else if (solver_name != "direct")
@@ -113,7 +98,7 @@ int main(int argc, char **argv)
                     r.time.factorize, r.time.solve, total, peak_max, peak_sum, r.message.c_str());
 
       int failed = r.reliable && r.consistent_contact ? 0 : 1;
-      if (arg.count("compare") && num("compare", 0) != 0)
+      if (args.has("compare") && num("compare", 0) != 0)
         {
           // The serial reference on process 0 (the others wait): same mesh, same operator, UMFPACK.
           const double tolerance = num("compare_tol", 1e-10);

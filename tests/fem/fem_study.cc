@@ -16,6 +16,8 @@
 #include <fem/axisymmetric_solver.h>
 #include <fem/modulus.h>
 
+#include "study_arguments.h"
+
 #include <analytic/material.hpp>
 #include <analytic/normal.hpp>
 
@@ -34,57 +36,27 @@ int main(int argc, char **argv)
 {
   try
     {
-      std::map<std::string, std::string> arg;
-      for (int i = 1; i < argc; ++i)
-        {
-          const std::string s = argv[i];
-          const auto        eq = s.find('=');
-          if (eq == std::string::npos)
-            throw std::invalid_argument("fem_study: argument '" + s + "' is not key=value");
-          arg[s.substr(0, eq)] = s.substr(eq + 1);
-        }
-      auto num = [&](const std::string &key, const double fallback) {
-        return arg.count(key) ? std::stod(arg[key]) : fallback;
-      };
+      const testing::StudyArguments args(argc, argv, "fem_study");
+      auto num = [&](const std::string &key, const double fallback) { return args.num(key, fallback); };
       const double E0 = 2e9, c0 = 3e-4, a = 1e-4, nu = num("nu", 0.3);
       const double k  = num("k", 0.0);
-      const std::string load_name = arg.count("load") ? arg["load"] : "punch";
+      const std::string load_name = args.text("load", "punch");
       MeshParameters mesh = recommended_mesh_parameters(a, k, num("truncation", 1e-8));
-      mesh.h_edge         = num("h_edge", mesh.h_edge);
-      mesh.h_surface      = num("h_surface", mesh.h_surface);
-      mesh.h_far          = num("h_far", mesh.h_far);
-      mesh.axis_refinements = static_cast<unsigned>(num("axis_refinements", 0));
-      mesh.ring_growth    = num("g", mesh.ring_growth);
-      mesh.far_field_size = num("L", mesh.far_field_size);
-      mesh.surface_layer_thickness = num("layer", mesh.surface_layer_thickness);
-      mesh.near_field_size         = num("R1", mesh.near_field_size);
-      mesh.halving_radius          = num("halving_radius", mesh.halving_radius);
-      mesh.edge_refinements   = static_cast<unsigned>(num("edge_refinements", mesh.edge_refinements));
-      mesh.global_refinements = static_cast<unsigned>(num("global", mesh.global_refinements));
+      mesh.axis_refinements = 0;
+      args.apply(mesh);
       DiscretizationParameters disc;
-      disc.degree                  = static_cast<unsigned>(num("p", disc.degree));
-      disc.extra_quadrature_points = static_cast<unsigned>(num("extra_q", disc.extra_quadrature_points));
-      disc.discontinuity_subdivisions =
-        static_cast<unsigned>(num("subdiv", disc.discontinuity_subdivisions));
-      const std::string formulation = arg.count("formulation") ? arg["formulation"] : "displacement";
-      if (formulation == "mixed")
-        disc.formulation = Formulation::mixed;
-      else if (formulation == "automatic")
-        disc.formulation = Formulation::automatic;
-      else if (formulation != "displacement")
-        throw std::invalid_argument("fem_study: formulation = '" + formulation +
-                                    "' outside {displacement, mixed, automatic}");
+      args.apply(disc);
       const bool gibson = (k == 1.0);
 
       const auto start = std::chrono::steady_clock::now();
       Material   material{std::make_shared<PowerLawModulus>(E0, c0, k), nu};
       double layer_ratio = 0;
-      if (arg.count("layers"))
+      if (args.has("layers"))
         {
           const auto         base     = std::make_shared<PowerLawModulus>(E0, c0, k);
           const unsigned int n_layers = static_cast<unsigned>(num("layers", 1));
           const double       depth    = num("layer_depth", 1.0) * a;
-          const std::string  kind     = arg.count("layer_kind") ? arg["layer_kind"] : "uniform";
+          const std::string  kind     = args.text("layer_kind", "uniform");
           if (kind == "uniform")
             material.modulus = LayeredModulus::uniform(base, n_layers, depth);
           else if (kind == "geometric")
@@ -106,7 +78,7 @@ int main(int argc, char **argv)
       double   reference = 0;
       // Indenters: a_true is the contact radius of the closed form; the mesh is graded at
       // a_mesh = a_true * shift (control=depth|force find the radius on that mesh).
-      const std::string control = arg.count("control") ? arg["control"] : "radius";
+      const std::string control = args.text("control", "radius");
       const double      a_true  = a / num("shift", 1.0);
       gradcontact::PowerLaw power{num("n", 2.0), num("A", 1.0)};
       if (load_name == "paraboloid")
@@ -173,8 +145,8 @@ int main(int argc, char **argv)
           for (unsigned int i = 0; i < 400; ++i)
             out.pressure_radii.push_back(0.99 * a_ref * (i + 0.5) / 400);
         }
-      if (arg.count("vtu"))
-        out.vtu_file = arg["vtu"];
+      if (args.has("vtu"))
+        out.vtu_file = args.text("vtu");
       const Result r     = solver.run(load, out);
       const double total = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
       double w_err[2] = {0, 0}, p_err = 0, p_norm = 0;
@@ -205,7 +177,7 @@ int main(int argc, char **argv)
                   if (std::abs(s.value) > band)
                     last_off[b] = std::max(last_off[b], s.r);
                 }
-              if (arg.count("pointwise"))
+              if (args.has("pointwise"))
                 std::printf("r/a=%.6e w_fe=%.10e w_ref=%.10e\n", s.r / a, s.value, w_ref);
             }
           std::printf("pressure: w_c/w_ref-1=%.3e max|w-w_ref|/w_c in r<=0.9a=%.3e out r>=1.1a=%.3e "
@@ -243,7 +215,7 @@ int main(int argc, char **argv)
           for (const Sample &s : r.pressure)
             {
               const double p = gradcontact::pressure(medium, power, a_cmp, s.r);
-              if (arg.count("pointwise"))
+              if (args.has("pointwise"))
                 std::printf("r/a=%.6e p_fe=%.10e p_exact=%.10e rel=%.3e\n", s.r / a_ref, s.value, p, s.value / p - 1);
               p_err += (s.value - p) * (s.value - p) * s.r;
               p_norm += p * p * s.r;

@@ -12,6 +12,8 @@
 #include <fem/fourier_mode1_solver.h>
 #include <fem/modulus.h>
 
+#include "study_arguments.h"
+
 #include "cylinder_3d.h"
 
 #include <analytic/material.hpp>
@@ -34,19 +36,9 @@ int main(int argc, char **argv)
 {
   try
     {
-      std::map<std::string, std::string> arg;
-      for (int i = 1; i < argc; ++i)
-        {
-          const std::string s  = argv[i];
-          const auto        eq = s.find('=');
-          if (eq == std::string::npos)
-            throw std::invalid_argument("mode1_study: argument '" + s + "' is not key=value");
-          arg[s.substr(0, eq)] = s.substr(eq + 1);
-        }
-      auto num = [&](const std::string &key, const double fallback) {
-        return arg.count(key) ? std::stod(arg[key]) : fallback;
-      };
-      if (arg.count("load") && arg["load"] == "cylinder")
+      const testing::StudyArguments args(argc, argv, "mode1_study");
+      auto num = [&](const std::string &key, const double fallback) { return args.num(key, fallback); };
+      if (args.has("load") && args.text("load") == "cylinder")
         {
           // Mode 1 vs 3D on the cylinder R = H = 1, load tau = (1 - r^2/a^2)^2 on r <= a = 0.5,
           // smooth grading E = (1 + 4 z)^{1/2}, nu = 0.3 (cylinder_3d.h).
@@ -79,21 +71,15 @@ int main(int argc, char **argv)
         }
       const double E0 = 2e9, c0 = 3e-4, a = 1e-4;
       const double k  = num("k", 0.0);
-      const double nu = arg.count("nu") && arg["nu"] == "holl" ? 1 / (2 + k) : num("nu", 0.3);
-      const std::string load_name = arg.count("load") ? arg["load"] : "punch";
+      const double nu = args.has("nu") && args.text("nu") == "holl" ? 1 / (2 + k) : num("nu", 0.3);
+      const std::string load_name = args.text("load", "punch");
       MeshParameters mesh = recommended_mesh_parameters(a, k, num("truncation", 1e-8));
-      mesh.h_edge                  = num("h_edge", mesh.h_edge);
-      mesh.h_surface               = num("h_surface", mesh.h_surface);
-      mesh.h_far                   = num("h_far", mesh.h_far);
-      mesh.ring_growth             = num("g", mesh.ring_growth);
-      mesh.far_field_size          = num("L", mesh.far_field_size);
-      mesh.surface_layer_thickness = num("layer", mesh.surface_layer_thickness);
-      mesh.halving_radius          = num("halving_radius", mesh.halving_radius);
-      mesh.axis_refinements        = static_cast<unsigned>(num("axis_refinements", 0));
-      mesh.edge_refinements        = static_cast<unsigned>(num("edge_refinements", 0));
-      mesh.global_refinements      = static_cast<unsigned>(num("global", 0));
+      mesh.axis_refinements   = 0;
+      mesh.edge_refinements   = 0;
+      mesh.global_refinements = 0;
+      args.apply(mesh);
       DiscretizationParameters disc;
-      disc.degree = static_cast<unsigned>(num("p", disc.degree));
+      args.apply(disc);
 
       const Material material{std::make_shared<PowerLawModulus>(E0, c0, k), nu};
       const gradcontact::Medium medium = gradcontact::medium(gradcontact::GradedHalfSpace{E0, c0, k, nu});

@@ -1,0 +1,101 @@
+// The command line of the FE study tools (fem_study, mode1_study, fem_mpi): key=value arguments, and
+// the mesh and discretisation keys they share, so that a setting means the same in every tool.
+//
+//   mesh:            h_edge h_surface h_far g (ring growth) L (far field / a) layer (surface layer / a)
+//                    R1 (near field / a) halving_radius axis_refinements edge_refinements global
+//   discretisation:  p (degree) extra_q subdiv formulation=displacement|mixed|automatic
+#ifndef GRADCONTACT_TESTS_FEM_STUDY_ARGUMENTS_H
+#define GRADCONTACT_TESTS_FEM_STUDY_ARGUMENTS_H
+
+#include <fem/discretization.h>
+#include <fem/mesh.h>
+
+#include <map>
+#include <stdexcept>
+#include <string>
+
+namespace gradcontact::fem::testing
+{
+  class StudyArguments
+  {
+  public:
+    /// Throws std::invalid_argument "<tool>: argument '...' is not key=value".
+    StudyArguments(const int argc, char **argv, const std::string &tool)
+      : tool(tool)
+    {
+      for (int i = 1; i < argc; ++i)
+        {
+          const std::string s  = argv[i];
+          const auto        eq = s.find('=');
+          if (eq == std::string::npos)
+            throw std::invalid_argument(tool + ": argument '" + s + "' is not key=value");
+          values[s.substr(0, eq)] = s.substr(eq + 1);
+        }
+    }
+
+    bool has(const std::string &key) const { return values.count(key) != 0; }
+
+    std::string text(const std::string &key, const std::string &fallback = "") const
+    {
+      return has(key) ? values.at(key) : fallback;
+    }
+
+    /// The number given for `key`, else `fallback`; a value that is no number is an error naming it.
+    double num(const std::string &key, const double fallback) const
+    {
+      if (!has(key))
+        return fallback;
+      try
+        {
+          return std::stod(values.at(key));
+        }
+      catch (const std::exception &)
+        {
+          throw std::invalid_argument(tool + ": " + key + " = '" + values.at(key) + "' is not a number");
+        }
+    }
+
+    unsigned int count(const std::string &key, const unsigned int fallback) const
+    {
+      return static_cast<unsigned int>(num(key, fallback));
+    }
+
+    /// Overrides the entries of `mesh` whose keys are given (header).
+    void apply(MeshParameters &mesh) const
+    {
+      mesh.h_edge                  = num("h_edge", mesh.h_edge);
+      mesh.h_surface               = num("h_surface", mesh.h_surface);
+      mesh.h_far                   = num("h_far", mesh.h_far);
+      mesh.ring_growth             = num("g", mesh.ring_growth);
+      mesh.far_field_size          = num("L", mesh.far_field_size);
+      mesh.surface_layer_thickness = num("layer", mesh.surface_layer_thickness);
+      mesh.near_field_size         = num("R1", mesh.near_field_size);
+      mesh.halving_radius          = num("halving_radius", mesh.halving_radius);
+      mesh.axis_refinements        = count("axis_refinements", mesh.axis_refinements);
+      mesh.edge_refinements        = count("edge_refinements", mesh.edge_refinements);
+      mesh.global_refinements      = count("global", mesh.global_refinements);
+    }
+
+    /// Overrides the entries of `discretization` whose keys are given (header).
+    void apply(DiscretizationParameters &discretization) const
+    {
+      discretization.degree                     = count("p", discretization.degree);
+      discretization.extra_quadrature_points    = count("extra_q", discretization.extra_quadrature_points);
+      discretization.discontinuity_subdivisions = count("subdiv", discretization.discontinuity_subdivisions);
+      const std::string formulation             = text("formulation", "displacement");
+      if (formulation == "mixed")
+        discretization.formulation = Formulation::mixed;
+      else if (formulation == "automatic")
+        discretization.formulation = Formulation::automatic;
+      else if (formulation != "displacement")
+        throw std::invalid_argument(tool + ": formulation = '" + formulation +
+                                    "' outside {displacement, mixed, automatic}");
+    }
+
+  private:
+    std::string                        tool;
+    std::map<std::string, std::string> values;
+  };
+} // namespace gradcontact::fem::testing
+
+#endif
