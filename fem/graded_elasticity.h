@@ -13,7 +13,8 @@
 //   B = (eps_rr, eps_zz, eps_tt, gamma_rz, gamma_rt, gamma_tz) without the cos / sin factors,
 //   U: (U_r, 0, U/r, U_z, U/r, 0),  V: (0, 0, -V/r, 0, V_r - V/r, V_z),  W: (0, W_z, 0, W_r, 0, W/r);
 //   the integral over theta of cos^2 and sin^2 is pi, so the 3D energy is pi times the meridian form.
-// A 3D operator (Voigt order, m = 3, weight 1 instead of r) fits the same integrand.
+// The 3D strain (Voigt order, m = 3) has the same form; only the weight r and dim = 2 are the meridian
+// plane's.
 //
 // Mixed formulation (a pressure component q = lambda div u in FE_Q(p-1) after the displacement
 // components; fem/axisymmetric_solver.h):
