@@ -311,6 +311,131 @@ namespace gradcontact::fem
 
 
 
+  double DistributedSolver::solve_flat_punch(const LoadCase &load, Vector &u, DistributedResult &result)
+  {
+    double work = 0;
+    // u = d u1: the unit punch scaled, exact by linearity (the constraints carry u_z = 1).
+    solve(true, unit_punch_rhs, u, result);
+    punch_constraints.distribute(u);
+    u *= load.depth;
+    Vector reaction(owned, communicator);
+    stiffness.vmult(reaction, u);
+    double force = 0;
+    for (const auto d : owned_contact_dofs)
+      force += reaction[d];
+    force        = Utilities::MPI::sum(force, communicator);
+    work         = force * load.depth;
+    result.force = 2 * numbers::PI * force;
+    result.depth = load.depth;
+    return work;
+  }
+
+
+
+  double DistributedSolver::solve_indenter(const LoadCase &load, Vector &u, DistributedResult &result)
+  {
+    const double a = mesh_parameters.contact_radius;
+    double       work = 0;
+    // u = d u1 + u2 (axisymmetric_solver.cc, LoadType::indenter): u1 the unit punch, u2 with
+    // u_z = g2 = -f(r) on the contact z-DoFs. Its right-hand side is -A g2 on the free rows; A was
+    // assembled with the homogeneous constraints only, so (A g2)_i is the coupling of row i to the
+    // contact DoFs, and zero on rows constrained by `constraints`. The contact rows of the
+    // contact-constrained matrix are decoupled (diagonal only) and overwritten after the solve.
+    Vector u1, u2, g2(owned, communicator), b2(owned, communicator);
+    solve(true, unit_punch_rhs, u1, result);
+    const double factorize = result.time.factorize;
+    punch_constraints.distribute(u1);
+    for (std::size_t i = 0; i < owned_contact_dofs.size(); ++i)
+      g2[owned_contact_dofs[i]] = -load.profile(owned_contact_r[i], a);
+    g2.compress(VectorOperation::insert);
+    stiffness.vmult(b2, g2);
+    b2 *= -1.0;
+    for (const auto d : owned_contact_dofs)
+      b2[d] = 0;
+    b2.compress(VectorOperation::insert);
+    solve(true, b2, u2, result);
+    result.time.factorize = factorize;
+    for (const auto d : owned_contact_dofs)
+      u2[d] = g2[d];
+    u2.compress(VectorOperation::insert);
+    constraints.distribute(u2);
+    Vector reaction1(owned, communicator), reaction2(owned, communicator);
+    stiffness.vmult(reaction1, u1);
+    stiffness.vmult(reaction2, u2);
+    const bool   owner = edge_dof != numbers::invalid_dof_index;
+    const double r1 = Utilities::MPI::sum(owner ? reaction1[edge_dof] : 0.0, communicator);
+    const double r2 = Utilities::MPI::sum(owner ? reaction2[edge_dof] : 0.0, communicator);
+    const double d  = -r2 / r1;
+    u = u2;
+    u.add(d, u1);
+    double force = 0, work_local = 0;
+    std::vector<std::pair<double, double>> local_forces; // (r, R) of the owned contact DoFs
+    for (std::size_t k = 0; k < owned_contact_dofs.size(); ++k)
+      {
+        const auto   i = owned_contact_dofs[k];
+        const double R = d * reaction1[i] + reaction2[i];
+        force += R;
+        work_local += R * u[i];
+        local_forces.emplace_back(owned_contact_r[k], R);
+      }
+    force = Utilities::MPI::sum(force, communicator);
+    work  = Utilities::MPI::sum(work_local, communicator);
+    result.force = 2 * numbers::PI * force;
+    result.depth = d;
+    // The sign check of fem/contact_check.h on all contact forces ordered by radius (a few hundred).
+    std::vector<std::pair<double, double>> all_forces;
+    for (const auto &part : Utilities::MPI::all_gather(communicator, local_forces))
+      all_forces.insert(all_forces.end(), part.begin(), part.end());
+    std::sort(all_forces.begin(), all_forces.end());
+    std::vector<double> forces;
+    for (const auto &[r, R] : all_forces)
+      forces.push_back(R);
+    result.min_relative_contact_force = min_relative_contact_force(forces);
+    if (result.min_relative_contact_force < -consistency_tolerance)
+      {
+        result.consistent_contact = false;
+        std::ostringstream msg;
+        msg << "tensile nodal contact force (min/max = " << result.min_relative_contact_force << "); ";
+        result.message += msg.str();
+      }
+    return work;
+  }
+
+
+
+  double DistributedSolver::solve_pressure(const LoadCase &load, Vector &u, DistributedResult &result)
+  {
+    const double a = mesh_parameters.contact_radius;
+    Vector       b;
+    double       work = 0;
+    // l(v) = \int_{contact} p0 v_z r dr (fem/graded_elasticity.h).
+    b.reinit(owned, communicator);
+    CellPressureLoad                     cell_load(fe, mapping, discretization);
+    std::vector<types::global_dof_index> local_dof_indices(fe.n_dofs_per_cell());
+    bool                                 loaded = false;
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      if (cell->is_locally_owned())
+        {
+          const dealii::Vector<double> &cell_rhs = cell_load.vector(cell, load.pressure, loaded);
+          if (!loaded)
+            continue;
+          cell->get_dof_indices(local_dof_indices);
+          constraints.distribute_local_to_global(cell_rhs, local_dof_indices, b);
+        }
+    b.compress(VectorOperation::add);
+    solve(false, b, u, result);
+    constraints.distribute(u);
+    work         = b * u;
+    result.force = numbers::PI * load.pressure * a * a; // 2 pi \int_0^a p0 r dr
+    const double centre =
+      (centre_dof != numbers::invalid_dof_index) ? u[centre_dof] : 0.0;
+    // Exactly one process owns the centre z-DoF.
+    result.depth = Utilities::MPI::sum(centre, communicator);
+    return work;
+  }
+
+
+
   DistributedResult DistributedSolver::run(const LoadCase &load)
   {
     load.validate();
@@ -331,114 +456,18 @@ namespace gradcontact::fem
 
     MPI_Barrier(communicator);
     const auto start = std::chrono::steady_clock::now();
-    Vector     u, b;
-    double     work = 0; // work of the loads, per 2 pi
-    if (load.type == LoadType::flat_punch)
+    double work = 0; // work of the loads, per 2 pi
+    Vector u;
+    switch (load.type)
       {
-        // u = d u1: the unit punch scaled, exact by linearity (the constraints carry u_z = 1).
-        solve(true, unit_punch_rhs, u, result);
-        punch_constraints.distribute(u);
-        u *= load.depth;
-        Vector reaction(owned, communicator);
-        stiffness.vmult(reaction, u);
-        double force = 0;
-        for (const auto d : owned_contact_dofs)
-          force += reaction[d];
-        force        = Utilities::MPI::sum(force, communicator);
-        work         = force * load.depth;
-        result.force = 2 * numbers::PI * force;
-        result.depth = load.depth;
-      }
-    else if (load.type == LoadType::indenter)
-      {
-        // u = d u1 + u2 (axisymmetric_solver.cc, LoadType::indenter): u1 the unit punch, u2 with
-        // u_z = g2 = -f(r) on the contact z-DoFs. Its right-hand side is -A g2 on the free rows; A was
-        // assembled with the homogeneous constraints only, so (A g2)_i is the coupling of row i to the
-        // contact DoFs, and zero on rows constrained by `constraints`. The contact rows of the
-        // contact-constrained matrix are decoupled (diagonal only) and overwritten after the solve.
-        Vector u1, u2, g2(owned, communicator), b2(owned, communicator);
-        solve(true, unit_punch_rhs, u1, result);
-        const double factorize = result.time.factorize;
-        punch_constraints.distribute(u1);
-        for (std::size_t i = 0; i < owned_contact_dofs.size(); ++i)
-          g2[owned_contact_dofs[i]] = -load.profile(owned_contact_r[i], a);
-        g2.compress(VectorOperation::insert);
-        stiffness.vmult(b2, g2);
-        b2 *= -1.0;
-        for (const auto d : owned_contact_dofs)
-          b2[d] = 0;
-        b2.compress(VectorOperation::insert);
-        solve(true, b2, u2, result);
-        result.time.factorize = factorize;
-        for (const auto d : owned_contact_dofs)
-          u2[d] = g2[d];
-        u2.compress(VectorOperation::insert);
-        constraints.distribute(u2);
-        Vector reaction1(owned, communicator), reaction2(owned, communicator);
-        stiffness.vmult(reaction1, u1);
-        stiffness.vmult(reaction2, u2);
-        const bool   owner = edge_dof != numbers::invalid_dof_index;
-        const double r1 = Utilities::MPI::sum(owner ? reaction1[edge_dof] : 0.0, communicator);
-        const double r2 = Utilities::MPI::sum(owner ? reaction2[edge_dof] : 0.0, communicator);
-        const double d  = -r2 / r1;
-        u = u2;
-        u.add(d, u1);
-        double force = 0, work_local = 0;
-        std::vector<std::pair<double, double>> local_forces; // (r, R) of the owned contact DoFs
-        for (std::size_t k = 0; k < owned_contact_dofs.size(); ++k)
-          {
-            const auto   i = owned_contact_dofs[k];
-            const double R = d * reaction1[i] + reaction2[i];
-            force += R;
-            work_local += R * u[i];
-            local_forces.emplace_back(owned_contact_r[k], R);
-          }
-        force = Utilities::MPI::sum(force, communicator);
-        work  = Utilities::MPI::sum(work_local, communicator);
-        result.force = 2 * numbers::PI * force;
-        result.depth = d;
-        // The sign check of fem/contact_check.h on all contact forces ordered by radius (a few hundred).
-        std::vector<std::pair<double, double>> all_forces;
-        for (const auto &part : Utilities::MPI::all_gather(communicator, local_forces))
-          all_forces.insert(all_forces.end(), part.begin(), part.end());
-        std::sort(all_forces.begin(), all_forces.end());
-        std::vector<double> forces;
-        for (const auto &[r, R] : all_forces)
-          forces.push_back(R);
-        result.min_relative_contact_force = min_relative_contact_force(forces);
-        if (result.min_relative_contact_force < -consistency_tolerance)
-          {
-            result.consistent_contact = false;
-            std::ostringstream msg;
-            msg << "tensile nodal contact force (min/max = " << result.min_relative_contact_force << "); ";
-            result.message += msg.str();
-          }
-      }
-    else
-      {
-        // l(v) = \int_{contact} p0 v_z r dr (fem/graded_elasticity.h).
-        b.reinit(owned, communicator);
-        CellPressureLoad                     cell_load(fe, mapping, discretization);
-        std::vector<types::global_dof_index> local_dof_indices(fe.n_dofs_per_cell());
-        bool                                 loaded = false;
-        for (const auto &cell : dof_handler.active_cell_iterators())
-          if (cell->is_locally_owned())
-            {
-              const dealii::Vector<double> &cell_rhs = cell_load.vector(cell, load.pressure, loaded);
-              if (!loaded)
-                continue;
-              cell->get_dof_indices(local_dof_indices);
-              constraints.distribute_local_to_global(cell_rhs, local_dof_indices, b);
-            }
-        b.compress(VectorOperation::add);
-        solve(false, b, u, result);
-        constraints.distribute(u);
-        work         = b * u;
-        result.force = numbers::PI * load.pressure * a * a; // 2 pi \int_0^a p0 r dr
-        const double centre =
-          (centre_dof != numbers::invalid_dof_index) ? u[centre_dof] : 0.0;
-        // Exactly one process owns the centre z-DoF.
-        result.depth = Utilities::MPI::sum(centre, communicator);
+        case LoadType::flat_punch:
+          work = solve_flat_punch(load, u, result);
+          break;
+        case LoadType::indenter:
+          work = solve_indenter(load, u, result);
+          break;
+        default:
+          work = solve_pressure(load, u, result);
       }
 
     // Energy on the unconstrained DoFs (the constrained rows of A carry a diagonal entry only).

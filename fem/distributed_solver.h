@@ -134,6 +134,10 @@ namespace gradcontact::fem
     /// u = A^{-1} b for the contact-constrained matrix (true) or the free one; iterations and the
     /// factorisation time into `result`.
     void solve(bool contact_constrained, const Vector &b, Vector &u, DistributedResult &result);
+    /// The three load cases; each returns the work of its loads per 2 pi and fills force and depth.
+    double solve_flat_punch(const LoadCase &load, Vector &u, DistributedResult &result);
+    double solve_indenter(const LoadCase &load, Vector &u, DistributedResult &result);
+    double solve_pressure(const LoadCase &load, Vector &u, DistributedResult &result);
     double elapsed_max(const std::chrono::steady_clock::time_point &start) const;
 
     MPI_Comm                          communicator;
