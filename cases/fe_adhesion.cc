@@ -1,6 +1,6 @@
 #include "fe_adhesion.h"
 
-#include "fe_scene.h"
+#include "fe_model.h"
 
 #include <analytic/batch.hpp>
 #include <fem/adhesion.h>
@@ -115,17 +115,11 @@ namespace gradcontact::cases
 
   namespace
   {
-    fem::AdhesiveContact::SettingsFunction fe_settings(const Scene &s, const unsigned int level)
+    /// The FE settings of the scene at any contact radius a (the searches solve at many) and one level.
+    fem::AdhesiveContact::SettingsFunction settings_at(const Scene &s, const fem::Material &material,
+                                                        const unsigned int level)
     {
-      return [&s, level](const double a) {
-        fem::Settings st = fem::recommended_settings(a, s.material.k, s.discretization.force_tolerance);
-        st.discretization.degree = s.discretization.degree;
-        set_fe_formulation(s, st.discretization);
-        st.mesh.global_refinements = level;
-        if (s.discretization.far_field > 0.)
-          st.mesh.far_field_size = s.discretization.far_field;
-        return st;
-      };
+      return [&s, material, level](const double a) { return fe_settings(s, material, a, level); };
     }
 
     std::optional<fem::Profile> fe_profile_of(const LoadParameters &l)
@@ -161,7 +155,8 @@ namespace gradcontact::cases
         !(s.adhesion.work_of_adhesion > 0.))
       throw std::invalid_argument("scene " + s.file + ": an FE adhesive curve needs a curved profile (paraboloid, cone, "
                                   "power law) and Adhesion/work of adhesion > 0");
-    fem::AdhesiveContact model(fe_material(s), fe_profile_of(l), fe_settings(s, s.discretization.refinements.back()),
+    const fem::Material material = fe_material(s);
+    fem::AdhesiveContact model(material, fe_profile_of(l), settings_at(s, material, finest_refinement(s)),
                                fe_parameters(s.adhesion));
     const double a0 = s.adhesion.initial_radius > 0. ? s.adhesion.initial_radius : l.a;
     const fem::AdhesiveCriticalState c = model.critical_state(
@@ -235,14 +230,15 @@ namespace gradcontact::cases
         const auto level_start = std::chrono::steady_clock::now();
         LevelResult lr;
         lr.refinement = level;
-        const auto settings = fe_settings(s, level);
+        const fem::Material material = fe_material(s);
+        const auto settings = settings_at(s, material, level);
         const std::string level_tag = s.discretization.refinements.size() > 1 ? ", refinement " + std::to_string(level) : "";
 
         if (optimal)
           {
             // 9.69-9.74: the surface under p = -sigma_th on r <= a; f_opt(r) = w_c - w(r).
             const fem::Settings st = settings(l.a);
-            fem::AxisymmetricSolver solver(fe_material(s), st.mesh, st.discretization);
+            fem::AxisymmetricSolver solver(material, st.mesh, st.discretization);
             fem::LoadCase tension;
             tension.type = fem::LoadType::constant_pressure;
             tension.pressure = -ad.tensile_strength;
@@ -299,7 +295,7 @@ namespace gradcontact::cases
           }
 
         // JKR: the FE model's own critical states.
-        fem::AdhesiveContact model(fe_material(s), fe_profile_of(l), settings, fe_parameters(ad));
+        fem::AdhesiveContact model(material, fe_profile_of(l), settings, fe_parameters(ad));
         const double dgamma = ad.work_of_adhesion;
         const bool power_law_modulus = s.material.modulus == MaterialParameters::Modulus::power_law;
         const auto report_state = [&](const std::string &name, const fem::AdhesiveCriticalState &c, const json &extra,

@@ -1,5 +1,7 @@
 #include "fe_scene.h"
 
+#include "fe_model.h"
+
 #include "fe_adhesion.h"
 #include "fe_tangential.h"
 
@@ -113,38 +115,6 @@ namespace gradcontact::cases
     };
 
     // --- the FE side ------------------------------------------------------------------------------------
-    fem::LoadCase fe_load(const LoadParameters &l)
-    {
-      fem::LoadCase lc;
-      switch (l.type)
-        {
-          case Type::flat_punch:
-            lc.type = fem::LoadType::flat_punch;
-            lc.depth = l.depth;
-            return lc;
-          case Type::concave_punch:
-            lc.type = fem::LoadType::concave_punch;
-            lc.depth = l.depth;
-            lc.profile = fem::Profile::concave_paraboloid(l.h0);
-            return lc;
-          case Type::constant_pressure:
-            lc.type = fem::LoadType::constant_pressure;
-            lc.pressure = l.p0;
-            return lc;
-          default:
-            break;
-        }
-      lc.profile = l.type == Type::paraboloid ? fem::Profile::paraboloid(l.R)
-                   : l.type == Type::cone     ? fem::Profile::cone(l.tan_theta)
-                                              : fem::Profile::power_law(l.n, l.A);
-      lc.type = l.control == Control::contact_radius ? fem::LoadType::indenter
-                : l.control == Control::depth        ? fem::LoadType::indenter_depth
-                                                     : fem::LoadType::indenter_force;
-      lc.depth = l.depth;
-      lc.force = l.force;
-      return lc;
-    }
-
     struct FeRun
     {
       unsigned int refinement;
@@ -155,17 +125,12 @@ namespace gradcontact::cases
     FeRun run_fe(const Scene &s, const unsigned int refinement, const fs::path &folder)
     {
       const auto start = std::chrono::steady_clock::now();
-      fem::Settings settings = fem::recommended_settings(s.load.a, s.material.k, s.discretization.force_tolerance);
-      settings.discretization.degree = s.discretization.degree;
-      set_fe_formulation(s, settings.discretization);
-      settings.mesh.global_refinements = refinement;
-      if (s.discretization.far_field > 0.)
-        settings.mesh.far_field_size = s.discretization.far_field;
+      FeModel model = fe_model(s, refinement);
       // The pressure of a cone (and of f = A r^n, n < 2) is singular at the axis: grade the mesh
       // toward (0, 0) (fem/README.md, "Curved indenters": cone p L2 2.8e-4 -> 5.4e-6 at k = 0).
       if (s.load.type == Type::cone || (s.load.type == Type::power_law && s.load.n < 2))
-        settings.mesh.axis_refinements = 12;
-      fem::AxisymmetricSolver solver(fe_material(s), settings.mesh, settings.discretization);
+        model.settings.mesh.axis_refinements = 12;
+      fem::AxisymmetricSolver solver(model.material, model.settings.mesh, model.settings.discretization);
       fem::OutputRequest out;
       for (const double x : s.outputs.pressure_radii)
         out.pressure_radii.push_back(x * s.load.a);
@@ -173,7 +138,7 @@ namespace gradcontact::cases
         out.displacement_radii.push_back(x * s.load.a);
       if (s.outputs.vtu)
         out.vtu_file = (folder / ("fields-" + std::to_string(refinement) + ".vtu")).string();
-      fem::Result r = solver.run(fe_load(s.load), out);
+      fem::Result r = solver.run(model.load, out);
       return {refinement, r, std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count()};
     }
 
@@ -319,22 +284,15 @@ namespace gradcontact::cases
       // control on the recommended mesh, one solve for every quantity.
       if (s.references.fem)
         {
-          Scene fe_scene = s;
-          fe_scene.load.control = Control::contact_radius;
           const auto t0 = std::chrono::steady_clock::now();
-          fem::Settings settings = fem::recommended_settings(a, mp.k, s.discretization.force_tolerance);
-          settings.discretization.degree = s.discretization.degree;
-          set_fe_formulation(s, settings.discretization);
-          fem::AxisymmetricSolver solver(fe_material(fe_scene), settings.mesh, settings.discretization);
-          fem::LoadCase lc;
-          lc.type = fem::LoadType::indenter;
-          lc.profile = fem::Profile::custom(profile.f, 2.);
+          const FeModel model = candidate_fe_model(s, fem::Profile::custom(profile.f, 2.));
+          fem::AxisymmetricSolver solver(model.material, model.settings.mesh, model.settings.discretization);
           fem::OutputRequest out;
           for (const double x : s.outputs.pressure_radii)
             out.pressure_radii.push_back(x * a);
           for (const double x : s.outputs.displacement_radii)
             out.displacement_radii.push_back(x * a);
-          const fem::Result fe = solver.run(lc, out);
+          const fem::Result fe = solver.run(model.load, out);
           const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
           const auto fe_row = [&](const std::string &quantity, const std::string &metric, const std::string &expression,
                                   const double fe_value, const double tolerance, const std::optional<double> r) {
@@ -364,42 +322,6 @@ namespace gradcontact::cases
     }
   } // namespace
 
-  void set_fe_formulation(const Scene &s, fem::DiscretizationParameters &discretization)
-  {
-    const std::string &f = s.discretization.formulation;
-    if (f == "mixed")
-      discretization.formulation = fem::Formulation::mixed;
-    else if (f == "automatic")
-      discretization.formulation = fem::Formulation::automatic;
-    else if (f == "displacement")
-      discretization.formulation = fem::Formulation::displacement;
-    else
-      throw std::invalid_argument("Discretization/formulation = '" + f +
-                                  "' outside {displacement, mixed, automatic}");
-  }
-
-  fem::Material fe_material(const Scene &s)
-  {
-    const MaterialParameters &m = s.material;
-    const auto power = std::make_shared<fem::PowerLawModulus>(m.E0, m.c0, m.k);
-    fem::Material material;
-    material.nu = m.nu;
-    switch (m.modulus)
-      {
-        case MaterialParameters::Modulus::power_law:
-          material.modulus = power;
-          break;
-        case MaterialParameters::Modulus::layered:
-          material.modulus = fem::LayeredModulus::uniform(power, m.layers, m.layered_depth * s.load.a);
-          break;
-        case MaterialParameters::Modulus::expression:
-          material.modulus = std::make_shared<fem::ExpressionModulus>(
-            m.expression, std::map<std::string, double>{{"E0", m.E0}, {"c0", m.c0}, {"k", m.k}}, m.k);
-          break;
-      }
-    return material;
-  }
-
   FeProfile fe_profile(const Scene &scene, const std::string &quantity, const std::vector<double> &radii_over_a,
                        const std::string &normaliser, const double normaliser_r_over_a, const bool per_area)
   {
@@ -409,7 +331,7 @@ namespace gradcontact::cases
     (quantity == "pressure" ? s.outputs.pressure_radii : s.outputs.displacement_radii) = radii_over_a;
     (quantity == "pressure" ? s.outputs.displacement_radii : s.outputs.pressure_radii).clear();
     s.outputs.vtu = false;
-    const FeRun run = run_fe(s, s.discretization.refinements.back(), fs::temp_directory_path());
+    const FeRun run = run_fe(s, finest_refinement(s), fs::temp_directory_path());
     const AnalyticReference closed(s, "closed_form");
     const double a = closed.radius();
     const bool needs_r = normaliser == "pressure" || normaliser == "displacement";

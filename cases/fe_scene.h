@@ -5,14 +5,7 @@
 #include "report.h"
 #include "scene.h"
 
-#include <fem/modulus.h>
-
 #include <filesystem>
-
-namespace gradcontact::fem
-{
-  struct DiscretizationParameters;
-}
 
 namespace gradcontact::cases
 {
@@ -25,12 +18,6 @@ namespace gradcontact::cases
   };
   FeProfile fe_profile(const Scene &scene, const std::string &quantity, const std::vector<double> &radii_over_a,
                        const std::string &normaliser, double normaliser_r_over_a, bool per_area);
-
-  /// The FE material of the scene (power law, layered or expression modulus).
-  fem::Material fe_material(const Scene &scene);
-
-  /// Sets the FE formulation of the scene (Discretization/formulation) in `discretization`.
-  void set_fe_formulation(const Scene &scene, fem::DiscretizationParameters &discretization);
 
   /// Runs the scene and writes its report into `folder` (which the caller makes atomically).
   SceneResult run_prm_scene(const Scene &scene, const std::filesystem::path &folder, bool verbose);

@@ -1,6 +1,6 @@
 #include "fe_tangential.h"
 
-#include "fe_scene.h"
+#include "fe_model.h"
 
 #include <analytic/batch.hpp>
 #include <analytic/material.hpp>
@@ -118,20 +118,17 @@ namespace gradcontact::cases
     {
       Mode1Model(const Scene &s, const std::vector<double> &stick_radii)
       {
-        settings = fem::recommended_settings(s.load.a, s.material.k, s.discretization.force_tolerance);
-        settings.discretization.degree = s.discretization.degree;
-        set_fe_formulation(s, settings.discretization); // mode 1: throws for mixed (not supported)
-        settings.mesh.global_refinements = s.discretization.refinements.back();
-        if (s.discretization.far_field > 0.)
-          settings.mesh.far_field_size = s.discretization.far_field;
+        material = fe_material(s);
+        settings = fe_settings(s, material, s.load.a, finest_refinement(s)); // the mode-1 solver refuses mixed
         fem::SurfaceRefinement refinement;
         for (const double c : stick_radii)
           if (c > 0. && c < s.load.a * (1. - 1e-12)) // c = a is a mesh node already
             refinement.radii.push_back(c);
         refinement.levels = refinement.radii.empty() ? 0 : s.tangential.stick_levels;
-        solver = std::make_unique<fem::FourierMode1Solver>(fe_material(s), settings.mesh, settings.discretization,
+        solver = std::make_unique<fem::FourierMode1Solver>(material, settings.mesh, settings.discretization,
                                                            refinement);
       }
+      fem::Material material;
       fem::Settings settings;
       std::unique_ptr<fem::FourierMode1Solver> solver;
     };
@@ -302,7 +299,7 @@ namespace gradcontact::cases
                                         t_tangential));
         }
       // alpha = K_N / K_T (9.78) with K_N from the normal flat punch on the same mesh and discretisation.
-      fem::AxisymmetricSolver normal(fe_material(s), model.settings.mesh, model.settings.discretization);
+      fem::AxisymmetricSolver normal(model.material, model.settings.mesh, model.settings.discretization);
       fem::LoadCase punch;
       punch.type = fem::LoadType::flat_punch;
       punch.depth = delta;
