@@ -174,27 +174,17 @@ namespace gradcontact::cases
 
   SceneResult run_adhesion_scene(const Scene &s, const fs::path &folder, const bool verbose)
   {
+    require_kind(s, SceneKind::adhesion, "run_adhesion_scene");
     SceneResult result;
     result.name = s.info.name;
     result.description = s.info.description;
-    result.kind = "adhesion";
+    result.kind = to_string(s.kind);
     const auto start = std::chrono::steady_clock::now();
     std::ofstream(folder / "parameters.prm") << s.resolved;
 
     const LoadParameters &l = s.load;
     const AdhesionParameters &ad = s.adhesion;
-    const std::string where = "scene " + s.file + ": ";
     const bool optimal = l.type == Type::constant_pressure;
-    if (optimal && ad.work_of_adhesion > 0.)
-      throw std::invalid_argument(where + "Adhesion/work of adhesion = " + format(ad.work_of_adhesion) +
-                                  " with Load/type = constant pressure: a prescribed pressure has no JKR state; the "
-                                  "optimal profile (9.69-9.74) takes Adhesion/tensile strength > 0 and no work of adhesion");
-    if (!optimal && !(ad.work_of_adhesion > 0.))
-      throw std::invalid_argument(where + "Adhesion/work of adhesion = " + format(ad.work_of_adhesion) +
-                                  " must be in (0, inf) for an adhesive " + "scene");
-    if (optimal && !(ad.tensile_strength > 0.))
-      throw std::invalid_argument(where + "Adhesion/tensile strength = " + format(ad.tensile_strength) +
-                                  " must be in (0, inf) for the optimal profile");
 
     std::vector<AdhesiveReference> references;
     if (s.references.closed_form)

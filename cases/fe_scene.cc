@@ -2,9 +2,6 @@
 
 #include "fe_model.h"
 
-#include "fe_adhesion.h"
-#include "fe_tangential.h"
-
 #include <analytic/batch.hpp>
 #include <analytic/material.hpp>
 #include <analytic/mdr.hpp>
@@ -232,10 +229,7 @@ namespace gradcontact::cases
           const auto g = parse_expression<1>("profile curvature", "r", c.curvature, constants);
           profile.d2f = [g, at](double r) { return at(*g, r); };
         }
-      else if (!c.pressure.empty())
-        // The pressure needs g'(x), a quadrature of f' and f'' nested in another one: finite-difference
-        // noise (1e-13) keeps both from meeting their tolerance, and the run takes minutes (measured: 325 s).
-        throw std::invalid_argument("Candidate/profile curvature: needed for a pressure candidate (give f''(r))");
+      // (a pressure candidate without f'' is refused by scene_kind: see there why)
       const MaterialParameters &mp = s.material;
       const Medium m = medium(GradedHalfSpace{mp.E0, mp.c0, mp.k, mp.nu});
       const double a = s.load.a;
@@ -277,8 +271,6 @@ namespace gradcontact::cases
       profile_rows("pressure", c.pressure, s.outputs.pressure_radii, [&](double r) { return mdr::pressure(w1d, m, r); });
       profile_rows("displacement", c.displacement, s.outputs.displacement_radii,
                    [&](double r) { return mdr::displacement(w1d, m, r); });
-      if (result.rows.empty())
-        throw std::invalid_argument("Candidate: no candidate formula given (depth, force, pressure or displacement)");
 
       // The same candidate against the FE model: the profile as a custom indenter under contact-radius
       // control on the recommended mesh, one solve for every quantity.
@@ -346,87 +338,106 @@ namespace gradcontact::cases
     return out;
   }
 
-  SceneResult run_prm_scene(const Scene &s, const fs::path &folder, const bool verbose)
+  namespace
   {
-    if (s.tangential.enabled())
-      {
-        if (s.adhesion.enabled(s.load))
-          throw std::invalid_argument("scene " + s.file + ": Tangential/study is set and the scene is adhesive "
-                                      "(Adhesion/work of adhesion or tensile strength > 0): tangential contact is "
-                                      "non-adhesive (9.75-9.87); choose one");
-        return run_tangential_scene(s, folder, verbose);
-      }
-    if (s.adhesion.enabled(s.load))
-      return run_adhesion_scene(s, folder, verbose);
-    if (!s.candidate.profile.empty())
-      {
-        std::ofstream(folder / "parameters.prm") << s.resolved;
-        const auto start = std::chrono::steady_clock::now();
-        SceneResult r = run_candidate(s);
-        r.name = s.info.name;
-        r.description = s.info.description;
-        r.kind = "candidate";
-        r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-        return r;
-      }
-    SceneResult result;
-    result.name = s.info.name;
-    result.description = s.info.description;
-    result.kind = "prm";
-    const auto start = std::chrono::steady_clock::now();
-    std::ofstream(folder / "parameters.prm") << s.resolved;
+    using References = std::vector<std::unique_ptr<AnalyticReference>>;
 
-    std::vector<std::unique_ptr<AnalyticReference>> references;
-    const auto add_reference = [&](const std::string &method, const std::string &label) {
-      try
-        {
-          references.push_back(std::make_unique<AnalyticReference>(s, method));
-        }
-      catch (const std::exception &e)
-        {
-          result.rows.push_back(failed("reference state", "-", label, e.what()));
-        }
-    };
-    if (s.references.closed_form)
-      add_reference("closed_form", "closed form");
-    if (s.references.numerical_mdr)
-      add_reference("numerical_mdr", "numerical MDR");
-    const auto label = [](const AnalyticReference &r) {
-      return r.method == "closed_form" ? std::string("closed form") : std::string("numerical MDR");
-    };
-
-    if (!s.references.fem)
-      {
-        // Analytic only: the closed form against the numerical MDR, for the scalars and profiles asked.
-        AnalyticReference closed(s, "closed_form"), numeric(s, "numerical_mdr");
-        std::vector<std::pair<std::string, std::optional<double>>> items;
-        if (s.outputs.force && s.load.type != Type::constant_pressure)
-          items.push_back({"force", std::nullopt});
-        if (s.outputs.depth && s.load.type != Type::flat_punch && s.load.type != Type::concave_punch)
-          items.push_back({"depth", std::nullopt});
-        for (const double x : s.outputs.pressure_radii)
-          items.push_back({"pressure", x * closed.radius()});
-        for (const double x : s.outputs.displacement_radii)
-          items.push_back({"displacement", x * closed.radius()});
-        for (const auto &[quantity, r] : items)
+    /// The analytic references the scene asks for; one whose state cannot be set up is a failed row.
+    References references_of(const Scene &s, SceneResult &result)
+    {
+      References references;
+      const auto add_reference = [&](const std::string &method, const std::string &label) {
+        try
           {
-            const std::string metric = r ? "r/a = " + format(*r / closed.radius()) + ", relative" : "relative";
-            try
-              {
-                const auto t0 = std::chrono::steady_clock::now();
-                const double c = closed.get(quantity, r);
-                const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-                const double n = numeric.get(quantity, r);
-                result.rows.push_back(compare(quantity, metric, "closed form", "numerical MDR", n, c, n, 1e-9, 0, seconds));
-              }
-            catch (const std::exception &e)
-              {
-                result.rows.push_back(failed(quantity, "closed form", "numerical MDR", e.what()));
-              }
+            references.push_back(std::make_unique<AnalyticReference>(s, method));
           }
-        result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-        return result;
+        catch (const std::exception &e)
+          {
+            result.rows.push_back(failed("reference state", "-", label, e.what()));
+          }
+      };
+      if (s.references.closed_form)
+        add_reference("closed_form", "closed form");
+      if (s.references.numerical_mdr)
+        add_reference("numerical_mdr", "numerical MDR");
+      return references;
+    }
+
+    std::string label(const AnalyticReference &r)
+    {
+      return r.method == "closed_form" ? std::string("closed form") : std::string("numerical MDR");
+    }
+
+    /// The result of a scene before its rows, with parameters.prm written into the report folder.
+    SceneResult started(const Scene &s, const fs::path &folder)
+    {
+      SceneResult result;
+      result.name = s.info.name;
+      result.description = s.info.description;
+      result.kind = to_string(s.kind);
+      std::ofstream(folder / "parameters.prm") << s.resolved;
+      return result;
+    }
+
+    double seconds_since(const std::chrono::steady_clock::time_point start)
+    {
+      return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    }
+  } // namespace
+
+  SceneResult run_candidate_scene(const Scene &s, const fs::path &folder)
+  {
+    require_kind(s, SceneKind::candidate, "run_candidate_scene");
+    const auto start = std::chrono::steady_clock::now();
+    SceneResult r = started(s, folder);
+    r.rows = run_candidate(s).rows;
+    r.seconds = seconds_since(start);
+    return r;
+  }
+
+  SceneResult run_analytic_scene(const Scene &s, const fs::path &folder)
+  {
+    require_kind(s, SceneKind::analytic, "run_analytic_scene");
+    const auto start = std::chrono::steady_clock::now();
+    SceneResult result = started(s, folder);
+    references_of(s, result); // only its failed rows: the comparison below needs both methods
+    // The closed form against the numerical MDR, for the scalars and profiles asked.
+    AnalyticReference closed(s, "closed_form"), numeric(s, "numerical_mdr");
+    std::vector<std::pair<std::string, std::optional<double>>> items;
+    if (s.outputs.force && s.load.type != Type::constant_pressure)
+      items.push_back({"force", std::nullopt});
+    if (s.outputs.depth && s.load.type != Type::flat_punch && s.load.type != Type::concave_punch)
+      items.push_back({"depth", std::nullopt});
+    for (const double x : s.outputs.pressure_radii)
+      items.push_back({"pressure", x * closed.radius()});
+    for (const double x : s.outputs.displacement_radii)
+      items.push_back({"displacement", x * closed.radius()});
+    for (const auto &[quantity, r] : items)
+      {
+        const std::string metric = r ? "r/a = " + format(*r / closed.radius()) + ", relative" : "relative";
+        try
+          {
+            const auto t0 = std::chrono::steady_clock::now();
+            const double c = closed.get(quantity, r);
+            const double seconds = seconds_since(t0);
+            const double n = numeric.get(quantity, r);
+            result.rows.push_back(compare(quantity, metric, "closed form", "numerical MDR", n, c, n, 1e-9, 0, seconds));
+          }
+        catch (const std::exception &e)
+          {
+            result.rows.push_back(failed(quantity, "closed form", "numerical MDR", e.what()));
+          }
       }
+    result.seconds = seconds_since(start);
+    return result;
+  }
+
+  SceneResult run_normal_scene(const Scene &s, const fs::path &folder, const bool verbose)
+  {
+    require_kind(s, SceneKind::normal, "run_normal_scene");
+    const auto start = std::chrono::steady_clock::now();
+    SceneResult result = started(s, folder);
+    const References references = references_of(s, result);
 
     // One FE solve per refinement level, shared by every quantity and every reference.
     std::vector<FeRun> runs;
@@ -591,7 +602,7 @@ namespace gradcontact::cases
         profile_plot("displacement", fe.displacement, w_max, "w [m]");
       }
 
-    result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    result.seconds = seconds_since(start);
     return result;
   }
 } // namespace gradcontact::cases

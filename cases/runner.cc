@@ -1,6 +1,8 @@
 #include "runner.h"
 
+#include "fe_adhesion.h"
 #include "fe_scene.h"
+#include "fe_tangential.h"
 #include "report.h"
 #include "scene.h"
 
@@ -193,6 +195,25 @@ namespace gradcontact::cases
       return result;
     }
 
+    /// Runs a .prm (or .json) scene by its kind (scene.h).
+    SceneResult run_scene(const Scene &scene, const fs::path &folder, const bool verbose)
+    {
+      switch (scene.kind)
+        {
+          case SceneKind::normal:
+            return run_normal_scene(scene, folder, verbose);
+          case SceneKind::analytic:
+            return run_analytic_scene(scene, folder);
+          case SceneKind::candidate:
+            return run_candidate_scene(scene, folder);
+          case SceneKind::adhesion:
+            return run_adhesion_scene(scene, folder, verbose);
+          case SceneKind::tangential:
+            return run_tangential_scene(scene, folder, verbose);
+        }
+      throw std::logic_error("run_scene: scene " + scene.file + " has no kind");
+    }
+
     /// Runs one scene (with overrides) and writes its report atomically; `suffix` names sweep variants.
     SceneResult run_one(const fs::path &file, const std::vector<Override> &overrides, const Options &o,
                         const std::string &suffix = "")
@@ -211,7 +232,7 @@ namespace gradcontact::cases
         std::cout << "# " << file.string() << " resolved:\n" << scene.resolved;
       SceneResult s;
       atomic_folder(o.reports / scene.info.name, [&](const fs::path &tmp) {
-        s = run_prm_scene(scene, tmp, o.verbose);
+        s = run_scene(scene, tmp, o.verbose);
         write_errors(s, tmp);
       });
       return s;

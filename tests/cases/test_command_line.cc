@@ -31,7 +31,7 @@ TEST_CASE("Every command shall print its own usage on --help and exit with 0", "
   CHECK_THAT(out.str(), StartsWith("usage: gradcontact bench"));
 }
 
-TEST_CASE("The usage shall list every command; an unknown command is an error naming it", "[cases]")
+TEST_CASE("The usage shall list every command, and an unknown command shall be an error naming it", "[cases]")
 {
   std::ostringstream out;
   CHECK(command_line({"--help"}, out) == 0);
