@@ -17,14 +17,6 @@ namespace gradcontact::cases
   {
     /// Errors of 0 are drawn at this floor on the logarithmic axes (below double round-off of 1).
     constexpr double plot_error_floor = 1e-17;
-
-    std::string csv_text(const std::string &s)
-    {
-      std::string out = "\"";
-      for (const char c : s)
-        out += (c == '"') ? std::string("\"\"") : std::string(1, c);
-      return out + "\"";
-    }
   } // namespace
 
   double relative_error(const double value, const double reference)
@@ -63,7 +55,7 @@ namespace gradcontact::cases
           {
             md << "| " << l.refinement << " | " << l.dofs << " | " << format(l.seconds) << " | " << format(l.value)
                << " | " << format(l.error) << " |\n";
-            csv << csv_text(q.quantity) << ',' << l.refinement << ',' << l.dofs << ',' << l.seconds << ',' << l.value
+            csv << csv_quote(q.quantity) << ',' << l.refinement << ',' << l.dofs << ',' << l.seconds << ',' << l.value
                 << ',' << q.reference << ',' << l.error << ',' << p << '\n';
             errors.x.push_back(l.dofs);
             errors.y.push_back(std::max(l.error, plot_error_floor));

@@ -1,5 +1,6 @@
 #include "fe_adhesion.h"
 
+#include "convergence_report.h"
 #include "fe_model.h"
 
 #include <analytic/batch.hpp>
@@ -494,41 +495,25 @@ namespace gradcontact::cases
                    "d / |d_c|", "F / |F_c|", curve_series);
       }
 
-    // Refinement study: each FE value against the first reference, observed order over the last three levels.
+    // Refinement study: each FE value against the first reference.
     if (levels.size() > 1 && !references.empty())
       {
-        std::ofstream csv(folder / "convergence.csv"), md(folder / "convergence.md");
-        csv << "quantity,refinement,dofs,seconds,value,reference,relative_error,observed_order\n";
-        md << "# " << s.info.name << ": convergence\n\nErrors against the " << references.front().label()
-           << "; the observed order p (error ~ h^p, h ~ DoFs^(-1/2)) is fitted over the last three levels.\n\n";
-        unsigned int index = 0;
+        std::vector<ConvergenceSeries> series;
         for (const auto &[key, first_level] : levels.front().values)
           {
             const double reference = first_level.second;
             if (!std::isfinite(reference))
               continue;
-            std::vector<Level> ls;
+            ConvergenceSeries c{key, reference, {}};
             for (const LevelResult &lr : levels)
               if (lr.values.count(key))
-                ls.push_back({lr.refinement, lr.dofs, lr.seconds, lr.values.at(key).first,
-                              std::abs(lr.values.at(key).first - reference) / std::abs(reference)});
-            const double p = observed_order(ls);
-            md << "## " << key << "\n\n| refinement | DoFs | s | value | rel. error |\n|---|---|---|---|---|\n";
-            Series errors{key, {}, {}, true};
-            for (const Level &lv : ls)
-              {
-                md << "| " << lv.refinement << " | " << lv.dofs << " | " << format(lv.seconds) << " | " << format(lv.value)
-                   << " | " << format(lv.error) << " |\n";
-                csv << '"' << key << "\"," << lv.refinement << ',' << lv.dofs << ',' << lv.seconds << ',' << lv.value << ','
-                    << reference << ',' << lv.error << ',' << p << '\n';
-                errors.x.push_back(lv.dofs);
-                errors.y.push_back(std::max(lv.error, 1e-17));
-              }
-            md << "\nObserved order over the last three levels: " << format(p) << "\n\n";
-            if (s.outputs.plots)
-              write_plot(folder, "convergence-" + std::to_string(index++),
-                         s.info.name + ": " + key + " error against DoFs", "DoFs", "relative error", {errors}, true, true);
+                {
+                  const double v = lr.values.at(key).first;
+                  c.levels.push_back({lr.refinement, lr.dofs, lr.seconds, v, relative_error(v, reference)});
+                }
+            series.push_back(c);
           }
+        write_convergence(folder, s.info.name, references.front().label(), series, s.outputs.plots);
       }
 
     result.seconds = seconds_since(start);

@@ -1,5 +1,6 @@
 #include "fe_scene.h"
 
+#include "convergence_report.h"
 #include "fe_model.h"
 
 #include <analytic/batch.hpp>
@@ -510,52 +511,28 @@ namespace gradcontact::cases
     // Convergence study: the scalar quantities against the first reference, level by level.
     if (runs.size() > 1 && !references.empty())
       {
-        std::ofstream csv(folder / "convergence.csv"), md(folder / "convergence.md");
-        csv << "quantity,refinement,dofs,seconds,value,reference,relative_error,observed_order\n";
-        md << "# " << s.info.name << ": convergence\n\nErrors against the " << label(*references.front())
-           << "; the observed order p (error ~ h^p, h ~ DoFs^(-1/2)) is fitted over the last three levels.\n\n";
-        for (std::size_t q = 0; q < scalars(s, runs.front().result).size(); ++q)
+        std::vector<ConvergenceSeries> series;
+        const std::vector<Scalar> first_level = scalars(s, runs.front().result);
+        for (std::size_t q = 0; q < first_level.size(); ++q)
           {
-            const Scalar first = scalars(s, runs.front().result)[q];
-            double value = 0.;
+            ConvergenceSeries c{first_level[q].name, 0., {}};
             try
               {
-                value = first.reference.empty() ? references.front()->radius() : references.front()->get(first.reference);
+                c.reference = first_level[q].reference.empty() ? references.front()->radius()
+                                                               : references.front()->get(first_level[q].reference);
               }
             catch (const std::exception &)
               {
-                continue;
+                continue; // a failed row already says why
               }
-            std::vector<Level> levels;
             for (const FeRun &run : runs)
               {
                 const double v = scalars(s, run.result)[q].fe;
-                levels.push_back({run.refinement, run.result.n_dofs, run.seconds, v, std::abs(v - value) / std::abs(value)});
+                c.levels.push_back({run.refinement, run.result.n_dofs, run.seconds, v, relative_error(v, c.reference)});
               }
-            const double p = observed_order(levels);
-            md << "## " << first.name << "\n\n| refinement | DoFs | s | value | rel. error |\n|---|---|---|---|---|\n";
-            Series errors{first.name, {}, {}, true}, times{first.name, {}, {}, true};
-            for (const Level &l : levels)
-              {
-                md << "| " << l.refinement << " | " << l.dofs << " | " << format(l.seconds) << " | " << format(l.value)
-                   << " | " << format(l.error) << " |\n";
-                csv << first.name << ',' << l.refinement << ',' << l.dofs << ',' << l.seconds << ',' << l.value << ','
-                    << value << ',' << l.error << ',' << p << '\n';
-                errors.x.push_back(l.dofs);
-                errors.y.push_back(std::max(l.error, 1e-17));
-                times.x.push_back(l.seconds);
-                times.y.push_back(std::max(l.error, 1e-17));
-              }
-            md << "\nObserved order over the last three levels: " << format(p) << "\n\n";
-            if (s.outputs.plots)
-              {
-                const std::string stem = "convergence-" + std::to_string(q);
-                write_plot(folder, stem + "-dofs", s.info.name + ": " + first.name + " error against DoFs", "DoFs",
-                           "relative error", {errors}, true, true);
-                write_plot(folder, stem + "-time", s.info.name + ": " + first.name + " error against run time",
-                           "seconds", "relative error", {times}, true, true);
-              }
+            series.push_back(c);
           }
+        write_convergence(folder, s.info.name, label(*references.front()), series, s.outputs.plots);
       }
 
     // Profiles: the analytic curve (closed form, dense) with the FE points of the finest level.

@@ -257,7 +257,7 @@ namespace gradcontact::cases
                                               : "summary.shard-" + std::to_string(o.shard) + "-of-" +
                                                   std::to_string(o.shards) + ".md";
       const fs::path summary = o.reports / name;
-      const fs::path tmp = o.reports / ("." + name + ".tmp");
+      const fs::path tmp = temporary_sibling(summary);
       {
         std::ofstream md(tmp);
         md << "# gradcontact summary\n\n| scene | comparisons | worst error | failed | seconds | report |\n"
@@ -282,6 +282,7 @@ namespace gradcontact::cases
     const Options o = parse(args);
     const bool progress = !o.quiet && isatty(STDERR_FILENO);
     fs::create_directories(o.reports);
+    remove_stale_temporaries(o.reports); // what a killed run left
     std::vector<SceneResult> results;
     const auto start = std::chrono::steady_clock::now();
     for (std::size_t i = 0; i < o.scenes.size(); ++i)
@@ -315,6 +316,7 @@ namespace gradcontact::cases
     if (values.empty())
       throw std::invalid_argument("sweep: --over " + over[1] + " lists no value");
     fs::create_directories(o.reports);
+    remove_stale_temporaries(o.reports); // what a killed run left
     std::vector<SceneResult> results;
     for (std::size_t j = 0; j < values.size(); ++j)
       {
