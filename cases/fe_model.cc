@@ -31,6 +31,13 @@ namespace gradcontact::cases
     return material;
   }
 
+  double deep_exponent(const fem::ModulusField &modulus)
+  {
+    if (const auto *layered = dynamic_cast<const fem::LayeredModulus *>(&modulus))
+      return deep_exponent(*layered->base);
+    return modulus.surface_exponent();
+  }
+
   fem::Formulation fe_formulation(const Scene &s)
   {
     const std::string &f = s.discretization.formulation;
@@ -85,8 +92,15 @@ namespace gradcontact::cases
   {
     if (!material.modulus)
       throw std::invalid_argument("fe_settings: the material has no modulus field");
-    fem::Settings settings = fem::recommended_settings(contact_radius, material.modulus->surface_exponent(),
-                                                       s.discretization.force_tolerance);
+    const double tolerance = s.discretization.force_tolerance;
+    fem::Settings settings =
+      fem::recommended_settings(contact_radius, material.modulus->surface_exponent(), tolerance);
+    // The truncation error falls like (a/L)^(1 + s) with s the exponent of the field far below the surface:
+    // for layers over a power law that is the power law's. Measured (flat punch, 16 layers over 10 a, k = -0.5):
+    // L/a of s = 0 (1.1e8) lost 1.2e-4 of the force against L/a = 1e16.
+    const double deep = deep_exponent(*material.modulus);
+    if (deep != material.modulus->surface_exponent())
+      settings.mesh.far_field_size = fem::recommended_settings(contact_radius, deep, tolerance).mesh.far_field_size;
     settings.discretization.degree = s.discretization.degree;
     settings.discretization.formulation = fe_formulation(s);
     settings.mesh.global_refinements = refinement;

@@ -6,9 +6,10 @@
 //   - the load: Load/type and Load/control as an fem::LoadCase;
 //   - the settings: fem::recommended_settings for the surface exponent s of that modulus field
 //     (ModulusField::surface_exponent(): E ~ z^s as z -> 0), never for Material/k. The two differ for a
-//     layered modulus, whose top layer is a constant (s = 0): its surface needs no z-halvings, and its far
-//     field is chosen for s = 0. Then Discretization/degree, formulation, far field (L/a, 0: the
-//     recommended one) and the uniform refinement level of the run.
+//     layered modulus, whose top layer is a constant (s = 0): its surface needs no z-halvings (those of
+//     k = 0.5, 1e-10 a thin, make the solve unreliable at one refinement: energy mismatch 1.6e-6). The far
+//     field L/a follows the exponent deep below (the layers' base power law: k). Then Discretization/degree,
+//     formulation, far field (L/a, 0: the recommended one) and the uniform refinement level of the run.
 #pragma once
 
 #include "scene.h"
@@ -22,6 +23,10 @@ namespace gradcontact::cases
   /// Material/layered depth times Load/a deep.
   fem::Material fe_material(const Scene &scene);
 
+  /// The exponent s of E ~ z^s deep below the surface, which sets the far field: a layered field's base's,
+  /// else the surface exponent (the power law and the expression have one exponent).
+  double deep_exponent(const fem::ModulusField &modulus);
+
   /// Discretization/formulation as the FE enum; an unknown name is an error naming the entry.
   fem::Formulation fe_formulation(const Scene &scene);
 
@@ -31,8 +36,8 @@ namespace gradcontact::cases
 
   /// The mesh and discretisation of the scene at contact radius `contact_radius` (the adhesive searches
   /// solve at many radii) and `refinement` uniform refinements: the recommended settings for the
-  /// surface exponent of `material.modulus` and Discretization/force tolerance, with the scene's degree,
-  /// formulation and far field.
+  /// surface exponent of `material.modulus` and Discretization/force tolerance, the far field L/a for its
+  /// deep exponent (unless Discretization/far field gives one), with the scene's degree and formulation.
   fem::Settings fe_settings(const Scene &scene, const fem::Material &material, double contact_radius,
                             unsigned int refinement);
 
