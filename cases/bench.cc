@@ -1,5 +1,6 @@
 #include "bench.h"
 #include "fe_bench.h"
+#include "report.h"
 
 #include <analytic/batch.hpp>
 
@@ -289,7 +290,8 @@ namespace gradcontact::cases
     // rewrite (another part) are carried over, then the folder replaces reports/benchmarks in one rename,
     // so a failed run leaves the old report as it was.
     const fs::path folder = o.reports / "benchmarks";
-    const fs::path tmp = o.reports / ".benchmarks.tmp";
+    const fs::path tmp = temporary_sibling(folder);
+    remove_stale_temporaries(o.reports); // what a killed run left
     fs::remove_all(tmp);
     fs::create_directories(tmp);
     try

@@ -1,6 +1,7 @@
 #include "fe_adhesion.h"
 
-#include "fe_scene.h"
+#include "convergence_report.h"
+#include "fe_model.h"
 
 #include <analytic/batch.hpp>
 #include <fem/adhesion.h>
@@ -8,6 +9,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <fstream>
@@ -115,17 +117,11 @@ namespace gradcontact::cases
 
   namespace
   {
-    fem::AdhesiveContact::SettingsFunction fe_settings(const Scene &s, const unsigned int level)
+    /// The FE settings of the scene at any contact radius a (the searches solve at many) and one level.
+    fem::AdhesiveContact::SettingsFunction settings_at(const Scene &s, const fem::Material &material,
+                                                        const unsigned int level)
     {
-      return [&s, level](const double a) {
-        fem::Settings st = fem::recommended_settings(a, s.material.k, s.discretization.force_tolerance);
-        st.discretization.degree = s.discretization.degree;
-        set_fe_formulation(s, st.discretization);
-        st.mesh.global_refinements = level;
-        if (s.discretization.far_field > 0.)
-          st.mesh.far_field_size = s.discretization.far_field;
-        return st;
-      };
+      return [&s, material, level](const double a) { return fe_settings(s, material, a, level); };
     }
 
     std::optional<fem::Profile> fe_profile_of(const LoadParameters &l)
@@ -161,7 +157,8 @@ namespace gradcontact::cases
         !(s.adhesion.work_of_adhesion > 0.))
       throw std::invalid_argument("scene " + s.file + ": an FE adhesive curve needs a curved profile (paraboloid, cone, "
                                   "power law) and Adhesion/work of adhesion > 0");
-    fem::AdhesiveContact model(fe_material(s), fe_profile_of(l), fe_settings(s, s.discretization.refinements.back()),
+    const fem::Material material = fe_material(s);
+    fem::AdhesiveContact model(material, fe_profile_of(l), settings_at(s, material, finest_refinement(s)),
                                fe_parameters(s.adhesion));
     const double a0 = s.adhesion.initial_radius > 0. ? s.adhesion.initial_radius : l.a;
     const fem::AdhesiveCriticalState c = model.critical_state(
@@ -177,374 +174,415 @@ namespace gradcontact::cases
     return curve;
   }
 
-  SceneResult run_adhesion_scene(const Scene &s, const fs::path &folder, const bool verbose)
+  namespace
   {
-    SceneResult result;
-    result.name = s.info.name;
-    result.description = s.info.description;
-    result.kind = "adhesion";
-    const auto start = std::chrono::steady_clock::now();
-    std::ofstream(folder / "parameters.prm") << s.resolved;
-
-    const LoadParameters &l = s.load;
-    const AdhesionParameters &ad = s.adhesion;
-    const std::string where = "scene " + s.file + ": ";
-    const bool optimal = l.type == Type::constant_pressure;
-    if (optimal && ad.work_of_adhesion > 0.)
-      throw std::invalid_argument(where + "Adhesion/work of adhesion = " + format(ad.work_of_adhesion) +
-                                  " with Load/type = constant pressure: a prescribed pressure has no JKR state; the "
-                                  "optimal profile (9.69-9.74) takes Adhesion/tensile strength > 0 and no work of adhesion");
-    if (!optimal && !(ad.work_of_adhesion > 0.))
-      throw std::invalid_argument(where + "Adhesion/work of adhesion = " + format(ad.work_of_adhesion) +
-                                  " must be in (0, inf) for an adhesive " + "scene");
-    if (optimal && !(ad.tensile_strength > 0.))
-      throw std::invalid_argument(where + "Adhesion/tensile strength = " + format(ad.tensile_strength) +
-                                  " must be in (0, inf) for the optimal profile");
-
-    std::vector<AdhesiveReference> references;
-    if (s.references.closed_form)
-      references.emplace_back(s, "closed_form");
-    if (s.references.numerical_mdr)
-      references.emplace_back(s, "numerical_mdr");
-
-    // Compares one FE value with every analytic reference.
-    const auto check = [&](const std::string &quantity, const std::string &metric, const double fe,
-                           const std::string &ref_quantity, const json &extra, const double tolerance,
-                           const unsigned int dofs, const double seconds, const std::optional<double> scale = std::nullopt) {
-      double first = std::numeric_limits<double>::quiet_NaN();
-      for (const AdhesiveReference &ref : references)
-        try
-          {
-            const double r = ref.get(ref_quantity, extra);
-            if (&ref == &references.front())
-              first = r;
-            result.rows.push_back(compare(quantity, metric, "FE", ref.label(), r, fe, scale ? *scale : r, tolerance, dofs, seconds));
-          }
-        catch (const std::exception &e)
-          {
-            result.rows.push_back(failed(quantity, "FE", ref.label(), concise(e)));
-          }
-      return std::make_pair(fe, first);
-    };
-
-    const double k = s.material.k;
-    std::vector<LevelResult> levels;
-    std::vector<Series> curve_series;
-    for (const unsigned int level : s.discretization.refinements)
+    /// An adhesive scene, level by level: the optimal profile (9.69-9.74) or the FE model's own JKR critical
+    /// states (flat punch, concave punch, curved profiles); then the force-depth plot and the convergence report.
+    class AdhesionStudy
+    {
+    public:
+      AdhesionStudy(const Scene &s, const fs::path &folder, const bool verbose, SceneResult &result)
+        : s(s), l(s.load), ad(s.adhesion), folder(folder), verbose(verbose), result(result)
       {
-        const auto level_start = std::chrono::steady_clock::now();
-        LevelResult lr;
-        lr.refinement = level;
-        const auto settings = fe_settings(s, level);
-        const std::string level_tag = s.discretization.refinements.size() > 1 ? ", refinement " + std::to_string(level) : "";
+        if (s.references.closed_form)
+          references.emplace_back(s, "closed_form");
+        if (s.references.numerical_mdr)
+          references.emplace_back(s, "numerical_mdr");
+      }
 
-        if (optimal)
+      void run()
+      {
+        for (const unsigned int level : s.discretization.refinements)
           {
-            // 9.69-9.74: the surface under p = -sigma_th on r <= a; f_opt(r) = w_c - w(r).
-            const fem::Settings st = settings(l.a);
-            fem::AxisymmetricSolver solver(fe_material(s), st.mesh, st.discretization);
-            fem::LoadCase tension;
-            tension.type = fem::LoadType::constant_pressure;
-            tension.pressure = -ad.tensile_strength;
-            fem::OutputRequest out;
-            for (const double x : s.outputs.displacement_radii)
-              out.displacement_radii.push_back(x * l.a);
-            const fem::Result r = solver.run(tension, out);
-            lr.dofs = r.n_dofs;
-            lr.seconds = seconds_since(level_start);
-            if (!r.reliable)
-              result.rows.push_back(failed("FE solve", "FE", "-", r.message));
-            const double wc = r.depth;
-            lr.values["centre displacement w_c,opt"] = check("centre displacement w_c,opt", "relative" + level_tag, wc, "depth", json::object(), s.tolerances.depth,
-                  lr.dofs, lr.seconds);
-            Series fe_profile{"FE (w_c - w)", {}, {}, true};
-            for (const fem::Sample &w : r.displacement)
-              {
-                const std::string metric = "r/a = " + format(w.r / l.a) + ", relative to |w_c|" + level_tag;
-                check("displacement w_opt", metric, w.value, "displacement", {{"r", w.r}}, s.tolerances.displacement,
-                      lr.dofs, lr.seconds, std::abs(wc));
-                if (w.r <= l.a)
-                  {
-                    check("optimal profile f_opt", metric, wc - w.value, "profile", {{"r", w.r}},
-                          s.tolerances.displacement, lr.dofs, lr.seconds, std::abs(wc));
-                    fe_profile.x.push_back(w.r / l.a);
-                    fe_profile.y.push_back((wc - w.value) / std::abs(wc));
-                  }
-              }
-            if (s.outputs.plots && !references.empty() && level == s.discretization.refinements.back())
-              {
-                Series curve{"f_opt (9.73) / |w_c,opt|", {}, {}, false};
-                try
-                  {
-                    const double wc_ref = std::abs(references.front().get("depth"));
-                    for (int i = 0; i <= 200; ++i)
-                      {
-                        const double x = i / 200.;
-                        curve.x.push_back(x);
-                        curve.y.push_back(references.front().get("profile", {{"r", x * l.a}}) / wc_ref);
-                      }
-                  }
-                catch (const std::exception &)
-                  {
-                  }
-                double worst = 0;
-                for (const Row &row : result.rows)
-                  if (row.quantity == "optimal profile f_opt" && row.error.empty())
-                    worst = std::max(worst, row.rel_error);
-                write_plot(folder, "optimal_profile", s.info.name + ": optimal profile (worst FE error " + format(worst) + ")",
-                           "r / a", "f_opt / |w_c,opt|", {curve, fe_profile});
-              }
-            levels.push_back(lr);
-            continue;
-          }
-
-        // JKR: the FE model's own critical states.
-        fem::AdhesiveContact model(fe_material(s), fe_profile_of(l), settings, fe_parameters(ad));
-        const double dgamma = ad.work_of_adhesion;
-        const bool power_law_modulus = s.material.modulus == MaterialParameters::Modulus::power_law;
-        const auto report_state = [&](const std::string &name, const fem::AdhesiveCriticalState &c, const json &extra,
-                                      const bool with_radius) {
-          lr.dofs = std::max(lr.dofs, c.max_dofs);
-          const double t = seconds_since(level_start);
-          lr.values["pull-off force, " + name] =
-            check("pull-off force", name + level_tag, c.state.force, "critical_force", extra, s.tolerances.force, c.max_dofs, t);
-          if (with_radius)
-            check("critical radius", name + level_tag, c.state.radius, "critical_radius", extra, s.tolerances.contact_radius,
-                  c.max_dofs, t);
-          check("critical depth", name + level_tag, c.state.depth, "critical_depth", extra, s.tolerances.depth, c.max_dofs, t);
-          if (power_law_modulus)
-            result.rows.push_back(compare("energy release rate: a K'(a)/K(a)", name + ", at the critical radius" + level_tag,
-                                          "FE", "scaling identity 1 + k", 1. + k, c.state.scaling_exponent, 1. + k,
-                                          scaling_tolerance, c.max_dofs, t));
-          if (verbose)
-            std::cerr << "  " << name << ": a_c = " << c.state.radius << ", F_c = " << c.state.force << " ("
-                      << c.radii_solved << " FE radii, " << format(c.fe_seconds) << " s)\n";
-        };
-
-        try
-          {
-            if (l.type == Type::flat_punch)
-              report_state("periphery (edge)", model.periphery_state(l.a, dgamma), json::object(), false);
-            else if (l.type == Type::concave_punch)
-              {
-                report_state("periphery (9.65-9.66)", model.periphery_state(l.a, dgamma), {{"mechanism", "periphery"}}, false);
-                // p(r) in the critical states (9.66, 9.68) against the closed form, relative to max |p|.
-                const auto critical_pressure = [&](const std::string &name, const double delta, const json &mechanism) {
-                  if (s.outputs.pressure_radii.empty())
-                    return;
-                  std::vector<double> pr;
-                  for (const double x : s.outputs.pressure_radii)
-                    pr.push_back(x * l.a);
-                  const auto prof = model.profiles_at_delta(l.a, delta, pr, {});
-                  double scale = 0.;
-                  for (const fem::Sample &p : prof.pressure)
-                    scale = std::max(scale, std::abs(p.value));
-                  for (const fem::Sample &p : prof.pressure)
-                    {
-                      // The centre state is defined by p(0) = -sigma_th: that row would hold by construction.
-                      if (name == "centre" && p.r == 0.)
-                        continue;
-                      json extra = mechanism;
-                      extra["r"] = p.r;
-                      check("critical pressure p(r)", name + ", r/a = " + format(p.r / l.a) + ", relative to max |p|" + level_tag,
-                            p.value, "pressure", extra, s.tolerances.pressure, lr.dofs, seconds_since(level_start), scale);
-                    }
-                };
-                {
-                  const fem::AdhesiveCriticalState pc = model.periphery_state(l.a, dgamma);
-                  critical_pressure("periphery", pc.state.delta, {{"mechanism", "periphery"}});
-                }
-                if (ad.tensile_strength > 0.)
-                  {
-                    const fem::AdhesiveCriticalState cc = model.centre_state(l.a, dgamma, ad.tensile_strength);
-                    report_state("centre (9.67-9.68)", cc, {{"mechanism", "centre"}}, false);
-                    critical_pressure("centre", cc.state.delta, {{"mechanism", "centre"}});
-                    try
-                      {
-                        const double h_star = model.transition_h0(l.a, dgamma, ad.tensile_strength);
-                        lr.values["transition h0"] = check("transition h0", "periphery -> centre" + level_tag, h_star, "transition_h0", json::object(),
-                              s.tolerances.depth, lr.dofs, seconds_since(level_start));
-                      }
-                    catch (const std::runtime_error &e)
-                      {
-                        result.rows.push_back(failed("transition h0", "FE", "-", concise(e)));
-                      }
-                  }
-              }
+            level_start = std::chrono::steady_clock::now();
+            LevelResult lr;
+            lr.refinement = level;
+            level_tag = s.discretization.refinements.size() > 1 ? ", refinement " + std::to_string(level) : "";
+            const fem::Material material = fe_material(s);
+            const auto settings = settings_at(s, material, level);
+            if (l.type == Type::constant_pressure)
+              optimal_profile(material, settings(l.a), level == s.discretization.refinements.back(), lr);
             else
               {
-                const double a0 = ad.initial_radius > 0. ? ad.initial_radius : l.a;
-                std::optional<fem::AdhesiveCriticalState> force_state;
-                for (const auto control : {fem::AdhesionControl::force, fem::AdhesionControl::displacement})
+                fem::AdhesiveContact model(material, fe_profile_of(l), settings, fe_parameters(ad));
+                try
                   {
-                    if ((control == fem::AdhesionControl::force && !ad.force_control) ||
-                        (control == fem::AdhesionControl::displacement && !ad.displacement_control))
-                      continue;
-                    const json extra = {{"control", control == fem::AdhesionControl::force ? "force" : "displacement"}};
-                    // The second search starts from the first one's answer (and reuses its FE radii).
-                    const double start_radius = force_state ? force_state->state.radius : a0;
-                    try
-                      {
-                        const fem::AdhesiveCriticalState c = model.critical_state(dgamma, control, start_radius);
-                        if (control == fem::AdhesionControl::force)
-                          force_state = c;
-                        report_state(control_name(control), c, extra, true);
-                        if (l.type == Type::paraboloid && k == 0.)
-                          {
-                            // Johnson-Kendall-Roberts (1971): -3/2 pi dgamma R (force), -5/6 pi dgamma R (displacement).
-                            const double jkr = (control == fem::AdhesionControl::force ? -1.5 : -5. / 6.) * pi * dgamma * l.R;
-                            result.rows.push_back(compare("pull-off force", control_name(control) + level_tag, "FE",
-                                                          "JKR (1971)", jkr, c.state.force, jkr, s.tolerances.force,
-                                                          c.max_dofs, seconds_since(level_start)));
-                          }
-                      }
-                    catch (const std::runtime_error &e)
-                      {
-                        // "No critical state" (e.g. 2n + k - 1 <= 0, 9.60) is a finding: it passes when every
-                        // analytic reference finds none either, and fails when one of them has a state.
-                        const std::string what = concise(e);
-                        const std::string quantity = "critical state (" + control_name(control) + ")";
-                        if (what.find("no critical state") == std::string::npos || references.empty())
-                          result.rows.push_back(failed(quantity, "FE", "-", what));
-                        for (const AdhesiveReference &ref : references)
-                          try
-                            {
-                              const double F = ref.get("critical_force", extra);
-                              result.rows.push_back(failed(quantity, "FE", ref.label(),
-                                                           "FE: " + what + "; but the " + ref.label() + " has F_c = " + format(F)));
-                            }
-                          catch (const std::exception &none)
-                            {
-                              if (concise(none).find("no critical state") == std::string::npos)
-                                {
-                                  result.rows.push_back(failed(quantity, "FE", ref.label(), concise(none)));
-                                  continue;
-                                }
-                              Row row = compare(quantity, "none exists (FE and " + ref.label() + ")", "FE", ref.label(), 0., 0.,
-                                                1., 0., 0, seconds_since(level_start));
-                              if (verbose)
-                                std::cerr << "  " << ref.label() << ": " << concise(none) << "\n";
-                              result.rows.push_back(row);
-                            }
-                      }
+                    if (l.type == Type::flat_punch)
+                      report_state("periphery (edge)", model.periphery_state(l.a, ad.work_of_adhesion), json::object(),
+                                   false, lr);
+                    else if (l.type == Type::concave_punch)
+                      concave_punch(model, lr);
+                    else
+                      curved_profile(model, level == s.discretization.refinements.back(), lr);
                   }
-                // p(r) and w(r) of the FE critical state (force control) against the closed form at the same
-                // radius (9.53-9.54, 9.58-9.59): one more FE solve.
-                if (force_state && (!s.outputs.pressure_radii.empty() || !s.outputs.displacement_radii.empty()))
+                catch (const std::runtime_error &e)
                   {
-                    std::vector<double> pr, wr;
-                    for (const double x : s.outputs.pressure_radii)
-                      pr.push_back(x * force_state->state.radius);
-                    for (const double x : s.outputs.displacement_radii)
-                      wr.push_back(x * force_state->state.radius);
-                    const auto prof = model.profiles(force_state->state.radius, dgamma, pr, wr);
-                    const double ac = force_state->state.radius, t = seconds_since(level_start);
-                    double p_scale = 0., w_scale = std::abs(prof.state.depth);
-                    for (const fem::Sample &p : prof.pressure)
-                      p_scale = std::max(p_scale, std::abs(p.value));
-                    for (const fem::Sample &p : prof.pressure)
-                      check("adhesive pressure p(r)", "critical state (force control), r/a_c = " + format(p.r / ac) +
-                              ", relative to max |p|" + level_tag,
-                            p.value, "pressure", {{"a", ac}, {"r", p.r}}, s.tolerances.pressure, force_state->max_dofs, t, p_scale);
-                    for (const fem::Sample &w : prof.displacement)
-                      check("adhesive displacement w(r)", "critical state (force control), r/a_c = " + format(w.r / ac) +
-                              ", relative to |d_c|" + level_tag,
-                            w.value, "displacement", {{"a", ac}, {"r", w.r}}, s.tolerances.displacement, force_state->max_dofs, t,
-                            w_scale);
+                    result.rows.push_back(failed("FE adhesion", "FE", "-", concise(e)));
                   }
-                // FE points on the adhesive force-depth curve (force control, figures 9.22-9.23).
-                if (force_state && !ad.curve_points.empty() && level == s.discretization.refinements.back())
-                  {
-                    Series points{"FE", {}, {}, true};
-                    const double Fc = std::abs(force_state->state.force), dc = std::abs(force_state->state.depth);
-                    for (const double x : ad.curve_points)
-                      {
-                        const fem::AdhesiveState st = model.adhesive_state(x * force_state->state.radius, dgamma);
-                        const std::string metric = "a = " + format(x) + " a_c, relative to |F_c|";
-                        check("adhesive force F(a)", metric, st.force, "force", {{"a", st.radius}}, s.tolerances.force,
-                              force_state->max_dofs, seconds_since(level_start), Fc);
-                        check("adhesive depth d(a)", "a = " + format(x) + " a_c, relative to |d_c|", st.depth, "depth",
-                              {{"a", st.radius}}, s.tolerances.depth, force_state->max_dofs, seconds_since(level_start), dc);
-                        points.x.push_back(st.depth / dc);
-                        points.y.push_back(st.force / Fc);
-                      }
-                    curve_series.push_back(points);
-                    if (!references.empty())
-                      {
-                        Series curve{"closed form (9.53-9.54, 9.58-9.59)", {}, {}, false};
-                        const double xmax = *std::max_element(ad.curve_points.begin(), ad.curve_points.end());
-                        for (int i = 1; i <= 300; ++i)
-                          try
-                            {
-                              const double a = force_state->state.radius * xmax * i / 300.;
-                              const double F = references.front().get("force", {{"a", a}});
-                              const double d = references.front().get("depth", {{"a", a}});
-                              curve.x.push_back(d / dc);
-                              curve.y.push_back(F / Fc);
-                            }
-                          catch (const std::exception &)
-                            {
-                            }
-                        curve_series.insert(curve_series.begin(), curve);
-                      }
-                  }
+                lr.seconds = seconds_since(level_start);
+              }
+            levels.push_back(lr);
+          }
+        plot_force_depth();
+        convergence();
+      }
+
+    private:
+      /// Compares one FE value with every analytic reference: (FE value, first reference, NaN without one).
+      std::pair<double, double> check(const std::string &quantity, const std::string &metric, const double fe,
+                                      const std::string &ref_quantity, const json &extra, const double tolerance,
+                                      const unsigned int dofs, const double seconds,
+                                      const std::optional<double> scale = std::nullopt)
+      {
+        double first = std::numeric_limits<double>::quiet_NaN();
+        for (const AdhesiveReference &ref : references)
+          try
+            {
+              const double r = ref.get(ref_quantity, extra);
+              if (&ref == &references.front())
+                first = r;
+              result.rows.push_back(
+                compare(quantity, metric, "FE", ref.label(), r, fe, scale ? *scale : r, tolerance, dofs, seconds));
+            }
+          catch (const std::exception &e)
+            {
+              result.rows.push_back(failed(quantity, "FE", ref.label(), concise(e)));
+            }
+        return std::make_pair(fe, first);
+      }
+
+      /// 9.69-9.74: the surface under p = -sigma_th on r <= a; f_opt(r) = w_c - w(r).
+      void optimal_profile(const fem::Material &material, const fem::Settings &st, const bool finest, LevelResult &lr)
+      {
+        fem::AxisymmetricSolver solver(material, st.mesh, st.discretization);
+        fem::LoadCase tension;
+        tension.type = fem::LoadType::constant_pressure;
+        tension.pressure = -ad.tensile_strength;
+        fem::OutputRequest out;
+        for (const double x : s.outputs.displacement_radii)
+          out.displacement_radii.push_back(x * l.a);
+        const fem::Result r = solver.run(tension, out);
+        lr.dofs = r.n_dofs;
+        lr.seconds = seconds_since(level_start);
+        if (!r.reliable)
+          result.rows.push_back(failed("FE solve", "FE", "-", r.message));
+        const double wc = r.depth;
+        lr.values["centre displacement w_c,opt"] = check("centre displacement w_c,opt", "relative" + level_tag, wc, "depth",
+                                                          json::object(), s.tolerances.depth, lr.dofs, lr.seconds);
+        Series fe_profile{"FE (w_c - w)", {}, {}, true};
+        for (const fem::Sample &w : r.displacement)
+          {
+            const std::string metric = "r/a = " + format(w.r / l.a) + ", relative to |w_c|" + level_tag;
+            check("displacement w_opt", metric, w.value, "displacement", {{"r", w.r}}, s.tolerances.displacement, lr.dofs,
+                  lr.seconds, std::abs(wc));
+            if (w.r <= l.a)
+              {
+                check("optimal profile f_opt", metric, wc - w.value, "profile", {{"r", w.r}}, s.tolerances.displacement,
+                      lr.dofs, lr.seconds, std::abs(wc));
+                fe_profile.x.push_back(w.r / l.a);
+                fe_profile.y.push_back((wc - w.value) / std::abs(wc));
               }
           }
-        catch (const std::runtime_error &e)
+        if (s.outputs.plots && !references.empty() && finest)
           {
-            result.rows.push_back(failed("FE adhesion", "FE", "-", concise(e)));
+            Series curve{"f_opt (9.73) / |w_c,opt|", {}, {}, false};
+            try
+              {
+                const double wc_ref = std::abs(references.front().get("depth"));
+                for (int i = 0; i <= 200; ++i)
+                  {
+                    const double x = i / 200.;
+                    curve.x.push_back(x);
+                    curve.y.push_back(references.front().get("profile", {{"r", x * l.a}}) / wc_ref);
+                  }
+              }
+            catch (const std::exception &)
+              {
+              }
+            write_plot(folder, "optimal_profile",
+                       s.info.name + ": optimal profile (worst FE error " + format(worst("optimal profile f_opt")) + ")",
+                       "r / a", "f_opt / |w_c,opt|", {curve, fe_profile});
           }
-        lr.seconds = seconds_since(level_start);
-        levels.push_back(lr);
       }
 
-    if (s.outputs.plots && curve_series.size() > 1)
+      /// The rows of one FE critical state: pull-off force, critical radius (`with_radius`) and depth against the
+      /// references, and for the power law the scaling identity a K'(a)/K(a) = 1 + k of the FE G(a).
+      void report_state(const std::string &name, const fem::AdhesiveCriticalState &c, const json &extra,
+                        const bool with_radius, LevelResult &lr)
       {
-        double worst = 0;
+        const double k = s.material.k;
+        lr.dofs = std::max(lr.dofs, c.max_dofs);
+        const double t = seconds_since(level_start);
+        lr.values["pull-off force, " + name] =
+          check("pull-off force", name + level_tag, c.state.force, "critical_force", extra, s.tolerances.force, c.max_dofs, t);
+        if (with_radius)
+          check("critical radius", name + level_tag, c.state.radius, "critical_radius", extra, s.tolerances.contact_radius,
+                c.max_dofs, t);
+        check("critical depth", name + level_tag, c.state.depth, "critical_depth", extra, s.tolerances.depth, c.max_dofs, t);
+        if (s.material.modulus == MaterialParameters::Modulus::power_law)
+          result.rows.push_back(compare("energy release rate: a K'(a)/K(a)", name + ", at the critical radius" + level_tag,
+                                        "FE", "scaling identity 1 + k", 1. + k, c.state.scaling_exponent, 1. + k,
+                                        scaling_tolerance, c.max_dofs, t));
+        if (verbose)
+          std::cerr << "  " << name << ": a_c = " << c.state.radius << ", F_c = " << c.state.force << " ("
+                    << c.radii_solved << " FE radii, " << format(c.fe_seconds) << " s)\n";
+      }
+
+      /// The concave punch (9.65-9.68): the periphery mechanism, with a tensile strength the centre one and the
+      /// transition h0, and p(r) in each critical state.
+      void concave_punch(fem::AdhesiveContact &model, LevelResult &lr)
+      {
+        const double dgamma = ad.work_of_adhesion;
+        report_state("periphery (9.65-9.66)", model.periphery_state(l.a, dgamma), {{"mechanism", "periphery"}}, false, lr);
+        {
+          const fem::AdhesiveCriticalState pc = model.periphery_state(l.a, dgamma);
+          critical_pressure(model, "periphery", pc.state.delta, {{"mechanism", "periphery"}}, lr);
+        }
+        if (ad.tensile_strength > 0.)
+          {
+            const fem::AdhesiveCriticalState cc = model.centre_state(l.a, dgamma, ad.tensile_strength);
+            report_state("centre (9.67-9.68)", cc, {{"mechanism", "centre"}}, false, lr);
+            critical_pressure(model, "centre", cc.state.delta, {{"mechanism", "centre"}}, lr);
+            try
+              {
+                const double h_star = model.transition_h0(l.a, dgamma, ad.tensile_strength);
+                lr.values["transition h0"] = check("transition h0", "periphery -> centre" + level_tag, h_star,
+                                                   "transition_h0", json::object(), s.tolerances.depth, lr.dofs,
+                                                   seconds_since(level_start));
+              }
+            catch (const std::runtime_error &e)
+              {
+                result.rows.push_back(failed("transition h0", "FE", "-", concise(e)));
+              }
+          }
+      }
+
+      /// p(r) in a critical state of the concave punch (9.66, 9.68) against the closed form, relative to max |p|.
+      void critical_pressure(fem::AdhesiveContact &model, const std::string &name, const double delta,
+                             const json &mechanism, const LevelResult &lr)
+      {
+        if (s.outputs.pressure_radii.empty())
+          return;
+        std::vector<double> pr;
+        for (const double x : s.outputs.pressure_radii)
+          pr.push_back(x * l.a);
+        const auto prof = model.profiles_at_delta(l.a, delta, pr, {});
+        double scale = 0.;
+        for (const fem::Sample &p : prof.pressure)
+          scale = std::max(scale, std::abs(p.value));
+        for (const fem::Sample &p : prof.pressure)
+          {
+            // The centre state is defined by p(0) = -sigma_th: that row would hold by construction.
+            if (name == "centre" && p.r == 0.)
+              continue;
+            json extra = mechanism;
+            extra["r"] = p.r;
+            check("critical pressure p(r)", name + ", r/a = " + format(p.r / l.a) + ", relative to max |p|" + level_tag,
+                  p.value, "pressure", extra, s.tolerances.pressure, lr.dofs, seconds_since(level_start), scale);
+          }
+      }
+
+      /// A curved profile: the critical states under force and displacement control (JKR 1971 too for the
+      /// paraboloid at k = 0), then p(r), w(r) and the force-depth points of the force-controlled one.
+      void curved_profile(fem::AdhesiveContact &model, const bool finest, LevelResult &lr)
+      {
+        const double a0 = ad.initial_radius > 0. ? ad.initial_radius : l.a;
+        std::optional<fem::AdhesiveCriticalState> force_state;
+        for (const auto control : {fem::AdhesionControl::force, fem::AdhesionControl::displacement})
+          {
+            if ((control == fem::AdhesionControl::force && !ad.force_control) ||
+                (control == fem::AdhesionControl::displacement && !ad.displacement_control))
+              continue;
+            const json extra = {{"control", control == fem::AdhesionControl::force ? "force" : "displacement"}};
+            // The second search starts from the first one's answer (and reuses its FE radii).
+            const double start_radius = force_state ? force_state->state.radius : a0;
+            try
+              {
+                const fem::AdhesiveCriticalState c = model.critical_state(ad.work_of_adhesion, control, start_radius);
+                if (control == fem::AdhesionControl::force)
+                  force_state = c;
+                report_state(control_name(control), c, extra, true, lr);
+                if (l.type == Type::paraboloid && s.material.k == 0.)
+                  {
+                    // Johnson-Kendall-Roberts (1971): -3/2 pi dgamma R (force), -5/6 pi dgamma R (displacement).
+                    const double jkr =
+                      (control == fem::AdhesionControl::force ? -1.5 : -5. / 6.) * pi * ad.work_of_adhesion * l.R;
+                    result.rows.push_back(compare("pull-off force", control_name(control) + level_tag, "FE", "JKR (1971)",
+                                                  jkr, c.state.force, jkr, s.tolerances.force, c.max_dofs,
+                                                  seconds_since(level_start)));
+                  }
+              }
+            catch (const std::runtime_error &e)
+              {
+                no_critical_state(control, extra, concise(e));
+              }
+          }
+        if (force_state)
+          {
+            critical_profiles(model, *force_state);
+            if (finest)
+              force_depth_points(model, *force_state);
+          }
+      }
+
+      /// "No critical state" (e.g. 2n + k - 1 <= 0, 9.60) is a finding: it passes when every analytic reference
+      /// finds none either, and fails when one of them has a state.
+      void no_critical_state(const fem::AdhesionControl control, const json &extra, const std::string &what)
+      {
+        const std::string quantity = "critical state (" + control_name(control) + ")";
+        if (what.find("no critical state") == std::string::npos || references.empty())
+          result.rows.push_back(failed(quantity, "FE", "-", what));
+        for (const AdhesiveReference &ref : references)
+          try
+            {
+              const double F = ref.get("critical_force", extra);
+              result.rows.push_back(
+                failed(quantity, "FE", ref.label(), "FE: " + what + "; but the " + ref.label() + " has F_c = " + format(F)));
+            }
+          catch (const std::exception &none)
+            {
+              if (concise(none).find("no critical state") == std::string::npos)
+                {
+                  result.rows.push_back(failed(quantity, "FE", ref.label(), concise(none)));
+                  continue;
+                }
+              Row row = compare(quantity, "none exists (FE and " + ref.label() + ")", "FE", ref.label(), 0., 0., 1., 0., 0,
+                                seconds_since(level_start));
+              if (verbose)
+                std::cerr << "  " << ref.label() << ": " << concise(none) << "\n";
+              result.rows.push_back(row);
+            }
+      }
+
+      /// p(r) and w(r) of the FE critical state (force control) against the closed form at the same radius
+      /// (9.53-9.54, 9.58-9.59): one more FE solve.
+      void critical_profiles(fem::AdhesiveContact &model, const fem::AdhesiveCriticalState &c)
+      {
+        if (s.outputs.pressure_radii.empty() && s.outputs.displacement_radii.empty())
+          return;
+        std::vector<double> pr, wr;
+        for (const double x : s.outputs.pressure_radii)
+          pr.push_back(x * c.state.radius);
+        for (const double x : s.outputs.displacement_radii)
+          wr.push_back(x * c.state.radius);
+        const auto prof = model.profiles(c.state.radius, ad.work_of_adhesion, pr, wr);
+        const double ac = c.state.radius, t = seconds_since(level_start);
+        double p_scale = 0., w_scale = std::abs(prof.state.depth);
+        for (const fem::Sample &p : prof.pressure)
+          p_scale = std::max(p_scale, std::abs(p.value));
+        for (const fem::Sample &p : prof.pressure)
+          check("adhesive pressure p(r)",
+                "critical state (force control), r/a_c = " + format(p.r / ac) + ", relative to max |p|" + level_tag, p.value,
+                "pressure", {{"a", ac}, {"r", p.r}}, s.tolerances.pressure, c.max_dofs, t, p_scale);
+        for (const fem::Sample &w : prof.displacement)
+          check("adhesive displacement w(r)",
+                "critical state (force control), r/a_c = " + format(w.r / ac) + ", relative to |d_c|" + level_tag, w.value,
+                "displacement", {{"a", ac}, {"r", w.r}}, s.tolerances.displacement, c.max_dofs, t, w_scale);
+      }
+
+      /// FE points on the adhesive force-depth curve (force control, figures 9.22-9.23) and the closed-form curve.
+      void force_depth_points(fem::AdhesiveContact &model, const fem::AdhesiveCriticalState &c)
+      {
+        if (ad.curve_points.empty())
+          return;
+        Series points{"FE", {}, {}, true};
+        const double Fc = std::abs(c.state.force), dc = std::abs(c.state.depth);
+        for (const double x : ad.curve_points)
+          {
+            const fem::AdhesiveState st = model.adhesive_state(x * c.state.radius, ad.work_of_adhesion);
+            const std::string metric = "a = " + format(x) + " a_c, relative to |F_c|";
+            check("adhesive force F(a)", metric, st.force, "force", {{"a", st.radius}}, s.tolerances.force, c.max_dofs,
+                  seconds_since(level_start), Fc);
+            check("adhesive depth d(a)", "a = " + format(x) + " a_c, relative to |d_c|", st.depth, "depth",
+                  {{"a", st.radius}}, s.tolerances.depth, c.max_dofs, seconds_since(level_start), dc);
+            points.x.push_back(st.depth / dc);
+            points.y.push_back(st.force / Fc);
+          }
+        curve_series.push_back(points);
+        if (references.empty())
+          return;
+        Series curve{"closed form (9.53-9.54, 9.58-9.59)", {}, {}, false};
+        const double xmax = *std::max_element(ad.curve_points.begin(), ad.curve_points.end());
+        for (int i = 1; i <= 300; ++i)
+          try
+            {
+              const double a = c.state.radius * xmax * i / 300.;
+              const double F = references.front().get("force", {{"a", a}});
+              const double d = references.front().get("depth", {{"a", a}});
+              curve.x.push_back(d / dc);
+              curve.y.push_back(F / Fc);
+            }
+          catch (const std::exception &)
+            {
+            }
+        curve_series.insert(curve_series.begin(), curve);
+      }
+
+      /// The largest relative error of the rows of `quantity` that evaluated.
+      double worst(const std::string &quantity) const
+      {
+        double w = 0;
         for (const Row &row : result.rows)
-          if (row.quantity == "adhesive force F(a)" && row.error.empty())
-            worst = std::max(worst, row.rel_error);
-        write_plot(folder, "force_depth", s.info.name + ": adhesive force against depth (worst FE error " + format(worst) + ")",
-                   "d / |d_c|", "F / |F_c|", curve_series);
+          if (row.quantity == quantity && row.error.empty())
+            w = std::max(w, row.rel_error);
+        return w;
       }
 
-    // Refinement study: each FE value against the first reference, observed order over the last three levels.
-    if (levels.size() > 1 && !references.empty())
+      void plot_force_depth() const
       {
-        std::ofstream csv(folder / "convergence.csv"), md(folder / "convergence.md");
-        csv << "quantity,refinement,dofs,seconds,value,reference,relative_error,observed_order\n";
-        md << "# " << s.info.name << ": convergence\n\nErrors against the " << references.front().label()
-           << "; the observed order p (error ~ h^p, h ~ DoFs^(-1/2)) is fitted over the last three levels.\n\n";
-        unsigned int index = 0;
+        if (s.outputs.plots && curve_series.size() > 1)
+          write_plot(folder, "force_depth",
+                     s.info.name + ": adhesive force against depth (worst FE error " + format(worst("adhesive force F(a)")) + ")",
+                     "d / |d_c|", "F / |F_c|", curve_series);
+      }
+
+      /// Refinement study: each FE value against the first reference.
+      void convergence() const
+      {
+        if (levels.size() < 2 || references.empty())
+          return;
+        std::vector<ConvergenceSeries> series;
         for (const auto &[key, first_level] : levels.front().values)
           {
             const double reference = first_level.second;
             if (!std::isfinite(reference))
               continue;
-            std::vector<Level> ls;
+            ConvergenceSeries c{key, reference, {}};
             for (const LevelResult &lr : levels)
               if (lr.values.count(key))
-                ls.push_back({lr.refinement, lr.dofs, lr.seconds, lr.values.at(key).first,
-                              std::abs(lr.values.at(key).first - reference) / std::abs(reference)});
-            const double p = observed_order(ls);
-            md << "## " << key << "\n\n| refinement | DoFs | s | value | rel. error |\n|---|---|---|---|---|\n";
-            Series errors{key, {}, {}, true};
-            for (const Level &lv : ls)
-              {
-                md << "| " << lv.refinement << " | " << lv.dofs << " | " << format(lv.seconds) << " | " << format(lv.value)
-                   << " | " << format(lv.error) << " |\n";
-                csv << '"' << key << "\"," << lv.refinement << ',' << lv.dofs << ',' << lv.seconds << ',' << lv.value << ','
-                    << reference << ',' << lv.error << ',' << p << '\n';
-                errors.x.push_back(lv.dofs);
-                errors.y.push_back(std::max(lv.error, 1e-17));
-              }
-            md << "\nObserved order over the last three levels: " << format(p) << "\n\n";
-            if (s.outputs.plots)
-              write_plot(folder, "convergence-" + std::to_string(index++),
-                         s.info.name + ": " + key + " error against DoFs", "DoFs", "relative error", {errors}, true, true);
+                {
+                  const double v = lr.values.at(key).first;
+                  c.levels.push_back({lr.refinement, lr.dofs, lr.seconds, v, relative_error(v, reference)});
+                }
+            series.push_back(c);
           }
+        write_convergence(folder, s.info.name, references.front().label(), series, s.outputs.plots);
       }
 
+      const Scene &s;
+      const LoadParameters &l;
+      const AdhesionParameters &ad;
+      const fs::path &folder;
+      const bool verbose;
+      SceneResult &result;
+      std::vector<AdhesiveReference> references;
+      std::vector<LevelResult> levels;
+      std::vector<Series> curve_series; ///< the force-depth plot (closed form first, then the FE points)
+      std::chrono::steady_clock::time_point level_start;
+      std::string level_tag; ///< ", refinement l" in the metrics of a refinement study
+    };
+  } // namespace
+
+  SceneResult run_adhesion_scene(const Scene &s, const fs::path &folder, const bool verbose)
+  {
+    require_kind(s, SceneKind::adhesion, "run_adhesion_scene");
+    const auto start = std::chrono::steady_clock::now();
+    SceneResult result;
+    result.name = s.info.name;
+    result.description = s.info.description;
+    result.kind = to_string(s.kind);
+    std::ofstream(folder / "parameters.prm") << s.resolved;
+    AdhesionStudy(s, folder, verbose, result).run();
     result.seconds = seconds_since(start);
     return result;
   }

@@ -1,5 +1,5 @@
 // gradcontact/cases: FE work-precision benchmarks and the FreeFem++ peer (`gradcontact bench --part
-// fe|peer`, issue 7).
+// fe|peer`).
 //
 // Scenes (both models, both references from analytic/normal.hpp, an independent path):
 //   flat punch, depth d = 1e-3 a:        relative error of F against (9.16);
@@ -35,7 +35,7 @@ namespace gradcontact::cases
     std::vector<std::string> scenes;
   };
 
-  /// One run of one model on one mesh, timed over the repetitions (a comparison is a value, STYLE 7).
+  /// One run of one model on one mesh, timed over the repetitions (a comparison is a value).
   struct WorkPrecisionRow
   {
     std::string  load;  ///< "flat_punch" | "paraboloid"

@@ -1,7 +1,7 @@
 #include "fe_scene.h"
 
-#include "fe_adhesion.h"
-#include "fe_tangential.h"
+#include "convergence_report.h"
+#include "fe_model.h"
 
 #include <analytic/batch.hpp>
 #include <analytic/material.hpp>
@@ -113,38 +113,6 @@ namespace gradcontact::cases
     };
 
     // --- the FE side ------------------------------------------------------------------------------------
-    fem::LoadCase fe_load(const LoadParameters &l)
-    {
-      fem::LoadCase lc;
-      switch (l.type)
-        {
-          case Type::flat_punch:
-            lc.type = fem::LoadType::flat_punch;
-            lc.depth = l.depth;
-            return lc;
-          case Type::concave_punch:
-            lc.type = fem::LoadType::concave_punch;
-            lc.depth = l.depth;
-            lc.profile = fem::Profile::concave_paraboloid(l.h0);
-            return lc;
-          case Type::constant_pressure:
-            lc.type = fem::LoadType::constant_pressure;
-            lc.pressure = l.p0;
-            return lc;
-          default:
-            break;
-        }
-      lc.profile = l.type == Type::paraboloid ? fem::Profile::paraboloid(l.R)
-                   : l.type == Type::cone     ? fem::Profile::cone(l.tan_theta)
-                                              : fem::Profile::power_law(l.n, l.A);
-      lc.type = l.control == Control::contact_radius ? fem::LoadType::indenter
-                : l.control == Control::depth        ? fem::LoadType::indenter_depth
-                                                     : fem::LoadType::indenter_force;
-      lc.depth = l.depth;
-      lc.force = l.force;
-      return lc;
-    }
-
     struct FeRun
     {
       unsigned int refinement;
@@ -155,17 +123,12 @@ namespace gradcontact::cases
     FeRun run_fe(const Scene &s, const unsigned int refinement, const fs::path &folder)
     {
       const auto start = std::chrono::steady_clock::now();
-      fem::Settings settings = fem::recommended_settings(s.load.a, s.material.k, s.discretization.force_tolerance);
-      settings.discretization.degree = s.discretization.degree;
-      set_fe_formulation(s, settings.discretization);
-      settings.mesh.global_refinements = refinement;
-      if (s.discretization.far_field > 0.)
-        settings.mesh.far_field_size = s.discretization.far_field;
+      FeModel model = fe_model(s, refinement);
       // The pressure of a cone (and of f = A r^n, n < 2) is singular at the axis: grade the mesh
       // toward (0, 0) (fem/README.md, "Curved indenters": cone p L2 2.8e-4 -> 5.4e-6 at k = 0).
       if (s.load.type == Type::cone || (s.load.type == Type::power_law && s.load.n < 2))
-        settings.mesh.axis_refinements = 12;
-      fem::AxisymmetricSolver solver(fe_material(s), settings.mesh, settings.discretization);
+        model.settings.mesh.axis_refinements = 12;
+      fem::AxisymmetricSolver solver(model.material, model.settings.mesh, model.settings.discretization);
       fem::OutputRequest out;
       for (const double x : s.outputs.pressure_radii)
         out.pressure_radii.push_back(x * s.load.a);
@@ -173,7 +136,7 @@ namespace gradcontact::cases
         out.displacement_radii.push_back(x * s.load.a);
       if (s.outputs.vtu)
         out.vtu_file = (folder / ("fields-" + std::to_string(refinement) + ".vtu")).string();
-      fem::Result r = solver.run(fe_load(s.load), out);
+      fem::Result r = solver.run(model.load, out);
       return {refinement, r, std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count()};
     }
 
@@ -267,10 +230,7 @@ namespace gradcontact::cases
           const auto g = parse_expression<1>("profile curvature", "r", c.curvature, constants);
           profile.d2f = [g, at](double r) { return at(*g, r); };
         }
-      else if (!c.pressure.empty())
-        // The pressure needs g'(x), a quadrature of f' and f'' nested in another one: finite-difference
-        // noise (1e-13) keeps both from meeting their tolerance, and the run takes minutes (measured: 325 s).
-        throw std::invalid_argument("Candidate/profile curvature: needed for a pressure candidate (give f''(r))");
+      // (a pressure candidate without f'' is refused by scene_kind: see there why)
       const MaterialParameters &mp = s.material;
       const Medium m = medium(GradedHalfSpace{mp.E0, mp.c0, mp.k, mp.nu});
       const double a = s.load.a;
@@ -312,29 +272,20 @@ namespace gradcontact::cases
       profile_rows("pressure", c.pressure, s.outputs.pressure_radii, [&](double r) { return mdr::pressure(w1d, m, r); });
       profile_rows("displacement", c.displacement, s.outputs.displacement_radii,
                    [&](double r) { return mdr::displacement(w1d, m, r); });
-      if (result.rows.empty())
-        throw std::invalid_argument("Candidate: no candidate formula given (depth, force, pressure or displacement)");
 
       // The same candidate against the FE model: the profile as a custom indenter under contact-radius
       // control on the recommended mesh, one solve for every quantity.
       if (s.references.fem)
         {
-          Scene fe_scene = s;
-          fe_scene.load.control = Control::contact_radius;
           const auto t0 = std::chrono::steady_clock::now();
-          fem::Settings settings = fem::recommended_settings(a, mp.k, s.discretization.force_tolerance);
-          settings.discretization.degree = s.discretization.degree;
-          set_fe_formulation(s, settings.discretization);
-          fem::AxisymmetricSolver solver(fe_material(fe_scene), settings.mesh, settings.discretization);
-          fem::LoadCase lc;
-          lc.type = fem::LoadType::indenter;
-          lc.profile = fem::Profile::custom(profile.f, 2.);
+          const FeModel model = candidate_fe_model(s, fem::Profile::custom(profile.f, 2.));
+          fem::AxisymmetricSolver solver(model.material, model.settings.mesh, model.settings.discretization);
           fem::OutputRequest out;
           for (const double x : s.outputs.pressure_radii)
             out.pressure_radii.push_back(x * a);
           for (const double x : s.outputs.displacement_radii)
             out.displacement_radii.push_back(x * a);
-          const fem::Result fe = solver.run(lc, out);
+          const fem::Result fe = solver.run(model.load, out);
           const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
           const auto fe_row = [&](const std::string &quantity, const std::string &metric, const std::string &expression,
                                   const double fe_value, const double tolerance, const std::optional<double> r) {
@@ -364,42 +315,6 @@ namespace gradcontact::cases
     }
   } // namespace
 
-  void set_fe_formulation(const Scene &s, fem::DiscretizationParameters &discretization)
-  {
-    const std::string &f = s.discretization.formulation;
-    if (f == "mixed")
-      discretization.formulation = fem::Formulation::mixed;
-    else if (f == "automatic")
-      discretization.formulation = fem::Formulation::automatic;
-    else if (f == "displacement")
-      discretization.formulation = fem::Formulation::displacement;
-    else
-      throw std::invalid_argument("Discretization/formulation = '" + f +
-                                  "' outside {displacement, mixed, automatic}");
-  }
-
-  fem::Material fe_material(const Scene &s)
-  {
-    const MaterialParameters &m = s.material;
-    const auto power = std::make_shared<fem::PowerLawModulus>(m.E0, m.c0, m.k);
-    fem::Material material;
-    material.nu = m.nu;
-    switch (m.modulus)
-      {
-        case MaterialParameters::Modulus::power_law:
-          material.modulus = power;
-          break;
-        case MaterialParameters::Modulus::layered:
-          material.modulus = fem::LayeredModulus::uniform(power, m.layers, m.layered_depth * s.load.a);
-          break;
-        case MaterialParameters::Modulus::expression:
-          material.modulus = std::make_shared<fem::ExpressionModulus>(
-            m.expression, std::map<std::string, double>{{"E0", m.E0}, {"c0", m.c0}, {"k", m.k}}, m.k);
-          break;
-      }
-    return material;
-  }
-
   FeProfile fe_profile(const Scene &scene, const std::string &quantity, const std::vector<double> &radii_over_a,
                        const std::string &normaliser, const double normaliser_r_over_a, const bool per_area)
   {
@@ -409,7 +324,7 @@ namespace gradcontact::cases
     (quantity == "pressure" ? s.outputs.pressure_radii : s.outputs.displacement_radii) = radii_over_a;
     (quantity == "pressure" ? s.outputs.displacement_radii : s.outputs.pressure_radii).clear();
     s.outputs.vtu = false;
-    const FeRun run = run_fe(s, s.discretization.refinements.back(), fs::temp_directory_path());
+    const FeRun run = run_fe(s, finest_refinement(s), fs::temp_directory_path());
     const AnalyticReference closed(s, "closed_form");
     const double a = closed.radius();
     const bool needs_r = normaliser == "pressure" || normaliser == "displacement";
@@ -424,87 +339,106 @@ namespace gradcontact::cases
     return out;
   }
 
-  SceneResult run_prm_scene(const Scene &s, const fs::path &folder, const bool verbose)
+  namespace
   {
-    if (s.tangential.enabled())
-      {
-        if (s.adhesion.enabled(s.load))
-          throw std::invalid_argument("scene " + s.file + ": Tangential/study is set and the scene is adhesive "
-                                      "(Adhesion/work of adhesion or tensile strength > 0): tangential contact is "
-                                      "non-adhesive (9.75-9.87); choose one");
-        return run_tangential_scene(s, folder, verbose);
-      }
-    if (s.adhesion.enabled(s.load))
-      return run_adhesion_scene(s, folder, verbose);
-    if (!s.candidate.profile.empty())
-      {
-        std::ofstream(folder / "parameters.prm") << s.resolved;
-        const auto start = std::chrono::steady_clock::now();
-        SceneResult r = run_candidate(s);
-        r.name = s.info.name;
-        r.description = s.info.description;
-        r.kind = "candidate";
-        r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-        return r;
-      }
-    SceneResult result;
-    result.name = s.info.name;
-    result.description = s.info.description;
-    result.kind = "prm";
-    const auto start = std::chrono::steady_clock::now();
-    std::ofstream(folder / "parameters.prm") << s.resolved;
+    using References = std::vector<std::unique_ptr<AnalyticReference>>;
 
-    std::vector<std::unique_ptr<AnalyticReference>> references;
-    const auto add_reference = [&](const std::string &method, const std::string &label) {
-      try
-        {
-          references.push_back(std::make_unique<AnalyticReference>(s, method));
-        }
-      catch (const std::exception &e)
-        {
-          result.rows.push_back(failed("reference state", "-", label, e.what()));
-        }
-    };
-    if (s.references.closed_form)
-      add_reference("closed_form", "closed form");
-    if (s.references.numerical_mdr)
-      add_reference("numerical_mdr", "numerical MDR");
-    const auto label = [](const AnalyticReference &r) {
-      return r.method == "closed_form" ? std::string("closed form") : std::string("numerical MDR");
-    };
-
-    if (!s.references.fem)
-      {
-        // Analytic only: the closed form against the numerical MDR, for the scalars and profiles asked.
-        AnalyticReference closed(s, "closed_form"), numeric(s, "numerical_mdr");
-        std::vector<std::pair<std::string, std::optional<double>>> items;
-        if (s.outputs.force && s.load.type != Type::constant_pressure)
-          items.push_back({"force", std::nullopt});
-        if (s.outputs.depth && s.load.type != Type::flat_punch && s.load.type != Type::concave_punch)
-          items.push_back({"depth", std::nullopt});
-        for (const double x : s.outputs.pressure_radii)
-          items.push_back({"pressure", x * closed.radius()});
-        for (const double x : s.outputs.displacement_radii)
-          items.push_back({"displacement", x * closed.radius()});
-        for (const auto &[quantity, r] : items)
+    /// The analytic references the scene asks for; one whose state cannot be set up is a failed row.
+    References references_of(const Scene &s, SceneResult &result)
+    {
+      References references;
+      const auto add_reference = [&](const std::string &method, const std::string &label) {
+        try
           {
-            const std::string metric = r ? "r/a = " + format(*r / closed.radius()) + ", relative" : "relative";
-            try
-              {
-                const auto t0 = std::chrono::steady_clock::now();
-                const double c = closed.get(quantity, r);
-                const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-                const double n = numeric.get(quantity, r);
-                result.rows.push_back(compare(quantity, metric, "closed form", "numerical MDR", n, c, n, 1e-9, 0, seconds));
-              }
-            catch (const std::exception &e)
-              {
-                result.rows.push_back(failed(quantity, "closed form", "numerical MDR", e.what()));
-              }
+            references.push_back(std::make_unique<AnalyticReference>(s, method));
           }
-        result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-        return result;
+        catch (const std::exception &e)
+          {
+            result.rows.push_back(failed("reference state", "-", label, e.what()));
+          }
+      };
+      if (s.references.closed_form)
+        add_reference("closed_form", "closed form");
+      if (s.references.numerical_mdr)
+        add_reference("numerical_mdr", "numerical MDR");
+      return references;
+    }
+
+    std::string label(const AnalyticReference &r)
+    {
+      return r.method == "closed_form" ? std::string("closed form") : std::string("numerical MDR");
+    }
+
+    /// The result of a scene before its rows, with parameters.prm written into the report folder.
+    SceneResult started(const Scene &s, const fs::path &folder)
+    {
+      SceneResult result;
+      result.name = s.info.name;
+      result.description = s.info.description;
+      result.kind = to_string(s.kind);
+      std::ofstream(folder / "parameters.prm") << s.resolved;
+      return result;
+    }
+
+    double seconds_since(const std::chrono::steady_clock::time_point start)
+    {
+      return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    }
+  } // namespace
+
+  SceneResult run_candidate_scene(const Scene &s, const fs::path &folder)
+  {
+    require_kind(s, SceneKind::candidate, "run_candidate_scene");
+    const auto start = std::chrono::steady_clock::now();
+    SceneResult r = started(s, folder);
+    r.rows = run_candidate(s).rows;
+    r.seconds = seconds_since(start);
+    return r;
+  }
+
+  SceneResult run_analytic_scene(const Scene &s, const fs::path &folder)
+  {
+    require_kind(s, SceneKind::analytic, "run_analytic_scene");
+    const auto start = std::chrono::steady_clock::now();
+    SceneResult result = started(s, folder);
+    references_of(s, result); // only its failed rows: the comparison below needs both methods
+    // The closed form against the numerical MDR, for the scalars and profiles asked.
+    AnalyticReference closed(s, "closed_form"), numeric(s, "numerical_mdr");
+    std::vector<std::pair<std::string, std::optional<double>>> items;
+    if (s.outputs.force && s.load.type != Type::constant_pressure)
+      items.push_back({"force", std::nullopt});
+    if (s.outputs.depth && s.load.type != Type::flat_punch && s.load.type != Type::concave_punch)
+      items.push_back({"depth", std::nullopt});
+    for (const double x : s.outputs.pressure_radii)
+      items.push_back({"pressure", x * closed.radius()});
+    for (const double x : s.outputs.displacement_radii)
+      items.push_back({"displacement", x * closed.radius()});
+    for (const auto &[quantity, r] : items)
+      {
+        const std::string metric = r ? "r/a = " + format(*r / closed.radius()) + ", relative" : "relative";
+        try
+          {
+            const auto t0 = std::chrono::steady_clock::now();
+            const double c = closed.get(quantity, r);
+            const double seconds = seconds_since(t0);
+            const double n = numeric.get(quantity, r);
+            result.rows.push_back(compare(quantity, metric, "closed form", "numerical MDR", n, c, n, 1e-9, 0, seconds));
+          }
+        catch (const std::exception &e)
+          {
+            result.rows.push_back(failed(quantity, "closed form", "numerical MDR", e.what()));
+          }
       }
+    result.seconds = seconds_since(start);
+    return result;
+  }
+
+  SceneResult run_normal_scene(const Scene &s, const fs::path &folder, const bool verbose)
+  {
+    require_kind(s, SceneKind::normal, "run_normal_scene");
+    const auto start = std::chrono::steady_clock::now();
+    SceneResult result = started(s, folder);
+    const References references = references_of(s, result);
 
     // One FE solve per refinement level, shared by every quantity and every reference.
     std::vector<FeRun> runs;
@@ -577,52 +511,28 @@ namespace gradcontact::cases
     // Convergence study: the scalar quantities against the first reference, level by level.
     if (runs.size() > 1 && !references.empty())
       {
-        std::ofstream csv(folder / "convergence.csv"), md(folder / "convergence.md");
-        csv << "quantity,refinement,dofs,seconds,value,reference,relative_error,observed_order\n";
-        md << "# " << s.info.name << ": convergence\n\nErrors against the " << label(*references.front())
-           << "; the observed order p (error ~ h^p, h ~ DoFs^(-1/2)) is fitted over the last three levels.\n\n";
-        for (std::size_t q = 0; q < scalars(s, runs.front().result).size(); ++q)
+        std::vector<ConvergenceSeries> series;
+        const std::vector<Scalar> first_level = scalars(s, runs.front().result);
+        for (std::size_t q = 0; q < first_level.size(); ++q)
           {
-            const Scalar first = scalars(s, runs.front().result)[q];
-            double value = 0.;
+            ConvergenceSeries c{first_level[q].name, 0., {}};
             try
               {
-                value = first.reference.empty() ? references.front()->radius() : references.front()->get(first.reference);
+                c.reference = first_level[q].reference.empty() ? references.front()->radius()
+                                                               : references.front()->get(first_level[q].reference);
               }
             catch (const std::exception &)
               {
-                continue;
+                continue; // a failed row already says why
               }
-            std::vector<Level> levels;
             for (const FeRun &run : runs)
               {
                 const double v = scalars(s, run.result)[q].fe;
-                levels.push_back({run.refinement, run.result.n_dofs, run.seconds, v, std::abs(v - value) / std::abs(value)});
+                c.levels.push_back({run.refinement, run.result.n_dofs, run.seconds, v, relative_error(v, c.reference)});
               }
-            const double p = observed_order(levels);
-            md << "## " << first.name << "\n\n| refinement | DoFs | s | value | rel. error |\n|---|---|---|---|---|\n";
-            Series errors{first.name, {}, {}, true}, times{first.name, {}, {}, true};
-            for (const Level &l : levels)
-              {
-                md << "| " << l.refinement << " | " << l.dofs << " | " << format(l.seconds) << " | " << format(l.value)
-                   << " | " << format(l.error) << " |\n";
-                csv << first.name << ',' << l.refinement << ',' << l.dofs << ',' << l.seconds << ',' << l.value << ','
-                    << value << ',' << l.error << ',' << p << '\n';
-                errors.x.push_back(l.dofs);
-                errors.y.push_back(std::max(l.error, 1e-17));
-                times.x.push_back(l.seconds);
-                times.y.push_back(std::max(l.error, 1e-17));
-              }
-            md << "\nObserved order over the last three levels: " << format(p) << "\n\n";
-            if (s.outputs.plots)
-              {
-                const std::string stem = "convergence-" + std::to_string(q);
-                write_plot(folder, stem + "-dofs", s.info.name + ": " + first.name + " error against DoFs", "DoFs",
-                           "relative error", {errors}, true, true);
-                write_plot(folder, stem + "-time", s.info.name + ": " + first.name + " error against run time",
-                           "seconds", "relative error", {times}, true, true);
-              }
+            series.push_back(c);
           }
+        write_convergence(folder, s.info.name, label(*references.front()), series, s.outputs.plots);
       }
 
     // Profiles: the analytic curve (closed form, dense) with the FE points of the finest level.
@@ -669,7 +579,7 @@ namespace gradcontact::cases
         profile_plot("displacement", fe.displacement, w_max, "w [m]");
       }
 
-    result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    result.seconds = seconds_since(start);
     return result;
   }
 } // namespace gradcontact::cases

@@ -1,18 +1,13 @@
-// gradcontact/cases: running a .prm scene: the FE model of the graded half-space against the closed
-// form and/or the numerical MDR, one FE solve shared by every quantity and reference that needs it.
+// gradcontact/cases: the normal scenes (SceneKind::normal): the FE model of the graded half-space against the
+// closed form and/or the numerical MDR, one FE solve per refinement level shared by every quantity and
+// reference that needs it; the analytic ones (References/fem = false: the closed form against the numerical
+// MDR); and the candidate ones (a user's closed forms for a profile against the numerical MDR and the FE model).
 #pragma once
 
 #include "report.h"
 #include "scene.h"
 
-#include <fem/modulus.h>
-
 #include <filesystem>
-
-namespace gradcontact::fem
-{
-  struct DiscretizationParameters;
-}
 
 namespace gradcontact::cases
 {
@@ -26,12 +21,9 @@ namespace gradcontact::cases
   FeProfile fe_profile(const Scene &scene, const std::string &quantity, const std::vector<double> &radii_over_a,
                        const std::string &normaliser, double normaliser_r_over_a, bool per_area);
 
-  /// The FE material of the scene (power law, layered or expression modulus).
-  fem::Material fe_material(const Scene &scene);
-
-  /// Sets the FE formulation of the scene (Discretization/formulation) in `discretization`.
-  void set_fe_formulation(const Scene &scene, fem::DiscretizationParameters &discretization);
-
-  /// Runs the scene and writes its report into `folder` (which the caller makes atomically).
-  SceneResult run_prm_scene(const Scene &scene, const std::filesystem::path &folder, bool verbose);
+  /// Each runs a scene of its kind (scene_kind) and writes its plots and tables into `folder` (which the
+  /// caller makes atomically); a scene of another kind is an error.
+  SceneResult run_normal_scene(const Scene &scene, const std::filesystem::path &folder, bool verbose);
+  SceneResult run_analytic_scene(const Scene &scene, const std::filesystem::path &folder);
+  SceneResult run_candidate_scene(const Scene &scene, const std::filesystem::path &folder);
 } // namespace gradcontact::cases

@@ -1,6 +1,6 @@
 #include "fe_tangential.h"
 
-#include "fe_scene.h"
+#include "fe_model.h"
 
 #include <analytic/batch.hpp>
 #include <analytic/material.hpp>
@@ -47,32 +47,14 @@ namespace gradcontact::cases
       return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     }
 
-    /// The scene with Tangential/Holl ratio applied (nu = 1 / (2 + k), the decoupled pairing of 9.3.1), after the
-    /// checks that need more than one entry. Errors name the entries, their values and the ranges.
-    Scene checked_scene(const Scene &scene)
+    /// The scene with Tangential/Holl ratio applied (nu = 1 / (2 + k), the decoupled pairing of 9.3.1); the
+    /// entries are checked by scene_kind (k > 0 for the Holl ratio, the load of each study).
+    Scene with_holl_ratio(const Scene &scene)
     {
+      scene_kind(scene);
       Scene s = scene;
-      const TangentialParameters &t = s.tangential;
-      const std::string where = "scene " + s.file + ": ";
-      const double k = s.material.k;
-      if (t.holl_ratio)
-        {
-          if (!(k > 0.))
-            throw std::invalid_argument(where + "Tangential/Holl ratio = true with Material/k = " + format(k) +
-                                        ": the Holl ratio nu = 1/(2+k) needs k in (0, 1) (nu <= 1/2)");
-          s.material.nu = 1. / (2. + k);
-        }
-      if (t.study == Study::stiffness && s.load.type != Type::flat_punch)
-        throw std::invalid_argument(where + "Tangential/study = stiffness needs Load/type = flat punch");
-      if ((t.study == Study::partial_slip || t.study == Study::oscillation) && s.load.type != Type::paraboloid)
-        throw std::invalid_argument(where + "Tangential/study = " +
-                                    (t.study == Study::partial_slip ? "partial slip" : "oscillation") +
-                                    " needs Load/type = paraboloid (a sphere, 9.80-9.87)");
-      if (s.load.type == Type::paraboloid && s.load.control != LoadParameters::Control::contact_radius)
-        throw std::invalid_argument(where + "a tangential study takes the contact radius Load/a: Load/control must "
-                                            "be contact radius");
-      if (!(s.load.a > 0.))
-        throw std::invalid_argument(where + "Load/a = " + format(s.load.a) + " must be in (0, inf)");
+      if (s.tangential.holl_ratio)
+        s.material.nu = 1. / (2. + s.material.k);
       return s;
     }
 
@@ -118,20 +100,17 @@ namespace gradcontact::cases
     {
       Mode1Model(const Scene &s, const std::vector<double> &stick_radii)
       {
-        settings = fem::recommended_settings(s.load.a, s.material.k, s.discretization.force_tolerance);
-        settings.discretization.degree = s.discretization.degree;
-        set_fe_formulation(s, settings.discretization); // mode 1: throws for mixed (not supported)
-        settings.mesh.global_refinements = s.discretization.refinements.back();
-        if (s.discretization.far_field > 0.)
-          settings.mesh.far_field_size = s.discretization.far_field;
+        material = fe_material(s);
+        settings = fe_settings(s, material, s.load.a, finest_refinement(s)); // the mode-1 solver refuses mixed
         fem::SurfaceRefinement refinement;
         for (const double c : stick_radii)
           if (c > 0. && c < s.load.a * (1. - 1e-12)) // c = a is a mesh node already
             refinement.radii.push_back(c);
         refinement.levels = refinement.radii.empty() ? 0 : s.tangential.stick_levels;
-        solver = std::make_unique<fem::FourierMode1Solver>(fe_material(s), settings.mesh, settings.discretization,
+        solver = std::make_unique<fem::FourierMode1Solver>(material, settings.mesh, settings.discretization,
                                                            refinement);
       }
+      fem::Material material;
       fem::Settings settings;
       std::unique_ptr<fem::FourierMode1Solver> solver;
     };
@@ -302,7 +281,7 @@ namespace gradcontact::cases
                                         t_tangential));
         }
       // alpha = K_N / K_T (9.78) with K_N from the normal flat punch on the same mesh and discretisation.
-      fem::AxisymmetricSolver normal(fe_material(s), model.settings.mesh, model.settings.discretization);
+      fem::AxisymmetricSolver normal(model.material, model.settings.mesh, model.settings.discretization);
       fem::LoadCase punch;
       punch.type = fem::LoadType::flat_punch;
       punch.depth = delta;
@@ -562,7 +541,7 @@ namespace gradcontact::cases
 
   FeTangentialCurve fe_tangential_curve(const Scene &scene)
   {
-    const Scene s = checked_scene(scene);
+    const Scene s = with_holl_ratio(scene);
     const gradcontact::Medium medium = medium_of(s);
     const double a = s.load.a;
     FeTangentialCurve curve;
@@ -603,11 +582,12 @@ namespace gradcontact::cases
   SceneResult run_tangential_scene(const Scene &scene, const fs::path &folder, const bool verbose)
   {
     const auto start = std::chrono::steady_clock::now();
-    const Scene s = checked_scene(scene);
+    require_kind(scene, SceneKind::tangential, "run_tangential_scene");
+    const Scene s = with_holl_ratio(scene);
     SceneResult result;
     result.name = s.info.name;
     result.description = s.info.description;
-    result.kind = "tangential";
+    result.kind = to_string(s.kind);
     std::ofstream(folder / "parameters.prm") << s.resolved;
     TangentialStudy study(s, folder, verbose, result);
     try

@@ -9,6 +9,10 @@
 #include <iomanip>
 #include <limits>
 
+#include <cerrno>
+#include <csignal>
+#include <unistd.h>
+
 namespace gradcontact::cases
 {
   namespace fs = std::filesystem;
@@ -49,6 +53,75 @@ namespace gradcontact::cases
     return folded;
   }
 
+  namespace
+  {
+    /// Between the target's name and the owner (host-pid) of a temporary sibling.
+    const std::string temporary_marker = ".tmp-";
+
+    std::string host_name()
+    {
+      char name[256] = {};
+      if (::gethostname(name, sizeof name - 1) != 0 || name[0] == '\0')
+        return "localhost";
+      return name;
+    }
+
+    bool process_exists(const long pid)
+    {
+      // kill with signal 0 only checks: EPERM means it exists under another user
+      return ::kill(static_cast<pid_t>(pid), 0) == 0 || errno == EPERM;
+    }
+
+    bool ends_with(const std::string &s, const std::string &tail)
+    {
+      return s.size() >= tail.size() && s.compare(s.size() - tail.size(), tail.size(), tail) == 0;
+    }
+
+    /// Whether the hidden entry `name` of a reports folder is a temporary that no run will finish.
+    bool stale_temporary(const std::string &name, const std::string &host)
+    {
+      if (name.size() < 2 || name[0] != '.')
+        return false;
+      const auto at = name.rfind(temporary_marker);
+      if (at == std::string::npos)
+        return ends_with(name, ".tmp"); // written before the owner was in the name
+      const std::string owner = name.substr(at + temporary_marker.size());
+      const auto dash = owner.rfind('-');
+      if (dash == std::string::npos || owner.substr(0, dash) != host)
+        return false;
+      const std::string pid = owner.substr(dash + 1);
+      if (pid.empty() || pid.size() > 18 || pid.find_first_not_of("0123456789") != std::string::npos)
+        return false;
+      return !process_exists(std::stol(pid));
+    }
+  } // namespace
+
+  fs::path temporary_sibling(const fs::path &target, const long pid)
+  {
+    return target.parent_path() /
+           ("." + target.filename().string() + temporary_marker + host_name() + "-" + std::to_string(pid));
+  }
+
+  fs::path temporary_sibling(const fs::path &target) { return temporary_sibling(target, ::getpid()); }
+
+  std::vector<fs::path> remove_stale_temporaries(const fs::path &folder)
+  {
+    std::vector<fs::path> removed;
+    std::error_code ec;
+    if (!fs::is_directory(folder, ec))
+      return removed;
+    const std::string host = host_name();
+    for (const auto &entry : fs::directory_iterator(folder, ec))
+      if (stale_temporary(entry.path().filename().string(), host))
+        {
+          // another run may remove it at the same time: not an error
+          std::error_code ignored;
+          fs::remove_all(entry.path(), ignored);
+          removed.push_back(entry.path());
+        }
+    return removed;
+  }
+
   bool SceneResult::pass() const
   {
     return std::all_of(rows.begin(), rows.end(), [](const Row &r) { return r.pass; });
@@ -62,16 +135,13 @@ namespace gradcontact::cases
     return worst;
   }
 
-  namespace
+  std::string csv_quote(const std::string &s)
   {
-    std::string csv_quote(const std::string &s)
-    {
-      std::string out = "\"";
-      for (const char c : s)
-        out += (c == '"') ? std::string("\"\"") : std::string(1, c);
-      return out + "\"";
-    }
-  } // namespace
+    std::string out = "\"";
+    for (const char c : s)
+      out += (c == '"') ? std::string("\"\"") : std::string(1, c);
+    return out + "\"";
+  }
 
   void write_errors(const SceneResult &s, const fs::path &folder)
   {
@@ -93,31 +163,6 @@ namespace gradcontact::cases
          << (r.error.empty() ? format(r.value) : "error: " + r.error) << " | " << format(r.rel_error) << " | "
          << format(r.tolerance) << " | " << (r.pass ? "pass" : "**FAIL**") << " | " << (r.dofs ? std::to_string(r.dofs) : "-")
          << " | " << format(r.seconds) << " |\n";
-  }
-
-  double observed_order(const std::vector<Level> &levels)
-  {
-    const std::size_t n = levels.size();
-    if (n < 2)
-      return std::numeric_limits<double>::quiet_NaN();
-    const std::size_t first = n >= 3 ? n - 3 : 0;
-    // least squares of log(error) against log(h), h = DoFs^(-1/2)
-    double sx = 0., sy = 0., sxx = 0., sxy = 0.;
-    int m = 0;
-    for (std::size_t i = first; i < n; ++i)
-      {
-        if (!(levels[i].error > 0.))
-          continue;
-        const double x = -0.5 * std::log(static_cast<double>(levels[i].dofs)), y = std::log(levels[i].error);
-        sx += x;
-        sy += y;
-        sxx += x * x;
-        sxy += x * y;
-        ++m;
-      }
-    if (m < 2)
-      return std::numeric_limits<double>::quiet_NaN();
-    return (m * sxy - sx * sy) / (m * sxx - sx * sx);
   }
 
   bool write_plot(const fs::path &folder, const std::string &stem, const std::string &title, const std::string &xlabel,

@@ -1,6 +1,6 @@
 // gradcontact/cases: comparison rows and the files of a report.
 //
-// A comparison is a value (STYLE rule 7): quantity, metric, reference, values, errors, tolerance,
+// A comparison is a value: quantity, metric, reference, values, errors, tolerance,
 // DoFs, time. Tables (errors.csv / errors.md), convergence tables and gnuplot plots are made from rows.
 #pragma once
 
@@ -43,20 +43,6 @@ namespace gradcontact::cases
   /// errors.csv and errors.md in `folder`.
   void write_errors(const SceneResult &s, const std::filesystem::path &folder);
 
-  /// One level of a refinement study.
-  struct Level
-  {
-    unsigned int refinement;
-    unsigned int dofs;
-    double seconds;
-    double value;
-    double error; ///< relative, against the reference of the study
-  };
-
-  /// The observed order p of error ~ DoFs^(-p/2) (h ~ DoFs^(-1/2) in 2D), least squares over the last
-  /// three levels (fewer if there are fewer); NaN with one level.
-  double observed_order(const std::vector<Level> &levels);
-
   /// A line plot: curves (dense x, y) and point sets, written as data + gnuplot script, and rendered to
   /// PNG and SVG when gnuplot is installed. Returns false when gnuplot failed (the data and the
   /// script are kept, so the plot can be made by hand).
@@ -71,12 +57,24 @@ namespace gradcontact::cases
                   const std::string &xlabel, const std::string &ylabel, const std::vector<Series> &series,
                   bool logx = false, bool logy = false);
 
+  /// The hidden temporary sibling `.<name>.tmp-<host>-<pid>` under which `target` is written by process
+  /// `pid` of this host: the owner in the name lets the next run tell a killed run's leftovers from the
+  /// work of a run still going (several runs, e.g. --shard jobs, may share one reports folder).
+  std::filesystem::path temporary_sibling(const std::filesystem::path &target, long pid);
+  /// ... of this process.
+  std::filesystem::path temporary_sibling(const std::filesystem::path &target);
+
+  /// Removes from `folder` (not recursively) the temporaries that no run will finish: those of a process of
+  /// this host that no longer exists, and the `.<name>.tmp` of versions before the owner was in the name.
+  /// Those of other hosts are kept (their processes cannot be asked). Returns the removed paths.
+  std::vector<std::filesystem::path> remove_stale_temporaries(const std::filesystem::path &folder);
+
   /// Writes `folder` through a temporary sibling and replaces the old report only when complete.
   template <class Writer>
   void atomic_folder(const std::filesystem::path &folder, const Writer &writer)
   {
     namespace fs = std::filesystem;
-    const fs::path tmp = folder.parent_path() / ("." + folder.filename().string() + ".tmp");
+    const fs::path tmp = temporary_sibling(folder);
     fs::remove_all(tmp);
     fs::create_directories(tmp);
     try
@@ -93,6 +91,9 @@ namespace gradcontact::cases
   }
 
   std::string format(double x);
+
+  /// A CSV field: `s` in double quotes, inner quotes doubled.
+  std::string csv_quote(const std::string &s);
 
   /// The message of an exception without deal.II's file, line and stack trace: for a deal.II
   /// exception the "Additional information" text, whitespace folded; otherwise what().

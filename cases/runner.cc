@@ -1,6 +1,8 @@
 #include "runner.h"
 
+#include "fe_adhesion.h"
 #include "fe_scene.h"
+#include "fe_tangential.h"
 #include "report.h"
 #include "scene.h"
 
@@ -193,6 +195,25 @@ namespace gradcontact::cases
       return result;
     }
 
+    /// Runs a .prm (or .json) scene by its kind (scene.h).
+    SceneResult run_scene(const Scene &scene, const fs::path &folder, const bool verbose)
+    {
+      switch (scene.kind)
+        {
+          case SceneKind::normal:
+            return run_normal_scene(scene, folder, verbose);
+          case SceneKind::analytic:
+            return run_analytic_scene(scene, folder);
+          case SceneKind::candidate:
+            return run_candidate_scene(scene, folder);
+          case SceneKind::adhesion:
+            return run_adhesion_scene(scene, folder, verbose);
+          case SceneKind::tangential:
+            return run_tangential_scene(scene, folder, verbose);
+        }
+      throw std::logic_error("run_scene: scene " + scene.file + " has no kind");
+    }
+
     /// Runs one scene (with overrides) and writes its report atomically; `suffix` names sweep variants.
     SceneResult run_one(const fs::path &file, const std::vector<Override> &overrides, const Options &o,
                         const std::string &suffix = "")
@@ -211,7 +232,7 @@ namespace gradcontact::cases
         std::cout << "# " << file.string() << " resolved:\n" << scene.resolved;
       SceneResult s;
       atomic_folder(o.reports / scene.info.name, [&](const fs::path &tmp) {
-        s = run_prm_scene(scene, tmp, o.verbose);
+        s = run_scene(scene, tmp, o.verbose);
         write_errors(s, tmp);
       });
       return s;
@@ -236,7 +257,7 @@ namespace gradcontact::cases
                                               : "summary.shard-" + std::to_string(o.shard) + "-of-" +
                                                   std::to_string(o.shards) + ".md";
       const fs::path summary = o.reports / name;
-      const fs::path tmp = o.reports / ("." + name + ".tmp");
+      const fs::path tmp = temporary_sibling(summary);
       {
         std::ofstream md(tmp);
         md << "# gradcontact summary\n\n| scene | comparisons | worst error | failed | seconds | report |\n"
@@ -261,6 +282,7 @@ namespace gradcontact::cases
     const Options o = parse(args);
     const bool progress = !o.quiet && isatty(STDERR_FILENO);
     fs::create_directories(o.reports);
+    remove_stale_temporaries(o.reports); // what a killed run left
     std::vector<SceneResult> results;
     const auto start = std::chrono::steady_clock::now();
     for (std::size_t i = 0; i < o.scenes.size(); ++i)
@@ -294,6 +316,7 @@ namespace gradcontact::cases
     if (values.empty())
       throw std::invalid_argument("sweep: --over " + over[1] + " lists no value");
     fs::create_directories(o.reports);
+    remove_stale_temporaries(o.reports); // what a killed run left
     std::vector<SceneResult> results;
     for (std::size_t j = 0; j < values.size(); ++j)
       {

@@ -1,9 +1,9 @@
 // gradcontact/cases: the one runner.
 //
-// Scene kinds:
-//   *.prm    a deal.II ParameterHandler scene (scene.h): the FE model of the graded half-space against
-//            the closed form and/or the numerical MDR (or, with References/fem = false, the closed
-//            form against the numerical MDR only).
+// Scene files:
+//   *.prm    a deal.II ParameterHandler scene (scene.h; *.json: the same entries), run by its SceneKind:
+//            normal, analytic, candidate (cases/fe_scene.h), adhesion (cases/fe_adhesion.h) or tangential
+//            (cases/fe_tangential.h).
 //   *.jsonl  an analytic check: each line an eval request (analytic/README.md) plus optional "name",
 //            "tolerance" (relative, default 1e-9) and "abs_floor": closed form against numerical MDR.
 // Reports go to <reports>/<scene>/ (errors.csv, errors.md, convergence.*, plots with their data and

@@ -347,6 +347,115 @@ namespace gradcontact::cases
                                   " must be F_A/(mu F_N) in (0, 1); at 1 and above the sphere slides (gross slip)");
   }
 
+  std::string to_string(const SceneKind kind)
+  {
+    switch (kind)
+      {
+        case SceneKind::normal:
+          return "normal";
+        case SceneKind::analytic:
+          return "analytic";
+        case SceneKind::candidate:
+          return "candidate";
+        case SceneKind::adhesion:
+          return "adhesion";
+        case SceneKind::tangential:
+          return "tangential";
+      }
+    return "unknown";
+  }
+
+  namespace
+  {
+    /// The tangential studies need their load (9.78-9.87) and, for the Holl pairing, k > 0.
+    void check_tangential(const Scene &s, const std::string &where)
+    {
+      using Study = TangentialParameters::Study;
+      using Type = LoadParameters::Type;
+      const TangentialParameters &t = s.tangential;
+      const double k = s.material.k;
+      if (t.holl_ratio && !(k > 0.))
+        throw std::invalid_argument(where + "Tangential/Holl ratio = true with Material/k = " + format(k) +
+                                    ": the Holl ratio nu = 1/(2+k) needs k in (0, 1) (nu <= 1/2)");
+      if (t.study == Study::stiffness && s.load.type != Type::flat_punch)
+        throw std::invalid_argument(where + "Tangential/study = stiffness needs Load/type = flat punch");
+      if ((t.study == Study::partial_slip || t.study == Study::oscillation) && s.load.type != Type::paraboloid)
+        throw std::invalid_argument(where + "Tangential/study = " +
+                                    (t.study == Study::partial_slip ? "partial slip" : "oscillation") +
+                                    " needs Load/type = paraboloid (a sphere, 9.80-9.87)");
+      if (s.load.type == Type::paraboloid && s.load.control != LoadParameters::Control::contact_radius)
+        throw std::invalid_argument(where + "a tangential study takes the contact radius Load/a: Load/control must "
+                                            "be contact radius");
+      if (!(s.load.a > 0.))
+        throw std::invalid_argument(where + "Load/a = " + format(s.load.a) + " must be in (0, inf)");
+    }
+
+    /// JKR needs a work of adhesion; the optimal profile (a prescribed tension) a tensile strength and none.
+    void check_adhesion(const Scene &s, const std::string &where)
+    {
+      const AdhesionParameters &ad = s.adhesion;
+      const bool optimal = s.load.type == LoadParameters::Type::constant_pressure;
+      if (optimal && ad.work_of_adhesion > 0.)
+        throw std::invalid_argument(where + "Adhesion/work of adhesion = " + format(ad.work_of_adhesion) +
+                                    " with Load/type = constant pressure: a prescribed pressure has no JKR state; the "
+                                    "optimal profile (9.69-9.74) takes Adhesion/tensile strength > 0 and no work of adhesion");
+      if (!optimal && !(ad.work_of_adhesion > 0.))
+        throw std::invalid_argument(where + "Adhesion/work of adhesion = " + format(ad.work_of_adhesion) +
+                                    " must be in (0, inf) for an adhesive scene");
+      if (optimal && !(ad.tensile_strength > 0.))
+        throw std::invalid_argument(where + "Adhesion/tensile strength = " + format(ad.tensile_strength) +
+                                    " must be in (0, inf) for the optimal profile");
+    }
+
+    /// A candidate checks at least one formula at one point; a pressure needs f'' (see the message).
+    void check_candidate(const Scene &s)
+    {
+      const CandidateParameters &c = s.candidate;
+      if (c.curvature.empty() && !c.pressure.empty())
+        // The pressure needs g'(x), a quadrature of f' and f'' nested in another one: finite-difference
+        // noise (1e-13) keeps both from meeting their tolerance, and the run takes minutes (measured: 325 s).
+        throw std::invalid_argument("Candidate/profile curvature: needed for a pressure candidate (give f''(r))");
+      const bool checks_something = !c.depth.empty() || !c.force.empty() ||
+                                    (!c.pressure.empty() && !s.outputs.pressure_radii.empty()) ||
+                                    (!c.displacement.empty() && !s.outputs.displacement_radii.empty());
+      if (!checks_something)
+        throw std::invalid_argument("Candidate: no candidate formula given (depth, force, pressure or displacement)");
+    }
+  } // namespace
+
+  SceneKind scene_kind(const Scene &s)
+  {
+    const std::string where = "scene " + s.file + ": ";
+    if (s.tangential.enabled())
+      {
+        if (s.adhesion.enabled(s.load))
+          throw std::invalid_argument(where + "Tangential/study is set and the scene is adhesive "
+                                      "(Adhesion/work of adhesion or tensile strength > 0): tangential contact is "
+                                      "non-adhesive (9.75-9.87); choose one");
+        check_tangential(s, where);
+        return SceneKind::tangential;
+      }
+    if (s.adhesion.enabled(s.load))
+      {
+        check_adhesion(s, where);
+        return SceneKind::adhesion;
+      }
+    if (!s.candidate.profile.empty())
+      {
+        check_candidate(s);
+        return SceneKind::candidate;
+      }
+    return s.references.fem ? SceneKind::normal : SceneKind::analytic;
+  }
+
+  void require_kind(const Scene &s, const SceneKind kind, const std::string &function)
+  {
+    const SceneKind actual = scene_kind(s);
+    if (actual != kind)
+      throw std::invalid_argument(function + ": scene " + s.file + " is a " + to_string(actual) + " scene, not a " +
+                                  to_string(kind) + " scene");
+  }
+
   namespace
   {
     void declare_all(ParameterHandler &prm)
@@ -443,6 +552,7 @@ namespace gradcontact::cases
     std::ostringstream out;
     prm.print_parameters(out, ParameterHandler::ShortPRM);
     s.resolved = out.str();
+    s.kind = scene_kind(s);
     return s;
   }
 

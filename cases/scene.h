@@ -155,6 +155,19 @@ namespace gradcontact::cases
     void parse(dealii::ParameterHandler &prm);
   };
 
+  /// What a scene checks, decided once from its entries by scene_kind(); the runner dispatches on it.
+  enum class SceneKind
+  {
+    normal,     ///< the FE model against the closed form and/or the numerical MDR (cases/fe_scene.h)
+    analytic,   ///< References/fem = false: the closed form against the numerical MDR only (cases/fe_scene.h)
+    candidate,  ///< Candidate/profile set: a user's closed forms against the numerical MDR and the FE model
+    adhesion,   ///< Adhesion/work of adhesion > 0, or the optimal profile (cases/fe_adhesion.h)
+    tangential  ///< Tangential/study != none (cases/fe_tangential.h)
+  };
+
+  /// The name of a kind, for reports ("normal", "analytic", "candidate", "adhesion", "tangential").
+  std::string to_string(SceneKind kind);
+
   struct Scene
   {
     std::string file;
@@ -169,7 +182,18 @@ namespace gradcontact::cases
     AdhesionParameters adhesion;
     TangentialParameters tangential;
     std::string resolved; ///< every entry after overrides, as a .prm, stored with the report
+    SceneKind kind = SceneKind::normal; ///< scene_kind() of the entries, set by read_scene
   };
+
+  /// The kind of `scene`, in this order: tangential when Tangential/study is set; adhesion when
+  /// AdhesionParameters::enabled; candidate when Candidate/profile is set; analytic when References/fem is
+  /// false; else normal. Also checks the entries that are valid alone but not together, for that kind; an
+  /// error names the scene file, the entries, their values and what is valid.
+  SceneKind scene_kind(const Scene &scene);
+
+  /// For the runner of one kind: throws std::invalid_argument naming `function`, the scene and its kind when
+  /// scene_kind(scene) is not `kind`.
+  void require_kind(const Scene &scene, SceneKind kind, const std::string &function);
 
   /// An override "Section/key=value" (Section may be nested: "A/B/key=value").
   struct Override
@@ -179,7 +203,8 @@ namespace gradcontact::cases
   };
   Override parse_override(const std::string &text);
 
-  /// Reads a scene and applies the overrides. Errors name the file, the entry and the valid range.
+  /// Reads a scene, applies the overrides and decides its kind. Errors name the file, the entry and the valid
+  /// range.
   Scene read_scene(const std::string &file, const std::vector<Override> &overrides);
 
   /// Every entry with its documentation and default (for --help-scene).

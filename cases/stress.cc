@@ -373,11 +373,12 @@ namespace gradcontact::cases
 
     const fs::path folder = o.reports / "benchmarks";
     fs::create_directories(folder);
+    remove_stale_temporaries(folder); // what a killed run left
     // Written under temporary names, renamed when complete.
     for (const auto &[name, text] : {std::pair<std::string, std::string>{"stability.md", md.str()},
                                      std::pair<std::string, std::string>{"stability.csv", csv.str()}})
       {
-        const fs::path tmp = folder / ("." + name + ".tmp");
+        const fs::path tmp = temporary_sibling(folder / name);
         std::ofstream(tmp) << text;
         fs::rename(tmp, folder / name);
       }

@@ -1,5 +1,4 @@
-// gradcontact/cases: numerical-stability stress tables of the analytic module (`gradcontact stress`,
-// issue 7).
+// gradcontact/cases: numerical-stability stress tables of the analytic module (`gradcontact stress`).
 //
 // Every row of the high-precision references (tests/data/references.jsonl: 34-digit values of the MDR
 // integrals from mpmath, generated over the stress grid: k to +-0.99, k to 0 from both sides, nu = 0 and

@@ -1,0 +1,147 @@
+#include "command_line.h"
+
+#include "bench.h"
+#include "figures.h"
+#include "runner.h"
+#include "stress.h"
+
+#include <analytic/batch.hpp>
+
+#include <algorithm>
+#include <fstream>
+#include <iostream>
+#include <stdexcept>
+
+namespace gradcontact::cases
+{
+  namespace
+  {
+    struct Command
+    {
+      std::string name;
+      std::string synopsis; ///< the arguments
+      std::string text;     ///< what it does, lines indented by the caller
+      int (*run)(const std::vector<std::string> &args);
+    };
+
+    int eval(const std::vector<std::string> &args)
+    {
+      if (args.size() > 1)
+        throw std::invalid_argument("eval: takes at most one file (got " + std::to_string(args.size()) + ")");
+      if (args.empty() || args[0] == "-")
+        {
+          batch::evaluate_stream(std::cin, std::cout);
+          return 0;
+        }
+      std::ifstream in(args[0]);
+      if (!in)
+        throw std::invalid_argument("eval: cannot open file '" + args[0] + "'");
+      batch::evaluate_stream(in, std::cout);
+      return 0;
+    }
+
+    const std::vector<Command> &commands()
+    {
+      static const std::vector<Command> list = {
+        {"eval", "[file]",
+         "evaluate JSON Lines requests from file (or stdin), one answer\n"
+         "line per request (vocabulary: analytic/README.md)",
+         eval},
+        {"run", "<scene|folder> ... [--set Section/key=value] [--reports DIR] [--quiet]\n"
+                "    [--verbose] [--shard i/N] [--help-scene]",
+         "run scenes (.prm, .json, .jsonl) and write reports/<scene>/ and\n"
+         "reports/summary.md; --help-scene lists every scene entry; --shard i/N runs\n"
+         "only the scenes at positions j with j % N == i, 0-based",
+         run},
+        {"sweep", "<scene.prm> --over Section/key=v1,v2,... [run options]",
+         "run a scene once per value (same options as run; --shard i/N splits\n"
+         "the values)",
+         sweep},
+        {"figures", "<file.json|folder> [--reports DIR]",
+         "draw the chapter's figures (cases/figures) -> reports/figures/", figures},
+        {"bench", "[--part analytic|fe|peer|all] [--quick] [--reports DIR] [--repeat N]\n"
+                  "    [--fe-repeat N] [--references FILE] [--peer-scripts DIR]\n"
+                  "    [--scene flat_punch,paraboloid,jkr_paraboloid,tangential_punch]",
+         "work-precision benchmarks -> reports/benchmarks/ (analytic closed\n"
+         "forms; FE degrees 1-4 against wall time and DoFs; the FreeFem++ peer when\n"
+         "FreeFem++ is installed)",
+         bench},
+        {"stress", "[--reports DIR] [--references FILE] [--mdr-stride N]",
+         "numerical-stability tables of the analytic module by region and\n"
+         "absolute scale -> reports/benchmarks/stability.md",
+         stress},
+      };
+      return list;
+    }
+
+    const Command *find(const std::string &name)
+    {
+      for (const Command &c : commands())
+        if (c.name == name)
+          return &c;
+      return nullptr;
+    }
+
+    std::string indented(const std::string &text, const std::string &indent)
+    {
+      std::string out = indent;
+      for (const char c : text)
+        out += c == '\n' ? "\n" + indent : std::string(1, c);
+      return out + "\n";
+    }
+
+    bool asks_for_help(const std::string &a) { return a == "--help" || a == "-h" || a == "help"; }
+  } // namespace
+
+  std::vector<std::string> command_names()
+  {
+    std::vector<std::string> names;
+    for (const Command &c : commands())
+      names.push_back(c.name);
+    return names;
+  }
+
+  std::string usage(const std::string &command)
+  {
+    if (command.empty())
+      {
+        std::string out = "usage: gradcontact <command> [args]\n       gradcontact <command> --help\n\ncommands:\n";
+        for (const Command &c : commands())
+          out += "  " + c.name + " " + c.synopsis + "\n" + indented(c.text, "      ");
+        return out + "  --help   this text\n";
+      }
+    const Command *c = find(command);
+    if (!c)
+      {
+        std::string names;
+        for (const Command &k : commands())
+          names += (names.empty() ? "" : ", ") + k.name;
+        throw std::invalid_argument("unknown command '" + command + "' (commands: " + names + ")");
+      }
+    return "usage: gradcontact " + c->name + " " + c->synopsis + "\n\n" + indented(c->text, "  ");
+  }
+
+  int command_line(const std::vector<std::string> &args, std::ostream &out)
+  {
+    if (args.empty())
+      {
+        out << usage();
+        return 2;
+      }
+    if (asks_for_help(args[0]))
+      {
+        out << usage();
+        return 0;
+      }
+    const Command *c = find(args[0]);
+    if (!c)
+      throw std::invalid_argument(usage(args[0])); // names the command and lists the valid ones
+    const std::vector<std::string> rest(args.begin() + 1, args.end());
+    if (std::any_of(rest.begin(), rest.end(), [](const std::string &a) { return a == "--help" || a == "-h"; }))
+      {
+        out << usage(c->name);
+        return 0;
+      }
+    return c->run(rest);
+  }
+} // namespace gradcontact::cases

@@ -1,0 +1,76 @@
+#include "convergence_report.h"
+
+#include "report.h"
+
+#include <fem/convergence.h>
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <limits>
+
+namespace gradcontact::cases
+{
+  namespace fs = std::filesystem;
+
+  namespace
+  {
+    /// Errors of 0 are drawn at this floor on the logarithmic axes (below double round-off of 1).
+    constexpr double plot_error_floor = 1e-17;
+  } // namespace
+
+  double relative_error(const double value, const double reference)
+  {
+    return std::abs(value - reference) / std::abs(reference);
+  }
+
+  double observed_order(const std::vector<Level> &levels)
+  {
+    std::vector<double> log_h, error;
+    for (const Level &l : levels)
+      if (l.error > 0.)
+        {
+          log_h.push_back(-0.5 * std::log(static_cast<double>(l.dofs)));
+          error.push_back(l.error);
+        }
+    if (log_h.size() < 3)
+      return std::numeric_limits<double>::quiet_NaN();
+    return fem::observed_order(log_h, error);
+  }
+
+  void write_convergence(const fs::path &folder, const std::string &scene, const std::string &reference,
+                         const std::vector<ConvergenceSeries> &series, const bool plots)
+  {
+    std::ofstream csv(folder / "convergence.csv"), md(folder / "convergence.md");
+    csv << "quantity,refinement,dofs,seconds,value,reference,relative_error,observed_order\n";
+    md << "# " << scene << ": convergence\n\nErrors against the " << reference
+       << "; the observed order p (error ~ h^p, h ~ DoFs^(-1/2)) is fitted over the last three levels.\n\n";
+    for (std::size_t i = 0; i < series.size(); ++i)
+      {
+        const ConvergenceSeries &q = series[i];
+        const double p = observed_order(q.levels);
+        md << "## " << q.quantity << "\n\n| refinement | DoFs | s | value | rel. error |\n|---|---|---|---|---|\n";
+        Series errors{q.quantity, {}, {}, true}, times{q.quantity, {}, {}, true};
+        for (const Level &l : q.levels)
+          {
+            md << "| " << l.refinement << " | " << l.dofs << " | " << format(l.seconds) << " | " << format(l.value)
+               << " | " << format(l.error) << " |\n";
+            csv << csv_quote(q.quantity) << ',' << l.refinement << ',' << l.dofs << ',' << l.seconds << ',' << l.value
+                << ',' << q.reference << ',' << l.error << ',' << p << '\n';
+            errors.x.push_back(l.dofs);
+            errors.y.push_back(std::max(l.error, plot_error_floor));
+            times.x.push_back(l.seconds);
+            times.y.push_back(std::max(l.error, plot_error_floor));
+          }
+        md << "\nObserved order over the last three levels: " << format(p) << "\n\n";
+        if (plots)
+          {
+            const std::string stem = "convergence-" + std::to_string(i);
+            write_plot(folder, stem + "-dofs", scene + ": " + q.quantity + " error against DoFs", "DoFs",
+                       "relative error", {errors}, true, true);
+            write_plot(folder, stem + "-time", scene + ": " + q.quantity + " error against run time", "seconds",
+                       "relative error", {times}, true, true);
+          }
+      }
+  }
+} // namespace gradcontact::cases

@@ -1,0 +1,60 @@
+// gradcontact/cases: the one translation of a scene into the FE model of the graded half-space.
+//
+// Every runner (normal, candidate, adhesive, tangential scenes, the figures' FE points) asks here for
+//   - the material: the modulus field of Material/modulus (power law, N layers of exact averages, or an
+//     expression) with Material/nu;
+//   - the load: Load/type and Load/control as an fem::LoadCase;
+//   - the settings: fem::recommended_settings for the surface exponent s of that modulus field
+//     (ModulusField::surface_exponent(): E ~ z^s as z -> 0), never for Material/k. The two differ for a
+//     layered modulus, whose top layer is a constant (s = 0): its surface needs no z-halvings (those of
+//     k = 0.5, 1e-10 a thin, make the solve unreliable at one refinement: energy mismatch 1.6e-6). The far
+//     field L/a follows the exponent deep below (the layers' base power law: k). Then Discretization/degree,
+//     formulation, far field (L/a, 0: the recommended one) and the uniform refinement level of the run.
+#pragma once
+
+#include "scene.h"
+
+#include <fem/axisymmetric_solver.h>
+#include <fem/modulus.h>
+
+namespace gradcontact::cases
+{
+  /// The FE material of the scene (power law, layered or expression modulus). The layered zone is
+  /// Material/layered depth times Load/a deep.
+  fem::Material fe_material(const Scene &scene);
+
+  /// The exponent s of E ~ z^s deep below the surface, which sets the far field: a layered field's base's,
+  /// else the surface exponent (the power law and the expression have one exponent).
+  double deep_exponent(const fem::ModulusField &modulus);
+
+  /// Discretization/formulation as the FE enum; an unknown name is an error naming the entry.
+  fem::Formulation fe_formulation(const Scene &scene);
+
+  /// Load/type and Load/control as an FE load: flat punch (depth d), concave punch (d0), constant
+  /// pressure (p0), or a curved indenter under contact-radius, depth or force control.
+  fem::LoadCase fe_load(const Scene &scene);
+
+  /// The mesh and discretisation of the scene at contact radius `contact_radius` (the adhesive searches
+  /// solve at many radii) and `refinement` uniform refinements: the recommended settings for the
+  /// surface exponent of `material.modulus` and Discretization/force tolerance, the far field L/a for its
+  /// deep exponent (unless Discretization/far field gives one), with the scene's degree and formulation.
+  fem::Settings fe_settings(const Scene &scene, const fem::Material &material, double contact_radius,
+                            unsigned int refinement);
+
+  /// The last (finest) entry of Discretization/refinements: the level of the runs that solve once (the
+  /// candidate's FE check, the tangential model, the figures' FE points).
+  unsigned int finest_refinement(const Scene &scene);
+
+  /// Material, load and settings of one FE run of the scene at contact radius Load/a.
+  struct FeModel
+  {
+    fem::Material material;
+    fem::LoadCase load;
+    fem::Settings settings;
+  };
+  FeModel fe_model(const Scene &scene, unsigned int refinement);
+
+  /// The FE model of a candidate scene (Candidate/profile): `profile`, the user's f(r), as a rigid indenter
+  /// under contact-radius control at Load/a, at the finest refinement level.
+  FeModel candidate_fe_model(const Scene &scene, const fem::Profile &profile);
+} // namespace gradcontact::cases

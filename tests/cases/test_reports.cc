@@ -1,0 +1,104 @@
+// Reports are written under temporary names and renamed when complete (cases/report.h); what a killed run
+// left behind is removed by the next run, what a running process writes is not.
+#include "scene_files.h"
+
+#include <cases/report.h>
+#include <cases/runner.h>
+
+#include <catch2/catch.hpp>
+
+#include <fstream>
+#include <stdexcept>
+#include <sys/wait.h>
+#include <unistd.h>
+
+using namespace gradcontact::cases;
+namespace fs = std::filesystem;
+using testing::TemporaryFolder;
+
+namespace
+{
+  /// The pid of a process that has exited (and been reaped): a run that was killed.
+  long finished_process()
+  {
+    const pid_t child = ::fork();
+    if (child == 0)
+      ::_exit(0);
+    REQUIRE(child > 0);
+    ::waitpid(child, nullptr, 0);
+    return child;
+  }
+
+  void make_folder_with_file(const fs::path &folder)
+  {
+    fs::create_directories(folder);
+    std::ofstream(folder / "errors.csv") << "half a report\n";
+  }
+} // namespace
+
+TEST_CASE("The temporaries of finished processes shall be removed, those of running ones kept", "[cases]")
+{
+  const TemporaryFolder reports("gradcontact-reports");
+  const fs::path killed = temporary_sibling(reports.path() / "scene_a", finished_process());
+  const fs::path running = temporary_sibling(reports.path() / "scene_b");
+  const fs::path earlier_version = reports.path() / ".scene_c.tmp";
+  const fs::path summary = temporary_sibling(reports.path() / "summary.md", finished_process());
+  const fs::path report = reports.path() / "scene_d";
+  const fs::path hidden = reports.path() / ".notes";
+  for (const fs::path &p : {killed, running, earlier_version, report, hidden})
+    make_folder_with_file(p);
+  std::ofstream(summary) << "half a summary\n";
+  CAPTURE(killed, running, summary);
+  REQUIRE(killed.filename().string().front() == '.');
+
+  const std::vector<fs::path> removed = remove_stale_temporaries(reports.path());
+  CHECK(removed.size() == 3);
+  CHECK_FALSE(fs::exists(killed));
+  CHECK_FALSE(fs::exists(earlier_version));
+  CHECK_FALSE(fs::exists(summary));
+  CHECK(fs::exists(running / "errors.csv"));
+  CHECK(fs::exists(report / "errors.csv"));
+  CHECK(fs::exists(hidden / "errors.csv"));
+}
+
+TEST_CASE("A temporary of another host shall be kept (a shared reports folder)", "[cases]")
+{
+  const TemporaryFolder reports("gradcontact-reports");
+  const fs::path here = temporary_sibling(reports.path() / "scene", finished_process());
+  std::string name = here.filename().string();
+  name.replace(name.find(".tmp-") + 5, 0, "elsewhere.");
+  const fs::path other_host = reports.path() / name;
+  make_folder_with_file(other_host);
+  CAPTURE(other_host);
+  CHECK(remove_stale_temporaries(reports.path()).empty());
+  CHECK(fs::exists(other_host));
+}
+
+TEST_CASE("gradcontact run shall remove a killed run's temporary report folder", "[cases]")
+{
+  const TemporaryFolder folder("gradcontact-run");
+  const fs::path reports = folder.path() / "reports";
+  const fs::path stale = temporary_sibling(reports / "other_scene", finished_process());
+  make_folder_with_file(stale);
+  const fs::path scene = folder.path() / "one_check.jsonl";
+  std::ofstream(scene) << R"({"case":"flat_punch","quantity":"force","material":{"E0":1e9,"c0":1e-3,"k":0.5,"nu":0.3},"a":1e-4,"d":1e-6})"
+                       << "\n";
+  CHECK(run({scene.string(), "--reports", reports.string(), "--quiet"}) == 0);
+  CHECK(fs::exists(reports / "one_check" / "errors.csv"));
+  CHECK_FALSE(fs::exists(stale));
+  for (const auto &entry : fs::directory_iterator(reports))
+    CHECK(entry.path().filename().string().find(".tmp") == std::string::npos);
+}
+
+TEST_CASE("A failed writer shall leave neither a report nor a temporary", "[cases]")
+{
+  const TemporaryFolder reports("gradcontact-reports");
+  const fs::path target = reports.path() / "scene";
+  REQUIRE_THROWS_AS(atomic_folder(target,
+                                  [](const fs::path &tmp) {
+                                    std::ofstream(tmp / "errors.csv") << "half\n";
+                                    throw std::runtime_error("the writer fails");
+                                  }),
+                    std::runtime_error);
+  CHECK(fs::is_empty(reports.path()));
+}

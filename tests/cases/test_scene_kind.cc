@@ -1,0 +1,55 @@
+// The scene kind (cases/scene.h): decided once from the entries, with the checks that need more than one
+// entry, each error naming the file, the entries and their values.
+#include "scene_files.h"
+
+#include <catch2/catch.hpp>
+
+using namespace gradcontact::cases;
+using Catch::Matchers::Contains;
+using testing::scene_with;
+
+TEST_CASE("The scene kind shall follow the entries that are set", "[cases]")
+{
+  CHECK(scene_with({}).kind == SceneKind::normal);
+  CHECK(scene_with({"References/fem=false"}).kind == SceneKind::analytic);
+  CHECK(scene_with({"Candidate/profile=r^2/0.02", "Candidate/force=1"}).kind == SceneKind::candidate);
+  CHECK(scene_with({"Load/type=paraboloid", "Adhesion/work of adhesion=0.05"}).kind == SceneKind::adhesion);
+  CHECK(scene_with({"Load/type=constant pressure", "Adhesion/tensile strength=1e6"}).kind == SceneKind::adhesion);
+  CHECK(scene_with({"Tangential/study=stiffness"}).kind == SceneKind::tangential);
+  CHECK(scene_with({"Load/type=paraboloid", "Tangential/study=partial slip"}).kind == SceneKind::tangential);
+  // A tensile strength alone makes only the constant pressure adhesive (the optimal profile).
+  CHECK(scene_with({"Adhesion/tensile strength=1e6"}).kind == SceneKind::normal);
+}
+
+TEST_CASE("Adhesion shall take precedence over a candidate, and the FE switch shall not hide a candidate", "[cases]")
+{
+  CHECK(scene_with({"Load/type=paraboloid", "Adhesion/work of adhesion=0.05", "Candidate/profile=r^2/0.02",
+                    "Candidate/force=1"})
+          .kind == SceneKind::adhesion);
+  CHECK(scene_with({"References/fem=false", "Candidate/profile=r^2/0.02", "Candidate/force=1"}).kind ==
+        SceneKind::candidate);
+}
+
+TEST_CASE("Contradicting entries shall be an error naming the file and the entries", "[cases]")
+{
+  REQUIRE_THROWS_WITH(scene_with({"Tangential/study=stiffness", "Adhesion/work of adhesion=0.05"}),
+                      Contains("defaults.prm") && Contains("Tangential/study is set and the scene is adhesive") &&
+                        Contains("choose one"));
+  REQUIRE_THROWS_WITH(scene_with({"Load/type=constant pressure", "Adhesion/work of adhesion=0.05"}),
+                      Contains("defaults.prm") &&
+                        Contains("Adhesion/work of adhesion = 0.05 with Load/type = constant pressure"));
+  REQUIRE_THROWS_WITH(scene_with({"Load/type=paraboloid", "Tangential/study=oscillation", "Tangential/Holl ratio=true",
+                                  "Material/k=-0.5"}),
+                      Contains("Tangential/Holl ratio = true with Material/k = -0.5") && Contains("k in (0, 1)"));
+  REQUIRE_THROWS_WITH(scene_with({"Tangential/study=stiffness", "Load/type=cone"}),
+                      Contains("Tangential/study = stiffness needs Load/type = flat punch"));
+  REQUIRE_THROWS_WITH(scene_with({"Load/type=paraboloid", "Tangential/study=partial slip", "Load/control=force"}),
+                      Contains("Load/control must be contact radius"));
+  REQUIRE_THROWS_WITH(scene_with({"Candidate/profile=r^2/0.02", "Candidate/pressure=1"}),
+                      Contains("Candidate/profile curvature: needed for a pressure candidate"));
+  REQUIRE_THROWS_WITH(scene_with({"Candidate/profile=r^2/0.02"}), Contains("Candidate: no candidate formula given"));
+  // a pressure candidate without radii checks nothing either
+  REQUIRE_THROWS_WITH(scene_with({"Candidate/profile=r^2/0.02", "Candidate/profile curvature=100",
+                                  "Candidate/pressure=1"}),
+                      Contains("Candidate: no candidate formula given"));
+}
