@@ -40,14 +40,16 @@ namespace gradcontact::cases
 
   fem::Formulation fe_formulation(const Scene &s)
   {
-    const std::string &f = s.discretization.formulation;
-    if (f == "mixed")
-      return fem::Formulation::mixed;
-    if (f == "automatic")
-      return fem::Formulation::automatic;
-    if (f == "displacement")
-      return fem::Formulation::displacement;
-    throw std::invalid_argument("Discretization/formulation = '" + f + "' outside {displacement, mixed, automatic}");
+    switch (s.discretization.formulation)
+      {
+        case DiscretizationParameters::Formulation::mixed:
+          return fem::Formulation::mixed;
+        case DiscretizationParameters::Formulation::automatic:
+          return fem::Formulation::automatic;
+        case DiscretizationParameters::Formulation::displacement:
+          break;
+      }
+    return fem::Formulation::displacement;
   }
 
   fem::LoadCase fe_load(const Scene &s)

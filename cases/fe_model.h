@@ -27,7 +27,7 @@ namespace gradcontact::cases
   /// else the surface exponent (the power law and the expression have one exponent).
   double deep_exponent(const fem::ModulusField &modulus);
 
-  /// Discretization/formulation as the FE enum; an unknown name is an error naming the entry.
+  /// Discretization/formulation as the FE enum.
   fem::Formulation fe_formulation(const Scene &scene);
 
   /// Load/type and Load/control as an FE load: flat punch (depth d), concave punch (d0), constant

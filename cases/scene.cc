@@ -147,7 +147,8 @@ namespace gradcontact::cases
       refinements.push_back(dealii::Utilities::string_to_int(s));
     force_tolerance = prm.get_double("force tolerance");
     far_field = prm.get_double("far field");
-    formulation = prm.get("formulation");
+    const std::string f = prm.get("formulation");
+    formulation = f == "mixed" ? Formulation::mixed : (f == "automatic" ? Formulation::automatic : Formulation::displacement);
     prm.leave_subsection();
   }
 

@@ -70,7 +70,13 @@ namespace gradcontact::cases
     std::vector<unsigned int> refinements = {0}; ///< uniform refinements; several = a convergence study
     double force_tolerance = 1e-6; ///< picks the recommended mesh (fem::recommended_settings)
     double far_field = 0.;         ///< L/a; 0: the recommended one
-    std::string formulation = "displacement"; ///< FE unknowns: displacement | mixed | automatic (fem::Formulation)
+    enum class Formulation
+    {
+      displacement, ///< (u_r, u_z)
+      mixed,        ///< (u_r, u_z) and q = lambda div u (Taylor-Hood)
+      automatic     ///< mixed from nu = 0.45 on (fem::automatic_mixed_threshold)
+    };
+    Formulation formulation = Formulation::displacement; ///< the FE unknowns (fem::Formulation)
     static void declare(dealii::ParameterHandler &prm);
     void parse(dealii::ParameterHandler &prm);
   };

@@ -105,3 +105,14 @@ TEST_CASE("The FE load shall follow Load/type and Load/control", "[cases]")
   CHECK(fe_model(scene_with({"Load/type=paraboloid", "Load/control=depth"}), 0).load.type ==
         fem::LoadType::indenter_depth);
 }
+
+TEST_CASE("Discretization/formulation shall reach the FE model", "[cases]")
+{
+  const auto [name, formulation] =
+    GENERATE(std::make_pair(std::string("displacement"), fem::Formulation::displacement),
+             std::make_pair(std::string("mixed"), fem::Formulation::mixed),
+             std::make_pair(std::string("automatic"), fem::Formulation::automatic));
+  CAPTURE(name);
+  CHECK(fe_model(scene_with({"Discretization/formulation=" + name}), 0).settings.discretization.formulation ==
+        formulation);
+}
