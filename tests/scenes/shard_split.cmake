@@ -1,4 +1,4 @@
-# ctest scenes.shard_splits_a_sweep. Requirement (issue 7, "how a sweep runs on a cluster"):
+# ctest scenes.shard_splits_a_sweep. Requirement ("how a sweep runs on a cluster"):
 # `--shard i/N` gives every value of a sweep to exactly one of N independent jobs, and each job writes
 # its own summary (summary.shard-i-of-N.md), so N jobs may share one reports folder.
 # Variables: GRADCONTACT (the executable), SCENE (a fast .prm scene), REPORTS (a scratch folder).
