@@ -67,6 +67,14 @@ namespace gradcontact::batch
 
       bool has(const char *key) const { return j_.contains(key); }
 
+      /// The request's entries without its id, for messages that name the inputs.
+      std::string inputs() const
+      {
+        json copy = j_;
+        copy.erase("id");
+        return copy.dump();
+      }
+
       double number(const char *key) const { return number_in(j_, key, ""); }
 
       double geometry(const char *key) const
@@ -947,15 +955,19 @@ namespace gradcontact::batch
       return f->second;
     }
 
-    double checked(const double value)
+    /// The value, or a DomainError naming the request when it is not finite (an overflow past the
+    /// range of double, or an expression undefined at these inputs).
+    double checked(const double value, const Request &q)
     {
       if (!std::isfinite(value))
-        throw std::runtime_error("internal error: non-finite result " + check::format(value) +
-                                 " (please report the request)");
+        throw DomainError("case '" + q.case_name + "', quantity '" + q.quantity + "' (" +
+                          (q.numerical ? "numerical_mdr" : "closed_form") + "): non-finite result " +
+                          check::format(value) + " for the inputs " + q.inputs() +
+                          " (outside the range of double precision, or undefined there)");
       return value;
     }
 
-    double dispatch(const Request &q) { return checked(find_evaluator(q)(q)); }
+    double dispatch(const Request &q) { return checked(find_evaluator(q)(q), q); }
   } // namespace
 
   struct Prepared::Impl
@@ -966,7 +978,7 @@ namespace gradcontact::batch
     const Evaluator &f;
   };
 
-  double Prepared::operator()() const { return checked(impl_->f(impl_->q)); }
+  double Prepared::operator()() const { return checked(impl_->f(impl_->q), impl_->q); }
 
   Prepared prepare(const std::string &line)
   {

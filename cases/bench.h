@@ -8,7 +8,8 @@
 // FE part (cases/fe_bench.h): the deal.II model's error against wall time and DoFs, degrees 1-4 on a
 // ladder of meshes, flat punch and paraboloid at k = -0.5, 0, 0.5; peer part: the same scenes in
 // FreeFem++ (cases/peers/freefem), when FreeFem++ is on PATH, and the ratios of the two.
-#pragma once
+#ifndef GRADCONTACT_CASES_BENCH_H
+#define GRADCONTACT_CASES_BENCH_H
 
 #include <string>
 #include <vector>
@@ -22,3 +23,5 @@ namespace gradcontact::cases
   /// test; `--scene` (comma-separated) runs only those FE scenes, and their report replaces the FE report. Writes reports/benchmarks/ through a temporary folder.
   int bench(const std::vector<std::string> &args);
 } // namespace gradcontact::cases
+
+#endif

@@ -7,7 +7,8 @@
 //   bench    work-precision benchmarks -> reports/benchmarks/
 //   stress   numerical-stability tables -> reports/benchmarks/stability.md
 // `gradcontact <command> --help` prints that command's usage and exits with 0.
-#pragma once
+#ifndef GRADCONTACT_CASES_COMMAND_LINE_H
+#define GRADCONTACT_CASES_COMMAND_LINE_H
 
 #include <iosfwd>
 #include <string>
@@ -26,3 +27,5 @@ namespace gradcontact::cases
   /// std::invalid_argument (the caller prints what() and exits non-zero).
   int command_line(const std::vector<std::string> &args, std::ostream &out);
 } // namespace gradcontact::cases
+
+#endif

@@ -5,7 +5,8 @@
 // is fem::observed_order (fem/convergence.h): the least-squares slope over the last three levels.
 // Written into the report folder: convergence.csv, convergence.md and, with plots, the error against DoFs
 // and against run time of each series (convergence-<i>-dofs, convergence-<i>-time).
-#pragma once
+#ifndef GRADCONTACT_CASES_CONVERGENCE_REPORT_H
+#define GRADCONTACT_CASES_CONVERGENCE_REPORT_H
 
 #include <filesystem>
 #include <string>
@@ -44,3 +45,5 @@ namespace gradcontact::cases
   void write_convergence(const std::filesystem::path &folder, const std::string &scene, const std::string &reference,
                          const std::vector<ConvergenceSeries> &series, bool plots);
 } // namespace gradcontact::cases
+
+#endif

@@ -2,7 +2,8 @@
 // release rate from the FE flat-punch stiffness, JKR superposition, minimum of F(a) or d(a)) against the
 // closed forms (9.50-9.74) and the numerical MDR; the optimal profile of constant tensile stress from the FE
 // surface under p = -sigma_th.
-#pragma once
+#ifndef GRADCONTACT_CASES_FE_ADHESION_H
+#define GRADCONTACT_CASES_FE_ADHESION_H
 
 #include "report.h"
 #include "scene.h"
@@ -23,3 +24,5 @@ namespace gradcontact::cases
   /// Runs an adhesive scene (Scene::adhesion enabled) and writes its plots and tables into `folder`.
   SceneResult run_adhesion_scene(const Scene &scene, const std::filesystem::path &folder, bool verbose);
 } // namespace gradcontact::cases
+
+#endif

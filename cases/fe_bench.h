@@ -14,7 +14,8 @@
 // ladder of meshes (its `-level`), the same L/a. Every run is repeated; a row keeps the minimum and the
 // median of the wall time, the minimum of every phase, the process CPU time, and the wall time of the
 // first repetition (cold: gmsh runs then, its .msh is cached in the report's temporary folder after).
-#pragma once
+#ifndef GRADCONTACT_CASES_FE_BENCH_H
+#define GRADCONTACT_CASES_FE_BENCH_H
 
 #include <fem/mesh.h>
 
@@ -78,3 +79,5 @@ namespace gradcontact::cases
   std::vector<PeerRatio> time_ratio_at_equal_error(const std::vector<double> &ours_t, const std::vector<double> &ours_e,
                                                    const std::vector<double> &peer_t, const std::vector<double> &peer_e);
 } // namespace gradcontact::cases
+
+#endif

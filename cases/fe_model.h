@@ -10,7 +10,8 @@
 //     k = 0.5, 1e-10 a thin, make the solve unreliable at one refinement: energy mismatch 1.6e-6). The far
 //     field L/a follows the exponent deep below (the layers' base power law: k). Then Discretization/degree,
 //     formulation, far field (L/a, 0: the recommended one) and the uniform refinement level of the run.
-#pragma once
+#ifndef GRADCONTACT_CASES_FE_MODEL_H
+#define GRADCONTACT_CASES_FE_MODEL_H
 
 #include "scene.h"
 
@@ -58,3 +59,5 @@ namespace gradcontact::cases
   /// under contact-radius control at Load/a, at the finest refinement level.
   FeModel candidate_fe_model(const Scene &scene, const fem::Profile &profile);
 } // namespace gradcontact::cases
+
+#endif

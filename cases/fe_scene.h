@@ -2,7 +2,8 @@
 // closed form and/or the numerical MDR, one FE solve per refinement level shared by every quantity and
 // reference that needs it; the analytic ones (References/fem = false: the closed form against the numerical
 // MDR); and the candidate ones (a user's closed forms for a profile against the numerical MDR and the FE model).
-#pragma once
+#ifndef GRADCONTACT_CASES_FE_SCENE_H
+#define GRADCONTACT_CASES_FE_SCENE_H
 
 #include "report.h"
 #include "scene.h"
@@ -27,3 +28,5 @@ namespace gradcontact::cases
   SceneResult run_analytic_scene(const Scene &scene, const std::filesystem::path &folder);
   SceneResult run_candidate_scene(const Scene &scene, const std::filesystem::path &folder);
 } // namespace gradcontact::cases
+
+#endif

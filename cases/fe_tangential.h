@@ -10,7 +10,8 @@
 //   oscillation   +-F_A after loading to A: u0 on the unloading branch (9.83), the hysteresis loop (9.84,
 //                 fig. 9.36), the dissipated energy per cycle (9.86 corrected, ERRATA.md; Mindlin-Deresiewicz
 //                 9.87 at k = 0) and the FE surface displacement at the points A to E (figs. 9.34-9.35).
-#pragma once
+#ifndef GRADCONTACT_CASES_FE_TANGENTIAL_H
+#define GRADCONTACT_CASES_FE_TANGENTIAL_H
 
 #include "report.h"
 #include "scene.h"
@@ -32,3 +33,5 @@ namespace gradcontact::cases
   /// Runs a tangential scene (Scene::tangential enabled) and writes its plots into `folder`.
   SceneResult run_tangential_scene(const Scene &scene, const std::filesystem::path &folder, bool verbose);
 } // namespace gradcontact::cases
+
+#endif

@@ -12,7 +12,8 @@
 //                                 "normaliser": eval quantity of the scene, "normaliser_r": r/a,
 //                                 "per_area": times pi a^2}}]}
 // Output: reports/figures/<name>.png/.svg with the data and the gnuplot script.
-#pragma once
+#ifndef GRADCONTACT_CASES_FIGURES_H
+#define GRADCONTACT_CASES_FIGURES_H
 
 #include <string>
 #include <vector>
@@ -22,3 +23,5 @@ namespace gradcontact::cases
   /// `gradcontact figures <file.json|folder> [--reports DIR]`; returns the exit code.
   int figures(const std::vector<std::string> &args);
 } // namespace gradcontact::cases
+
+#endif

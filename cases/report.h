@@ -2,7 +2,8 @@
 //
 // A comparison is a value: quantity, metric, reference, values, errors, tolerance,
 // DoFs, time. Tables (errors.csv / errors.md), convergence tables and gnuplot plots are made from rows.
-#pragma once
+#ifndef GRADCONTACT_CASES_REPORT_H
+#define GRADCONTACT_CASES_REPORT_H
 
 #include <filesystem>
 #include <string>
@@ -99,3 +100,5 @@ namespace gradcontact::cases
   /// exception the "Additional information" text, whitespace folded; otherwise what().
   std::string concise(const std::exception &e);
 } // namespace gradcontact::cases
+
+#endif

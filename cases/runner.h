@@ -9,7 +9,8 @@
 // Reports go to <reports>/<scene>/ (errors.csv, errors.md, convergence.*, plots with their data and
 // gnuplot scripts, parameters.prm) and <reports>/summary.md, each written under a temporary name and
 // renamed when complete, so that a failed run leaves no half-written report.
-#pragma once
+#ifndef GRADCONTACT_CASES_RUNNER_H
+#define GRADCONTACT_CASES_RUNNER_H
 
 #include <string>
 #include <vector>
@@ -22,3 +23,5 @@ namespace gradcontact::cases
   /// `gradcontact sweep <scene.prm> --over Section/key=v1,v2,... [run options]`.
   int sweep(const std::vector<std::string> &args);
 } // namespace gradcontact::cases
+
+#endif

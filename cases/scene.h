@@ -3,7 +3,8 @@
 // One struct per subsection, each with declare() and parse() (the code-gallery pattern): ranges in
 // the patterns, a doc string on every entry. Variants of a scene are overrides on the command line
 // (`--set Section/key=value`), never copied files. `gradcontact run --help-scene` prints every entry.
-#pragma once
+#ifndef GRADCONTACT_CASES_SCENE_H
+#define GRADCONTACT_CASES_SCENE_H
 
 #include <deal.II/base/parameter_handler.h>
 
@@ -216,3 +217,5 @@ namespace gradcontact::cases
   /// Every entry with its documentation and default (for --help-scene).
   std::string scene_documentation();
 } // namespace gradcontact::cases
+
+#endif

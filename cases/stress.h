@@ -9,7 +9,8 @@
 // of two its dimension gives (force ~ E L^2, pressure ~ E, depth ~ L, energy ~ E L^3), so the reference
 // stays exact. Per region and method: rows, worst relative error, the worst row, NaN or inf results
 // (none allowed) and explicit refusals (clear errors that explain a limit).
-#pragma once
+#ifndef GRADCONTACT_CASES_STRESS_H
+#define GRADCONTACT_CASES_STRESS_H
 
 #include <string>
 #include <vector>
@@ -20,3 +21,5 @@ namespace gradcontact::cases
   /// (non-zero when a NaN or inf is returned or a region's worst error exceeds its bound).
   int stress(const std::vector<std::string> &args);
 } // namespace gradcontact::cases
+
+#endif

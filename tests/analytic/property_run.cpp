@@ -1,4 +1,4 @@
-// property_run: the randomized property run of the analytic module at any size (issue 7).
+// property_run: the randomized property run of the analytic module at any size.
 //
 //   property_run [--points N] [--seed S] [--mdr-stride M] [--timeout T] [--report FILE]
 //                [--inject crash:I|hang:I]   (self-test of the detector: point I crashes or hangs)
@@ -128,7 +128,7 @@ namespace
   {
     ok = 0,          ///< finite value
     refused = 1,     ///< an explicit error message (a valid refusal, e.g. no critical state)
-    nonfinite = 2,   ///< NaN or inf (batch reports it as an internal error)
+    nonfinite = 2,   ///< NaN or inf (batch names the request: "non-finite result")
     unexplained = 3, ///< any other internal or empty error
     disagrees = 4,   ///< closed form and numerical MDR differ beyond the tolerance, or one refuses alone
   };

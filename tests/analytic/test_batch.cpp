@@ -78,3 +78,26 @@ TEST_CASE("eval answers are valid JSON with round-trip values", "[analytic]")
   const json j = json::parse(batch::to_json(a));
   CHECK(j["value"].get<double>() == a.value); // 17 significant digits round-trip exactly
 }
+
+TEST_CASE("The batch shall name the request whose result overflows, not report an internal error", "[analytic]")
+{
+  // F of a paraboloid grows like E0 a^{3+k} / R: E0 = 1e307, a = 1e3 m, R = 1e-6 m is far past 1.8e308.
+  const std::string request = R"({"id": 7, "case": "paraboloid", "quantity": "force", )"
+                              R"("material": {"E0": 1e307, "c0": 1e-3, "k": 0.5, "nu": 0.3}, )"
+                              R"("geometry": {"R": 1e-6}, "a": 1e3})";
+  const batch::Answer a = batch::evaluate(request);
+  CAPTURE(a.error);
+  REQUIRE_FALSE(a.ok);
+  CHECK_THAT(a.error, Catch::Contains("case 'paraboloid', quantity 'force'") && Catch::Contains("non-finite") &&
+                        Catch::Contains("1e+307") && Catch::Contains("\"a\":1000"));
+  CHECK(a.error.find("internal error") == std::string::npos);
+  CHECK(a.id_json == "7");
+  // The same inputs two orders of magnitude smaller evaluate to a finite force.
+  const batch::Answer small = batch::evaluate(
+    R"({"case": "paraboloid", "quantity": "force", "material": {"E0": 1e9, "c0": 1e-3, "k": 0.5, "nu": 0.3}, )"
+    R"("geometry": {"R": 1e-2}, "a": 1e-4})");
+  CHECK(small.ok);
+  CHECK(std::isfinite(small.value));
+  // The prepared form gives the same error.
+  CHECK_THROWS_WITH(batch::prepare(request)(), Catch::Contains("non-finite") && Catch::Contains("paraboloid"));
+}

@@ -102,6 +102,8 @@ TEST_CASE("closed forms give no NaN or inf over 1e5 random points", "[analytic]"
           if (!std::isfinite(a.value))
             FAIL("non-finite value for " << q.dump());
         }
+      else if (a.error.find("non-finite") != std::string::npos)
+        FAIL("non-finite result for " << q.dump() << ": " << a.error);
       else if (a.error.find("internal error") != std::string::npos || a.error.empty())
         FAIL("unexplained error for " << q.dump() << ": " << a.error);
     }

@@ -1,6 +1,7 @@
 // Scenes for the tests of cases/: a scene file of defaults in a temporary folder, varied by the same
 // `Section/key=value` overrides as `gradcontact run --set` (a variant is an override, not a copied file).
-#pragma once
+#ifndef GRADCONTACT_TESTS_CASES_SCENE_FILES_H
+#define GRADCONTACT_TESTS_CASES_SCENE_FILES_H
 
 #include <cases/scene.h>
 
@@ -27,3 +28,5 @@ namespace gradcontact::cases::testing
   /// The scene of every default entry with `overrides` ("Section/key=value") applied.
   Scene scene_with(const std::vector<std::string> &overrides);
 } // namespace gradcontact::cases::testing
+
+#endif
