@@ -2,7 +2,7 @@
 #include "fe_bench.h"
 #include "report.h"
 
-#include <analytic/batch.hpp>
+#include <analytic/batch.h>
 
 #include <nlohmann/json.hpp>
 

@@ -5,7 +5,7 @@
 #include "runner.h"
 #include "stress.h"
 
-#include <analytic/batch.hpp>
+#include <analytic/batch.h>
 
 #include <algorithm>
 #include <fstream>

@@ -3,7 +3,7 @@
 #include "convergence_report.h"
 #include "fe_model.h"
 
-#include <analytic/batch.hpp>
+#include <analytic/batch.h>
 #include <fem/adhesion.h>
 #include <fem/axisymmetric_solver.h>
 

@@ -7,9 +7,9 @@
 #include <fem/fourier_mode1_solver.h>
 #include <fem/modulus.h>
 
-#include <analytic/adhesion.hpp>
-#include <analytic/material.hpp>
-#include <analytic/normal.hpp>
+#include <analytic/adhesion.h>
+#include <analytic/material.h>
+#include <analytic/normal.h>
 
 #include <algorithm>
 #include <array>
@@ -555,7 +555,7 @@ namespace gradcontact::cases
        << ". Whole run: " << fmt(total, "%.0f") << " s.\n\n"
        << "## What is measured\n\n"
        << "Each row is one FE model on one mesh: the relative error of its answer against the closed forms of "
-          "`analytic/normal.hpp` (an independent path: the MDR closed forms, themselves checked against 34-digit "
+          "`analytic/normal.h` (an independent path: the MDR closed forms, themselves checked against 34-digit "
           "references), and the wall time from the construction of the solver (mesh, DoFs, assembly, "
           "factorisation) to the answer, including post-processing.\n\n"
        << "- Scenes: flat punch (radius a, depth 1e-3 a, force against (9.16)); paraboloid R = 50 a under "
@@ -564,13 +564,13 @@ namespace gradcontact::cases
        << "- jkr_paraboloid: the JKR pull-off force of the paraboloid R = 50 a, dgamma = 0.05 J/m^2, under force "
           "control, from `AdhesiveContact::critical_state` (`fem/adhesion.h`: one FE model per contact radius, "
           "each on the level's mesh graded toward that radius; the search starts 1.2 a_c off), against F_c of "
-          "(9.55)-(9.56) (`jkr::critical_state` of `analytic/adhesion.hpp`; at k = 0 JKR's -3/2 pi dgamma R). "
+          "(9.55)-(9.56) (`jkr::critical_state` of `analytic/adhesion.h`; at k = 0 JKR's -3/2 pi dgamma R). "
           "The time is the whole search (all radii, noted in the row); DoFs are those of the largest model; "
           "there is no phase split. Levels 0-1, one repetition (7 FE radii per row).\n"
        << "- tangential_punch: the tangential flat punch (U = V = delta = 1e-3 a on r <= a, W free) of "
           "`FourierMode1Solver` (`fem/fourier_mode1_solver.h`, Fourier mode 1, 3 fields), force F_x = K_T delta "
           "against the MDR K_T = 2 h_T E0 a^(1+k) / ((1+k) c0^k) (9.78)-(9.79) (`h_T` of "
-          "`analytic/material.hpp`; at k = 0 Mindlin's 8 G a / (2 - nu)). Levels 0-2 (the mode-1 system has "
+          "`analytic/material.h`; at k = 0 Mindlin's 8 G a / (2 - nu)). Levels 0-2 (the mode-1 system has "
           "3/2 the DoFs), one repetition.\n"
        << "- deal.II model (`fem/`): FE_Q degree 1-4; mesh level 0-4 = h_edge 1e-2 .. 1e-6 a, ring growth "
           "1.6, 1.4, 1.3, 1.15, 1.15 (`fe_mesh_level` in `cases/fe_bench.cc`); L/a and the surface layer from "

@@ -1,11 +1,11 @@
 // gradcontact/cases: FE work-precision benchmarks and the FreeFem++ peer (`gradcontact bench --part
 // fe|peer`).
 //
-// Scenes (both models, both references from analytic/normal.hpp, an independent path):
+// Scenes (both models, both references from analytic/normal.h, an independent path):
 //   flat punch, depth d = 1e-3 a:        relative error of F against (9.16);
 //   paraboloid R = 50 a, contact radius a: relative errors of F(a) and d(a) against the Hertz-type closed
 //                                          forms; the scene's error is the larger of the two;
-//   JKR paraboloid, dgamma = 0.05 J/m^2:  pull-off force (force control) against (9.56), analytic/adhesion.hpp;
+//   JKR paraboloid, dgamma = 0.05 J/m^2:  pull-off force (force control) against (9.56), analytic/adhesion.h;
 //   tangential flat punch, delta = 1e-3 a: F_x of the Fourier-mode-1 model against the MDR K_T delta (9.78).
 // E0 = 2 GPa, c0 = 3 a, a = 0.1 mm, nu = 0.3, k in {-0.5, 0, 0.5}.
 //

@@ -3,9 +3,9 @@
 #include "convergence_report.h"
 #include "fe_model.h"
 
-#include <analytic/batch.hpp>
-#include <analytic/material.hpp>
-#include <analytic/mdr.hpp>
+#include <analytic/batch.h>
+#include <analytic/material.h>
+#include <analytic/mdr.h>
 #include <fem/axisymmetric_solver.h>
 
 #include <deal.II/base/function_parser.h>

@@ -2,10 +2,10 @@
 
 #include "fe_model.h"
 
-#include <analytic/batch.hpp>
-#include <analytic/material.hpp>
-#include <analytic/normal.hpp>
-#include <analytic/tangential.hpp>
+#include <analytic/batch.h>
+#include <analytic/material.h>
+#include <analytic/normal.h>
+#include <analytic/tangential.h>
 #include <fem/axisymmetric_solver.h>
 #include <fem/fourier_mode1_solver.h>
 

@@ -6,7 +6,7 @@
 #include "report.h"
 #include "scene.h"
 
-#include <analytic/batch.hpp>
+#include <analytic/batch.h>
 
 #include <nlohmann/json.hpp>
 

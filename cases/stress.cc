@@ -2,7 +2,7 @@
 
 #include "report.h"
 
-#include <analytic/batch.hpp>
+#include <analytic/batch.h>
 
 #include <nlohmann/json.hpp>
 
@@ -30,7 +30,7 @@ namespace gradcontact::cases
   {
     /// The bound on the worst relative error per region (a value, not a refusal): "no silent loss of
     /// digits". Closed forms: the reference tests reach 1e-13 except named ill-conditioned groups (worst
-    /// 4.1e-12, tests/analytic/test_references.cpp); the numerical MDR 1.7e-12. 1e-10 is the bound on
+    /// 4.1e-12, tests/analytic/test_references.cc); the numerical MDR 1.7e-12. 1e-10 is the bound on
     /// every region, so a region that loses more than 6 of 16 digits fails the run.
     constexpr double digits_bound = 1e-10;
 

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Reference values for analytic/special_functions.hpp, from mpmath at 40 digits.
+"""Reference values for analytic/special_functions.h, from mpmath at 40 digits.
 
 Independent path: mpmath's hyp2f1 and direct tanh-sinh quadrature of the defining integrals with the
 interval split at the singular end points (an unsplit mpmath quad of int_z^1 t^(x-1)(1-t)^(y-1) dt

@@ -18,8 +18,8 @@
 
 #include "study_arguments.h"
 
-#include <analytic/material.hpp>
-#include <analytic/normal.hpp>
+#include <analytic/material.h>
+#include <analytic/normal.h>
 
 #include <algorithm>
 #include <chrono>

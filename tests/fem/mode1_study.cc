@@ -16,9 +16,9 @@
 
 #include "cylinder_3d.h"
 
-#include <analytic/material.hpp>
-#include <analytic/normal.hpp>
-#include <analytic/tangential.hpp>
+#include <analytic/material.h>
+#include <analytic/normal.h>
+#include <analytic/tangential.h>
 
 #include <deal.II/base/quadrature_lib.h>
 

@@ -1,14 +1,14 @@
 // Tests of curved indenters, depth and force control, surface displacement, pressure, layered E, VTU
 // output and the convergence-study helper (fem/). References: the closed forms of
-// analytic/normal.hpp (an independent code path: the MDR closed forms of chapter 9), linked here only.
+// analytic/normal.h (an independent code path: the MDR closed forms of chapter 9), linked here only.
 // Every tolerance is a measured error (fem/README.md) times a margin of 2.5-5 with its reason.
 #include <fem/axisymmetric_solver.h>
 #include <fem/contact_check.h>
 #include <fem/convergence.h>
 #include <fem/modulus.h>
 
-#include <analytic/material.hpp>
-#include <analytic/normal.hpp>
+#include <analytic/material.h>
+#include <analytic/normal.h>
 
 #include <catch2/catch.hpp>
 

@@ -1,14 +1,14 @@
 // Tests of the mixed (Taylor-Hood displacement-pressure) formulation of the axisymmetric solver and of
 // the Gibson medium (fem/README.md "Mixed formulation (nu -> 0.5) and the Gibson medium").
 // References: classical closed forms written out here (Boussinesq's flat punch, Hertz's pressure, the
-// Winkler law of the Gibson medium 9.44) and the closed forms of analytic/normal.hpp for k = 0.5, an
+// Winkler law of the Gibson medium 9.44) and the closed forms of analytic/normal.h for k = 0.5, an
 // independent code path. Every tolerance is a measured error times a stated margin.
 #include <fem/axisymmetric_solver.h>
 #include <fem/fourier_mode1_solver.h>
 #include <fem/modulus.h>
 
-#include <analytic/material.hpp>
-#include <analytic/normal.hpp>
+#include <analytic/material.h>
+#include <analytic/normal.h>
 
 #include <catch2/catch.hpp>
 
@@ -108,7 +108,7 @@ TEST_CASE("The mixed formulation shall give Boussinesq's punch force and Hertz's
 
 
 
-// k = 0.5, nu = 0.5 against the closed forms of chapter 9.1 (analytic/normal.hpp), on a mesh cheaper
+// k = 0.5, nu = 0.5 against the closed forms of chapter 9.1 (analytic/normal.h), on a mesh cheaper
 // than the recommended one (degree 3, h_edge = 1e-3 a, rings g = 1.6, surface layer 1e-6 a).
 // Measured: punch force 1.55e-5, paraboloid p(r) L2 1.34e-5 (a(d) -1.25e-5), 2.5x margin. (The
 // recommended mesh, 190 378 DoFs: 3.7e-7 and 3.2e-6, 10-20 s, too slow for [fem].)

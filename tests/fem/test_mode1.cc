@@ -5,7 +5,7 @@
 //   Mindlin      K_T = 8 G a / (2 - nu) of the rigid tangential flat punch on the homogeneous half-space
 //                (the traction F / (2 pi a sqrt(a^2 - r^2)) in x gives u_x = const, u_y = 0 on the disc)
 //   MDR          K_T = 2 cT0 a^{1+k} / ((1+k) c0^k), cT0 = h_T(k, nu) E0 (9.78)-(9.79), analytic/
-//   9.80         u0 = mu alpha [d(a) - d(c)] for tau = mu [p(r; a) - p(r; c)], analytic/tangential.hpp
+//   9.80         u0 = mu alpha [d(a) - d(c)] for tau = mu [p(r; a) - p(r; c)], analytic/tangential.h
 // Tolerances are the measured errors (fem/README.md, "Fourier mode 1") with a margin, each with its
 // reason; they are not loosened to pass.
 #include <fem/axisymmetric_solver.h>
@@ -13,9 +13,9 @@
 #include <fem/fourier_mode1_solver.h>
 #include <fem/modulus.h>
 
-#include <analytic/material.hpp>
-#include <analytic/normal.hpp>
-#include <analytic/tangential.hpp>
+#include <analytic/material.h>
+#include <analytic/normal.h>
+#include <analytic/tangential.h>
 
 #include "cylinder_3d.h"
 

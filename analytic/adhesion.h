@@ -3,10 +3,11 @@
 // The adhesive solution is the non-adhesive one superposed with a flat-punch translation -Delta_l(a)
 // (9.45-9.49). Pull-off forces are negative (tensile). Control::force: the critical state is the
 // minimum of F_N(a); Control::displacement: the minimum of d(a) (9.48 with C~ = 2/(3+k) or 2/(1-k)).
-#pragma once
+#ifndef GRADCONTACT_ANALYTIC_ADHESION_H
+#define GRADCONTACT_ANALYTIC_ADHESION_H
 
-#include <analytic/material.hpp>
-#include <analytic/normal.hpp>
+#include <analytic/material.h>
+#include <analytic/normal.h>
 
 namespace gradcontact::jkr
 {
@@ -99,3 +100,5 @@ namespace gradcontact::jkr
   /// f~_opt(r) = f_opt(r) - f_opt(a) (9.74)
   double shifted_profile(const Medium &m, const OptimalProfile &p, double r);
 } // namespace gradcontact::jkr
+
+#endif

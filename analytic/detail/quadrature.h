@@ -5,7 +5,8 @@
 // interval (-1, 1): f(u, uc) with uc = 1 - u for u > 0 and uc = -1 - u for u < 0. Mapping that to
 // (lo, hi) here lets an integrand with an end-point singularity form (x - lo) or (hi - x) without
 // the cancellation of subtracting nearly equal numbers (STYLE: ERRATA 9.2 quadrature item).
-#pragma once
+#ifndef GRADCONTACT_ANALYTIC_DETAIL_QUADRATURE_H
+#define GRADCONTACT_ANALYTIC_DETAIL_QUADRATURE_H
 
 #include <boost/math/quadrature/tanh_sinh.hpp>
 
@@ -58,3 +59,5 @@ namespace gradcontact::detail
     return half * q;
   }
 } // namespace gradcontact::detail
+
+#endif

@@ -1,5 +1,5 @@
-#include <analytic/errors.hpp>
-#include <analytic/material.hpp>
+#include <analytic/errors.h>
+#include <analytic/material.h>
 
 #include <boost/math/constants/constants.hpp>
 #include <boost/math/special_functions/gamma.hpp>

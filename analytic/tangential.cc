@@ -1,5 +1,5 @@
-#include <analytic/errors.hpp>
-#include <analytic/tangential.hpp>
+#include <analytic/errors.h>
+#include <analytic/tangential.h>
 
 #include <boost/math/constants/constants.hpp>
 

@@ -2,12 +2,13 @@
 // bodies, through Medium) with the power-law graded half-space, chapter 9.1 (eqs. 9.14-9.44).
 //
 // Conventions (analytic/README.md): d, d0 and w positive into the material, p and F positive in
-// compression. Every function takes the equivalent Medium (material.hpp), so the same formula serves a
+// compression. Every function takes the equivalent Medium (material.h), so the same formula serves a
 // rigid indenter (cN0 = h_N E0/(1-nu^2), written h_N E* in the chapter) and two graded bodies (9.4).
 // Radii, depths and forces are in consistent units.
-#pragma once
+#ifndef GRADCONTACT_ANALYTIC_NORMAL_H
+#define GRADCONTACT_ANALYTIC_NORMAL_H
 
-#include <analytic/material.hpp>
+#include <analytic/material.h>
 
 namespace gradcontact
 {
@@ -109,3 +110,5 @@ namespace gradcontact
   /// limit k -> 1 with nu = 1/2 (9.44); at k < 1 it holds only to O(1-k) (ERRATA.md).
   double gibson_winkler_modulus(double E0, double c0);
 } // namespace gradcontact
+
+#endif

@@ -1,7 +1,7 @@
 // Requirement: the MDR coefficients beta, C, h_N, h_T and alpha (9.5-9.7, 9.78-9.79) shall take their
 // classical values at k = 0, be continuous through k = 0 without loss of digits (no 0/0), and behave
 // as their asymptotics say as k -> -1 and k -> 1.
-#include <analytic/material.hpp>
+#include <analytic/material.h>
 
 #include <boost/math/constants/constants.hpp>
 #include <catch2/catch.hpp>

@@ -2,9 +2,9 @@
 // tests/data/references.jsonl (made by tests/data/generate_references.py from the MDR integrals in
 // mpmath, independently of this code) within 1e-13 relative (or the stated absolute floor where the
 // value crosses zero), and the numerical MDR engine within 1e-10, over the stress grid of the issue.
-#include <analytic/batch.hpp>
+#include <analytic/batch.h>
 
-#include "reference_table.hpp"
+#include "reference_table.h"
 
 #include <catch2/catch.hpp>
 #include <nlohmann/json.hpp>

@@ -4,10 +4,11 @@
 // Holl ratio nu = 1/(2+k); both with the Holl ratio). The generalised Ciavarella-Jaeger theorem
 // (9.77): tau(r) = mu [p(r; a) - p(r; c)], F_x = mu [F_N(a) - F_N(c)], u0 = mu alpha [d(a) - d(c)],
 // alpha = cN0 / cT0 (9.78). Spheres: Paraboloid{R} with the effective radius R.
-#pragma once
+#ifndef GRADCONTACT_ANALYTIC_TANGENTIAL_H
+#define GRADCONTACT_ANALYTIC_TANGENTIAL_H
 
-#include <analytic/material.hpp>
-#include <analytic/normal.hpp>
+#include <analytic/material.h>
+#include <analytic/normal.h>
 
 namespace gradcontact::tangential
 {
@@ -57,3 +58,5 @@ namespace gradcontact::tangential
   /// for a rigid sphere on one graded body (ERRATA.md); at k = 0 it is Mindlin-Deresiewicz (9.87).
   double dissipated_energy(const Medium &m, const SphereSlip &s, double a, double FA);
 } // namespace gradcontact::tangential
+
+#endif

@@ -1,9 +1,10 @@
 // Test helpers: random valid eval requests over every case of the vocabulary (analytic/README.md),
 // for the property tests. Fixed seeds: a failing point can be replayed.
-#pragma once
+#ifndef GRADCONTACT_TESTS_ANALYTIC_RANDOM_REQUESTS_H
+#define GRADCONTACT_TESTS_ANALYTIC_RANDOM_REQUESTS_H
 
-#include <analytic/material.hpp>
-#include <analytic/normal.hpp>
+#include <analytic/material.h>
+#include <analytic/normal.h>
 
 #include <nlohmann/json.hpp>
 
@@ -170,3 +171,5 @@ namespace gradcontact::testing
     return q;
   }
 } // namespace gradcontact::testing
+
+#endif

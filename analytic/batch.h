@@ -4,7 +4,8 @@
 // One request object a line in, one answer line out: {"id": ..., "value": x} or
 // {"id": ..., "error": "..."}; the error names the parameter, its value and the valid range. One bad
 // line never stops the others.
-#pragma once
+#ifndef GRADCONTACT_ANALYTIC_BATCH_H
+#define GRADCONTACT_ANALYTIC_BATCH_H
 
 #include <iosfwd>
 #include <memory>
@@ -48,3 +49,5 @@ namespace gradcontact::batch
   /// Returns the number of answers that are errors.
   int evaluate_stream(std::istream &in, std::ostream &out);
 } // namespace gradcontact::batch
+
+#endif

@@ -3,7 +3,8 @@
 // Public functions check, detail:: functions compute (STYLE.md rule 3). A failed check throws
 // DomainError whose message names the function, the argument, its value and the valid range,
 // e.g. "paraboloid_force: k = 1.5 is outside (-1, 1)". NaN is tested first, then the range.
-#pragma once
+#ifndef GRADCONTACT_ANALYTIC_ERRORS_H
+#define GRADCONTACT_ANALYTIC_ERRORS_H
 
 #include <cmath>
 #include <sstream>
@@ -84,3 +85,5 @@ namespace gradcontact
     }
   } // namespace check
 } // namespace gradcontact
+
+#endif

@@ -1,6 +1,6 @@
 // Requirement: `gradcontact eval` shall answer one JSON line per request, in order, echo the id as
 // given, report every bad request as an error line naming the parameter, and never stop at one.
-#include <analytic/batch.hpp>
+#include <analytic/batch.h>
 
 #include <catch2/catch.hpp>
 #include <nlohmann/json.hpp>

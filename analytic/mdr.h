@@ -13,9 +13,10 @@
 // removed by u = v^(1/(alpha+1)) / 2 (and the mirror image at u = 1) before tanh-sinh: the mass of
 // x^k near 0 for k -> -1 lies at scales below any double, and a plain tanh-sinh loses digits there
 // (ERRATA.md, quadrature item).
-#pragma once
+#ifndef GRADCONTACT_ANALYTIC_MDR_H
+#define GRADCONTACT_ANALYTIC_MDR_H
 
-#include <analytic/material.hpp>
+#include <analytic/material.h>
 
 #include <functional>
 
@@ -105,3 +106,5 @@ namespace gradcontact::mdr
   CriticalState critical_state(const Profile &profile, const Medium &m, double dgamma, Control control,
                                double a_lo, double a_hi, unsigned int bracket_shifts = 0);
 } // namespace gradcontact::mdr
+
+#endif

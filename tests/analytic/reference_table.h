@@ -1,5 +1,6 @@
 // Test helpers: reading the committed reference tables of tests/data/.
-#pragma once
+#ifndef GRADCONTACT_TESTS_ANALYTIC_REFERENCE_TABLE_H
+#define GRADCONTACT_TESTS_ANALYTIC_REFERENCE_TABLE_H
 
 #include <fstream>
 #include <sstream>
@@ -40,3 +41,5 @@ namespace gradcontact::testing
     return reference == 0. ? std::abs(value) : std::abs(value - reference) / std::abs(reference);
   }
 } // namespace gradcontact::testing
+
+#endif

@@ -1,6 +1,6 @@
-#include <analytic/errors.hpp>
-#include <analytic/normal.hpp>
-#include <analytic/special_functions.hpp>
+#include <analytic/errors.h>
+#include <analytic/normal.h>
+#include <analytic/special_functions.h>
 
 #include <boost/math/constants/constants.hpp>
 #include <boost/math/special_functions/beta.hpp>

@@ -3,7 +3,8 @@
 // E(z) = E0 (z / c0)^k, -1 < k < 1, constant Poisson ratio nu (chapter 9, eq. 9.1).
 // The MDR maps the contact onto a Winkler foundation with modulus c_N(x) = cN0 (|x|/c0)^k (9.4);
 // tangential contact uses c_T(x) = cT0 (|x|/c0)^k and alpha = cN0 / cT0 (9.78).
-#pragma once
+#ifndef GRADCONTACT_ANALYTIC_MATERIAL_H
+#define GRADCONTACT_ANALYTIC_MATERIAL_H
 
 namespace gradcontact
 {
@@ -53,3 +54,5 @@ namespace gradcontact
   /// Checks a Medium built by hand: -1 < k < 1, c0 > 0, cN0 > 0, cT0 > 0.
   void validate(const char *function, const Medium &m);
 } // namespace gradcontact
+
+#endif

@@ -2,11 +2,11 @@
 // never a NaN, a silent zero or a crash: k outside (-1, 1), nu outside [0, 1/2], non-positive E0, c0,
 // radii and depths, r < 0, NaN anywhere, complete contact violated for the concave punch (9.35),
 // gross slip for tangential cases, no critical state, a Holl ratio for k <= 0.
-#include <analytic/adhesion.hpp>
-#include <analytic/errors.hpp>
-#include <analytic/mdr.hpp>
-#include <analytic/normal.hpp>
-#include <analytic/tangential.hpp>
+#include <analytic/adhesion.h>
+#include <analytic/errors.h>
+#include <analytic/mdr.h>
+#include <analytic/normal.h>
+#include <analytic/tangential.h>
 
 #include <catch2/catch.hpp>
 

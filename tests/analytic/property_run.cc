@@ -3,12 +3,12 @@
 //   property_run [--points N] [--seed S] [--mdr-stride M] [--timeout T] [--report FILE]
 //                [--inject crash:I|hang:I]   (self-test of the detector: point I crashes or hangs)
 //
-// Requirement: over N random valid requests (tests/analytic/random_requests.hpp, every case and quantity
+// Requirement: over N random valid requests (tests/analytic/random_requests.h, every case and quantity
 // of the vocabulary, E0 1e6..1e12 Pa, c0 1e-6..1 m, k in [-0.95, 0.95], nu in [0, 0.4999]) the closed
 // forms shall return no NaN or inf, no unexplained error, shall not hang (no answer within T seconds)
 // and shall not crash; every M-th point is also evaluated by the numerical MDR (the independent path) and
 // shall agree within 1e-9, or 1e-12 of the scale where the value crosses zero (the tolerances of
-// test_closed_vs_mdr.cpp). Point i is the first request of RandomRequests(S + i): any point is replayed
+// test_closed_vs_mdr.cc). Point i is the first request of RandomRequests(S + i): any point is replayed
 // from its number alone (printed for every failure).
 //
 // Hangs and crashes cannot be caught in-process, so the points run in a child process that reports each
@@ -16,9 +16,9 @@
 // T s: the child is killed) at the point after the last reported one and restarts a child after it.
 // Exit code 0 when every count of a failure is zero. --report writes a markdown summary (through a
 // temporary file renamed at the end: a failed run leaves no half-written report).
-#include <analytic/batch.hpp>
+#include <analytic/batch.h>
 
-#include "random_requests.hpp"
+#include "random_requests.h"
 
 #include <algorithm>
 #include <cerrno>
@@ -45,7 +45,7 @@ using nlohmann::json;
 
 namespace
 {
-  // test_closed_vs_mdr.cpp: closed forms ~1e-13, nested quadrature ~1e-11, conditioning at random points.
+  // test_closed_vs_mdr.cc: closed forms ~1e-13, nested quadrature ~1e-11, conditioning at random points.
   constexpr double tol_closed_vs_mdr = 1e-9;
   constexpr double relative_floor    = 1e-12;
 

@@ -1,6 +1,6 @@
-#include <analytic/adhesion.hpp>
-#include <analytic/errors.hpp>
-#include <analytic/special_functions.hpp>
+#include <analytic/adhesion.h>
+#include <analytic/errors.h>
+#include <analytic/special_functions.h>
 
 #include <boost/math/constants/constants.hpp>
 

@@ -2,9 +2,9 @@
 // from the textbook formulas (independent of the MDR): Boussinesq (flat punch), Sneddon (cone), Hertz
 // (paraboloid), the uniformly loaded circle, JKR, Cattaneo-Mindlin and Mindlin-Deresiewicz. At
 // k = +-1e-8 the results shall differ from the k = 0 ones by O(1e-8), not by a 0/0 artefact.
-#include <analytic/adhesion.hpp>
-#include <analytic/normal.hpp>
-#include <analytic/tangential.hpp>
+#include <analytic/adhesion.h>
+#include <analytic/normal.h>
+#include <analytic/tangential.h>
 
 #include <boost/math/constants/constants.hpp>
 #include <boost/math/special_functions/ellint_2.hpp>
@@ -69,7 +69,7 @@ TEST_CASE("paraboloid at k = 0 is Hertz's", "[analytic]")
     CHECK_THAT(pressure(m, Paraboloid{R}, a, r),
                WithinRel(2. * Es * a / (pi * R) * std::sqrt(1. - r * r / (a * a)), tol));
   // The classical form cancels like (r/a)^2 far out, so it is used up to r = 10 a (the references of
-  // test_references.cpp reach 1e3 a).
+  // test_references.cc reach 1e3 a).
   for (const double r : {1.000001 * a, 1.5 * a, 10. * a})
     {
       const double w = ((2. * a * a - r * r) * std::asin(a / r) + a * std::sqrt((r - a) * (r + a))) / (pi * R);

@@ -1,5 +1,5 @@
-#include <analytic/errors.hpp>
-#include <analytic/special_functions.hpp>
+#include <analytic/errors.h>
+#include <analytic/special_functions.h>
 
 #include <boost/math/special_functions/beta.hpp>
 #include <boost/math/special_functions/gamma.hpp>

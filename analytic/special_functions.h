@@ -9,7 +9,8 @@
 // - hyp2f1(a, b, c, z), the Gauss hypergeometric function for 0 <= z <= 1 and c - a - b > 0,
 //   accurate up to z = 1 (connection formula to 1 - z; where that formula is degenerate, i.e.
 //   c - a - b near an integer, Taylor steps of the hypergeometric equation towards z = 1).
-#pragma once
+#ifndef GRADCONTACT_ANALYTIC_SPECIAL_FUNCTIONS_H
+#define GRADCONTACT_ANALYTIC_SPECIAL_FUNCTIONS_H
 
 namespace gradcontact
 {
@@ -32,3 +33,5 @@ namespace gradcontact
   /// 1 / Gamma(x), zero at the poles x = 0, -1, -2, ...
   double rgamma(double x);
 } // namespace gradcontact
+
+#endif

@@ -1,11 +1,11 @@
-#include <analytic/adhesion.hpp>
-#include <analytic/batch.hpp>
-#include <analytic/detail/quadrature.hpp>
-#include <analytic/errors.hpp>
-#include <analytic/material.hpp>
-#include <analytic/mdr.hpp>
-#include <analytic/normal.hpp>
-#include <analytic/tangential.hpp>
+#include <analytic/adhesion.h>
+#include <analytic/batch.h>
+#include <analytic/detail/quadrature.h>
+#include <analytic/errors.h>
+#include <analytic/material.h>
+#include <analytic/mdr.h>
+#include <analytic/normal.h>
+#include <analytic/tangential.h>
 
 #include <boost/math/constants/constants.hpp>
 #include <boost/math/tools/toms748_solve.hpp>

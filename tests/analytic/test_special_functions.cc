@@ -1,10 +1,10 @@
 // Requirement: the special functions the chapter needs beyond Boost (incomplete beta continued to
 // x <= 0 (9.21), its complement, 2F1 for the families of 9.40/9.71 up to z = 1) shall agree with
 // 40-digit mpmath references (tests/data/generate_special_functions.py) to the stated tolerances.
-#include <analytic/errors.hpp>
-#include <analytic/special_functions.hpp>
+#include <analytic/errors.h>
+#include <analytic/special_functions.h>
 
-#include "reference_table.hpp"
+#include "reference_table.h"
 
 #include <catch2/catch.hpp>
 

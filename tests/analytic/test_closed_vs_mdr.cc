@@ -2,12 +2,12 @@
 // 9.2-9.13, 9.46, critical states by optimisation, Ciavarella-Jaeger superposition and loop areas by
 // quadrature) at random valid parameter points, and no closed form shall return NaN or inf over
 // 1e5 random points. The printed misprints of ERRATA.md shall be visible as disagreements.
-#include <analytic/batch.hpp>
-#include <analytic/material.hpp>
-#include <analytic/mdr.hpp>
-#include <analytic/normal.hpp>
+#include <analytic/batch.h>
+#include <analytic/material.h>
+#include <analytic/mdr.h>
+#include <analytic/normal.h>
 
-#include "random_requests.hpp"
+#include "random_requests.h"
 
 #include <boost/math/special_functions/beta.hpp>
 #include <boost/math/special_functions/cos_pi.hpp>
@@ -75,7 +75,7 @@ TEST_CASE("closed forms equal the numerical MDR at 1e5 random points (GRADCONTAC
           "[analytic][slow]")
 {
   // The point count is a parameter: GRADCONTACT_PROPERTY_POINTS=N (default 1e5). The 1e6-point run with
-  // NaN/inf/hang/crash counts is tests/analytic/property_run.cpp (ctest slow:analytic.property_1e6).
+  // NaN/inf/hang/crash counts is tests/analytic/property_run.cc (ctest slow:analytic.property_1e6).
   int n = 100000;
   if (const char *env = std::getenv("GRADCONTACT_PROPERTY_POINTS"))
     {

@@ -1,6 +1,6 @@
-#include <analytic/detail/quadrature.hpp>
-#include <analytic/errors.hpp>
-#include <analytic/mdr.hpp>
+#include <analytic/detail/quadrature.h>
+#include <analytic/errors.h>
+#include <analytic/mdr.h>
 
 #include <boost/math/constants/constants.hpp>
 #include <boost/math/special_functions/cos_pi.hpp>
