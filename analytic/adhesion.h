@@ -8,14 +8,11 @@
 
 #include <analytic/material.h>
 #include <analytic/normal.h>
+#include <analytic/states.h>
 
 namespace gradcontact::jkr
 {
-  enum class Control
-  {
-    force,
-    displacement
-  };
+  using gradcontact::Control;
 
   /// C~(k) of 9.48: 2/(3+k) under force control, 2/(1-k) under displacement control.
   double C_tilde(double k, Control control);
@@ -63,12 +60,7 @@ namespace gradcontact::jkr
   double normalised_force(double k, double n, Control control, double a_over_ac);
 
   // --- concave punch, 9.64-9.68 -----------------------------------------------------------------
-  enum class Mechanism
-  {
-    periphery, ///< separation from the edge singularity (9.65-9.66)
-    centre,    ///< the tensile strength sigma_th reached at r = 0 (9.67-9.68)
-    governing  ///< whichever happens first on unloading (the larger critical depth)
-  };
+  using gradcontact::Mechanism;
   /// Critical state of the concave punch; depth is the rim depth d (d0 = d - h0, 9.65).
   CriticalState critical_state(const Medium &m, const ConcavePunch &punch, double dgamma,
                                double sigma_th, Mechanism mechanism);

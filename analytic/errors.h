@@ -23,6 +23,16 @@ namespace gradcontact
   namespace check
   {
     /// The shortest of 15 or 17 significant digits that reads back as the same double.
+    /// The keys of a map, comma-separated: the valid choices a message lists.
+    template <typename Map>
+    std::string keys(const Map &map)
+    {
+      std::string s;
+      for (const auto &entry : map)
+        s += (s.empty() ? "" : ", ") + entry.first;
+      return s;
+    }
+
     inline std::string format(const double x)
     {
       for (const int digits : {15, 17})

@@ -343,4 +343,9 @@ namespace gradcontact::mdr
       }
     return {ac, depth_of(ac), force_of(ac)};
   }
+
+  CriticalState critical_state(const Profile &profile, const Medium &m, const double dgamma, const Control control)
+  {
+    return critical_state(profile, m, dgamma, control, m.c0 * 1e-9, m.c0 * 1e9, 4);
+  }
 } // namespace gradcontact::mdr

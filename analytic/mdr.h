@@ -17,6 +17,7 @@
 #define GRADCONTACT_ANALYTIC_MDR_H
 
 #include <analytic/material.h>
+#include <analytic/states.h>
 
 #include <functional>
 
@@ -84,11 +85,7 @@ namespace gradcontact::mdr
   /// w(r) (9.12), inside and outside the contact.
   double displacement(const Foundation &w1d, const Medium &m, double r);
 
-  enum class Control
-  {
-    force,
-    displacement
-  };
+  using gradcontact::Control;
 
   struct CriticalState
   {
@@ -105,6 +102,10 @@ namespace gradcontact::mdr
   /// overlap), at most bracket_shifts times.
   CriticalState critical_state(const Profile &profile, const Medium &m, double dgamma, Control control,
                                double a_lo, double a_hi, unsigned int bracket_shifts = 0);
+  /// The same in the default bracket: nine decades either side of c0, moved toward a minimum found on
+  /// its end up to four times (the critical radius of a tip with n + k -> 0 falls far below c0:
+  /// 5.5e-16 m for n = 1, k = -0.9, c0 = 1.2e-4 m).
+  CriticalState critical_state(const Profile &profile, const Medium &m, double dgamma, Control control);
 } // namespace gradcontact::mdr
 
 #endif

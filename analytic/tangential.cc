@@ -66,7 +66,7 @@ namespace gradcontact::tangential
 
     // Radius b of the slip annulus that a change |dF| of the force opens on an unloading or reloading
     // branch: |dF| = 2 mu F_N(a) [1 - (b/a)^(k+3)] (9.81).
-    double reversal_radius(const Medium &m, const SphereSlip &s, const double a, const double dF)
+    double annulus_radius(const Medium &m, const SphereSlip &s, const double a, const double dF)
     {
       return a * std::pow(1. - dF / (2. * s.mu * normal_force(m, s, a)), 1. / (m.k + 3.));
     }
@@ -158,11 +158,22 @@ namespace gradcontact::tangential
     const double c = stick_radius(m, s, a, FA);
     const double tau_A = traction(m, s, a, c, r);
     const double dF = (branch == Branch::unloading) ? FA - Fx : Fx + FA;
-    const double b = reversal_radius(m, s, a, dF);
+    const double b = annulus_radius(m, s, a, dF);
     // Change on the branch: -+2 mu [p(r; a) - p(r; b)] (9.81); the reloading state is the mirror
     // image of the unloading one, starting from tau_E = -tau_A.
     const double change = 2. * s.mu * parabolic_difference(m, s.R, a, b, r);
     return branch == Branch::unloading ? tau_A - change : -tau_A + change; // 9.82 (with mu)
+  }
+
+  double reversal_radius(const Medium &m, const SphereSlip &s, const double a, const double FA,
+                         const Branch branch, const double Fx)
+  {
+    const char *fn = "oscillating_sphere reversal_radius";
+    check_amplitude(fn, m, s, a, FA);
+    if (branch == Branch::loading)
+      throw DomainError(std::string(fn) + ": branch = loading has no reversed slip (unloading or reloading only)");
+    check_branch_force(fn, FA, Fx);
+    return annulus_radius(m, s, a, branch == Branch::unloading ? FA - Fx : Fx + FA);
   }
 
   double displacement_at_A(const Medium &m, const SphereSlip &s, const double a, const double FA)

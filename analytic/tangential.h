@@ -9,6 +9,7 @@
 
 #include <analytic/material.h>
 #include <analytic/normal.h>
+#include <analytic/states.h>
 
 namespace gradcontact::tangential
 {
@@ -33,12 +34,7 @@ namespace gradcontact::tangential
   double stick_radius(const Medium &m, const SphereSlip &s, double a, double Fx);
 
   /// Oscillation between +-F_A after the initial loading to A (9.81-9.86).
-  enum class Branch
-  {
-    loading,   ///< O -> A, the initial loading (9.80)
-    unloading, ///< A -> E, F_x falling from F_A to -F_A (9.81-9.83)
-    reloading  ///< E -> F, F_x rising from -F_A to F_A
-  };
+  using gradcontact::Branch;
 
   /// The tangential traction at force Fx on a branch (9.82, with the factor mu, ERRATA.md).
   double traction(const Medium &m, const SphereSlip &s, double a, double FA, Branch branch, double Fx,
@@ -49,6 +45,9 @@ namespace gradcontact::tangential
   /// F_x(u0) on a branch: the hysteresis loop (9.84); u_A from 9.85.
   double hysteresis_force(const Medium &m, const SphereSlip &s, double a, double FA, Branch branch,
                           double u0);
+  /// The radius b of the annulus b < r <= a whose slip has reversed at the force Fx on the unloading or
+  /// reloading branch: |F_A -+ Fx| = 2 mu F_N(a) [1 - (b/a)^(k+3)] (9.81). Inside b the state of A holds.
+  double reversal_radius(const Medium &m, const SphereSlip &s, double a, double FA, Branch branch, double Fx);
   /// u_A (9.85)
   double displacement_at_A(const Medium &m, const SphereSlip &s, double a, double FA);
   /// Energy dissipated per cycle, the loop area of 9.84:

@@ -19,10 +19,6 @@
 #include <sys/utsname.h>
 #include <thread>
 
-#ifndef GRADCONTACT_SOURCE_DIR
-#  define GRADCONTACT_SOURCE_DIR "."
-#endif
-
 namespace gradcontact::cases
 {
   namespace fs = std::filesystem;
@@ -150,7 +146,7 @@ namespace gradcontact::cases
           q["method"] = method;
           try
             {
-              requests.push_back(batch::prepare(q.dump()));
+              requests.push_back(batch::prepare(batch::parse(q)));
               references.push_back(f.references[i]);
             }
           catch (const std::exception &)

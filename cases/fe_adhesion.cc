@@ -3,11 +3,12 @@
 #include "convergence_report.h"
 #include "fe_model.h"
 
+#include "analytic_reference.h"
+
 #include <analytic/batch.h>
 #include <fem/adhesion.h>
 #include <fem/axisymmetric_solver.h>
 
-#include <nlohmann/json.hpp>
 
 #include <algorithm>
 #include <chrono>
@@ -22,7 +23,6 @@
 namespace gradcontact::cases
 {
   namespace fs = std::filesystem;
-  using json = nlohmann::json;
   using Type = LoadParameters::Type;
 
   namespace
@@ -37,67 +37,6 @@ namespace gradcontact::cases
     {
       return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     }
-
-    /// The analytic side: eval requests (analytic/README.md) of the adhesive case of the scene.
-    class AdhesiveReference
-    {
-    public:
-      AdhesiveReference(const Scene &s, const std::string &method) : method(method)
-      {
-        const MaterialParameters &m = s.material;
-        const LoadParameters &l = s.load;
-        base = {{"material", {{"E0", m.E0}, {"c0", m.c0}, {"k", m.k}, {"nu", m.nu}}}, {"method", method}};
-        switch (l.type)
-          {
-            case Type::flat_punch:
-              base["case"] = "jkr_flat_punch";
-              base["a"] = l.a;
-              break;
-            case Type::paraboloid:
-              base["case"] = "jkr_paraboloid";
-              base["geometry"] = {{"R", l.R}};
-              break;
-            case Type::cone: // f = tan(theta) r: the power law n = 1
-              base["case"] = "jkr_power_law";
-              base["geometry"] = {{"n", 1.}, {"A", l.tan_theta}};
-              break;
-            case Type::power_law:
-              base["case"] = "jkr_power_law";
-              base["geometry"] = {{"n", l.n}, {"A", l.A}};
-              break;
-            case Type::concave_punch:
-              base["case"] = "jkr_concave";
-              base["geometry"] = {{"h0", l.h0}};
-              base["a"] = l.a;
-              if (s.adhesion.tensile_strength > 0.)
-                base["sigma_th"] = s.adhesion.tensile_strength;
-              break;
-            case Type::constant_pressure:
-              base["case"] = "optimal_profile";
-              base["a"] = l.a;
-              base["sigma_th"] = s.adhesion.tensile_strength;
-              break;
-          }
-        if (l.type != Type::constant_pressure)
-          base["dgamma"] = s.adhesion.work_of_adhesion;
-      }
-
-      double get(const std::string &quantity, const json &extra = json::object()) const
-      {
-        json q = base;
-        q["quantity"] = quantity;
-        for (const auto &[key, value] : extra.items())
-          q[key] = value;
-        return batch::prepare(q.dump())();
-      }
-
-      std::string label() const { return method == "closed_form" ? "closed form" : "numerical MDR"; }
-
-      const std::string method;
-
-    private:
-      json base;
-    };
 
     std::string control_name(const fem::AdhesionControl c)
     {
@@ -185,9 +124,9 @@ namespace gradcontact::cases
         : s(s), l(s.load), ad(s.adhesion), folder(folder), verbose(verbose), result(result)
       {
         if (s.references.closed_form)
-          references.emplace_back(s, "closed_form");
+          references.emplace_back(s, batch::Method::closed_form, AnalyticReference::Problem::adhesive);
         if (s.references.numerical_mdr)
-          references.emplace_back(s, "numerical_mdr");
+          references.emplace_back(s, batch::Method::numerical_mdr, AnalyticReference::Problem::adhesive);
       }
 
       void run()
@@ -208,7 +147,7 @@ namespace gradcontact::cases
                 try
                   {
                     if (l.type == Type::flat_punch)
-                      report_state("periphery (edge)", model.periphery_state(l.a, ad.work_of_adhesion), json::object(),
+                      report_state("periphery (edge)", model.periphery_state(l.a, ad.work_of_adhesion), Inputs{},
                                    false, lr);
                     else if (l.type == Type::concave_punch)
                       concave_punch(model, lr);
@@ -230,12 +169,12 @@ namespace gradcontact::cases
     private:
       /// Compares one FE value with every analytic reference: (FE value, first reference, NaN without one).
       std::pair<double, double> check(const std::string &quantity, const std::string &metric, const double fe,
-                                      const std::string &ref_quantity, const json &extra, const double tolerance,
+                                      const std::string &ref_quantity, const Inputs &extra, const double tolerance,
                                       const unsigned int dofs, const double seconds,
                                       const std::optional<double> scale = std::nullopt)
       {
         double first = std::numeric_limits<double>::quiet_NaN();
-        for (const AdhesiveReference &ref : references)
+        for (const AnalyticReference &ref : references)
           try
             {
               const double r = ref.get(ref_quantity, extra);
@@ -268,16 +207,16 @@ namespace gradcontact::cases
           result.rows.push_back(failed("FE solve", "FE", "-", r.message));
         const double wc = r.depth;
         lr.values["centre displacement w_c,opt"] = check("centre displacement w_c,opt", "relative" + level_tag, wc, "depth",
-                                                          json::object(), s.tolerances.depth, lr.dofs, lr.seconds);
+                                                          Inputs{}, s.tolerances.depth, lr.dofs, lr.seconds);
         Series fe_profile{"FE (w_c - w)", {}, {}, true};
         for (const fem::Sample &w : r.displacement)
           {
             const std::string metric = "r/a = " + format(w.r / l.a) + ", relative to |w_c|" + level_tag;
-            check("displacement w_opt", metric, w.value, "displacement", {{"r", w.r}}, s.tolerances.displacement, lr.dofs,
+            check("displacement w_opt", metric, w.value, "displacement", input::r(w.r), s.tolerances.displacement, lr.dofs,
                   lr.seconds, std::abs(wc));
             if (w.r <= l.a)
               {
-                check("optimal profile f_opt", metric, wc - w.value, "profile", {{"r", w.r}}, s.tolerances.displacement,
+                check("optimal profile f_opt", metric, wc - w.value, "profile", input::r(w.r), s.tolerances.displacement,
                       lr.dofs, lr.seconds, std::abs(wc));
                 fe_profile.x.push_back(w.r / l.a);
                 fe_profile.y.push_back((wc - w.value) / std::abs(wc));
@@ -293,7 +232,7 @@ namespace gradcontact::cases
                   {
                     const double x = i / 200.;
                     curve.x.push_back(x);
-                    curve.y.push_back(references.front().get("profile", {{"r", x * l.a}}) / wc_ref);
+                    curve.y.push_back(references.front().at("profile", x * l.a) / wc_ref);
                   }
               }
             catch (const std::exception &)
@@ -307,7 +246,7 @@ namespace gradcontact::cases
 
       /// The rows of one FE critical state: pull-off force, critical radius (`with_radius`) and depth against the
       /// references, and for the power law the scaling identity a K'(a)/K(a) = 1 + k of the FE G(a).
-      void report_state(const std::string &name, const fem::AdhesiveCriticalState &c, const json &extra,
+      void report_state(const std::string &name, const fem::AdhesiveCriticalState &c, const Inputs &extra,
                         const bool with_radius, LevelResult &lr)
       {
         const double k = s.material.k;
@@ -333,21 +272,21 @@ namespace gradcontact::cases
       void concave_punch(fem::AdhesiveContact &model, LevelResult &lr)
       {
         const double dgamma = ad.work_of_adhesion;
-        report_state("periphery (9.65-9.66)", model.periphery_state(l.a, dgamma), {{"mechanism", "periphery"}}, false, lr);
+        report_state("periphery (9.65-9.66)", model.periphery_state(l.a, dgamma), input::mechanism(Mechanism::periphery), false, lr);
         {
           const fem::AdhesiveCriticalState pc = model.periphery_state(l.a, dgamma);
-          critical_pressure(model, "periphery", pc.state.delta, {{"mechanism", "periphery"}}, lr);
+          critical_pressure(model, "periphery", pc.state.delta, input::mechanism(Mechanism::periphery), lr);
         }
         if (ad.tensile_strength > 0.)
           {
             const fem::AdhesiveCriticalState cc = model.centre_state(l.a, dgamma, ad.tensile_strength);
-            report_state("centre (9.67-9.68)", cc, {{"mechanism", "centre"}}, false, lr);
-            critical_pressure(model, "centre", cc.state.delta, {{"mechanism", "centre"}}, lr);
+            report_state("centre (9.67-9.68)", cc, input::mechanism(Mechanism::centre), false, lr);
+            critical_pressure(model, "centre", cc.state.delta, input::mechanism(Mechanism::centre), lr);
             try
               {
                 const double h_star = model.transition_h0(l.a, dgamma, ad.tensile_strength);
                 lr.values["transition h0"] = check("transition h0", "periphery -> centre" + level_tag, h_star,
-                                                   "transition_h0", json::object(), s.tolerances.depth, lr.dofs,
+                                                   "transition_h0", Inputs{}, s.tolerances.depth, lr.dofs,
                                                    seconds_since(level_start));
               }
             catch (const std::runtime_error &e)
@@ -359,7 +298,7 @@ namespace gradcontact::cases
 
       /// p(r) in a critical state of the concave punch (9.66, 9.68) against the closed form, relative to max |p|.
       void critical_pressure(fem::AdhesiveContact &model, const std::string &name, const double delta,
-                             const json &mechanism, const LevelResult &lr)
+                             const Inputs &mechanism, const LevelResult &lr)
       {
         if (s.outputs.pressure_radii.empty())
           return;
@@ -375,8 +314,7 @@ namespace gradcontact::cases
             // The centre state is defined by p(0) = -sigma_th: that row would hold by construction.
             if (name == "centre" && p.r == 0.)
               continue;
-            json extra = mechanism;
-            extra["r"] = p.r;
+            const Inputs extra = input::both(mechanism, input::r(p.r));
             check("critical pressure p(r)", name + ", r/a = " + format(p.r / l.a) + ", relative to max |p|" + level_tag,
                   p.value, "pressure", extra, s.tolerances.pressure, lr.dofs, seconds_since(level_start), scale);
           }
@@ -393,7 +331,7 @@ namespace gradcontact::cases
             if ((control == fem::AdhesionControl::force && !ad.force_control) ||
                 (control == fem::AdhesionControl::displacement && !ad.displacement_control))
               continue;
-            const json extra = {{"control", control == fem::AdhesionControl::force ? "force" : "displacement"}};
+            const Inputs extra = input::control(control == fem::AdhesionControl::force ? Control::force : Control::displacement);
             // The second search starts from the first one's answer (and reuses its FE radii).
             const double start_radius = force_state ? force_state->state.radius : a0;
             try
@@ -427,12 +365,12 @@ namespace gradcontact::cases
 
       /// "No critical state" (e.g. 2n + k - 1 <= 0, 9.60) is a finding: it passes when every analytic reference
       /// finds none either, and fails when one of them has a state.
-      void no_critical_state(const fem::AdhesionControl control, const json &extra, const std::string &what)
+      void no_critical_state(const fem::AdhesionControl control, const Inputs &extra, const std::string &what)
       {
         const std::string quantity = "critical state (" + control_name(control) + ")";
         if (what.find("no critical state") == std::string::npos || references.empty())
           result.rows.push_back(failed(quantity, "FE", "-", what));
-        for (const AdhesiveReference &ref : references)
+        for (const AnalyticReference &ref : references)
           try
             {
               const double F = ref.get("critical_force", extra);
@@ -473,11 +411,11 @@ namespace gradcontact::cases
         for (const fem::Sample &p : prof.pressure)
           check("adhesive pressure p(r)",
                 "critical state (force control), r/a_c = " + format(p.r / ac) + ", relative to max |p|" + level_tag, p.value,
-                "pressure", {{"a", ac}, {"r", p.r}}, s.tolerances.pressure, c.max_dofs, t, p_scale);
+                "pressure", input::a_r(ac, p.r), s.tolerances.pressure, c.max_dofs, t, p_scale);
         for (const fem::Sample &w : prof.displacement)
           check("adhesive displacement w(r)",
                 "critical state (force control), r/a_c = " + format(w.r / ac) + ", relative to |d_c|" + level_tag, w.value,
-                "displacement", {{"a", ac}, {"r", w.r}}, s.tolerances.displacement, c.max_dofs, t, w_scale);
+                "displacement", input::a_r(ac, w.r), s.tolerances.displacement, c.max_dofs, t, w_scale);
       }
 
       /// FE points on the adhesive force-depth curve (force control, figures 9.22-9.23) and the closed-form curve.
@@ -491,10 +429,10 @@ namespace gradcontact::cases
           {
             const fem::AdhesiveState st = model.adhesive_state(x * c.state.radius, ad.work_of_adhesion);
             const std::string metric = "a = " + format(x) + " a_c, relative to |F_c|";
-            check("adhesive force F(a)", metric, st.force, "force", {{"a", st.radius}}, s.tolerances.force, c.max_dofs,
+            check("adhesive force F(a)", metric, st.force, "force", input::a(st.radius), s.tolerances.force, c.max_dofs,
                   seconds_since(level_start), Fc);
             check("adhesive depth d(a)", "a = " + format(x) + " a_c, relative to |d_c|", st.depth, "depth",
-                  {{"a", st.radius}}, s.tolerances.depth, c.max_dofs, seconds_since(level_start), dc);
+                  input::a(st.radius), s.tolerances.depth, c.max_dofs, seconds_since(level_start), dc);
             points.x.push_back(st.depth / dc);
             points.y.push_back(st.force / Fc);
           }
@@ -507,8 +445,8 @@ namespace gradcontact::cases
           try
             {
               const double a = c.state.radius * xmax * i / 300.;
-              const double F = references.front().get("force", {{"a", a}});
-              const double d = references.front().get("depth", {{"a", a}});
+              const double F = references.front().get("force", input::a(a));
+              const double d = references.front().get("depth", input::a(a));
               curve.x.push_back(d / dc);
               curve.y.push_back(F / Fc);
             }
@@ -565,7 +503,7 @@ namespace gradcontact::cases
       const fs::path &folder;
       const bool verbose;
       SceneResult &result;
-      std::vector<AdhesiveReference> references;
+      std::vector<AnalyticReference> references;
       std::vector<LevelResult> levels;
       std::vector<Series> curve_series; ///< the force-depth plot (closed form first, then the FE points)
       std::chrono::steady_clock::time_point level_start;

@@ -1,5 +1,6 @@
 #include "fe_scene.h"
 
+#include "analytic_reference.h"
 #include "convergence_report.h"
 #include "fe_model.h"
 
@@ -12,7 +13,6 @@
 #include <deal.II/base/point.h>
 #include <deal.II/base/utilities.h>
 
-#include <nlohmann/json.hpp>
 
 #include <algorithm>
 #include <chrono>
@@ -27,7 +27,6 @@
 namespace gradcontact::cases
 {
   namespace fs = std::filesystem;
-  using json = nlohmann::json;
   using Type = LoadParameters::Type;
   using Control = LoadParameters::Control;
 
@@ -38,79 +37,11 @@ namespace gradcontact::cases
       return l.type == Type::paraboloid || l.type == Type::cone || l.type == Type::power_law;
     }
 
-    // --- the analytic side: eval requests built from the scene (analytic/README.md) ------------------
-    class AnalyticReference
+    // --- the analytic side: the scene as a normal-contact request (analytic_reference.h) ----------------
+    AnalyticReference normal_reference(const Scene &s, const batch::Method method)
     {
-    public:
-      AnalyticReference(const Scene &s, const std::string &method) : scene(s), method(method)
-      {
-        const MaterialParameters &m = s.material;
-        base = {{"material", {{"E0", m.E0}, {"c0", m.c0}, {"k", m.k}, {"nu", m.nu}}}, {"method", method}};
-        const LoadParameters &l = s.load;
-        switch (l.type)
-          {
-            case Type::flat_punch:
-              base["case"] = "flat_punch";
-              base["a"] = l.a;
-              base["d"] = l.depth;
-              break;
-            case Type::paraboloid:
-              base["case"] = "paraboloid";
-              base["geometry"] = {{"R", l.R}};
-              break;
-            case Type::cone:
-              base["case"] = "cone";
-              base["geometry"] = {{"tan_theta", l.tan_theta}};
-              break;
-            case Type::power_law:
-              base["case"] = "power_law";
-              base["geometry"] = {{"n", l.n}, {"A", l.A}};
-              break;
-            case Type::concave_punch:
-              base["case"] = "concave_paraboloid";
-              base["geometry"] = {{"h0", l.h0}};
-              base["a"] = l.a;
-              base["d0"] = l.depth;
-              break;
-            case Type::constant_pressure:
-              base["case"] = "constant_pressure";
-              base["geometry"] = {{"p0", l.p0}};
-              base["a"] = l.a;
-              break;
-          }
-        if (curved(l))
-          {
-            // The reference state is the one the load prescribes: a given, or a(d), or a(F).
-            if (l.control == Control::contact_radius)
-              base["a"] = l.a;
-            else
-              {
-                json q = base;
-                q["quantity"] = "contact_radius";
-                q[l.control == Control::depth ? "d" : "F"] = l.control == Control::depth ? l.depth : l.force;
-                base["a"] = evaluate(q);
-              }
-          }
-      }
-
-      double get(const std::string &quantity, const std::optional<double> r = std::nullopt) const
-      {
-        json q = base;
-        q["quantity"] = quantity;
-        if (r)
-          q["r"] = *r;
-        return evaluate(q);
-      }
-
-      double radius() const { return base.value("a", 0.); }
-
-      const Scene &scene;
-      const std::string method;
-
-    private:
-      static double evaluate(const json &q) { return batch::prepare(q.dump())(); }
-      json base;
-    };
+      return AnalyticReference(s, method, AnalyticReference::Problem::normal);
+    }
 
     // --- the FE side ------------------------------------------------------------------------------------
     struct FeRun
@@ -125,7 +56,7 @@ namespace gradcontact::cases
       const auto start = std::chrono::steady_clock::now();
       FeModel model = fe_model(s, refinement);
       // The pressure of a cone (and of f = A r^n, n < 2) is singular at the axis: grade the mesh
-      // toward (0, 0) (fem/README.md, "Curved indenters": cone p L2 2.8e-4 -> 5.4e-6 at k = 0).
+      // toward (0, 0) (fem/README.md, "Accuracy and cost", cone axis: p L2 2.8e-4 -> 5.4e-6 at k = 0).
       if (s.load.type == Type::cone || (s.load.type == Type::power_law && s.load.n < 2))
         model.settings.mesh.axis_refinements = 12;
       fem::AxisymmetricSolver solver(model.material, model.settings.mesh, model.settings.discretization);
@@ -325,10 +256,10 @@ namespace gradcontact::cases
     (quantity == "pressure" ? s.outputs.displacement_radii : s.outputs.pressure_radii).clear();
     s.outputs.vtu = false;
     const FeRun run = run_fe(s, finest_refinement(s), fs::temp_directory_path());
-    const AnalyticReference closed(s, "closed_form");
+    const AnalyticReference closed = normal_reference(s, batch::Method::closed_form);
     const double a = closed.radius();
     const bool needs_r = normaliser == "pressure" || normaliser == "displacement";
-    const double norm = closed.get(normaliser, needs_r ? std::optional<double>(normaliser_r_over_a * a) : std::nullopt);
+    const double norm = needs_r ? closed.at(normaliser, normaliser_r_over_a * a) : closed.get(normaliser);
     const double area = per_area ? 3.14159265358979323846 * a * a : 1.;
     FeProfile out;
     for (const fem::Sample &p : quantity == "pressure" ? run.result.pressure : run.result.displacement)
@@ -347,10 +278,10 @@ namespace gradcontact::cases
     References references_of(const Scene &s, SceneResult &result)
     {
       References references;
-      const auto add_reference = [&](const std::string &method, const std::string &label) {
+      const auto add_reference = [&](const batch::Method method, const std::string &label) {
         try
           {
-            references.push_back(std::make_unique<AnalyticReference>(s, method));
+            references.push_back(std::make_unique<AnalyticReference>(normal_reference(s, method)));
           }
         catch (const std::exception &e)
           {
@@ -358,15 +289,10 @@ namespace gradcontact::cases
           }
       };
       if (s.references.closed_form)
-        add_reference("closed_form", "closed form");
+        add_reference(batch::Method::closed_form, "closed form");
       if (s.references.numerical_mdr)
-        add_reference("numerical_mdr", "numerical MDR");
+        add_reference(batch::Method::numerical_mdr, "numerical MDR");
       return references;
-    }
-
-    std::string label(const AnalyticReference &r)
-    {
-      return r.method == "closed_form" ? std::string("closed form") : std::string("numerical MDR");
     }
 
     /// The result of a scene before its rows, with parameters.prm written into the report folder.
@@ -403,7 +329,8 @@ namespace gradcontact::cases
     SceneResult result = started(s, folder);
     references_of(s, result); // only its failed rows: the comparison below needs both methods
     // The closed form against the numerical MDR, for the scalars and profiles asked.
-    AnalyticReference closed(s, "closed_form"), numeric(s, "numerical_mdr");
+    const AnalyticReference closed = normal_reference(s, batch::Method::closed_form),
+                            numeric = normal_reference(s, batch::Method::numerical_mdr);
     std::vector<std::pair<std::string, std::optional<double>>> items;
     if (s.outputs.force && s.load.type != Type::constant_pressure)
       items.push_back({"force", std::nullopt});
@@ -419,9 +346,9 @@ namespace gradcontact::cases
         try
           {
             const auto t0 = std::chrono::steady_clock::now();
-            const double c = closed.get(quantity, r);
+            const double c = r ? closed.at(quantity, *r) : closed.get(quantity);
             const double seconds = seconds_since(t0);
-            const double n = numeric.get(quantity, r);
+            const double n = r ? numeric.at(quantity, *r) : numeric.get(quantity);
             result.rows.push_back(compare(quantity, metric, "closed form", "numerical MDR", n, c, n, 1e-9, 0, seconds));
           }
         catch (const std::exception &e)
@@ -468,42 +395,42 @@ namespace gradcontact::cases
               try
                 {
                   const double value = q.reference.empty() ? ref->radius() : ref->get(q.reference);
-                  result.rows.push_back(compare(q.name, "relative", checked, label(*ref), value, q.fe, value,
+                  result.rows.push_back(compare(q.name, "relative", checked, ref->label(), value, q.fe, value,
                                                 q.tolerance, fe.n_dofs, run.seconds));
                 }
               catch (const std::exception &e)
                 {
-                  result.rows.push_back(failed(q.name, checked, label(*ref), e.what()));
+                  result.rows.push_back(failed(q.name, checked, ref->label(), e.what()));
                 }
             // pressure: relative to the largest |p| sampled (p -> 0 or -> inf at the edge)
             try
               {
                 std::vector<double> refs;
                 for (const fem::Sample &p : fe.pressure)
-                  refs.push_back(ref->get("pressure", p.r));
+                  refs.push_back(ref->at("pressure", p.r));
                 double scale = 0.;
                 for (const double v : refs)
                   scale = std::max(scale, std::abs(v));
                 for (std::size_t i = 0; i < fe.pressure.size(); ++i)
                   result.rows.push_back(compare("pressure", "r/a = " + format(fe.pressure[i].r / s.load.a) + ", rel. to max |p|",
-                                                checked, label(*ref), refs[i], fe.pressure[i].value, scale,
+                                                checked, ref->label(), refs[i], fe.pressure[i].value, scale,
                                                 s.tolerances.pressure, fe.n_dofs, run.seconds));
               }
             catch (const std::exception &e)
               {
-                result.rows.push_back(failed("pressure", checked, label(*ref), e.what()));
+                result.rows.push_back(failed("pressure", checked, ref->label(), e.what()));
               }
             for (const fem::Sample &w : fe.displacement)
               try
                 {
-                  const double value = ref->get("displacement", w.r);
+                  const double value = ref->at("displacement", w.r);
                   result.rows.push_back(compare("displacement", "r/a = " + format(w.r / s.load.a) + ", relative", checked,
-                                                label(*ref), value, w.value, value, s.tolerances.displacement, fe.n_dofs,
+                                                ref->label(), value, w.value, value, s.tolerances.displacement, fe.n_dofs,
                                                 run.seconds));
                 }
               catch (const std::exception &e)
                 {
-                  result.rows.push_back(failed("displacement", checked, label(*ref), e.what()));
+                  result.rows.push_back(failed("displacement", checked, ref->label(), e.what()));
                 }
           }
       }
@@ -532,7 +459,7 @@ namespace gradcontact::cases
               }
             series.push_back(c);
           }
-        write_convergence(folder, s.info.name, label(*references.front()), series, s.outputs.plots);
+        write_convergence(folder, s.info.name, references.front()->label(), series, s.outputs.plots);
       }
 
     // Profiles: the analytic curve (closed form, dense) with the FE points of the finest level.
@@ -553,7 +480,7 @@ namespace gradcontact::cases
               const double x = x_max * (quantity == "pressure" ? 0.999 * i / n : static_cast<double>(i) / n);
               try
                 {
-                  curve.y.push_back(closed.get(quantity, x * a));
+                  curve.y.push_back(closed.at(quantity, x * a));
                   curve.x.push_back(x);
                 }
               catch (const std::exception &)

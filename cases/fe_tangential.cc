@@ -1,5 +1,6 @@
 #include "fe_tangential.h"
 
+#include "analytic_reference.h"
 #include "fe_model.h"
 
 #include <analytic/batch.h>
@@ -11,7 +12,6 @@
 
 #include <deal.II/base/quadrature_lib.h>
 
-#include <nlohmann/json.hpp>
 
 #include <algorithm>
 #include <chrono>
@@ -24,19 +24,33 @@
 namespace gradcontact::cases
 {
   namespace fs = std::filesystem;
-  using json = nlohmann::json;
   using Study = TangentialParameters::Study;
   using Type = LoadParameters::Type;
 
   namespace
   {
+    /// The inputs of a tangential_sphere request at the stick radius c, and of an oscillating_sphere request
+    /// at the force Fx on a branch of the oscillation of amplitude FA.
+    Inputs stick(const double c)
+    {
+      return [c](batch::Request &q) { q.c = c; };
+    }
+    Inputs branch_state(const double FA, const Branch branch, const double Fx)
+    {
+      return [FA, branch, Fx](batch::Request &q) {
+        q.FA = FA;
+        q.branch = branch;
+        q.Fx = Fx;
+      };
+    }
+
     constexpr double pi = 3.14159265358979323846;
 
     /// The flat-punch displacement delta / a of the stiffness study (the problem is linear: any delta).
     constexpr double punch_displacement = 1e-3;
 
     /// Gauss-Legendre points in F of the dissipated energy W = \int_{-F_A}^{F_A} [u_un(F) + u_un(-F)] dF: the
-    /// same rule on the closed-form u_un reproduces 9.86 to 1.5-3.2e-9 (fem/README.md, "Fourier mode 1").
+    /// same rule on the closed-form u_un reproduces 9.86 to 1.5-3.2e-9 (measured).
     constexpr unsigned int energy_gauss_points = 12;
 
     /// Radii / a of the sampled surface displacement (points A to E, the partial-slip profile).
@@ -57,42 +71,6 @@ namespace gradcontact::cases
         s.material.nu = 1. / (2. + s.material.k);
       return s;
     }
-
-    /// The analytic side: batch requests (analytic/README.md) of the scene's material and sphere.
-    class TangentialReference
-    {
-    public:
-      explicit TangentialReference(const Scene &s)
-      {
-        const MaterialParameters &m = s.material;
-        base = {{"material", {{"E0", m.E0}, {"c0", m.c0}, {"k", m.k}, {"nu", m.nu}}}, {"a", s.load.a}};
-        sphere = base;
-        sphere["geometry"] = {{"R", s.load.R}};
-        sphere["mu"] = s.tangential.friction_coefficient;
-      }
-
-      /// A `coefficients` quantity (h_T, alpha, ...).
-      double coefficient(const std::string &quantity) const
-      {
-        json q = {{"case", "coefficients"}, {"quantity", quantity}, {"material", base["material"]}};
-        return batch::prepare(q.dump())();
-      }
-      /// Any case of the scene's material and contact radius.
-      double get(const std::string &c, const std::string &quantity, const json &extra = json::object()) const
-      {
-        json q = c == "tangential_sphere" || c == "oscillating_sphere" || c == "paraboloid" ? sphere : base;
-        q["case"] = c;
-        q["quantity"] = quantity;
-        if (c == "paraboloid")
-          q.erase("mu");
-        for (const auto &[key, value] : extra.items())
-          q[key] = value;
-        return batch::prepare(q.dump())();
-      }
-
-    private:
-      json base, sphere;
-    };
 
     /// The mode-1 FE model of a scene: one mesh (graded toward `stick_radii` by Tangential/stick levels), one
     /// factorisation, any number of tangential loads.
@@ -168,9 +146,8 @@ namespace gradcontact::cases
     {
       const double FN = gradcontact::force(medium, gradcontact::Paraboloid{s.load.R}, s.load.a);
       const double FA = s.tangential.amplitude * s.tangential.friction_coefficient * FN;
-      // 9.80: F_x = mu F_N [1 - (c/a)^(k+3)]
-      const double cA = s.load.a * std::pow(1. - s.tangential.amplitude, 1. / (s.material.k + 3.));
-      return {FN, FA, cA};
+      const gradcontact::tangential::SphereSlip slip{s.load.R, s.tangential.friction_coefficient};
+      return {FN, FA, gradcontact::tangential::stick_radius(medium, slip, s.load.a, FA)}; // 9.80
     }
 
     /// The FE state on the unloading branch at F_x (traction 9.82 with the factor mu, ERRATA.md). The rigid
@@ -181,8 +158,8 @@ namespace gradcontact::cases
     {
       namespace t = gradcontact::tangential;
       const t::SphereSlip slip{s.load.R, s.tangential.friction_coefficient};
-      const double a = s.load.a, mu = s.tangential.friction_coefficient, k = s.material.k;
-      const double b = a * std::pow(1. - (o.FA - Fx) / (2. * mu * o.FN), 1. / (k + 3.)); // the reversal radius
+      const double a = s.load.a;
+      const double b = t::reversal_radius(medium, slip, a, o.FA, t::Branch::unloading, Fx); // 9.81
       std::vector<double> kinks;
       for (const double r : {o.cA, b})
         if (r > 0. && r < a * (1. - 1e-12))
@@ -208,7 +185,7 @@ namespace gradcontact::cases
     {
     public:
       TangentialStudy(const Scene &s, const fs::path &folder, const bool verbose, SceneResult &result)
-        : s(s), folder(folder), verbose(verbose), result(result), reference(s), medium(medium_of(s))
+        : s(s), folder(folder), verbose(verbose), result(result), reference(s, batch::Method::closed_form, AnalyticReference::Problem::tangential), medium(medium_of(s))
       {}
 
       void stiffness();
@@ -254,7 +231,7 @@ namespace gradcontact::cases
       const fs::path folder;
       const bool verbose;
       SceneResult &result;
-      const TangentialReference reference;
+      const AnalyticReference reference;
       const gradcontact::Medium medium;
     };
 
@@ -270,7 +247,7 @@ namespace gradcontact::cases
       const double tol = s.tolerances.force;
       // MDR (9.78-9.79): K_T = 2 cT0 a^(1+k) / ((1+k) c0^k), cT0 = h_T E0 for a rigid punch on one graded body.
       check("tangential stiffness K_T", "relative", t.stiffness, "MDR 9.78-9.79 (h_T of coefficients)",
-            [&] { return 2. * reference.coefficient("h_T") * E0 * std::pow(a, 1. + k) / ((1. + k) * std::pow(c0, k)); },
+            [&] { return 2. * reference.get("coefficients", "h_T", {}) * E0 * std::pow(a, 1. + k) / ((1. + k) * std::pow(c0, k)); },
             tol, t.n_dofs, t_tangential);
       if (k == 0.)
         {
@@ -290,9 +267,9 @@ namespace gradcontact::cases
         result.rows.push_back(failed("FE solve", "FE", "-", "normal flat punch: " + n.message));
       const double K_N = n.force / delta, seconds = seconds_since(start);
       check("normal stiffness K_N", "relative", K_N, "closed form F(d)/d (9.16)",
-            [&] { return reference.get("flat_punch", "force", {{"d", delta}}) / delta; }, tol, n.n_dofs, seconds);
+            [&] { return reference.get("flat_punch", "force", [delta](batch::Request &q) { q.d = delta; }) / delta; }, tol, n.n_dofs, seconds);
       check("alpha = K_N / K_T", "relative", K_N / t.stiffness, "9.78 (alpha of coefficients)",
-            [&] { return reference.coefficient("alpha"); }, tol, t.n_dofs + n.n_dofs, seconds);
+            [&] { return reference.get("coefficients", "alpha", {}); }, tol, t.n_dofs + n.n_dofs, seconds);
       if (verbose)
         std::cerr << "  K_T = " << t.stiffness << ", K_N = " << K_N << " (" << t.n_dofs << " + " << n.n_dofs
                   << " DoFs, " << format(seconds) << " s)\n";
@@ -313,7 +290,7 @@ namespace gradcontact::cases
       double u_gross = 0.;
       try
         {
-          u_gross = reference.get("tangential_sphere", "tangential_displacement", {{"c", 0.}});
+          u_gross = reference.get("tangential_sphere", "tangential_displacement", stick(0.));
         }
       catch (const std::exception &e)
         {
@@ -324,8 +301,8 @@ namespace gradcontact::cases
       for (int i = 0; i <= 200; ++i)
         {
           const double c = a * i / 200.;
-          curve.x.push_back(reference.get("tangential_sphere", "tangential_displacement", {{"c", c}}) / u_gross);
-          curve.y.push_back(reference.get("tangential_sphere", "tangential_force", {{"c", c}}) / (mu * FN));
+          curve.x.push_back(reference.get("tangential_sphere", "tangential_displacement", stick(c)) / u_gross);
+          curve.y.push_back(reference.get("tangential_sphere", "tangential_force", stick(c)) / (mu * FN));
         }
       Series ux{"FE u_x(r, theta = 0) = U", {}, {}, true}, ux90{"FE u_x(r, theta = 90 deg) = V", {}, {}, true};
       double u0_scene = 0.;
@@ -347,10 +324,10 @@ namespace gradcontact::cases
           const double seconds = seconds_since(start);
           const std::string metric = "c/a = " + format(x);
           check("tangential force F_x", metric + ", relative", r.force, "closed form 9.80",
-                [&] { return reference.get("tangential_sphere", "tangential_force", {{"c", c}}); }, s.tolerances.force,
+                [&] { return reference.get("tangential_sphere", "tangential_force", stick(c)); }, s.tolerances.force,
                 r.n_dofs, seconds);
           const double u0 = check("stick-zone mean u_x (u0)", metric + ", relative", r.stick.mean_ux, "closed form 9.80",
-                                  [&] { return reference.get("tangential_sphere", "tangential_displacement", {{"c", c}}); },
+                                  [&] { return reference.get("tangential_sphere", "tangential_displacement", stick(c)); },
                                   s.tolerances.displacement, r.n_dofs, seconds);
           assumption_rows(r, metric, seconds);
           points.x.push_back(r.stick.mean_ux / u_gross);
@@ -399,20 +376,15 @@ namespace gradcontact::cases
       double uA = 0.;
       try
         {
-          uA = reference.get("oscillating_sphere", "tangential_displacement",
-                             {{"FA", o.FA}, {"branch", "loading"}, {"Fx", o.FA}});
+          uA = reference.get("oscillating_sphere", "tangential_displacement", branch_state(o.FA, Branch::loading, o.FA));
         }
       catch (const std::exception &e)
         {
           result.rows.push_back(failed("u_A (9.85)", "closed form", "-", concise(e)));
           return;
         }
-      const json osc = {{"FA", o.FA}};
-      const auto branch_u = [&](const std::string &branch, const double F) {
-        json extra = osc;
-        extra["branch"] = branch;
-        extra["Fx"] = F;
-        return reference.get("oscillating_sphere", "tangential_displacement", extra);
+      const auto branch_u = [&](const Branch branch, const double F) {
+        return reference.get("oscillating_sphere", "tangential_displacement", branch_state(o.FA, branch, F));
       };
 
       // Unloading branch at `load steps` forces (the first is A, the last E) and the points A to E (9.34-9.35).
@@ -440,7 +412,7 @@ namespace gradcontact::cases
           if (std::find(forces.begin(), forces.end(), f) != forces.end())
             {
               check("unloading u0 (9.83)", metric + ", relative to u_A", r.stick.mean_ux, "closed form 9.83",
-                    [&] { return branch_u("unloading", F); }, s.tolerances.displacement, r.n_dofs, seconds, uA);
+                    [&] { return branch_u(Branch::unloading, F); }, s.tolerances.displacement, r.n_dofs, seconds, uA);
               fe_un.x.push_back(r.stick.mean_ux / uA);
               fe_un.y.push_back(f);
               fe_re.x.push_back(-r.stick.mean_ux / uA);
@@ -469,7 +441,7 @@ namespace gradcontact::cases
               try
                 {
                   // 9.83: the stick zone r <= c_A moves rigidly by u0(F).
-                  const double u_theory = branch_u("unloading", F) / uA;
+                  const double u_theory = branch_u(Branch::unloading, F) / uA;
                   profiles.push_back({"9.83: " + label->first, {0., o.cA / a}, {u_theory, u_theory}, false});
                 }
               catch (const std::exception &)
@@ -494,7 +466,7 @@ namespace gradcontact::cases
       const double seconds = seconds_since(start);
       const unsigned int dofs = model.solver->n_dofs();
       check("dissipated energy per cycle W", "relative", W, "9.86 corrected (ERRATA.md)",
-            [&] { return reference.get("oscillating_sphere", "dissipated_energy", osc); }, s.tolerances.force, dofs,
+            [&] { return reference.get("oscillating_sphere", "dissipated_energy", [&](batch::Request &q) { q.FA = o.FA; }); }, s.tolerances.force, dofs,
             seconds);
       if (k == 0.)
         {
@@ -517,9 +489,9 @@ namespace gradcontact::cases
       for (int i = 0; i <= 200; ++i)
         {
           const double f = -1. + 2. * i / 200.;
-          un.x.push_back(branch_u("unloading", f * o.FA) / uA);
+          un.x.push_back(branch_u(Branch::unloading, f * o.FA) / uA);
           un.y.push_back(f);
-          re.x.push_back(branch_u("reloading", f * o.FA) / uA);
+          re.x.push_back(branch_u(Branch::reloading, f * o.FA) / uA);
           re.y.push_back(f);
         }
       double worst = 0.;

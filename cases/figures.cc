@@ -35,7 +35,7 @@ namespace gradcontact::cases
           else
             request[key.substr(0, dot)][key.substr(dot + 1)] = t;
         }
-      return batch::prepare(request.dump())();
+      return batch::evaluate(batch::parse(request));
     }
 
     // One coordinate of a curve point: the swept value, or a request at it (scaled, normalised).
@@ -112,7 +112,7 @@ namespace gradcontact::cases
                       throw std::invalid_argument("figures: fe_adhesion quantity '" + q + "' is not radius, depth, force or k");
                     double factor = spec.value("scale", 1.);
                     if (spec.contains("divide_by"))
-                      factor /= batch::prepare(spec.at("divide_by").dump())();
+                      factor /= batch::evaluate(batch::parse(spec.at("divide_by")));
                     std::vector<double> out;
                     for (std::size_t i = 0; i < curve.radius.size(); ++i)
                       out.push_back(factor * (q == "radius" ? curve.radius[i]
@@ -145,7 +145,7 @@ namespace gradcontact::cases
                   throw std::invalid_argument("figures: fe_tangential quantity '" + q + "' is not displacement or force");
                 double factor = spec.value("scale", 1.);
                 if (spec.contains("divide_by"))
-                  factor /= batch::prepare(spec.at("divide_by").dump())();
+                  factor /= batch::evaluate(batch::parse(spec.at("divide_by")));
                 std::vector<double> out;
                 for (const double x : q == "displacement" ? curve.displacement : curve.force)
                   out.push_back(x * factor);

@@ -17,10 +17,6 @@
 #include <sstream>
 #include <stdexcept>
 
-#ifndef GRADCONTACT_SOURCE_DIR
-#  define GRADCONTACT_SOURCE_DIR "."
-#endif
-
 namespace gradcontact::cases
 {
   namespace fs = std::filesystem;
@@ -237,7 +233,7 @@ namespace gradcontact::cases
                 std::string why;
                 try
                   {
-                    value = batch::prepare(q.dump())();
+                    value = batch::evaluate(batch::parse(q));
                   }
                 catch (const std::exception &e)
                   {
@@ -311,9 +307,9 @@ namespace gradcontact::cases
             try
               {
                 q["method"] = "closed_form";
-                const double closed = batch::prepare(q.dump())();
+                const double closed = batch::evaluate(batch::parse(q));
                 q["method"] = "numerical_mdr";
-                const double numeric = batch::prepare(q.dump())();
+                const double numeric = batch::evaluate(batch::parse(q));
                 evaluated += 2;
                 if (!std::isfinite(closed) || !std::isfinite(numeric))
                   {

@@ -1,4 +1,5 @@
 #include <fem/axisymmetric_solver.h>
+#include <fem/vtu_output.h>
 #include <fem/boundary_ids.h>
 #include <fem/contact_check.h>
 #include <fem/errors.h>
@@ -159,9 +160,7 @@ namespace gradcontact::fem
   {
     const auto start = std::chrono::steady_clock::now();
     CellStiffness cell_stiffness(material, fe, mapping, discretization);
-    assemble_matrix(dof_handler, constraints, cell_stiffness, system.matrix());
-    // The contact z-DoFs are the prescribed set of every rigid-contact load.
-    system.set_prescribed_dofs(contact_dofs);
+    system.assemble(dof_handler, cell_stiffness, contact_dofs); // P: the contact z-DoFs of every rigid-contact load
     setup_time.assemble = seconds_since(start);
   }
 
@@ -661,10 +660,6 @@ namespace gradcontact::fem
     for (const auto &cell : triangulation.active_cell_iterators())
       modulus[cell->active_cell_index()] = material.modulus->value(cell->center()[1]);
     data_out.add_data_vector(modulus, "E");
-    data_out.build_patches(mapping, discretization.degree);
-    std::ofstream out(filename);
-    if (!out)
-      throw std::runtime_error("output_results: cannot write " + filename);
-    data_out.write_vtu(out);
+    write_vtu(data_out, mapping, discretization.degree, filename, "AxisymmetricSolver::output_results");
   }
 } // namespace gradcontact::fem

@@ -31,6 +31,21 @@ namespace gradcontact::fem
     /// The sparsity of `dof_handler` under `constraints` (kept by reference: it must outlive this).
     void reinit(const dealii::DoFHandler<2> &dof_handler, const dealii::AffineConstraints<double> &constraints);
 
+    /// Assembles A from the cell matrices of `cell_integrand` (any class with matrix(cell), e.g.
+    /// CellStiffness) over all active cells, condensed with the constraints, then fixes P = `prescribed_dofs`.
+    template <class CellIntegrand>
+    void assemble(const dealii::DoFHandler<2> &dof_handler, CellIntegrand &cell_integrand,
+                  const std::vector<dealii::types::global_dof_index> &prescribed_dofs)
+    {
+      std::vector<dealii::types::global_dof_index> local_dof_indices(dof_handler.get_fe().n_dofs_per_cell());
+      for (const auto &cell : dof_handler.active_cell_iterators())
+        {
+          cell->get_dof_indices(local_dof_indices);
+          constraints->distribute_local_to_global(cell_integrand.matrix(cell), local_dof_indices, stiffness);
+        }
+      set_prescribed_dofs(prescribed_dofs);
+    }
+
     /// A, to be assembled (condensed with the constraints) before set_prescribed_dofs.
     dealii::SparseMatrix<double>       &matrix() { return stiffness; }
     const dealii::SparseMatrix<double> &matrix() const { return stiffness; }

@@ -1,6 +1,7 @@
 #include <fem/boundary_ids.h>
 #include <fem/errors.h>
 #include <fem/fourier_mode1_solver.h>
+#include <fem/vtu_output.h>
 #include <fem/graded_elasticity.h>
 
 #include <deal.II/base/function.h>
@@ -293,9 +294,7 @@ namespace gradcontact::fem
   {
     const auto                           start = std::chrono::steady_clock::now();
     Mode1CellStiffness cell_stiffness(material, fe, mapping, discretization);
-    assemble_matrix(dof_handler, constraints, cell_stiffness, system.matrix());
-    // The punch DoFs (U, V on r <= a) are the prescribed set of the tangential flat punch.
-    system.set_prescribed_dofs(punch_dofs);
+    system.assemble(dof_handler, cell_stiffness, punch_dofs); // P: U, V on r <= a of the tangential flat punch
     setup_time.assemble = seconds_since(start);
   }
 
@@ -441,10 +440,6 @@ namespace gradcontact::fem
     DataOut<2> data_out;
     data_out.attach_dof_handler(dof_handler);
     data_out.add_data_vector(u, std::vector<std::string>{"U", "V", "W"});
-    data_out.build_patches(mapping, discretization.degree);
-    std::ofstream out(filename);
-    if (!out)
-      throw std::runtime_error("FourierMode1Solver::output_results: cannot write " + filename);
-    data_out.write_vtu(out);
+    write_vtu(data_out, mapping, discretization.degree, filename, "FourierMode1Solver::output_results");
   }
 } // namespace gradcontact::fem

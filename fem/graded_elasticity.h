@@ -156,20 +156,6 @@ namespace gradcontact::fem
   extern template class GradedElasticityCell<AxisymmetricStrain>;
   extern template class GradedElasticityCell<Mode1Strain>;
 
-  /// Adds the cell matrices of `cell_integrand` (any class with matrix(cell), e.g. CellStiffness) over
-  /// all active cells into `matrix`, condensed with `constraints` (serial triangulation).
-  template <class CellIntegrand>
-  void assemble_matrix(const dealii::DoFHandler<2> &dof_handler, const dealii::AffineConstraints<double> &constraints,
-                       CellIntegrand &cell_integrand, dealii::SparseMatrix<double> &matrix)
-  {
-    std::vector<dealii::types::global_dof_index> local_dof_indices(dof_handler.get_fe().n_dofs_per_cell());
-    for (const auto &cell : dof_handler.active_cell_iterators())
-      {
-        cell->get_dof_indices(local_dof_indices);
-        constraints.distribute_local_to_global(cell_integrand.matrix(cell), local_dof_indices, matrix);
-      }
-  }
-
   /// The homogeneous constraints every load of the axisymmetric model shares, added to `constraints`
   /// (which the caller has cleared, and reinit'ed on the relevant DoFs in parallel) and closed:
   /// hanging nodes, u_r = 0 on the axis, u = 0 on the truncation boundary.

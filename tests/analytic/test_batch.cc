@@ -99,5 +99,50 @@ TEST_CASE("The batch shall name the request whose result overflows, not report a
   CHECK(small.ok);
   CHECK(std::isfinite(small.value));
   // The prepared form gives the same error.
-  CHECK_THROWS_WITH(batch::prepare(request)(), Catch::Contains("non-finite") && Catch::Contains("paraboloid"));
+  CHECK_THROWS_WITH(batch::prepare(batch::parse(request))(), Catch::Contains("non-finite") && Catch::Contains("paraboloid"));
+}
+
+TEST_CASE("A typed request shall give the value of its JSON line, and name an input it lacks", "[analytic]")
+{
+  batch::Request q;
+  q.case_name = "jkr_paraboloid";
+  q.quantity = "contact_radius";
+  q.material = GradedHalfSpace{1e9, 1e-3, 0.5, 0.3};
+  q.geometry.R = 0.01;
+  q.dgamma = 0.05;
+  q.F = 1e-3;
+  for (const batch::Method method : {batch::Method::closed_form, batch::Method::numerical_mdr})
+    {
+      q.method = method;
+      const std::string line = batch::to_json(q).dump();
+      CAPTURE(line);
+      const batch::Answer a = batch::evaluate(line);
+      REQUIRE(a.ok);
+      CHECK(batch::evaluate(q) == a.value);
+      CHECK(batch::evaluate(batch::parse(line)) == a.value);
+    }
+  // The closed form and the numerical MDR agree on the stable branch.
+  q.method = batch::Method::closed_form;
+  const double closed = batch::evaluate(q);
+  q.method = batch::Method::numerical_mdr;
+  CHECK_THAT(batch::evaluate(q), Catch::Matchers::WithinRel(closed, 1e-9));
+  q.geometry.R.reset();
+  CHECK_THROWS_WITH(batch::evaluate(q), Contains("geometry.R: missing") && Contains("jkr_paraboloid"));
+  q.geometry.R = 0.01;
+  q.F.reset();
+  q.control = Control::force;
+  q.quantity = "critical_force";
+  q.method = batch::Method::closed_form;
+  CHECK(batch::evaluate(q) < 0.);
+  q.control.reset();
+  CHECK_THROWS_WITH(batch::evaluate(q), Contains("control: missing"));
+}
+
+TEST_CASE("eval names the valid choices of a mistyped branch or mechanism", "[analytic]")
+{
+  const batch::Answer a = batch::evaluate(
+    R"({"case":"oscillating_sphere","quantity":"traction",)" + material +
+    R"(,"geometry":{"R":0.01},"a":1e-4,"mu":0.3,"FA":1e-3,"Fx":0,"r":0,"branch":"sideways"})");
+  REQUIRE_FALSE(a.ok);
+  CHECK_THAT(a.error, Contains("branch = 'sideways'") && Contains("unloading"));
 }

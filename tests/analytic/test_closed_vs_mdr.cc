@@ -5,7 +5,9 @@
 #include <analytic/batch.h>
 #include <analytic/material.h>
 #include <analytic/mdr.h>
+#include <analytic/mdr_contact.h>
 #include <analytic/normal.h>
+#include <analytic/tangential.h>
 
 #include "random_requests.h"
 
@@ -170,4 +172,32 @@ TEST_CASE("regression: the optimal profile near the axis (found by the 1e5-point
   REQUIRE(closed.ok);
   CAPTURE(closed.value, reference);
   CHECK(std::abs(closed.value / reference - 1.) < 1e-13);
+}
+
+TEST_CASE("The reversal radius of an oscillation (9.81) shall equal the numerical MDR's and its end states",
+          "[analytic]")
+{
+  const double k = GENERATE(-0.5, 0., 0.5);
+  CAPTURE(k);
+  const Medium m = medium(GradedHalfSpace{1e9, 1e-3, k, 0.3});
+  const double R = 1e-2, a = 1e-4, mu = 0.3;
+  const tangential::SphereSlip slip{R, mu};
+  const double FA = 0.7 * mu * force(m, Paraboloid{R}, a);
+  // No reversal at A; at E the whole annulus outside the stick zone of A has reversed.
+  CHECK(tangential::reversal_radius(m, slip, a, FA, Branch::unloading, FA) == a);
+  CHECK_THAT(tangential::reversal_radius(m, slip, a, FA, Branch::unloading, -FA),
+             Catch::Matchers::WithinRel(tangential::stick_radius(m, slip, a, FA), 1e-14));
+  // In between, the annulus of the MDR integrals: |dF| = 2 mu [F_N(a) - F_N(b)].
+  const mdr::PartialSlip numeric(mdr::power_law(2., 1. / (2. * R)), m, mu, a);
+  for (const double f : {0.5, 0., -0.5})
+    {
+      CAPTURE(f);
+      CHECK_THAT(tangential::reversal_radius(m, slip, a, FA, Branch::unloading, f * FA),
+                 Catch::Matchers::WithinRel(numeric.radius_for((FA - f * FA) / 2.), 1e-10));
+      CHECK_THAT(tangential::reversal_radius(m, slip, a, FA, Branch::reloading, f * FA),
+                 Catch::Matchers::WithinRel(numeric.radius_for((f * FA + FA) / 2.), 1e-10));
+    }
+  CHECK_THROWS_WITH(tangential::reversal_radius(m, slip, a, FA, Branch::loading, 0.),
+                    Catch::Contains("branch = loading"));
+  CHECK_THROWS_WITH(tangential::reversal_radius(m, slip, a, FA, Branch::unloading, 1.5 * FA), Catch::Contains("Fx"));
 }

@@ -230,8 +230,7 @@ TEST_CASE("The FE surface under a constant tension -sigma_th has the optimal sha
 TEST_CASE("The FE pull-off force converges at the energy rate 2p under uniform h-refinement", "[verification]")
 {
   // Requirement: asserted convergence of the FE pull-off force. Degree 1, k = 0, both controls,
-  // uniform refinements 0-2 of every radius's mesh, against 9.56 (= JKR at k = 0). Measured (fem/README.md,
-  // "Adhesion"): errors 2.5e-3 -> 6.4e-4 -> 1.6e-4 (force control), order 2.02 over the last three levels.
+  // uniform refinements 0-2 of every radius's mesh, against 9.56 (= JKR at k = 0). Measured: errors 2.5e-3 -> 6.4e-4 -> 1.6e-4 (force control), order 2.02 over the last three levels.
   const double k = 0.;
   for (const auto control : {AdhesionControl::force, AdhesionControl::displacement})
     {

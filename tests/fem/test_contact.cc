@@ -309,7 +309,7 @@ TEST_CASE("Geometric layers shall converge to the pointwise modulus with the obs
   // 0 <= z <= 10 a, first thickness t1 = 10 a / N^3 (the ratio follows from N and the depth), k = 0.5,
   // below 10 a the pointwise field. The layering error alone: layered minus pointwise force on the same
   // mesh (surface cells 1e-9 a, thinner than every t1). Measured on the recommended mesh against the
-  // closed form (fem/README.md): 9.55e-3, 1.57e-3, 2.74e-4 (N = 30, 100, 300), order 1.54 (1.54 also over
+  // closed form: 9.55e-3, 1.57e-3, 2.74e-4 (N = 30, 100, 300), order 1.54 (1.54 also over
   // N = 100, 300, 1000), against 0.54 for uniform layers. First layer ~ t1^{1/2} ~ N^-1.5, interior
   // (k ln q)^2 ~ (ln N / N)^2: the first layer dominates. This coarse degree-2 mesh gives 1.60e-3 and
   // 2.58e-4 at N = 100, 300 but only 2.3e-5 instead of 4.6e-5 at N = 1000 (its own discretisation error,

@@ -202,7 +202,7 @@ TEST_CASE("For the decoupled pairing (rigid on graded, k = 0.5, nu = 1/(2+k)) th
           "K_T of the MDR (9.78)-(9.79) and the stick-zone displacement u0 of partial slip (9.80)",
           "[slow]")
 {
-  // Measured (fem/README.md): K_T 3.06e-6 (limited by the u_z ~ z^{1-k} surface layer, as the normal
+  // Measured: K_T 3.06e-6 (limited by the u_z ~ z^{1-k} surface layer, as the normal
   // punch's 2.1e-6); the required bound is 1e-5. Mean u_x over the stick zone c = a/2 against u0:
   // -2.7e-6 (8 levels toward c; spread of u_x 4.3e-6, max |u_y| 1.9e-6: the theory holds for this
   // pairing); F_x of the traction against (9.80): 2e-16 (quadrature only). 3.7x margin on u0.
@@ -239,7 +239,7 @@ TEST_CASE("For the decoupled pairing (rigid on graded, k = 0.5, nu = 1/(2+k)) th
   REQUIRE_THAT(t.force, WithinRel(Fx, force_tolerance));
   REQUIRE_THAT(t.stick.mean_ux, WithinRel(u0, u0_tolerance));
   // The theory's assumption (x-only traction gives a rigid stick zone) holds for this pairing:
-  // spread 4.3e-6, max |u_y| 1.9e-6 measured (the coupled k = 0.5, nu = 0.3: see fem/README.md).
+  // spread 4.3e-6, max |u_y| 1.9e-6 measured (the coupled k = 0.5, nu = 0.3: 3.4-6.9e-6, no larger).
   REQUIRE(t.stick.relative_spread < 2e-5);
   REQUIRE(t.stick.relative_max_uy < 1e-5);
 }
@@ -277,7 +277,7 @@ TEST_CASE("Under an oscillating tangential force the solver shall follow the unl
     REQUIRE(res.reliable);
     // F_x of the quadrature of tau (9.82) against Fx: measured <= 1e-10 at 14 of 15 forces, but 4.1e-6
     // at Fx = -0.125 F_A (b = 0.7903 a, 4.3e-4 a inside a surface face): not explained yet (the loading
-    // traction (9.80) gives 1e-15 everywhere); bounded here at 2.5x that value, see fem/README.md.
+    // traction (9.80) gives 1e-15 everywhere); bounded here at 2.5x that value (fem/README.md, "Limits").
     CAPTURE(res.force, Fx, res.force / Fx - 1);
     REQUIRE_THAT(res.force, WithinRel(Fx, 1e-5));
     return res.stick.mean_ux;

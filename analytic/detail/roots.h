@@ -1,0 +1,64 @@
+// gradcontact/analytic: the two root searches that the contact-radius and tangential problems share,
+// for the closed forms and the numerical MDR alike. Both use TOMS 748 (Alefeld, Potra and Shi, ACM
+// TOMS 21 (1995) 327-344) to 50 bits on a bracket they build first.
+#ifndef GRADCONTACT_ANALYTIC_DETAIL_ROOTS_H
+#define GRADCONTACT_ANALYTIC_DETAIL_ROOTS_H
+
+#include <analytic/errors.h>
+
+#include <boost/math/tools/toms748_solve.hpp>
+
+#include <cstdint>
+#include <functional>
+#include <string>
+
+namespace gradcontact::detail
+{
+  /// The x > 0 with increasing(x) = target, for a function that increases from 0 (depth or force of a
+  /// non-adhesive indentation against its contact radius): the bracket [start/2, 2 start] is widened by
+  /// factors 4 until it holds the root. DomainError naming `what` when no bracket is found.
+  inline double solve_increasing(const std::function<double(double)> &increasing, const double target,
+                                 const double start, const char *what)
+  {
+    double lo = start / 2., hi = start * 2.;
+    for (int i = 0; i < 200 && increasing(lo) > target; ++i)
+      lo /= 4.;
+    for (int i = 0; i < 200 && increasing(hi) < target; ++i)
+      hi *= 4.;
+    const double f_lo = increasing(lo) - target, f_hi = increasing(hi) - target;
+    if (f_lo == 0.)
+      return lo;
+    if (f_hi == 0.)
+      return hi;
+    if (!(f_lo <= 0. && f_hi >= 0.))
+      throw DomainError(std::string(what) + ": no solution found for the target " + check::format(target));
+    std::uintmax_t iterations = 200;
+    const auto root = boost::math::tools::toms748_solve([&](const double x) { return increasing(x) - target; }, lo,
+                                                        hi, f_lo, f_hi,
+                                                        boost::math::tools::eps_tolerance<double>(50), iterations);
+    return 0.5 * (root.first + root.second);
+  }
+
+  /// The root a >= a_c of value(a) = target on the stable branch of an adhesive contact, where value
+  /// (d(a) or F_N(a)) rises from its minimum value_c at the critical radius a_c. A target below
+  /// value_c has no adhesive equilibrium: DomainError naming `name` (the given d or F).
+  inline double stable_branch_root(const std::function<double(double)> &value, const double target, const double ac,
+                                   const double value_c, const char *name)
+  {
+    if (target < value_c)
+      check::fail("contact_radius", name, target,
+                  "is below its critical value " + check::format(value_c) + ": no adhesive equilibrium");
+    if (target == value_c)
+      return ac;
+    double hi = 2. * ac;
+    for (int i = 0; i < 200 && value(hi) < target; ++i)
+      hi *= 2.;
+    std::uintmax_t iterations = 200;
+    const auto root = boost::math::tools::toms748_solve([&](const double a) { return value(a) - target; }, ac, hi,
+                                                        value_c - target, value(hi) - target,
+                                                        boost::math::tools::eps_tolerance<double>(50), iterations);
+    return 0.5 * (root.first + root.second);
+  }
+} // namespace gradcontact::detail
+
+#endif
