@@ -1,6 +1,6 @@
 // gradcontact/analytic: argument checks shared by every public function.
 //
-// Public functions check, detail:: functions compute (STYLE.md rule 3). A failed check throws
+// Public functions check, detail:: functions compute. A failed check throws
 // DomainError whose message names the function, the argument, its value and the valid range,
 // e.g. "paraboloid_force: k = 1.5 is outside (-1, 1)". NaN is tested first, then the range.
 #ifndef GRADCONTACT_ANALYTIC_ERRORS_H

@@ -372,55 +372,41 @@ namespace gradcontact::fem
 
 
 
-  TangentialResult FourierMode1Solver::run(const TangentialLoad &load, const TangentialOutputRequest &outputs)
+  double FourierMode1Solver::solve_punch(const TangentialLoad &load, Vector<double> &u, TangentialResult &result)
   {
-    load.validate();
-    const bool punch = load.type == TangentialLoadType::flat_punch;
-    if (punch && punch_dofs.empty())
+    if (punch_dofs.empty())
       throw std::invalid_argument("FourierMode1Solver::run: flat punch on a mesh without contact faces");
-    TangentialResult result;
-    result.time    = setup_time;
-    result.n_dofs  = dof_handler.n_dofs();
-    result.n_cells = triangulation.n_active_cells();
-    result.mesh    = mesh_info;
+    // U = V = delta on the punch DoFs; the reactions there are the nodal forces.
+    const std::vector<double> g(punch_dofs.size(), load.displacement);
+    Vector<double>            b(dof_handler.n_dofs()), reaction;
+    u          = system.solve(true, g, b, reaction, result.time.factorize);
+    double sum = 0;
+    for (const auto i : punch_dofs)
+      sum += reaction[i];
+    result.force        = pi * sum;
+    result.displacement = load.displacement;
+    result.stiffness    = result.force / load.displacement;
+    return sum * load.displacement;
+  }
 
-    const auto     start = std::chrono::steady_clock::now();
-    Vector<double> u, b(dof_handler.n_dofs()), reaction;
-    double         work = 0; // work of the loads, per pi
-    if (punch)
-      {
-        // U = V = delta on the punch DoFs; the reactions there are the nodal forces.
-        const std::vector<double> g(punch_dofs.size(), load.displacement);
-        u          = system.solve(true, g, b, reaction, result.time.factorize);
-        double sum = 0;
-        for (const auto i : punch_dofs)
-          sum += reaction[i];
-        work                = sum * load.displacement;
-        result.force        = pi * sum;
-        result.displacement = load.displacement;
-        result.stiffness    = result.force / load.displacement;
-      }
-    else
-      {
-        b                  = traction_load(load);
-        Vector<double> rhs = b;
-        constraints.condense(rhs); // the axis V-load joins its U (V = U)
-        u    = system.solve(false, {}, rhs, reaction, result.time.factorize);
-        work = b * u;
-        // F_x = pi \int (tau + tau) r dr = pi sum_i b_i over the U and V DoFs (partition of unity).
-        double sum = 0;
-        for (unsigned int i = 0; i < b.size(); ++i)
-          sum += b[i];
-        result.force = pi * sum;
-      }
-    const EnergyCheck energy = check_energy(system.energy(u), work, mesh_info.min_surface_cell);
-    result.energy_mismatch   = energy.mismatch;
-    result.reliable          = energy.reliable;
-    result.message += energy.message;
-    result.time.solve = seconds_since(start) - result.time.factorize;
+  double FourierMode1Solver::solve_traction(const TangentialLoad &load, Vector<double> &u, TangentialResult &result)
+  {
+    const Vector<double> b   = traction_load(load);
+    Vector<double>       rhs = b, reaction;
+    constraints.condense(rhs); // the axis V-load joins its U (V = U)
+    u = system.solve(false, {}, rhs, reaction, result.time.factorize);
+    // F_x = pi \int (tau + tau) r dr = pi sum_i b_i over the U and V DoFs (partition of unity).
+    double sum = 0;
+    for (unsigned int i = 0; i < b.size(); ++i)
+      sum += b[i];
+    result.force = pi * sum;
+    return b * u;
+  }
 
-    const auto post = std::chrono::steady_clock::now();
-    if (!punch && load.stick_radius > 0)
+  void FourierMode1Solver::sample(const TangentialLoad &load, const Vector<double> &u,
+                                  const TangentialOutputRequest &outputs, TangentialResult &result) const
+  {
+    if (load.type != TangentialLoadType::flat_punch && load.stick_radius > 0)
       {
         result.stick        = stick_zone(u, load.stick_radius);
         result.displacement = result.stick.mean_ux;
@@ -429,6 +415,30 @@ namespace gradcontact::fem
       result.surface.push_back({r, surface_value(u, 0, r), surface_value(u, 1, r), surface_value(u, 2, r)});
     if (!outputs.vtu_file.empty())
       output_results(u, outputs.vtu_file);
+  }
+
+  TangentialResult FourierMode1Solver::run(const TangentialLoad &load, const TangentialOutputRequest &outputs)
+  {
+    load.validate();
+    TangentialResult result;
+    result.time    = setup_time;
+    result.n_dofs  = dof_handler.n_dofs();
+    result.n_cells = triangulation.n_active_cells();
+    result.mesh    = mesh_info;
+
+    const auto     start = std::chrono::steady_clock::now();
+    Vector<double> u;
+    // the work of the loads, per pi
+    const double work = load.type == TangentialLoadType::flat_punch ? solve_punch(load, u, result) :
+                                                                       solve_traction(load, u, result);
+    const EnergyCheck energy = check_energy(system.energy(u), work, mesh_info.min_surface_cell);
+    result.energy_mismatch   = energy.mismatch;
+    result.reliable          = energy.reliable;
+    result.message += energy.message;
+    result.time.solve = seconds_since(start) - result.time.factorize;
+
+    const auto post = std::chrono::steady_clock::now();
+    sample(load, u, outputs, result);
     result.time.postprocess = seconds_since(post);
     return result;
   }

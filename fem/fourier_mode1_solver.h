@@ -183,6 +183,12 @@ namespace gradcontact::fem
     void setup_system();
     void assemble_system();
     dealii::Vector<double> traction_load(const TangentialLoad &load) const;
+    /// The two loads: each solves u, fills the force of `result` and returns the work of the load (per pi).
+    double solve_punch(const TangentialLoad &load, dealii::Vector<double> &u, TangentialResult &result);
+    double solve_traction(const TangentialLoad &load, dealii::Vector<double> &u, TangentialResult &result);
+    /// The outputs asked for: the stick-zone statistics, surface samples, VTU.
+    void sample(const TangentialLoad &load, const dealii::Vector<double> &u, const TangentialOutputRequest &outputs,
+                TangentialResult &result) const;
     /// Field `component` (0 U, 1 V, 2 W) of the nodal vector on z = 0 at r.
     double surface_value(const dealii::Vector<double> &u, unsigned int component, double r) const;
     StickZoneDisplacement stick_zone(const dealii::Vector<double> &u, double c) const;
