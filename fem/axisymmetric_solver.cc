@@ -416,11 +416,8 @@ namespace gradcontact::fem
   {
     load.validate();
     Result result;
-    result.time             = setup_time;
-    result.n_dofs           = dof_handler.n_dofs();
-    result.n_cells          = triangulation.n_active_cells();
+    result.start(setup_time, dof_handler.n_dofs(), triangulation.n_active_cells(), mesh_info);
     result.formulation      = used_formulation;
-    result.mesh             = mesh_info;
     result.contact_radius   = mesh_parameters.contact_radius;
     result.edge_node_radius = mesh_parameters.contact_radius;
 
@@ -586,10 +583,7 @@ namespace gradcontact::fem
       force = load.pressure * a * a / 2; // \int_0^a p0 r dr
     result.force = 2 * numbers::PI * force;
 
-    const EnergyCheck energy = check_energy(system.energy(state.u), work, mesh_info.min_surface_cell);
-    result.energy_mismatch   = energy.mismatch;
-    result.reliable          = energy.reliable;
-    result.message += energy.message;
+    result.record(check_energy(system.energy(state.u), work, mesh_info.min_surface_cell));
     if (!state.constrained)
       return;
 

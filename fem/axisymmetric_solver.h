@@ -76,7 +76,7 @@
 
 namespace gradcontact::fem
 {
-  struct Result
+  struct Result : RunReport
   {
     double force          = 0; ///< F_N, compressive positive
     double contact_radius = 0; ///< a (the mesh's under contact-radius control; found under depth or
@@ -95,17 +95,8 @@ namespace gradcontact::fem
     double min_relative_contact_force = 0;
     double min_relative_gap           = 0;
     bool   consistent_contact         = true; ///< both checks passed (complete contact for the concave punch)
-    std::string message;                      ///< what failed, if anything
 
-    /// |2 pi u.Au - work of the loads| / (2 pi u.Au): a solver-garbage detector (ill-conditioning).
-    double energy_mismatch = 0;
-    bool   reliable        = true; ///< energy_mismatch small enough (else `message` says why)
-
-    unsigned int n_dofs  = 0; ///< all DoFs (displacement and, when mixed, pressure)
-    unsigned int n_cells = 0;
-    Formulation  formulation = Formulation::displacement; ///< the one used (never automatic)
-    MeshInfo     mesh;
-    Timings      time;
+    Formulation formulation = Formulation::displacement; ///< the one used (never automatic)
   };
 
   class AxisymmetricSolver

@@ -103,4 +103,20 @@ namespace gradcontact::fem
       }
     return check;
   }
+
+  void RunReport::start(const Timings &setup, const dealii::types::global_dof_index dofs, const unsigned int cells,
+                        const MeshInfo &info)
+  {
+    time    = setup;
+    n_dofs  = dofs;
+    n_cells = cells;
+    mesh    = info;
+  }
+
+  void RunReport::record(const EnergyCheck &check)
+  {
+    energy_mismatch = check.mismatch;
+    reliable        = check.reliable;
+    message += check.message;
+  }
 } // namespace gradcontact::fem

@@ -9,6 +9,8 @@
 
 #include <fem/mesh.h>
 
+#include <deal.II/base/types.h>
+
 #include <chrono>
 #include <string>
 
@@ -105,6 +107,28 @@ namespace gradcontact::fem
   /// |energy - work| / |energy| against energy_mismatch_tolerance; the message names the thinnest
   /// surface cell (the usual cause) and `details` (e.g. the linear residual of an iterative solve).
   EnergyCheck check_energy(double energy, double work, double min_surface_cell, const std::string &details = "");
+
+  /// What every solver's run reports besides its physics (the base of Result, TangentialResult and
+  /// DistributedResult): size, mesh, times and the energy check.
+  struct RunReport
+  {
+    std::string message; ///< what failed, if anything
+    /// |u.Au - work of the loads| / u.Au (times 2 pi or pi, as the solver's energy): a solver-garbage
+    /// detector (ill-conditioning).
+    double energy_mismatch = 0;
+    bool   reliable        = true; ///< energy_mismatch small enough (else `message` says why)
+    dealii::types::global_dof_index n_dofs  = 0; ///< all DoFs (displacement and, when mixed, pressure)
+    unsigned int                    n_cells = 0; ///< active cells of the whole mesh
+    MeshInfo                        mesh;
+    /// mesh, setup, assemble once per solver; factorize this run's (0 when reused), solve and postprocess
+    /// this run's (the slowest process in parallel).
+    Timings time;
+
+    /// The solver's size, mesh and setup times at the start of a run.
+    void start(const Timings &setup, dealii::types::global_dof_index dofs, unsigned int cells, const MeshInfo &info);
+    /// Takes the outcome of the energy check (its message appended to `message`).
+    void record(const EnergyCheck &check);
+  };
 } // namespace gradcontact::fem
 
 #endif

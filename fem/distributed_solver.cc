@@ -447,11 +447,8 @@ namespace gradcontact::fem
                                   "(contact-radius control)");
     const double      a = mesh_parameters.contact_radius;
     DistributedResult result;
-    result.time        = setup_time;
-    result.n_dofs      = dof_handler.n_dofs();
-    result.n_cells     = triangulation.n_global_active_cells();
+    result.start(setup_time, dof_handler.n_dofs(), triangulation.n_global_active_cells(), mesh_info);
     result.n_processes = Utilities::MPI::n_mpi_processes(communicator);
-    result.mesh        = mesh_info;
     result.contact_radius = a;
 
     MPI_Barrier(communicator);
@@ -477,10 +474,7 @@ namespace gradcontact::fem
     const double       energy = u_free * Au;
     std::ostringstream residual;
     residual << "linear residual " << result.residual;
-    const EnergyCheck check = check_energy(energy, work, mesh_info.min_surface_cell, residual.str());
-    result.energy_mismatch  = check.mismatch;
-    result.reliable         = check.reliable;
-    result.message += check.message;
+    result.record(check_energy(energy, work, mesh_info.min_surface_cell, residual.str()));
     result.time.solve = elapsed_max(start) - result.time.factorize;
     return result;
   }

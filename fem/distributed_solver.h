@@ -74,7 +74,7 @@ namespace gradcontact::fem
     void validate() const;
   };
 
-  struct DistributedResult
+  struct DistributedResult : RunReport
   {
     double force = 0; ///< F_N, compressive positive
     double depth = 0; ///< d (flat punch, indenter) or w_c = u_z(0, 0) (constant pressure)
@@ -83,21 +83,10 @@ namespace gradcontact::fem
     double min_relative_contact_force = 0;
     bool   consistent_contact = true; ///< indenter: no tensile nodal contact force beyond the tolerance
 
-    dealii::types::global_dof_index n_dofs = 0;
-    unsigned int n_cells     = 0; ///< active cells of the whole mesh
     unsigned int n_processes = 0;
     std::string  solver;          ///< "Amesos_Mumps" or "CG + ML AMG"
     unsigned int iterations = 0;  ///< CG iterations of this run (0: direct)
     double       residual   = 0;  ///< ||b - A u|| / ||b|| of the linear solve
-
-    double      energy_mismatch = 0; ///< |2 pi u.Au - work| / (2 pi u.Au)
-    bool        reliable        = true;
-    std::string message;             ///< what failed, if anything
-
-    MeshInfo mesh;
-    /// Wall times, the slowest process: mesh, setup, assemble once per solver; factorize is the
-    /// factorisation or AMG setup of this run (0 when reused), solve and postprocess this run's.
-    Timings time;
   };
 
   class DistributedSolver

@@ -421,20 +421,14 @@ namespace gradcontact::fem
   {
     load.validate();
     TangentialResult result;
-    result.time    = setup_time;
-    result.n_dofs  = dof_handler.n_dofs();
-    result.n_cells = triangulation.n_active_cells();
-    result.mesh    = mesh_info;
+    result.start(setup_time, dof_handler.n_dofs(), triangulation.n_active_cells(), mesh_info);
 
     const auto     start = std::chrono::steady_clock::now();
     Vector<double> u;
     // the work of the loads, per pi
     const double work = load.type == TangentialLoadType::flat_punch ? solve_punch(load, u, result) :
                                                                        solve_traction(load, u, result);
-    const EnergyCheck energy = check_energy(system.energy(u), work, mesh_info.min_surface_cell);
-    result.energy_mismatch   = energy.mismatch;
-    result.reliable          = energy.reliable;
-    result.message += energy.message;
+    result.record(check_energy(system.energy(u), work, mesh_info.min_surface_cell));
     result.time.solve = seconds_since(start) - result.time.factorize;
 
     const auto post = std::chrono::steady_clock::now();

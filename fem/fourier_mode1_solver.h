@@ -128,22 +128,13 @@ namespace gradcontact::fem
     double min_U = 0, max_U = 0, min_V = 0, max_V = 0;
   };
 
-  struct TangentialResult
+  struct TangentialResult : RunReport
   {
     double force        = 0; ///< F_x = pi sum R (flat punch) or pi \int 2 tau r dr (traction)
     double displacement = 0; ///< delta (flat punch); mean u_x over the stick zone (traction), else 0
     double stiffness    = 0; ///< K_T = F_x / delta (flat punch)
     std::vector<SurfaceDisplacement> surface;
     StickZoneDisplacement            stick;
-
-    double      energy_mismatch = 0; ///< |pi u.Au - work| / (pi u.Au)
-    bool        reliable        = true;
-    std::string message;
-
-    unsigned int n_dofs  = 0;
-    unsigned int n_cells = 0;
-    MeshInfo     mesh;
-    Timings      time;
   };
 
   /// Extra refinement of the surface mesh toward points (r, 0) that are no mesh nodes, e.g. the stick
