@@ -36,25 +36,6 @@ namespace gradcontact::fem
 
 
 
-  namespace
-  {
-    /// Validates the discretisation, then the material for the formulation it resolves to.
-    Formulation checked_formulation(const Material &material, const DiscretizationParameters &discretization)
-    {
-      discretization.validate();
-      const Formulation f = resolve_formulation(discretization, material.nu);
-      material.validate(f == Formulation::mixed);
-      return f;
-    }
-
-    /// (u_r, u_z) in FE_Q(p), plus q in FE_Q(p - 1) for the mixed formulation (Taylor-Hood).
-    FESystem<2> make_fe(const unsigned int degree, const Formulation formulation)
-    {
-      if (formulation == Formulation::mixed)
-        return FESystem<2>(FE_Q<2>(degree), 2, FE_Q<2>(degree - 1), 1);
-      return FESystem<2>(FE_Q<2>(degree), 2);
-    }
-  } // namespace
 
 
 
@@ -65,7 +46,7 @@ namespace gradcontact::fem
     , mesh_parameters((mesh_.validate(), mesh_))
     , discretization(discretization_)
     , used_formulation(resolve_formulation(discretization_, material_.nu))
-    , fe(make_fe(discretization_.degree, used_formulation))
+    , fe(axisymmetric_element(discretization_.degree, used_formulation))
     , dof_handler(triangulation)
   {
     make_grid();

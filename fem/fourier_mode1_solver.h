@@ -137,19 +137,6 @@ namespace gradcontact::fem
     StickZoneDisplacement            stick;
   };
 
-  /// Extra refinement of the surface mesh toward points (r, 0) that are no mesh nodes, e.g. the stick
-  /// radius c where the partial-slip traction has a kink like (c - r)^{(1+k)/2}. Each level splits the
-  /// cells within one cell width of (r, 0): in r only when they are thin (the z-halved surface layer),
-  /// isotropically otherwise.
-  struct SurfaceRefinement
-  {
-    std::vector<double> radii;      ///< physical units, > 0
-    unsigned int        levels = 0; ///< <= 30
-  };
-
-  /// Applies `refinement` to a meridian mesh (serial triangulation).
-  void refine_toward_surface_points(const SurfaceRefinement &refinement, dealii::Triangulation<2> &tria);
-
   class FourierMode1Solver
   {
   public:

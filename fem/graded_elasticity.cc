@@ -5,6 +5,7 @@
 #include <deal.II/base/function.h>
 #include <deal.II/base/quadrature_lib.h>
 #include <deal.II/dofs/dof_tools.h>
+#include <deal.II/fe/fe_q.h>
 #include <deal.II/numerics/vector_tools.h>
 
 #include <algorithm>
@@ -292,5 +293,20 @@ namespace gradcontact::fem
                   p0 * face_values.shape_value(i, q) * face_values.quadrature_point(q)[0] * face_values.JxW(q);
         }
     return cell_rhs;
+  }
+
+  Formulation checked_formulation(const Material &material, const DiscretizationParameters &discretization)
+  {
+    discretization.validate();
+    const Formulation f = resolve_formulation(discretization, material.nu);
+    material.validate(f == Formulation::mixed);
+    return f;
+  }
+
+  FESystem<2> axisymmetric_element(const unsigned int degree, const Formulation formulation)
+  {
+    if (formulation == Formulation::mixed)
+      return FESystem<2>(FE_Q<2>(degree), 2, FE_Q<2>(degree - 1), 1);
+    return FESystem<2>(FE_Q<2>(degree), 2);
   }
 } // namespace gradcontact::fem

@@ -156,6 +156,13 @@ namespace gradcontact::fem
   extern template class GradedElasticityCell<AxisymmetricStrain>;
   extern template class GradedElasticityCell<Mode1Strain>;
 
+  /// Validates the discretisation, then the material for the formulation it resolves to (which it returns).
+  Formulation checked_formulation(const Material &material, const DiscretizationParameters &discretization);
+
+  /// The element of the axisymmetric (mode 0) model: (u_r, u_z) in FE_Q(p), plus q in FE_Q(p - 1) for the
+  /// mixed formulation (Taylor-Hood).
+  dealii::FESystem<2> axisymmetric_element(unsigned int degree, Formulation formulation);
+
   /// The homogeneous constraints every load of the axisymmetric model shares, added to `constraints`
   /// (which the caller has cleared, and reinit'ed on the relevant DoFs in parallel) and closed:
   /// hanging nodes, u_r = 0 on the axis, u = 0 on the truncation boundary.

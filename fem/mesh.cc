@@ -536,4 +536,43 @@ namespace gradcontact::fem
         info.min_edge_cell    = Utilities::MPI::min(info.min_edge_cell, tria.get_communicator());
       }
   }
+
+
+  void refine_toward_surface_points(const SurfaceRefinement &refinement, Triangulation<2> &tria)
+  {
+    if (refinement.levels > 30)
+      fail("SurfaceRefinement", "levels", refinement.levels, "[0, 30]");
+    for (const double c : refinement.radii)
+      if (!(c > 0) || !std::isfinite(c))
+        fail("SurfaceRefinement", "radius", c, "(0, inf)");
+    for (unsigned int level = 0; level < refinement.levels; ++level)
+      {
+        for (const auto &cell : tria.active_cell_iterators())
+          {
+            double r0 = std::numeric_limits<double>::max(), r1 = -r0, z0 = r0, z1 = -r0;
+            for (const unsigned int v : cell->vertex_indices())
+              {
+                r0 = std::min(r0, cell->vertex(v)[0]);
+                r1 = std::max(r1, cell->vertex(v)[0]);
+                z0 = std::min(z0, cell->vertex(v)[1]);
+                z1 = std::max(z1, cell->vertex(v)[1]);
+              }
+            const double width = r1 - r0;
+            for (const double c : refinement.radii)
+              if (std::max({0.0, r0 - c, c - r1}) <= width && z0 <= width)
+                {
+                  // A thin cell (the surface layer) is split along its long side only: isotropic
+                  // splits would double the layers of its column at every level. The refinement case
+                  // is in the cell's own coordinates (gmsh cells are not aligned with r, z).
+                  const double e0 = cell->extent_in_direction(0), e1 = cell->extent_in_direction(1);
+                  if (std::min(e0, e1) < 0.5 * std::max(e0, e1))
+                    cell->set_refine_flag(e0 > e1 ? RefinementCase<2>::cut_x : RefinementCase<2>::cut_y);
+                  else
+                    cell->set_refine_flag(RefinementCase<2>::isotropic_refinement);
+                  break;
+                }
+          }
+        tria.execute_coarsening_and_refinement();
+      }
+  }
 } // namespace gradcontact::fem

@@ -164,21 +164,22 @@ namespace gradcontact::fem
 
 
 
-  std::vector<double> recover_line_density(const std::vector<SurfaceFace> &faces, const unsigned int c,
-                                           const Vector<double> &forces, const double edge,
-                                           const unsigned int n_gauss, const std::size_t n_dofs)
+  LineMass line_mass_matrix(const std::vector<SurfaceFace> &faces, const unsigned int c, const double limit,
+                            const unsigned int n_gauss)
   {
-    const double limit = edge * (1 + node_tolerance);
+    const double                                    end = limit * (1 + node_tolerance);
     std::map<types::global_dof_index, unsigned int> index;
+    LineMass                                        mass;
     for (const SurfaceFace &face : faces)
-      if (face.r1 <= limit)
+      if (face.r1 <= end)
         for (const auto d : face.dofs[c])
-          index.emplace(d, index.size());
-    const unsigned int       m = index.size();
-    LAPACKFullMatrix<double> M(m, m);
-    const QGauss<1>          quadrature(n_gauss);
+          if (index.emplace(d, index.size()).second)
+            mass.dofs.push_back(d);
+    const unsigned int m = index.size();
+    mass.matrix.reinit(m, m);
+    const QGauss<1> quadrature(n_gauss);
     for (const SurfaceFace &face : faces)
-      if (face.r1 <= limit)
+      if (face.r1 <= end)
         {
           const auto &dofs = face.dofs[c];
           for (unsigned int q = 0; q < quadrature.size(); ++q)
@@ -194,17 +195,75 @@ namespace gradcontact::fem
                 }
               for (unsigned int i = 0; i < dofs.size(); ++i)
                 for (unsigned int j = 0; j < dofs.size(); ++j)
-                  M(index[dofs[i]], index[dofs[j]]) += phi[i] * phi[j] * w;
+                  mass.matrix(index[dofs[i]], index[dofs[j]]) += phi[i] * phi[j] * w;
             }
         }
+    return mass;
+  }
+
+  SurfaceCoupling linear_density_coupling(const std::vector<SurfaceFace> &faces, const unsigned int c,
+                                          const double limit, const unsigned int n_gauss)
+  {
+    const double                                    end = limit * (1 + node_tolerance);
+    std::map<types::global_dof_index, unsigned int> index;
+    SurfaceCoupling                                 coupling;
+    for (const SurfaceFace &face : faces)
+      if (face.r1 <= end)
+        {
+          for (const auto d : face.dofs[c])
+            if (index.emplace(d, index.size()).second)
+              coupling.dofs.push_back(d);
+          if (coupling.vertex_r.empty())
+            coupling.vertex_r.push_back(face.r0);
+          coupling.vertex_r.push_back(face.r1);
+        }
+    coupling.matrix.reinit(coupling.dofs.size(), coupling.vertex_r.size());
+    coupling.vertex_mass.reinit(coupling.vertex_r.size(), coupling.vertex_r.size());
+    const QGauss<1> quadrature(n_gauss);
+    unsigned int    k = 0; // the face's left vertex
+    for (const SurfaceFace &face : faces)
+      if (face.r1 <= end)
+        {
+          const auto &dofs = face.dofs[c];
+          for (unsigned int q = 0; q < quadrature.size(); ++q)
+            {
+              const double x = quadrature.point(q)[0];
+              const double r = face.r0 + (face.r1 - face.r0) * x;
+              const double w = quadrature.weight(q) * (face.r1 - face.r0) * r;
+              for (unsigned int i = 0; i < dofs.size(); ++i)
+                {
+                  std::vector<double> unit(dofs.size(), 0.0);
+                  unit[i]          = 1;
+                  const double phi = lagrange(face.r, unit, r);
+                  coupling.matrix(index[dofs[i]], k) += phi * (1 - x) * w;
+                  coupling.matrix(index[dofs[i]], k + 1) += phi * x * w;
+                }
+              const double psi[2] = {1 - x, x};
+              for (unsigned int a = 0; a < 2; ++a)
+                for (unsigned int b = 0; b < 2; ++b)
+                  coupling.vertex_mass(k + a, k + b) += psi[a] * psi[b] * w;
+            }
+          ++k;
+        }
+    return coupling;
+  }
+
+  std::vector<double> recover_line_density(const std::vector<SurfaceFace> &faces, const unsigned int c,
+                                           const Vector<double> &forces, const double edge,
+                                           const unsigned int n_gauss, const std::size_t n_dofs)
+  {
+    const LineMass           mass = line_mass_matrix(faces, c, edge, n_gauss);
+    const unsigned int       m    = mass.dofs.size();
+    LAPACKFullMatrix<double> M(m, m);
+    M = mass.matrix;
     Vector<double> p(m);
-    for (const auto &[dof, i] : index)
-      p[i] = forces[dof];
+    for (unsigned int i = 0; i < m; ++i)
+      p[i] = forces[mass.dofs[i]];
     M.compute_lu_factorization();
     M.solve(p);
     std::vector<double> nodal(n_dofs, 0.0);
-    for (const auto &[dof, i] : index)
-      nodal[dof] = p[i];
+    for (unsigned int i = 0; i < m; ++i)
+      nodal[mass.dofs[i]] = p[i];
     return nodal;
   }
 } // namespace gradcontact::fem

@@ -13,6 +13,7 @@
 #include <deal.II/base/types.h>
 #include <deal.II/dofs/dof_handler.h>
 #include <deal.II/fe/fe_system.h>
+#include <deal.II/lac/full_matrix.h>
 #include <deal.II/lac/vector.h>
 
 #include <functional>
@@ -75,6 +76,31 @@ namespace gradcontact::fem
                                                       const std::function<double(double)> &t, double radius,
                                                       std::vector<double> breakpoints, const GradedRule &rule,
                                                       const char *where);
+
+  /// The r-weighted mass matrix M_ij = \int phi_i phi_j r dr of component c over the faces with
+  /// r1 <= limit (1 + node_tolerance), Gauss with `n_gauss` points per face; `dofs` are the global DoFs of
+  /// its rows and columns, ascending r.
+  struct LineMass
+  {
+    std::vector<dealii::types::global_dof_index> dofs;
+    dealii::FullMatrix<double>                   matrix;
+  };
+  LineMass line_mass_matrix(const std::vector<SurfaceFace> &faces, unsigned int c, double limit, unsigned int n_gauss);
+
+  /// The coupling of a piecewise linear density on the surface vertices (hat functions psi_k) with the
+  /// trace of component c (phi_i): D_ik = \int phi_i psi_k r dr over the faces with r1 <= limit
+  /// (1 + node_tolerance), Gauss with `n_gauss` points per face. `dofs` (rows) and `vertex_r` (columns)
+  /// ascend in r. The nodal forces of the density p = sum p_k psi_k are D p.
+  struct SurfaceCoupling
+  {
+    std::vector<dealii::types::global_dof_index> dofs;
+    std::vector<double>                          vertex_r;
+    dealii::FullMatrix<double>                   matrix;
+    /// M_kl = \int psi_k psi_l r dr (tridiagonal, non-negative): the force of a vertex's share of p is (M p)_k.
+    dealii::FullMatrix<double> vertex_mass;
+  };
+  SurfaceCoupling linear_density_coupling(const std::vector<SurfaceFace> &faces, unsigned int c, double limit,
+                                          unsigned int n_gauss);
 
   /// Consistent recovery of a line density p from nodal forces R_i = \int p phi_i r dr on the faces
   /// with r1 <= limit: M p = R with M_ij = \int phi_i phi_j r dr (Gauss with `n_gauss` points per face).

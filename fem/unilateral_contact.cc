@@ -1,0 +1,605 @@
+#include <fem/errors.h>
+#include <fem/graded_elasticity.h>
+#include <fem/unilateral_contact.h>
+#include <fem/vtu_output.h>
+
+#include <deal.II/dofs/dof_tools.h>
+#include <deal.II/lac/lapack_full_matrix.h>
+#include <deal.II/numerics/data_out.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <map>
+#include <set>
+#include <sstream>
+#include <stdexcept>
+
+namespace gradcontact::fem
+{
+  using namespace dealii;
+
+  namespace
+  {
+    /// Relative tolerances of the active-set conditions: a force below this fraction of the largest
+    /// nodal force, or a gap below this fraction of the displacement scale, counts as zero (round-off of
+    /// the dense solves; the nodes at an edge carry values of that size).
+    constexpr double force_zero = 1e-12;
+    constexpr double gap_zero   = 1e-12;
+
+    /// K = D^T (C D), the weighted gaps of the vertex pressures: symmetric positive definite
+    /// (symmetrised against the round-off of the back-substitutions).
+    FullMatrix<double> contact_matrix(const FullMatrix<double> &D, const FullMatrix<double> &CD)
+    {
+      FullMatrix<double> K(D.n(), D.n());
+      D.Tmmult(K, CD);
+      for (unsigned int i = 0; i < K.m(); ++i)
+        for (unsigned int j = 0; j < i; ++j)
+          K(i, j) = K(j, i) = 0.5 * (K(i, j) + K(j, i));
+      return K;
+    }
+  } // namespace
+
+
+
+  Indenter Indenter::of(const Profile &profile, const double a)
+  {
+    profile.validate();
+    Indenter i;
+    i.f      = [profile, a](const double r) { return profile(r, a); };
+    i.extent = profile.shape == Profile::Shape::concave_paraboloid ? a : std::numeric_limits<double>::infinity();
+    i.name   = profile.shape == Profile::Shape::concave_paraboloid ? "concave punch" : "indenter";
+    return i;
+  }
+
+  Indenter Indenter::table(std::vector<double> r, std::vector<double> f)
+  {
+    if (r.size() < 2 || r.size() != f.size())
+      fail("Indenter::table", "number of points", r.size(), "at least 2, as many r as f");
+    if (r.front() != 0)
+      fail("Indenter::table", "first r", r.front(), "0 (the table starts at the axis)");
+    for (std::size_t j = 1; j < r.size(); ++j)
+      if (!(r[j] > r[j - 1]) || !std::isfinite(r[j]))
+        fail("Indenter::table", "r", r[j], "finite and ascending");
+    for (const double v : f)
+      if (!std::isfinite(v))
+        fail("Indenter::table", "f", v, "finite");
+    Indenter i;
+    i.extent = r.back();
+    i.name   = "tabulated indenter";
+    i.f      = [r = std::move(r), f = std::move(f)](const double x) {
+      const auto   it = std::upper_bound(r.begin(), r.end(), x);
+      const auto   j  = std::min<std::size_t>(std::max<std::ptrdiff_t>(it - r.begin(), 1), r.size() - 1);
+      const double t  = (x - r[j - 1]) / (r[j] - r[j - 1]);
+      return (1 - t) * f[j - 1] + t * f[j];
+    };
+    return i;
+  }
+
+  void Indenter::validate() const
+  {
+    if (!f)
+      throw std::invalid_argument("Indenter (" + name + "): the profile function is empty");
+    if (!(extent > 0))
+      fail("Indenter (" + name + ")", "extent", extent, "(0, inf]");
+  }
+
+  void UnilateralLoad::validate() const
+  {
+    indenter.validate();
+    if (control == ContactControl::depth && !std::isfinite(depth))
+      fail("UnilateralLoad (depth control)", "depth", depth, "finite");
+    if (control == ContactControl::force && !(force > 0 && std::isfinite(force)))
+      fail("UnilateralLoad (force control)", "force", force, "(0, inf)");
+  }
+
+
+
+  UnilateralContactSolver::UnilateralContactSolver(const Material &material_, const MeshParameters &mesh,
+                                                   const DiscretizationParameters &discretization_,
+                                                   const double candidate_radius, const SurfaceRefinement &refinement)
+    : material(material_)
+    , discretization(discretization_)
+    , used_formulation(checked_formulation(material_, discretization_))
+    , fe(axisymmetric_element(discretization_.degree, used_formulation))
+    , dof_handler(triangulation)
+  {
+    mesh.validate();
+    if (!(candidate_radius > 0) || !std::isfinite(candidate_radius))
+      fail("UnilateralContactSolver", "candidate_radius", candidate_radius, "(0, inf)");
+    make_grid(mesh, refinement);
+    setup_system(candidate_radius);
+    assemble_system();
+    build_compliance();
+  }
+
+  UnilateralContactSolver::~UnilateralContactSolver()
+  {
+    dof_handler.clear();
+  }
+
+
+
+  void UnilateralContactSolver::make_grid(const MeshParameters &mesh, const SurfaceRefinement &refinement)
+  {
+    const auto start = std::chrono::steady_clock::now();
+    mesh_info        = make_mesh(mesh, triangulation);
+    refine_toward_surface_points(refinement, triangulation);
+    setup_time.mesh = seconds_since(start);
+  }
+
+
+
+  void UnilateralContactSolver::setup_system(const double candidate_radius)
+  {
+    const auto start = std::chrono::steady_clock::now();
+    dof_handler.distribute_dofs(fe);
+    constraints.clear();
+    make_homogeneous_constraints(dof_handler, mapping, fe, constraints);
+    system.reinit(dof_handler, constraints);
+
+    std::vector<Point<2>> support(dof_handler.n_dofs());
+    DoFTools::map_dofs_to_support_points(mapping, dof_handler, support);
+    std::vector<double> dof_r(support.size());
+    for (unsigned int i = 0; i < support.size(); ++i)
+      dof_r[i] = support[i][0];
+
+    // The candidates: the surface z-DoFs of the faces with r1 <= the candidate radius and the vertices
+    // of those faces, both ascending in r, with the coupling D of the linear pressure.
+    surface_faces   = collect_surface_faces(dof_handler, dof_r, 2);
+    candidate_limit = std::min(candidate_radius, surface_faces.back().r1);
+    SurfaceCoupling coupling = linear_density_coupling(surface_faces, 1, candidate_limit, discretization.degree + 2);
+    if (coupling.dofs.empty())
+      fail("UnilateralContactSolver", "candidate_radius", candidate_radius, "at least one surface face wide");
+    candidates = coupling.dofs;
+    vertex_r   = coupling.vertex_r;
+    all.D      = std::move(coupling.matrix);
+    all.M      = std::move(coupling.vertex_mass);
+    candidate_r.clear();
+    for (const auto d : candidates)
+      {
+        if (constraints.is_constrained(d))
+          fail("UnilateralContactSolver", "candidate_radius", candidate_radius,
+               "inside the truncation radius (the surface DoF at r = " + std::to_string(dof_r[d]) + " is fixed)");
+        candidate_r.push_back(dof_r[d]);
+      }
+    setup_time.setup = seconds_since(start);
+  }
+
+
+
+  void UnilateralContactSolver::assemble_system()
+  {
+    const auto    start = std::chrono::steady_clock::now();
+    CellStiffness cell_stiffness(material, fe, mapping, discretization);
+    system.assemble(dof_handler, cell_stiffness, {}); // contact enters as nodal forces: nothing prescribed
+    setup_time.assemble = seconds_since(start);
+  }
+
+
+
+  Vector<double> UnilateralContactSolver::surface_response(const FullMatrix<double> &D, const unsigned int k,
+                                                           double &factorize_seconds)
+  {
+    Vector<double> b(dof_handler.n_dofs()), reaction;
+    for (unsigned int i = 0; i < D.m(); ++i)
+      b[candidates[i]] = D(i, k);
+    const Vector<double> u = system.solve(false, {}, b, reaction, factorize_seconds);
+    Vector<double>       column(D.m());
+    for (unsigned int i = 0; i < D.m(); ++i)
+      column[i] = u[candidates[i]];
+    return column;
+  }
+
+
+
+  void UnilateralContactSolver::build_compliance()
+  {
+    // (C D)_ik = u_i of the nodal forces of the pressure psi_k: one back-substitution per vertex. The
+    // time counts as setup (the factorisation as this solver's factorize, reported by the first run).
+    const auto         start = std::chrono::steady_clock::now();
+    const unsigned int n = all.D.m(), m = all.D.n();
+    all.CD.reinit(n, m);
+    for (unsigned int k = 0; k < m; ++k)
+      {
+        double               factor = 0;
+        const Vector<double> column = surface_response(all.D, k, factor);
+        setup_time.factorize += factor;
+        for (unsigned int i = 0; i < n; ++i)
+          all.CD(i, k) = column[i];
+      }
+    all.K = contact_matrix(all.D, all.CD);
+    setup_time.setup += seconds_since(start) - setup_time.factorize;
+  }
+
+
+
+  UnilateralContactSolver::SurfaceOperator UnilateralContactSolver::surface_operator(const Indenter &indenter)
+  {
+    if (candidate_r.back() <= indenter.extent * (1 + node_tolerance))
+      return all;
+    // The faces up to the extent. The pressure of every vertex but the last has the same nodal forces
+    // as on all faces (a leading block of C D); the last one's half hat needs one more solve.
+    SurfaceOperator    op;
+    SurfaceCoupling    coupling = linear_density_coupling(surface_faces, 1, indenter.extent, discretization.degree + 2);
+    const unsigned int n = coupling.dofs.size(), m = coupling.vertex_r.size();
+    if (n == 0)
+      fail("UnilateralLoad (" + indenter.name + ")", "extent", indenter.extent, "at least one surface face wide");
+    for (unsigned int i = 0; i < n; ++i)
+      AssertThrow(coupling.dofs[i] == candidates[i], ExcInternalError());
+    op.D = std::move(coupling.matrix);
+    op.M = std::move(coupling.vertex_mass);
+    op.CD.reinit(n, m);
+    for (unsigned int i = 0; i < n; ++i)
+      for (unsigned int k = 0; k + 1 < m; ++k)
+        op.CD(i, k) = all.CD(i, k);
+    double               unused = 0;
+    const Vector<double> last   = surface_response(op.D, m - 1, unused);
+    for (unsigned int i = 0; i < n; ++i)
+      op.CD(i, m - 1) = last[i];
+    op.K = contact_matrix(op.D, op.CD);
+    return op;
+  }
+
+
+
+  UnilateralContactSolver::ActiveSetSolution
+  UnilateralContactSolver::solve_active_set(const UnilateralLoad &load, const SurfaceOperator &op,
+                                            const std::vector<double> &f) const
+  {
+    const unsigned int n        = op.D.m(); // displacement nodes
+    const unsigned int m        = op.D.n(); // pressure vertices
+    const bool         by_force = load.control == ContactControl::force;
+    const double       target   = load.force / (2 * numbers::PI); // 1^T D p
+
+    // D^T 1 and D^T f: the weighted unit depth and profile.
+    Vector<double> ones(n), fv(n), D1(m), Df(m);
+    for (unsigned int i = 0; i < n; ++i)
+      {
+        ones[i] = 1;
+        fv[i]   = f[i];
+      }
+    op.D.Tvmult(D1, ones);
+    op.D.Tvmult(Df, fv);
+    // The geometric overlap at the vertices (the profile interpolated there).
+    std::vector<double> f_vertex(m);
+    for (unsigned int k = 0; k < m; ++k)
+      f_vertex[k] = load.indenter.f(vertex_r[k]);
+
+    // The state of an active set: p on it (0 elsewhere), lambda = D p, u = C lambda, the weighted gaps
+    // w = D^T (u - (d - f)); the depth given or found.
+    const auto state = [&](const std::vector<bool> &active, ActiveSetSolution &s) {
+      std::vector<unsigned int> I;
+      for (unsigned int k = 0; k < m; ++k)
+        if (active[k])
+          I.push_back(k);
+      const unsigned int a_size = I.size();
+      s.p.assign(m, 0.0);
+      s.depth = by_force ? 0.0 : load.depth;
+      if (a_size > 0)
+        {
+          const unsigned int       size = a_size + (by_force ? 1 : 0);
+          LAPACKFullMatrix<double> K(size, size);
+          Vector<double>           rhs(size);
+          for (unsigned int a = 0; a < a_size; ++a)
+            {
+              for (unsigned int b = 0; b < a_size; ++b)
+                K(a, b) = op.K(I[a], I[b]);
+              rhs[a] = by_force ? -Df[I[a]] : load.depth * D1[I[a]] - Df[I[a]];
+              if (by_force)
+                {
+                  K(a, a_size) = -D1[I[a]];
+                  K(a_size, a) = D1[I[a]];
+                }
+            }
+          if (by_force)
+            rhs[a_size] = target;
+          K.compute_lu_factorization();
+          K.solve(rhs);
+          for (unsigned int a = 0; a < a_size; ++a)
+            s.p[I[a]] = rhs[a];
+          if (by_force)
+            s.depth = rhs[a_size];
+        }
+      Vector<double> pv(m), lambda(n), u(n), h(n), w(m);
+      for (unsigned int k = 0; k < m; ++k)
+        pv[k] = s.p[k];
+      op.D.vmult(lambda, pv);
+      op.CD.vmult(u, pv);
+      for (unsigned int i = 0; i < n; ++i)
+        h[i] = u[i] - s.depth + f[i];
+      op.D.Tvmult(w, h);
+      s.lambda.assign(lambda.begin(), lambda.end());
+      s.u.assign(u.begin(), u.end());
+      s.weighted_gap.assign(w.begin(), w.end());
+      s.active = active;
+    };
+
+    // The start: the geometric overlap (force control: the lowest vertex of the indenter alone).
+    std::vector<bool> active(m, false);
+    if (by_force)
+      active[std::min_element(f_vertex.begin(), f_vertex.end()) - f_vertex.begin()] = true;
+    else
+      for (unsigned int k = 0; k < m; ++k)
+        active[k] = load.depth - f_vertex[k] > 0;
+
+    ActiveSetSolution           s;
+    std::set<std::vector<bool>> seen;
+    bool                        least_index = false;
+    const unsigned int          max_steps   = 50 + 4 * m;
+    for (unsigned int step = 1;; ++step)
+      {
+        state(active, s);
+        s.iterations = step;
+        double p_max = 0, w_scale = 0;
+        for (unsigned int k = 0; k < m; ++k)
+          {
+            p_max   = std::max(p_max, std::abs(s.p[k]));
+            w_scale = std::max(w_scale, std::abs(D1[k]) * std::abs(s.depth));
+          }
+        for (unsigned int i = 0; i < n; ++i)
+          w_scale = std::max(w_scale, std::abs(s.u[i]) * op.D.linfty_norm());
+        // The vertices that violate their condition: free with a negative weighted gap, or in a run of
+        // contact vertices with tensile pressures that ends a contact zone or is tensile as a whole (the
+        // forces (M p)_k of its vertices' shares, M >= 0). Next to a singular edge (the corner of a
+        // punch) the linear pressure alternates in sign while the force there is compressive: such a
+        // run stays in contact. Without such runs this is the PDAS update.
+        Vector<double> pv(m), share(m);
+        for (unsigned int k = 0; k < m; ++k)
+          pv[k] = s.p[k];
+        op.M.vmult(share, pv);
+        const double      share_max       = share.linfty_norm();
+        std::vector<bool> next            = active;
+        unsigned int      first_violation = m;
+        const auto        violates        = [&](const unsigned int k) {
+          next[k]         = !active[k];
+          first_violation = std::min(first_violation, k);
+        };
+        for (unsigned int k = 0; k < m; ++k)
+          if (!active[k] && s.weighted_gap[k] < -gap_zero * w_scale)
+            violates(k);
+        for (unsigned int k = 0; k < m;)
+          {
+            if (!(active[k] && s.p[k] < -force_zero * p_max))
+              {
+                ++k;
+                continue;
+              }
+            unsigned int end = k; // the run [k, end)
+            double       sum = 0;
+            while (end < m && active[end] && s.p[end] < -force_zero * p_max)
+              sum += share[end++];
+            const bool zone_end = k == 0 || !active[k - 1] || end == m || !active[end];
+            if (zone_end || sum < -force_zero * share_max)
+              for (unsigned int j = k; j < end; ++j)
+                violates(j);
+            k = end;
+          }
+        if (first_violation == m)
+          return s;
+        if (step >= max_steps)
+          {
+            std::ostringstream msg;
+            msg << "unilateral contact (" << load.indenter.name << "): the active set did not settle after " << step
+                << " steps (" << s.least_index_steps << " by the least-index rule), "
+                << std::count(active.begin(), active.end(), true) << " of " << m << " candidate vertices in contact";
+            throw std::runtime_error(msg.str());
+          }
+        seen.insert(active);
+        if (!least_index && seen.count(next))
+          least_index = true; // a cycle: from here on one vertex a step
+        if (least_index)
+          {
+            next                  = active;
+            next[first_violation] = !active[first_violation];
+            ++s.least_index_steps;
+          }
+        active = next;
+      }
+  }
+
+
+
+  void UnilateralContactSolver::edges(const UnilateralLoad &load, const ActiveSetSolution &s,
+                                      const std::vector<double> &f, UnilateralResult &result) const
+  {
+    const unsigned int m = s.active.size();
+    for (unsigned int k = 0; k < m; ++k)
+      if (s.active[k])
+        {
+          if (k == 0 || !s.active[k - 1])
+            result.zones.push_back({vertex_r[k], vertex_r[k]});
+          result.zones.back().r_out = vertex_r[k];
+          ++result.active_nodes;
+        }
+    if (result.zones.empty())
+      return;
+    const double r_e = result.zones.back().r_out;
+    if (r_e >= vertex_r[m - 1] * (1 - node_tolerance))
+      {
+        // The contact reaches the last vertex: the indenter's edge, or the candidate radius.
+        if (m < vertex_r.size() || r_e >= load.indenter.extent * (1 - node_tolerance))
+          {
+            result.edge_at_extent = true;
+            result.outer_edge     = r_e;
+            result.edge_bracket   = {r_e, r_e};
+            return;
+          }
+        std::ostringstream msg;
+        msg << "unilateral contact (" << load.indenter.name << "): the contact reaches the candidate radius "
+            << candidate_limit << "; solve with a larger one";
+        throw std::runtime_error(msg.str());
+      }
+    const unsigned int e = std::lower_bound(vertex_r.begin(), vertex_r.begin() + m, r_e * (1 - node_tolerance)) -
+                           vertex_r.begin();
+    result.edge_bracket = {r_e, vertex_r[e + 1]};
+    result.outer_edge   = r_e;
+    // Sub-node estimates. From the pressure at the last two vertices in contact, p = K (a - r)^alpha,
+    // alpha = (1 + s)/2 (9.26; s the surface exponent of E); from the gaps of the next two displacement
+    // nodes outside, h = K (r - a)^beta, beta = (3 + s)/2. Each is kept only inside the bracket.
+    const double exponent_s = material.modulus->surface_exponent();
+    // An estimate a little outside the bracket (the edge on a node, round-off) is clamped into it.
+    const double width      = result.edge_bracket.second - result.edge_bracket.first;
+    const auto   in_bracket = [&](double &x) {
+      if (!std::isfinite(x) || x < result.edge_bracket.first - 0.25 * width ||
+          x > result.edge_bracket.second + 0.25 * width)
+        return false;
+      x = std::clamp(x, result.edge_bracket.first, result.edge_bracket.second);
+      return true;
+    };
+    if (e >= 1 && s.active[e - 1] && s.p[e] > 0 && s.p[e - 1] > s.p[e])
+      {
+        const double gamma = 2 / (1 + exponent_s);
+        const double q1 = std::pow(s.p[e - 1], gamma), q2 = std::pow(s.p[e], gamma);
+        double       x  = vertex_r[e] + q2 * (vertex_r[e] - vertex_r[e - 1]) / (q1 - q2);
+        if (in_bracket(x))
+          result.edge_from_pressure = x;
+      }
+    const unsigned int n = f.size();
+    unsigned int       i = 0;
+    while (i < n && candidate_r[i] <= r_e * (1 + node_tolerance))
+      ++i;
+    if (i + 1 < n)
+      {
+        const double beta = (3 + exponent_s) / 2;
+        const double r1 = candidate_r[i], r2 = candidate_r[i + 1];
+        const double h1 = s.u[i] - (s.depth - f[i]), h2 = s.u[i + 1] - (s.depth - f[i + 1]);
+        if (h1 > 0 && h2 > h1)
+          {
+            const double q1 = std::pow(h1, 1 / beta), q2 = std::pow(h2, 1 / beta);
+            double       x  = r1 - q1 * (r2 - r1) / (q2 - q1);
+            if (in_bracket(x))
+              result.edge_from_gap = x;
+          }
+      }
+    result.outer_edge = std::isfinite(result.edge_from_pressure) ? result.edge_from_pressure :
+                        std::isfinite(result.edge_from_gap)      ? result.edge_from_gap :
+                                                                   0.5 * (r_e + result.edge_bracket.second);
+  }
+
+
+
+  void UnilateralContactSolver::sample(const Vector<double> &u, const std::vector<double> &p,
+                                       const OutputRequest &outputs, UnilateralResult &result) const
+  {
+    const double edge = result.zones.empty() ? 0 : result.zones.back().r_out;
+    for (const double r : outputs.pressure_radii)
+      {
+        if (!(r >= 0 && r <= edge * (1 + node_tolerance)))
+          fail("UnilateralContactSolver output", "pressure radius", r,
+               "within the contact [0, " + std::to_string(edge) + "]");
+        // p is linear between the vertices.
+        const auto         it = std::upper_bound(vertex_r.begin(), vertex_r.begin() + p.size(), r);
+        const unsigned int k  = std::min<std::size_t>(std::max<std::ptrdiff_t>(it - vertex_r.begin(), 1), p.size() - 1);
+        const double       t  = (r - vertex_r[k - 1]) / (vertex_r[k] - vertex_r[k - 1]);
+        result.pressure.push_back({r, (1 - t) * p[k - 1] + t * p[k]});
+      }
+    for (const double r : outputs.displacement_radii)
+      {
+        const SurfaceFace *face = find_face(surface_faces, r);
+        if (!face)
+          fail("UnilateralContactSolver output", "displacement radius", r,
+               "on the surface [0, " + std::to_string(surface_faces.back().r1) + "]");
+        result.displacement.push_back({r, face_value(*face, 1, u, r)});
+      }
+    if (!outputs.vtu_file.empty())
+      {
+        DataOut<2> data_out;
+        data_out.attach_dof_handler(dof_handler);
+        std::vector<std::string> names{"u_r", "u_z"};
+        if (used_formulation == Formulation::mixed)
+          names.push_back("q");
+        data_out.add_data_vector(u, names);
+        write_vtu(data_out, mapping, discretization.degree, outputs.vtu_file, "UnilateralContactSolver");
+      }
+  }
+
+
+
+  UnilateralResult UnilateralContactSolver::run(const UnilateralLoad &load, const OutputRequest &outputs)
+  {
+    load.validate();
+    UnilateralResult result;
+    result.start(setup_time, dof_handler.n_dofs(), triangulation.n_active_cells(), mesh_info);
+    setup_time.factorize = 0; // reported once, by the first run
+
+    const auto            start = std::chrono::steady_clock::now();
+    const SurfaceOperator op    = surface_operator(load.indenter);
+    const unsigned int    n     = op.D.m();
+    result.candidate_nodes      = op.D.n();
+    std::vector<double> f(n);
+    for (unsigned int i = 0; i < n; ++i)
+      {
+        f[i] = load.indenter.f(candidate_r[i]);
+        if (!std::isfinite(f[i]))
+          fail("UnilateralLoad (" + load.indenter.name + ")", "f(r) at r = " + std::to_string(candidate_r[i]), f[i],
+               "finite");
+      }
+    const ActiveSetSolution s = solve_active_set(load, op, f);
+    result.depth             = s.depth;
+    result.iterations        = s.iterations;
+    result.least_index_steps = s.least_index_steps;
+    double sum               = 0;
+    for (const double l : s.lambda)
+      sum += l;
+    result.force = 2 * numbers::PI * sum;
+    edges(load, s, f, result);
+    for (unsigned int i = 0; i < n; ++i)
+      {
+        result.nodal_gap.push_back({candidate_r[i], s.u[i] - (s.depth - f[i])});
+        result.nodal_force.push_back({candidate_r[i], 2 * numbers::PI * s.lambda[i]});
+      }
+
+    // The field of the contact forces, and the energy check u.Au = lambda.u.
+    Vector<double> b(dof_handler.n_dofs()), reaction;
+    for (unsigned int i = 0; i < n; ++i)
+      b[candidates[i]] = s.lambda[i];
+    double         unused = 0;
+    Vector<double> u      = system.solve(false, {}, b, reaction, unused);
+    if (result.active_nodes > 0)
+      result.record(check_energy(system.energy(u), b * u, mesh_info.min_surface_cell));
+    result.time.solve = seconds_since(start);
+
+    const auto post = std::chrono::steady_clock::now();
+    sample(u, s.p, outputs, result);
+    result.time.postprocess = seconds_since(post);
+    return result;
+  }
+
+
+
+  UnilateralResult solve_remeshed(const Material &material, const Settings &settings, const UnilateralLoad &load,
+                                  const double first_radius, const OutputRequest &outputs, const double tolerance,
+                                  const unsigned int max_meshes, const double candidate_factor)
+  {
+    if (!(first_radius > 0) || !std::isfinite(first_radius))
+      fail("solve_remeshed", "first_radius", first_radius, "(0, inf)");
+    if (!(tolerance > 0))
+      fail("solve_remeshed", "tolerance", tolerance, "(0, inf)");
+    if (max_meshes < 1)
+      fail("solve_remeshed", "max_meshes", max_meshes, ">= 1");
+    double             radius = first_radius;
+    std::ostringstream history;
+    history << "edges found on meshes graded toward";
+    for (unsigned int m = 1;; ++m)
+      {
+        MeshParameters mesh = settings.mesh;
+        mesh.contact_radius = radius;
+        UnilateralContactSolver solver(material, mesh, settings.discretization, candidate_factor * radius);
+        UnilateralResult        result = solver.run(load, outputs);
+        if (result.zones.empty())
+          throw std::runtime_error("solve_remeshed (" + load.indenter.name + "): no contact at this load");
+        history << " " << radius << " -> " << result.outer_edge << ";";
+        const double change = std::abs(result.outer_edge - radius) / radius;
+        if (change <= tolerance || result.edge_at_extent)
+          return result;
+        if (m == max_meshes)
+          {
+            result.message += " remeshing stopped after " + std::to_string(m) + " meshes (" + history.str() + ")";
+            result.reliable = false;
+            return result;
+          }
+        radius = result.outer_edge;
+      }
+  }
+} // namespace gradcontact::fem

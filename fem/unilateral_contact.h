@@ -1,0 +1,205 @@
+// Unilateral (Signorini) frictionless contact of a rigid axisymmetric indenter of any profile with the
+// graded half-space: the contact set is found, not prescribed. It may be a disc, an annulus (a concave
+// punch short of complete contact), several rings (a wavy profile), or end at the indenter's own edge
+// (a flat punch with rounded edges, a concave punch).
+//
+// Model. The meridian model of AxisymmetricSolver (the same mesh, element, quadrature and stiffness A,
+// fem/axisymmetric_solver.h). The indenter surface is z = d - f(r) on 0 <= r <= R_i (its extent), d the
+// depth at the axis; g(r) = d - f(r) is the displacement it imposes where it touches. The candidates are
+// the surface faces with r <= min(candidate radius, R_i): their z-DoFs u_S and their vertices r_k.
+//
+// Contact (a mortar discretisation, as for a rigid obstacle with a piecewise linear multiplier): the
+// pressure is p_h = sum_k p_k psi_k with the hat functions psi_k of the surface vertices, its nodal forces
+// are lambda = D p, D_ik = \int phi_i psi_k r dr (phi_i the trace basis of u_z), and the contact
+// conditions hold per vertex with the weighted gaps w = D^T (u_S - g):
+//   p_k >= 0,  w_k >= 0,  p_k w_k = 0.
+// A linear pressure on the vertices stays positive where the nodal forces of a degree >= 2 element change
+// sign (at the axis, where the r-weight makes them vanish, and next to a steep edge). Condensed on S,
+// u_S = C lambda with C = (A^{-1})_SS, so w = K p - D^T g with K = D^T C D, symmetric positive definite;
+// C D takes one back-substitution per vertex with the factorisation of the free problem, built once and
+// reused by every load. F_N = 2 pi 1^T lambda.
+//
+// Algorithm. The primal-dual active set method (Hintermueller, Ito, Kunisch, SIAM J. Optim. 13 (2003)
+// 865-888; deal.II step-41) on this linear complementarity problem: with the active vertices I,
+//   depth control:  K_II p_I = (D^T g)_I;
+//   force control:  K_II p_I - d (D^T 1)_I = -(D^T f)_I,  1^T D p = F / (2 pi);
+// then I <- {k in I : p_k >= 0} u {k not in I : w_k < 0}. Its convergence is proven for M-matrices,
+// which K is not; a set met before (a cycle) switches to Murty's least-index rule, one vertex a step
+// (the one of smallest r that violates its condition), which ends for a symmetric positive definite K
+// (Murty, Linear Algebra Appl. 8 (1974) 223-230). Next to a singular edge (the corner of a punch, p ~
+// (a - r)^{-(1-k)/2}) a linear pressure alternates in sign while the force there is compressive: a run of
+// tensile vertices inside a zone is released only when the forces (M p)_k of its vertices' shares sum to
+// a tensile force (M the non-negative mass matrix of the hat functions); at a zone's end it is released
+// as PDAS would. A run that does not settle within 50 + 4 m steps (m vertices) stops with its counts.
+//
+// Contact edges. The outer edge of the outermost zone lies between its last vertex in contact and the
+// next vertex (`edge_bracket`). Inside it: p ~ K (a - r)^{(1+s)/2} at the last two vertices (9.26, s the
+// surface exponent of E), or the gaps outside, h ~ K (r - a)^{(3+s)/2}, when these are monotone; else the
+// bracket's middle. `solve_remeshed` remeshes with the mesh graded toward the edge found until it moves by
+// less than a tolerance, so that the bracket is the mesh's h_edge.
+#ifndef GRADCONTACT_FEM_UNILATERAL_CONTACT_H
+#define GRADCONTACT_FEM_UNILATERAL_CONTACT_H
+
+#include <fem/direct_system.h>
+#include <fem/discretization.h>
+#include <fem/loads.h>
+#include <fem/modulus.h>
+#include <fem/surface_trace.h>
+
+#include <deal.II/dofs/dof_handler.h>
+#include <deal.II/fe/fe_system.h>
+#include <deal.II/fe/mapping_q1.h>
+#include <deal.II/grid/tria.h>
+#include <deal.II/lac/full_matrix.h>
+
+#include <functional>
+#include <limits>
+#include <string>
+#include <vector>
+
+namespace gradcontact::fem
+{
+  /// A rigid axisymmetric indenter for unilateral contact: its surface is z = d - f(r) for r <= extent.
+  struct Indenter
+  {
+    std::function<double(double)> f;                                       ///< the profile f(r)
+    double extent = std::numeric_limits<double>::infinity();               ///< the indenter's radius R_i
+    std::string name = "indenter";                                         ///< for messages
+
+    /// A profile of loads.h; the concave paraboloid ends at its radius a.
+    static Indenter of(const Profile &profile, double a);
+    /// f from a table (r_j, f_j), r ascending from 0, linear in between; the extent is the last r_j.
+    static Indenter table(std::vector<double> r, std::vector<double> f);
+    void validate() const;
+  };
+
+  enum class ContactControl
+  {
+    depth, ///< d given
+    force  ///< F_N given, d found
+  };
+
+  struct UnilateralLoad
+  {
+    Indenter       indenter;
+    ContactControl control = ContactControl::depth;
+    double         depth   = 0; ///< d (depth control)
+    double         force   = 0; ///< F_N > 0 (force control)
+    void           validate() const;
+  };
+
+  /// One contact zone between nodes: r_in = 0 for a disc.
+  struct ContactZone
+  {
+    double r_in  = 0; ///< innermost node in contact
+    double r_out = 0; ///< outermost node in contact
+  };
+
+  struct UnilateralResult : RunReport
+  {
+    double depth = 0; ///< d (given or found)
+    double force = 0; ///< F_N = 2 pi sum lambda
+    std::vector<ContactZone> zones; ///< ascending r
+    /// The outer edge of the outermost zone: between its last vertex in contact and the next vertex
+    /// (`edge_bracket`): the pressure or the gap estimate when one applies, else the bracket's middle;
+    /// the indenter's extent when the contact reaches it.
+    double                    outer_edge = 0;
+    std::pair<double, double> edge_bracket{0, 0};
+    bool                      edge_at_extent = false;
+    /// The two estimates inside the bracket (NaN when the data do not allow one): from the pressures of
+    /// the last two vertices in contact, and from the gaps of the next two nodes outside.
+    double edge_from_pressure = std::numeric_limits<double>::quiet_NaN();
+    double edge_from_gap      = std::numeric_limits<double>::quiet_NaN();
+    unsigned int active_nodes = 0, candidate_nodes = 0;
+    unsigned int iterations   = 0; ///< active-set steps (PDAS and least-index together)
+    unsigned int least_index_steps = 0; ///< of which after a cycle
+    std::vector<Sample> pressure;       ///< p(r), the nodal pressures' interpolant (r <= the outermost node in contact)
+    std::vector<Sample> displacement;   ///< w(r) = u_z(r, 0)
+    std::vector<Sample> nodal_gap;      ///< h at the candidate nodes (0 in contact)
+    std::vector<Sample> nodal_force;    ///< 2 pi lambda at the candidate nodes: the force of each node's ring
+  };
+
+  class UnilateralContactSolver
+  {
+  public:
+    /// The mesh of `mesh` (graded toward its contact radius, the expected edge), refined toward
+    /// `refinement` (e.g. an inner edge), and the candidates r <= candidate_radius (physical units).
+    /// Throws std::invalid_argument on bad input.
+    UnilateralContactSolver(const Material &material, const MeshParameters &mesh,
+                            const DiscretizationParameters &discretization, double candidate_radius,
+                            const SurfaceRefinement &refinement = {});
+    ~UnilateralContactSolver();
+
+    /// Solves one load. std::runtime_error when the active set does not settle (counts in the
+    /// message) or the contact reaches the candidate radius.
+    UnilateralResult run(const UnilateralLoad &load, const OutputRequest &outputs = {});
+
+    unsigned int n_dofs() const { return dof_handler.n_dofs(); }
+    unsigned int n_candidates() const { return candidates.size(); }
+
+  private:
+    void make_grid(const MeshParameters &mesh, const SurfaceRefinement &refinement);
+    void setup_system(double candidate_radius);
+    void assemble_system();
+    void build_compliance();
+
+    struct ActiveSetSolution
+    {
+      std::vector<bool>   active;
+      std::vector<double> p, lambda, u, weighted_gap; ///< at the candidates
+      double              depth = 0;
+      unsigned int        iterations = 0, least_index_steps = 0;
+    };
+    /// The condensed problem on the leading candidates.
+    struct SurfaceOperator
+    {
+      dealii::FullMatrix<double> D; ///< coupling of the vertex pressures to the nodal forces
+      dealii::FullMatrix<double> CD; ///< (A^{-1})_SS D: the surface displacements of each vertex pressure
+      dealii::FullMatrix<double> K;  ///< D^T C D
+      dealii::FullMatrix<double> M; ///< the vertex mass matrix (forces of the vertices' shares of p)
+    };
+    /// The operator of the candidates the indenter can reach (r <= its extent).
+    SurfaceOperator   surface_operator(const Indenter &indenter);
+    /// The candidates' displacements under the nodal forces of column k of D (one back-substitution).
+    dealii::Vector<double> surface_response(const dealii::FullMatrix<double> &D, unsigned int k,
+                                            double &factorize_seconds);
+    ActiveSetSolution solve_active_set(const UnilateralLoad &load, const SurfaceOperator &op,
+                                       const std::vector<double> &f) const;
+    void              edges(const UnilateralLoad &load, const ActiveSetSolution &s, const std::vector<double> &f,
+                            UnilateralResult &result) const;
+    void sample(const dealii::Vector<double> &u, const std::vector<double> &p, const OutputRequest &outputs,
+                UnilateralResult &result) const;
+
+    const Material                 material;
+    const DiscretizationParameters discretization;
+    const Formulation              used_formulation;
+
+    dealii::Triangulation<2>   triangulation;
+    MeshInfo                   mesh_info;
+    const dealii::FESystem<2>  fe;
+    dealii::DoFHandler<2>      dof_handler;
+    const dealii::MappingQ1<2> mapping;
+
+    dealii::AffineConstraints<double> constraints;
+    DirectSystem                      system; ///< A; no prescribed DoFs (contact enters as nodal forces)
+
+    std::vector<SurfaceFace>                     surface_faces;
+    std::vector<dealii::types::global_dof_index> candidates;  ///< surface z-DoFs, ascending r
+    std::vector<double>                          candidate_r; ///< their radii
+    std::vector<double>                          vertex_r;    ///< the surface vertices of the candidate faces
+    double                                       candidate_limit = 0;
+    SurfaceOperator                              all;         ///< the operator of every candidate
+    Timings                                      setup_time;
+  };
+
+  /// Solves `load` on meshes graded toward the outer edge found, starting at `first_radius`, until the
+  /// edge moves by less than `tolerance` (relative) or after `max_meshes` meshes; the candidate radius
+  /// is `candidate_factor` times the mesh's radius. Settings give everything else (the mesh's contact
+  /// radius is replaced). The result of the last mesh; its message records the sequence of edges.
+  UnilateralResult solve_remeshed(const Material &material, const Settings &settings, const UnilateralLoad &load,
+                                  double first_radius, const OutputRequest &outputs = {},
+                                  double tolerance = 1e-6, unsigned int max_meshes = 6,
+                                  double candidate_factor = 1.6);
+} // namespace gradcontact::fem
+
+#endif
