@@ -8,6 +8,7 @@
 #include <analytic/material.h>
 #include <analytic/mdr.h>
 #include <fem/axisymmetric_solver.h>
+#include <fem/unilateral_contact.h>
 
 #include <deal.II/base/function_parser.h>
 #include <deal.II/base/point.h>
@@ -51,6 +52,41 @@ namespace gradcontact::cases
       double seconds;
     };
 
+    /// Load/contact = unilateral: the contact set found on meshes graded toward the edge found (from Load/a),
+    /// as an fem::Result (the contact radius is the outer edge; r/a of p(r) beyond the contact are left out
+    /// and said in the message).
+    fem::Result run_unilateral(const Scene &s, const FeModel &model, const fem::OutputRequest &out)
+    {
+      fem::UnilateralLoad load;
+      load.indenter = fem::Indenter::of(model.load.profile, s.load.a);
+      const bool by_force = s.load.type != Type::concave_punch && s.load.control == Control::force;
+      load.control        = by_force ? fem::ContactControl::force : fem::ContactControl::depth;
+      load.depth          = s.load.depth;
+      load.force          = s.load.force;
+      const fem::UnilateralResult u = fem::solve_remeshed(model.material, model.settings, load, s.load.a, out);
+      fem::Result r;
+      static_cast<fem::RunReport &>(r) = u;
+      r.force          = u.force;
+      r.depth          = u.depth;
+      r.contact_radius = u.outer_edge;
+      r.edge_node_radius   = u.edge_bracket.first;
+      r.active_set_size    = u.active_nodes;
+      r.iterations         = u.iterations;
+      r.pressure           = u.pressure;
+      r.displacement       = u.displacement;
+      r.consistent_contact = u.zones.size() == 1;
+      if (u.zones.size() != 1)
+        {
+          r.message += " unilateral contact in " + std::to_string(u.zones.size()) + " zones (r/a):";
+          for (const fem::ContactZone &z : u.zones)
+            r.message += " [" + format(z.r_in / s.load.a) + ", " + format(z.r_out / s.load.a) + "]";
+          r.message += ";";
+        }
+      if (!u.zones.empty() && u.zones.front().r_in > 0)
+        r.message += " the contact is an annulus from r = " + format(u.zones.front().r_in) + ";";
+      return r;
+    }
+
     FeRun run_fe(const Scene &s, const unsigned int refinement, const fs::path &folder)
     {
       const auto start = std::chrono::steady_clock::now();
@@ -59,7 +95,6 @@ namespace gradcontact::cases
       // toward (0, 0) (fem/README.md, "Accuracy and cost", cone axis: p L2 2.8e-4 -> 5.4e-6 at k = 0).
       if (s.load.type == Type::cone || (s.load.type == Type::power_law && s.load.n < 2))
         model.settings.mesh.axis_refinements = 12;
-      fem::AxisymmetricSolver solver(model.material, model.settings.mesh, model.settings.discretization);
       fem::OutputRequest out;
       for (const double x : s.outputs.pressure_radii)
         out.pressure_radii.push_back(x * s.load.a);
@@ -67,7 +102,9 @@ namespace gradcontact::cases
         out.displacement_radii.push_back(x * s.load.a);
       if (s.outputs.vtu)
         out.vtu_file = (folder / ("fields-" + std::to_string(refinement) + ".vtu")).string();
-      fem::Result r = solver.run(model.load, out);
+      const fem::Result r = s.load.contact == LoadParameters::Contact::unilateral ? run_unilateral(s, model, out) :
+                            fem::AxisymmetricSolver(model.material, model.settings.mesh,
+                                                    model.settings.discretization).run(model.load, out);
       return {refinement, r, std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count()};
     }
 

@@ -88,6 +88,11 @@ namespace gradcontact::cases
                       "indenter A r^n (9.30), concave punch in complete contact (9.34), constant pressure (9.40).");
     prm.declare_entry("control", "contact radius", Patterns::Selection("contact radius|depth|force"),
                       "Curved indenters: what is prescribed.");
+    prm.declare_entry("contact", "disc", Patterns::Selection("disc|unilateral"),
+                      "Curved indenters and the concave punch: disc = the contact zone is the disc r <= a (found "
+                      "among discs under depth or force control); unilateral = the contact set is found by the "
+                      "Signorini conditions (an annulus, a concave punch short of complete contact), the mesh "
+                      "graded toward the edge found; needs Load/control = depth or force (curved indenters).");
     prm.declare_entry("a", "1e-4", Patterns::Double(0.), "Contact radius (punch radius, loaded radius) [m].");
     prm.declare_entry("depth", "1e-6", Patterns::Double(), "Depth d (flat punch, depth control) or centre displacement d0 (concave punch) [m].");
     prm.declare_entry("force", "1e-2", Patterns::Double(0.), "Normal force (force control) [N].");
@@ -111,6 +116,7 @@ namespace gradcontact::cases
                                   : Type::constant_pressure;
     const std::string c = prm.get("control");
     control = c == "contact radius" ? Control::contact_radius : (c == "depth" ? Control::depth : Control::force);
+    contact = prm.get("contact") == "unilateral" ? Contact::unilateral : Contact::disc;
     a = prm.get_double("a");
     depth = prm.get_double("depth");
     force = prm.get_double("force");
@@ -427,6 +433,19 @@ namespace gradcontact::cases
   SceneKind scene_kind(const Scene &s)
   {
     const std::string where = "scene " + s.file + ": ";
+    if (s.load.contact == LoadParameters::Contact::unilateral)
+      {
+        using Type = LoadParameters::Type;
+        if (s.load.type == Type::flat_punch || s.load.type == Type::constant_pressure)
+          throw std::invalid_argument(where + "Load/contact = unilateral needs an indenter (Load/type = paraboloid, "
+                                      "cone, power law or concave punch)");
+        if (s.load.type != Type::concave_punch && s.load.control == LoadParameters::Control::contact_radius)
+          throw std::invalid_argument(where + "Load/contact = unilateral finds the contact radius: Load/control "
+                                      "must be depth or force");
+        if (s.tangential.enabled() || s.adhesion.enabled(s.load) || !s.candidate.profile.empty())
+          throw std::invalid_argument(where + "Load/contact = unilateral is a normal-contact scene (no Adhesion, "
+                                      "Tangential or Candidate entries)");
+      }
     if (s.tangential.enabled())
       {
         if (s.adhesion.enabled(s.load))

@@ -55,8 +55,14 @@ namespace gradcontact::cases
       depth,
       force
     };
+    enum class Contact
+    {
+      disc,      ///< the contact zone is the disc r <= a (fem::AxisymmetricSolver)
+      unilateral ///< the contact set is found (Signorini; fem::UnilateralContactSolver)
+    };
     Type type = Type::flat_punch;
     Control control = Control::contact_radius;
+    Contact contact = Contact::disc;
     double a = 1e-4;      ///< contact radius (punch radius, loaded radius)
     double depth = 1e-6;  ///< d (flat punch, depth control), d0 (concave punch)
     double force = 1e-2;  ///< F_N (force control)

@@ -26,6 +26,8 @@ namespace gradcontact::fem
     /// the dense solves; the nodes at an edge carry values of that size).
     constexpr double force_zero = 1e-12;
     constexpr double gap_zero   = 1e-12;
+    /// Contact zones closer than this fraction of their radius are reported as one (UnilateralResult::zones).
+    constexpr double zone_merge_distance = 1e-3;
 
     /// K = D^T (C D), the weighted gaps of the vertex pressures: symmetric positive definite
     /// (symmetrised against the round-off of the back-substitutions).
@@ -414,6 +416,15 @@ namespace gradcontact::fem
         }
     if (result.zones.empty())
       return;
+    // Zones less than zone_merge_distance r apart are one: next to a smooth edge, where p -> 0, the linear
+    // pressure alternates in sign over a few vertices of the edge grading.
+    std::vector<ContactZone> merged{result.zones.front()};
+    for (std::size_t z = 1; z < result.zones.size(); ++z)
+      if (result.zones[z].r_in - merged.back().r_out <= zone_merge_distance * result.zones[z].r_in)
+        merged.back().r_out = result.zones[z].r_out;
+      else
+        merged.push_back(result.zones[z]);
+    result.zones = merged;
     const double r_e = result.zones.back().r_out;
     if (r_e >= vertex_r[m - 1] * (1 - node_tolerance))
       {
@@ -483,17 +494,25 @@ namespace gradcontact::fem
                                        const OutputRequest &outputs, UnilateralResult &result) const
   {
     const double edge = result.zones.empty() ? 0 : result.zones.back().r_out;
+    unsigned int outside = 0;
     for (const double r : outputs.pressure_radii)
       {
-        if (!(r >= 0 && r <= edge * (1 + node_tolerance)))
-          fail("UnilateralContactSolver output", "pressure radius", r,
-               "within the contact [0, " + std::to_string(edge) + "]");
+        if (!(r >= 0))
+          fail("UnilateralContactSolver output", "pressure radius", r, "[0, inf)");
+        if (r > edge * (1 + node_tolerance))
+          {
+            ++outside; // p = 0 there: the sample of a radius the contact did not reach is left out
+            continue;
+          }
         // p is linear between the vertices.
         const auto         it = std::upper_bound(vertex_r.begin(), vertex_r.begin() + p.size(), r);
         const unsigned int k  = std::min<std::size_t>(std::max<std::ptrdiff_t>(it - vertex_r.begin(), 1), p.size() - 1);
         const double       t  = (r - vertex_r[k - 1]) / (vertex_r[k] - vertex_r[k - 1]);
         result.pressure.push_back({r, (1 - t) * p[k - 1] + t * p[k]});
       }
+    if (outside > 0)
+      result.message += " " + std::to_string(outside) + " pressure radii beyond the contact (edge " +
+                        std::to_string(edge) + ") left out;";
     for (const double r : outputs.displacement_radii)
       {
         const SurfaceFace *face = find_face(surface_faces, r);
@@ -590,8 +609,10 @@ namespace gradcontact::fem
         if (result.zones.empty())
           throw std::runtime_error("solve_remeshed (" + load.indenter.name + "): no contact at this load");
         history << " " << radius << " -> " << result.outer_edge << ";";
+        // Converged when the edge moves by less than the tolerance or stays within the vertex spacing
+        // of the edge grading (the estimate inside a bracket scatters by about that much).
         const double change = std::abs(result.outer_edge - radius) / radius;
-        if (change <= tolerance || result.edge_at_extent)
+        if (change <= std::max(tolerance, 2 * settings.mesh.h_edge) || result.edge_at_extent)
           return result;
         if (m == max_meshes)
           {

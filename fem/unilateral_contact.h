@@ -99,7 +99,9 @@ namespace gradcontact::fem
   {
     double depth = 0; ///< d (given or found)
     double force = 0; ///< F_N = 2 pi sum lambda
-    std::vector<ContactZone> zones; ///< ascending r
+    /// Ascending r; zones less than 1e-3 r apart are one (next to a smooth edge the linear pressure
+    /// alternates in sign over a few vertices of the edge grading).
+    std::vector<ContactZone> zones;
     /// The outer edge of the outermost zone: between its last vertex in contact and the next vertex
     /// (`edge_bracket`): the pressure or the gap estimate when one applies, else the bracket's middle;
     /// the indenter's extent when the contact reaches it.
@@ -113,7 +115,7 @@ namespace gradcontact::fem
     unsigned int active_nodes = 0, candidate_nodes = 0;
     unsigned int iterations   = 0; ///< active-set steps (PDAS and least-index together)
     unsigned int least_index_steps = 0; ///< of which after a cycle
-    std::vector<Sample> pressure;       ///< p(r), the nodal pressures' interpolant (r <= the outermost node in contact)
+    std::vector<Sample> pressure; ///< p(r), linear between the vertices; radii beyond the contact are left out (message)
     std::vector<Sample> displacement;   ///< w(r) = u_z(r, 0)
     std::vector<Sample> nodal_gap;      ///< h at the candidate nodes (0 in contact)
     std::vector<Sample> nodal_force;    ///< 2 pi lambda at the candidate nodes: the force of each node's ring
@@ -193,7 +195,8 @@ namespace gradcontact::fem
   };
 
   /// Solves `load` on meshes graded toward the outer edge found, starting at `first_radius`, until the
-  /// edge moves by less than `tolerance` (relative) or after `max_meshes` meshes; the candidate radius
+  /// edge moves by less than `tolerance` or twice the mesh's h_edge (relative), or after `max_meshes`
+  /// meshes (then `reliable` is false and the message lists the edges); the candidate radius
   /// is `candidate_factor` times the mesh's radius. Settings give everything else (the mesh's contact
   /// radius is replaced). The result of the last mesh; its message records the sequence of edges.
   UnilateralResult solve_remeshed(const Material &material, const Settings &settings, const UnilateralLoad &load,
