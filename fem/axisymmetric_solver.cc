@@ -81,11 +81,7 @@ namespace gradcontact::fem
     make_homogeneous_constraints(dof_handler, mapping, fe, constraints);
     system.reinit(dof_handler, constraints);
 
-    std::vector<Point<2>> support(dof_handler.n_dofs());
-    DoFTools::map_dofs_to_support_points(mapping, dof_handler, support);
-    dof_r.resize(support.size());
-    for (unsigned int i = 0; i < support.size(); ++i)
-      dof_r[i] = support[i][0];
+    dof_r = support_radii(mapping, dof_handler);
 
     // The surface faces with their z-DoFs, and the contact DoFs (on faces with id `contact`, hence
     // r <= a). In 2D a boundary face is never the refined side of a hanging node, so no contact DoF

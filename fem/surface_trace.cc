@@ -4,6 +4,7 @@
 #include <fem/surface_trace.h>
 
 #include <deal.II/base/quadrature_lib.h>
+#include <deal.II/dofs/dof_tools.h>
 #include <deal.II/grid/tria_accessor.h>
 #include <deal.II/grid/tria_iterator.h>
 #include <deal.II/lac/lapack_full_matrix.h>
@@ -163,6 +164,16 @@ namespace gradcontact::fem
   }
 
 
+
+  std::vector<double> support_radii(const Mapping<2> &mapping, const DoFHandler<2> &dof_handler)
+  {
+    std::vector<Point<2>> support(dof_handler.n_dofs());
+    DoFTools::map_dofs_to_support_points(mapping, dof_handler, support);
+    std::vector<double> r(support.size());
+    for (unsigned int i = 0; i < support.size(); ++i)
+      r[i] = support[i][0];
+    return r;
+  }
 
   LineMass line_mass_matrix(const std::vector<SurfaceFace> &faces, const unsigned int c, const double limit,
                             const unsigned int n_gauss)

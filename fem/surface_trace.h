@@ -13,6 +13,7 @@
 #include <deal.II/base/types.h>
 #include <deal.II/dofs/dof_handler.h>
 #include <deal.II/fe/fe_system.h>
+#include <deal.II/fe/mapping.h>
 #include <deal.II/lac/full_matrix.h>
 #include <deal.II/lac/vector.h>
 
@@ -25,6 +26,9 @@ namespace gradcontact::fem
 {
   /// Value at r of the Lagrange interpolant through (x_i, y_i).
   double lagrange(const std::vector<double> &x, const std::vector<double> &y, double r);
+
+  /// The radius of the support point of every DoF (serial DoF handler).
+  std::vector<double> support_radii(const dealii::Mapping<2> &mapping, const dealii::DoFHandler<2> &dof_handler);
 
   /// A boundary face on z = 0.
   struct SurfaceFace

@@ -140,11 +140,7 @@ namespace gradcontact::fem
     make_homogeneous_constraints(dof_handler, mapping, fe, constraints);
     system.reinit(dof_handler, constraints);
 
-    std::vector<Point<2>> support(dof_handler.n_dofs());
-    DoFTools::map_dofs_to_support_points(mapping, dof_handler, support);
-    std::vector<double> dof_r(support.size());
-    for (unsigned int i = 0; i < support.size(); ++i)
-      dof_r[i] = support[i][0];
+    const std::vector<double> dof_r = support_radii(mapping, dof_handler);
 
     // The candidates: the surface z-DoFs of the faces with r1 <= the candidate radius and the vertices
     // of those faces, both ascending in r, with the coupling D of the linear pressure.
