@@ -136,12 +136,28 @@ namespace gradcontact::jkr
 
   namespace
   {
+    // 2n + k - 1 as (2n - 1) + k: exact 2n - 1 for 1/4 <= n <= 1 (Sterbenz), then one rounding; formed
+    // as (2n + k) - 1 it would carry the rounding of 2n + k, a relative error eps/(2n + k - 1).
+    double critical_exponent(const double n, const double k) { return (2. * n - 1.) + k; }
+
+    // The factors 1 - C~ (n + k + 1) of F_c and 1 - C~ n of d_c (9.61, 9.63). Under force control the
+    // first is -(2n + k - 1)/(3 + k), under displacement control the second is -(2n + k - 1)/(1 - k):
+    // both are formed from critical_exponent, not as 1 minus a rounded product.
+    double force_factor(const double k, const double n, const Control control)
+    {
+      return control == Control::force ? -critical_exponent(n, k) / (3. + k) : 1. - C_tilde(k, control) * (n + k + 1.);
+    }
+    double depth_factor(const double k, const double n, const Control control)
+    {
+      return control == Control::displacement ? -critical_exponent(n, k) / (1. - k) : 1. - C_tilde(k, control) * n;
+    }
+
     void check_critical_exists(const char *fn, const double k, const double n)
     {
       // d(a) = kappa A a^n - Delta_l(a) with Delta_l ~ a^((1-k)/2), F(a) ~ P a^(n+k+1) - Q a^((3+k)/2):
       // both have a minimum over a > 0 only if n > (1-k)/2.
-      if (!(2. * n + k - 1. > 0.))
-        check::fail(fn, "2n + k - 1", 2. * n + k - 1.,
+      if (!(critical_exponent(n, k) > 0.))
+        check::fail(fn, "2n + k - 1", critical_exponent(n, k),
                     "must be > 0: no critical state exists for this profile (d(a) and F_N(a) have "
                     "no minimum)");
     }
@@ -157,12 +173,12 @@ namespace gradcontact::jkr
     const double k = m.k, n = p.n, Ct = C_tilde(k, control);
     check_critical_exists(fn, k, n);
     const double kap = kappa(n, k);
-    const double e = 1. / (2. * n + k - 1.);
+    const double e = 1. / critical_exponent(n, k);
     const double Q = 2. * pi * dgamma * std::pow(m.c0, k) / m.cN0; // = Delta_l(a)^2 / a^(1-k)
     const double G = Ct * n * kap * p.A;                             // C~ g'(a) / a^(n-1)
     const double ac = std::pow(Q / (G * G), e);                      // 9.60
-    const double dc = std::pow(std::pow(Q, n) * std::pow(1. / G, 1. - k), e) * (1. - n * Ct) / (n * Ct);
-    const double Fc = 2. * (1. - Ct * (n + k + 1.)) / (Ct * (n + k + 1.) * (k + 1.)) *
+    const double dc = std::pow(std::pow(Q, n) * std::pow(1. / G, 1. - k), e) * depth_factor(k, n, control) / (n * Ct);
+    const double Fc = 2. * force_factor(k, n, control) / (Ct * (n + k + 1.) * (k + 1.)) *
                       std::pow(std::pow(2. * pi * dgamma, n + k + 1.) *
                                  std::pow(std::pow(m.c0, k) / m.cN0, 2. - n) *
                                  std::pow(1. / G, k + 3.),
@@ -186,8 +202,8 @@ namespace gradcontact::jkr
                            std::pow((3. + k) / (2. * kappa(n, k)), k + 3.) *
                            std::pow(R / body.c0, k * (n - 2.)) *
                            std::pow(body.E0 * R / dgamma, n - 2.);
-    return 2. * (1. - k - 2. * n) / (3. * pi * (n + k + 1.) * (k + 1.)) *
-           std::pow(bracket, 1. / (2. * n + k - 1.)); // 9.62
+    return -2. * critical_exponent(n, k) / (3. * pi * (n + k + 1.) * (k + 1.)) *
+           std::pow(bracket, 1. / critical_exponent(n, k)); // 9.62: 1 - k - 2n = -(2n + k - 1)
   }
 
   double normalised_depth(const double k, const double n, const Control control, const double s)
@@ -197,7 +213,7 @@ namespace gradcontact::jkr
     check::positive(fn, "n", n);
     check::non_negative(fn, "a/a_c", s);
     const double Ct = C_tilde(k, control);
-    const double denominator = 1. - Ct * n;
+    const double denominator = depth_factor(k, n, control);
     if (denominator == 0.)
       check::fail(fn, "n", n, "makes d_c = 0 (n C~ = 1): the depth cannot be normalised by it");
     return (std::pow(s, n) - n * Ct * std::pow(s, (1. - k) / 2.)) / denominator; // 9.63
@@ -210,7 +226,7 @@ namespace gradcontact::jkr
     check::positive(fn, "n", n);
     check::non_negative(fn, "a/a_c", s);
     const double Ct = C_tilde(k, control), m = n + k + 1.;
-    const double denominator = 1. - Ct * m;
+    const double denominator = force_factor(k, n, control);
     if (denominator == 0.)
       check::fail(fn, "n", n, "makes F_c = 0 (C~ (n+k+1) = 1): the force cannot be normalised by it");
     return (std::pow(s, m) - Ct * m * std::pow(s, (k + 3.) / 2.)) / denominator; // 9.63
@@ -288,10 +304,11 @@ namespace gradcontact::jkr
       mechanism = governing_mechanism(m, punch, dgamma, sigma_th);
     const double c0k = std::pow(m.c0, k);
     const double rho2 = (r / a) * (r / a);
+    const double one_minus_rho2 = (a - r) * (a + r) / (a * a); // not 1 - rho2: rho2 is rounded
     const double edge = std::pow((a - r) * (a + r), (1. - k) / 2.);
     if (mechanism == Mechanism::periphery)
       return m.cN0 / (pi * c0k * edge) *
-             (-delta_ell(m, dgamma, a) - 4. * h0 / ((k + 1.) * (k + 1.)) * (1. - rho2)); // 9.66
+             (-delta_ell(m, dgamma, a) - 4. * h0 / ((k + 1.) * (k + 1.)) * one_minus_rho2); // 9.66
     return (-std::pow(a, 1. - k) * sigma_th +
             4. * m.cN0 * h0 * rho2 / (pi * (k + 1.) * (k + 1.) * c0k)) /
            edge; // 9.68

@@ -144,6 +144,26 @@ namespace gradcontact::batch
       return mdr::indentation(power_law_profile(q), q.medium(), q.a(), dgamma);
     }
 
+    // p(0) of a power-law tip by the numerical MDR (with or without adhesion): infinite for n + k <= 1, and
+    // for n + k -> 1 out of the quadrature's reach: p(0) ~ int_0 x^(n+k-2) dx, a fraction
+    // (1e-308)^((n+k-1)/(k+1)) of which lies below the smallest double; (n+k-1)/(k+1) >= 0.1 keeps it below
+    // 1e-30. An explicit refusal, not a wrong number.
+    void check_numeric_centre(const In &q, const char *fn)
+    {
+      if (q.r() != 0.)
+        return;
+      const double k = q.medium().k;
+      const PowerLaw p = closed_power_law(q);
+      const double e = (p.n - 1.) + k; // n + k - 1 without the rounding of n + k
+      if (!(e > 0.))
+        check::fail(fn, "n + k", p.n + k, "must be > 1 for a finite pressure at r = 0 (the tip is too sharp)");
+      constexpr double centre_margin = 0.1;
+      if (e < centre_margin * (1. + k))
+        check::fail((std::string(fn) + " (numerical MDR)").c_str(), "n + k - 1", e,
+                    "is too close to 0: the numerical MDR cannot resolve p(0) (its integrand's mass lies below "
+                    "the smallest double); use r > 0 or the closed form");
+    }
+
     // --- normal contact -------------------------------------------------------------------------
 
     // Cone, paraboloid and power law: closed forms 9.20, 9.26, 9.30, and the numerical MDR.
@@ -170,20 +190,8 @@ namespace gradcontact::batch
       t.numerical_mdr["depth"] = [](const In &q) { return mdr::depth(numeric_indentation(q)); };
       t.numerical_mdr["force"] = [](const In &q) { return mdr::force(numeric_indentation(q), q.medium()); };
       t.numerical_mdr["pressure"] = [](const In &q) {
-        const Medium m = q.medium();
-        const double r = q.r();
-        const PowerLaw p = closed_power_law(q);
-        if (r == 0. && !(p.n + m.k > 1.))
-          check::fail("power_law pressure", "n + k", p.n + m.k,
-                      "must be > 1 for a finite pressure at r = 0 (the tip is too sharp)");
-        // p(0) ~ int_0 x^(n+k-2) dx: a fraction (1e-308)^((n+k-1)/(k+1)) of it lies below the smallest
-        // double, out of reach of any quadrature; (n+k-1)/(k+1) >= 0.1 keeps it below 1e-30.
-        constexpr double centre_margin = 0.1;
-        if (r == 0. && p.n + m.k - 1. < centre_margin * (1. + m.k))
-          check::fail("power_law pressure (numerical MDR)", "n + k - 1", p.n + m.k - 1.,
-                      "is too close to 0: the numerical MDR cannot resolve p(0) (its integrand's mass lies below "
-                      "the smallest double); use r > 0 or the closed form");
-        return mdr::pressure(numeric_indentation(q), m, r);
+        check_numeric_centre(q, "power_law pressure");
+        return mdr::pressure(numeric_indentation(q), q.medium(), q.r());
       };
       t.numerical_mdr["displacement"] = [](const In &q) {
         return mdr::displacement(numeric_indentation(q), q.medium(), q.r());
@@ -344,6 +352,7 @@ namespace gradcontact::batch
         return mdr::force(numeric_indentation(q, q.dgamma()), q.medium());
       };
       t.numerical_mdr["pressure"] = [](const In &q) {
+        check_numeric_centre(q, q.is("jkr_paraboloid") ? "jkr_paraboloid pressure" : "jkr_power_law pressure");
         return mdr::pressure(numeric_indentation(q, q.dgamma()), q.medium(), q.r());
       };
       t.numerical_mdr["displacement"] = [](const In &q) {
@@ -410,17 +419,19 @@ namespace gradcontact::batch
     CaseTable tangential_sphere_table()
     {
       CaseTable t;
-      const auto stick = [](const In &q) {
-        return q.q.c ? q.c() : tangential::stick_radius(q.medium(), slip(q), q.a(), q.Fx());
+      // At the stick radius c when given, else under the force Fx (without forming c: 1 - (c/a)^e from
+      // the force fraction, tangential.h).
+      t.closed_form["traction"] = [](const In &q) {
+        return q.q.c ? tangential::traction(q.medium(), slip(q), q.a(), q.c(), q.r())
+                     : tangential::traction_at_force(q.medium(), slip(q), q.a(), q.Fx(), q.r());
       };
-      t.closed_form["traction"] = [stick](const In &q) {
-        return tangential::traction(q.medium(), slip(q), q.a(), stick(q), q.r());
+      t.closed_form["tangential_force"] = [](const In &q) {
+        return q.q.c ? tangential::tangential_force(q.medium(), slip(q), q.a(), q.c())
+                     : tangential::tangential_force_at_force(q.medium(), slip(q), q.a(), q.Fx());
       };
-      t.closed_form["tangential_force"] = [stick](const In &q) {
-        return tangential::tangential_force(q.medium(), slip(q), q.a(), stick(q));
-      };
-      t.closed_form["tangential_displacement"] = [stick](const In &q) {
-        return tangential::tangential_displacement(q.medium(), slip(q), q.a(), stick(q));
+      t.closed_form["tangential_displacement"] = [](const In &q) {
+        return q.q.c ? tangential::tangential_displacement(q.medium(), slip(q), q.a(), q.c())
+                     : tangential::tangential_displacement_at_force(q.medium(), slip(q), q.a(), q.Fx());
       };
       t.closed_form["stick_radius"] = [](const In &q) {
         return tangential::stick_radius(q.medium(), slip(q), q.a(), q.Fx());
@@ -433,15 +444,15 @@ namespace gradcontact::batch
       };
       t.numerical_mdr["traction"] = [numeric_stick](const In &q) {
         const mdr::PartialSlip s = numeric_slip(q);
-        return s.traction(numeric_stick(q, s), q.r());
+        return q.q.c ? s.traction(numeric_stick(q, s), q.r()) : s.traction_at_force(q.Fx(), q.r());
       };
       t.numerical_mdr["tangential_force"] = [numeric_stick](const In &q) {
         const mdr::PartialSlip s = numeric_slip(q);
-        return s.tangential_force(numeric_stick(q, s));
+        return q.q.c ? s.tangential_force(numeric_stick(q, s)) : s.tangential_force_at_force(q.Fx());
       };
       t.numerical_mdr["tangential_displacement"] = [numeric_stick](const In &q) {
         const mdr::PartialSlip s = numeric_slip(q);
-        return s.tangential_displacement(numeric_stick(q, s));
+        return q.q.c ? s.tangential_displacement(numeric_stick(q, s)) : s.tangential_displacement_at_force(q.Fx());
       };
       t.numerical_mdr["stick_radius"] = [numeric_stick](const In &q) { return numeric_stick(q, numeric_slip(q)); };
       return t;

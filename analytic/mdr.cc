@@ -106,8 +106,10 @@ namespace gradcontact::mdr
     validate(fn, m);
     check::positive(fn, "a", a);
     check::non_negative(fn, "dgamma", dgamma);
-    const double d = equivalent_profile(profile, m.k, a) - (dgamma > 0. ? delta_ell(m, dgamma, a) : 0.);
-    return indentation_to_depth(profile, m.k, a, d);
+    const double jump = dgamma > 0. ? delta_ell(m, dgamma, a) : 0.;
+    Foundation w1d = indentation_to_depth(profile, m.k, a, equivalent_profile(profile, m.k, a) - jump);
+    w1d.edge_value = -jump; // w1D(a) = -Delta_l(a) (9.46), exactly 0 without adhesion
+    return w1d;
   }
 
   Foundation indentation_to_depth(const Profile &profile, const double k, const double a, const double d)
@@ -204,7 +206,7 @@ namespace gradcontact::mdr
     const double k = m.k, a = w1d.a;
     if (r > a)
       return 0.;
-    const double w_edge = w1d.w(a);
+    const double w_edge = std::isnan(w1d.edge_value) ? w1d.w(a) : w1d.edge_value;
     if (r == a)
       {
         if (w_edge != 0.)

@@ -20,6 +20,7 @@
 #include <analytic/states.h>
 
 #include <functional>
+#include <limits>
 
 namespace gradcontact::mdr
 {
@@ -47,6 +48,9 @@ namespace gradcontact::mdr
     /// (9.2 in 9.11, integration order exchanged) instead of a nested quadrature.
     std::function<double(double)> profile_slope;
     double d = 0.; ///< the depth of that indentation
+    /// w1D(a) where it is known without forming d - g(a): -Delta_l(a) of an adhesive indentation (9.46),
+    /// whose d - g(a) would lose eps g(a)/Delta_l(a). NaN: take w(a).
+    double edge_value = std::numeric_limits<double>::quiet_NaN();
     /// Where w1D = (a^2 - x^2)^e phi(x) with phi smooth at the edge (foundations of a pressure, 9.13:
     /// e = (1-k)/2), e and phi: the quadratures then treat the factor exactly. For k -> +-1 the
     /// combined end-point exponents approach -1 and part of the mass lies below the smallest double,

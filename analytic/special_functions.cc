@@ -43,13 +43,20 @@ namespace gradcontact
     // |t| < 1 - z0, so each step covers half the remaining distance to the singular point 1 and the
     // terms fall like 2^-n. Used where the connection formula is degenerate (c - a - b near an
     // integer): no Gamma function of the parameters is involved, so nothing cancels.
-    double hyp2f1_ode(const double a, const double b, const double c, const double w)
+    //
+    // With minus_one, the same for u = F - 1, which solves the equation with the source a b on the right
+    // (z (1-z) u'' + [c - (a+b+1) z] u' - a b u = a b): where F - 1 is small (a b -> 0) every term of u
+    // keeps its relative accuracy, while F - 1 formed at the end would lose eps/|F - 1|.
+    double hyp2f1_taylor_minus_one(double a, double b, double c, double z);
+
+    double hyp2f1_ode(const double a, const double b, const double c, const double w, const bool minus_one = false)
     {
       // The state is kept as gap = 1 - z0, which halves exactly at every step but the last, so that
       // the distance to the singular point is never formed by cancellation.
       double gap = 0.5;
-      double F = hyp2f1_taylor(a, b, c, 0.5);
+      double F = minus_one ? hyp2f1_taylor_minus_one(a, b, c, 0.5) : hyp2f1_taylor(a, b, c, 0.5);
       double dF = a * b / c * hyp2f1_taylor(a + 1., b + 1., c + 1., 0.5);
+      const double source = minus_one ? a * b : 0.;
       const double s1 = a + b + 1., ab = a * b;
       while (gap > w)
         {
@@ -62,7 +69,8 @@ namespace gradcontact
           double value = v0 + v1, slope_t = v1; // slope_t = t F'(z0 + t) = sum n v_n
           for (int n = 0; n < max_terms; ++n)
             {
-              const double v2 = -((p1 * n + p0) * (n + 1.) * v1 * t - (n * (n - 1.) + s1 * n + ab) * v0 * t * t) /
+              const double v2 = -((p1 * n + p0) * (n + 1.) * v1 * t - (n * (n - 1.) + s1 * n + ab) * v0 * t * t -
+                                  (n == 0 ? source * t * t : 0.)) /
                                 (q * (n + 2.) * (n + 1.));
               value += v2;
               slope_t += (n + 2.) * v2;
@@ -97,11 +105,10 @@ namespace gradcontact
       return result;
     }
 
-    // int_z^1 t^(x-1) (1-t)^(y-1) dt for z >= 1/2, any x: with w = 1 - z <= 1/2,
+    // int_(1-w)^1 t^(x-1) (1-t)^(y-1) dt for w = 1 - z <= 1/2, any x:
     // = w^y sum_j (1-x)_j / j! w^j / (y + j), converging like 2^-j.
-    double beta_upper_near_one(const double z, const double x, const double y)
+    double beta_upper_near_one(const double w, const double x, const double y)
     {
-      const double w = 1. - z;
       double coefficient = 1., power = 1., sum = 1. / y;
       for (int j = 1; j < max_terms; ++j)
         {
@@ -113,6 +120,20 @@ namespace gradcontact
             return std::pow(w, y) * sum;
         }
       throw std::runtime_error("beta_upper: series did not converge (internal error)");
+    }
+
+    // 2F1(a, b; c; z) - 1: the Taylor series without its first term, for z <= 1/2.
+    double hyp2f1_taylor_minus_one(const double a, const double b, const double c, const double z)
+    {
+      double term = 1., sum = 0.;
+      for (int j = 0; j < max_terms; ++j)
+        {
+          term *= (a + j) * (b + j) / ((c + j) * (j + 1.)) * z;
+          sum += term;
+          if (std::abs(term) <= eps * std::abs(sum) * 0.5)
+            return sum;
+        }
+      throw std::runtime_error("hyp2f1_minus_one: series did not converge (internal error)");
     }
 
     // int_z^h t^(m-1) dt = (h^m - z^m) / m for 0 < z < h, finite at m = 0 (= log(h/z)).
@@ -163,21 +184,28 @@ namespace gradcontact
 
   double hyp2f1_minus_one(const double a, const double b, const double c, const double z, const double one_minus_z)
   {
-    if (!detail::taylor_region(z))
-      return hyp2f1(a, b, c, z, one_minus_z) - 1.;
-    hyp2f1(a, b, c, z, one_minus_z); // the argument checks
-    double term = 1., sum = 0.;
-    for (int j = 0; j < detail::max_terms; ++j)
+    const double F = hyp2f1(a, b, c, z, one_minus_z); // also the argument checks
+    if (z == 0.)
+      return 0.;
+    if (detail::taylor_region(z))
+      return detail::hyp2f1_taylor_minus_one(a, b, c, z);
+    const double s = c - a - b;
+    if (!detail::near_integer(s))
+      return F - 1.;
+    const double w = one_minus_z >= 0. ? one_minus_z : 1. - z;
+    if (w > 0.)
+      return detail::hyp2f1_ode(a, b, c, w, true);
+    // Gauss's sum minus 1 as expm1 of its log-gamma sum where the arguments are positive: near a b = 0 the
+    // log-gammas are near their zeros at 1 and 2, where they are accurate relative to themselves.
+    if (c > 0. && s > 0. && c - a > 0. && c - b > 0.)
       {
-        term *= (a + j) * (b + j) / ((c + j) * (j + 1.)) * z;
-        sum += term;
-        if (std::abs(term) <= detail::eps * std::abs(sum) * 0.5)
-          return sum;
+        using boost::math::lgamma;
+        return std::expm1(lgamma(c) + lgamma(s) - lgamma(c - a) - lgamma(c - b));
       }
-    throw std::runtime_error("hyp2f1_minus_one: series did not converge (internal error)");
+    return F - 1.;
   }
 
-  double beta_upper(const double z, const double x, const double y)
+  double beta_upper(const double z, const double x, const double y, const double one_minus_z)
   {
     const char *fn = "beta_upper";
     check::finite(fn, "x", x);
@@ -189,10 +217,12 @@ namespace gradcontact
           check::fail(fn, "z", z, "must be > 0 when x <= 0 (the integral diverges at t = 0)");
         return boost::math::beta(x, y);
       }
-    if (z == 1.)
+    // The distance to 1 as the caller formed it: z itself may have rounded to 1 although 1 - z > 0.
+    const double w = one_minus_z >= 0. ? one_minus_z : 1. - z;
+    if (w == 0.)
       return 0.;
     if (z >= 0.5)
-      return detail::beta_upper_near_one(z, x, y);
+      return detail::beta_upper_near_one(w, x, y);
     // int_z^(1/2) t^(x-1) (1-t)^(y-1) dt = sum_j (1-y)_j / j! int_z^(1/2) t^(x+j-1) dt, then the
     // piece from 1/2 to 1. For 0 < y <= 1 all terms are positive (no cancellation).
     const double h = 0.5;
@@ -205,7 +235,7 @@ namespace gradcontact
         const double term = coefficient * detail::power_integral(z, h, x + j, L);
         sum += term;
         if (x + j > 0 && std::abs(term) <= detail::eps * std::abs(sum) * 0.5)
-          return sum + detail::beta_upper_near_one(h, x, y);
+          return sum + detail::beta_upper_near_one(1. - h, x, y);
       }
     throw std::runtime_error("beta_upper: series did not converge (internal error)");
   }

@@ -18,7 +18,10 @@ namespace gradcontact
   double incomplete_beta(double z, double x, double y);
 
   /// int_z^1 t^(x-1) (1-t)^(y-1) dt for 0 < z <= 1 (z = 0 allowed when x > 0), y > 0, any real x.
-  double beta_upper(double z, double x, double y);
+  /// one_minus_z, when given (>= 0), is 1 - z formed by the caller without cancellation (e.g.
+  /// (a-r)(a+r)/a^2 for z = r^2/a^2): near z = 1 the integral is ~ (1-z)^y / y, and 1 - z formed from a
+  /// rounded z would carry its rounding error eps/(1-z) into the result.
+  double beta_upper(double z, double x, double y, double one_minus_z = -1.);
 
   /// 2F1(a, b; c; z) for 0 <= z <= 1, c not 0, -1, -2, ...; at z = 1 also c - a - b > 0.
   /// one_minus_z, when given (>= 0), is 1 - z formed by the caller without cancellation (e.g.

@@ -32,6 +32,12 @@ namespace gradcontact::tangential
   double tangential_displacement(const Medium &m, const SphereSlip &s, double a, double c);
   /// c from F_x, 0 <= F_x < mu F_N (gross slip otherwise: DomainError).
   double stick_radius(const Medium &m, const SphereSlip &s, double a, double Fx);
+  /// tau(r), u0 and F_x (9.80) under the tangential force Fx instead of at the stick radius c: every
+  /// difference 1 - (c/a)^e is formed from the force fraction s = Fx/(mu F_N) as -expm1(e/(k+3)
+  /// log1p(-s)), not from a rounded c (which loses eps/s at small Fx). Same checks as stick_radius.
+  double traction_at_force(const Medium &m, const SphereSlip &s, double a, double Fx, double r);
+  double tangential_displacement_at_force(const Medium &m, const SphereSlip &s, double a, double Fx);
+  double tangential_force_at_force(const Medium &m, const SphereSlip &s, double a, double Fx);
 
   /// Oscillation between +-F_A after the initial loading to A (9.81-9.86).
   using gradcontact::Branch;

@@ -9,7 +9,10 @@
 #include <boost/math/tools/toms748_solve.hpp>
 
 #include <cstdint>
+#include <algorithm>
+#include <cmath>
 #include <functional>
+#include <limits>
 #include <string>
 
 namespace gradcontact::detail
@@ -58,6 +61,38 @@ namespace gradcontact::detail
                                                         value_c - target, value(hi) - target,
                                                         boost::math::tools::eps_tolerance<double>(50), iterations);
     return 0.5 * (root.first + root.second);
+  }
+
+  /// The h in [0, upper] with increasing(h) = target, for a function that rises from increasing(0) = 0 with
+  /// the slope slope(h) and reaches the target by h = upper: Newton's method from the linear estimate
+  /// target / slope(0), kept inside a bracket that bisection narrows whenever a step leaves it, to a step of
+  /// 4 eps relative to h. The root is accurate relative to itself however small it is (the gap a - b of a
+  /// slip radius b close to a, mdr_contact.cc), which a root search for b itself (to eps relative to b)
+  /// is not.
+  inline double solve_from_zero(const std::function<double(double)> &increasing,
+                                const std::function<double(double)> &slope, const double target, const double upper)
+  {
+    if (!(target > 0.))
+      return 0.;
+    constexpr double eps = std::numeric_limits<double>::epsilon();
+    double lo = 0., hi = upper;
+    double h = std::min(target / slope(0.), upper);
+    if (!(h > 0.))
+      h = 0.5 * upper;
+    for (int i = 0; i < 200; ++i)
+      {
+        const double value = increasing(h) - target;
+        if (value == 0.)
+          return h;
+        (value < 0. ? lo : hi) = h;
+        double next = h - value / slope(h);
+        if (!(next > lo && next < hi))
+          next = 0.5 * (lo + hi);
+        if (std::abs(next - h) <= 4. * eps * h || hi - lo <= 4. * eps * hi)
+          return next;
+        h = next;
+      }
+    return h;
   }
 } // namespace gradcontact::detail
 

@@ -1,10 +1,17 @@
 // Test helpers: random valid eval requests over every case of the vocabulary (analytic/README.md),
 // for the property tests. Fixed seeds: a failing point can be replayed.
+//
+// A quarter of the draws of a case goes to a region where a formula can cancel, marked by the
+// test-only key "region" (resolve() removes it): p(0) with n + k - 1 -> 0 (tiny k for the cone), r within
+// 1e-5 of a, c within 1e-5 of a, a small fraction x of 1 - (1 - x)^p on the loading branch (F_x or u0), and
+// small oscillation amplitudes F_A/(mu F_N) in [1e-5, 1e-2] with F_x, u0 near the middle or the ends of the
+// loop. Uniform draws never get there (r <= 0.999 a, F_A >= 0.05 mu F_N).
 #ifndef GRADCONTACT_TESTS_ANALYTIC_RANDOM_REQUESTS_H
 #define GRADCONTACT_TESTS_ANALYTIC_RANDOM_REQUESTS_H
 
 #include <analytic/material.h>
 #include <analytic/normal.h>
+#include <analytic/tangential.h>
 
 #include <nlohmann/json.hpp>
 
@@ -28,6 +35,7 @@ namespace gradcontact::testing
         "jkr_flat_punch", "jkr_paraboloid", "jkr_power_law", "jkr_concave", "optimal_profile",
         "tangential_sphere", "oscillating_sphere"};
       const std::string c = cases[index(cases.size())];
+      const bool targeted = index(4) == 0;
       const double k = uniform(-0.95, 0.95);
       const double c0 = log_uniform(1e-6, 1.);
       json q = {{"case", c},
@@ -66,6 +74,19 @@ namespace gradcontact::testing
           q["r"] = r_value(q["quantity"] == "pressure");
           if (q["quantity"] == "pressure" && c != "paraboloid" && q["r"].get<double>() < 1e-3 * a)
             q["r"] = 1e-3 * a; // sharp tips: p(0) is unbounded for n + k <= 1
+          if (targeted && q["quantity"] == "pressure" && c != "paraboloid" && coin())
+            {
+              // p(0) ~ 1/(n + k - 1) with n + k - 1 -> 0: the cone at a tiny k > 0, a power law with n near 1 - k
+              const double e = log_uniform(1e-12, 1e-4);
+              if (c == "cone")
+                q["material"]["k"] = e;
+              else
+                q["geometry"]["n"] = (1. - k) + e;
+              q["r"] = 0.;
+              q["region"] = "r = 0 with n + k -> 1";
+            }
+          else if (targeted)
+            target_edge(q, a, q["quantity"] == "pressure");
         }
       else if (c == "concave_paraboloid")
         {
@@ -75,6 +96,8 @@ namespace gradcontact::testing
           q["d0"] = 2. * (1. - k) * h0 / ((1. + k) * (1. + k)) + h0 * log_uniform(1e-2, 1e2);
           pick(q, {"force", "pressure", "displacement"});
           q["r"] = r_value(q["quantity"] == "pressure");
+          if (targeted)
+            target_edge(q, a, q["quantity"] == "pressure");
         }
       else if (c == "constant_pressure" || c == "optimal_profile")
         {
@@ -105,6 +128,8 @@ namespace gradcontact::testing
           q["r"] = r_value(q["quantity"] == "pressure");
           if (q["quantity"] == "pressure" && q["r"].get<double>() < 1e-3 * a)
             q["r"] = 1e-3 * a;
+          if (targeted)
+            target_edge(q, a, q["quantity"] == "pressure");
         }
       else if (c == "jkr_concave")
         {
@@ -127,6 +152,18 @@ namespace gradcontact::testing
               q["c"] = a * uniform(0., 1.);
               pick(q, {"traction", "tangential_force", "tangential_displacement"});
               q["r"] = r_value(true);
+              if (targeted && coin())
+                {
+                  q["c"] = a * (1. - log_uniform(1e-9, 1e-5));
+                  q["region"] = "c within 1e-5 of a";
+                }
+              else if (targeted)
+                {
+                  // under a small force instead of at c: 1 - (c/a)^e from x = F_x/(mu F_N)
+                  q.erase("c");
+                  q["Fx_fraction_of_limit"] = log_uniform(1e-9, 1e-3);
+                  q["region"] = "small x of 1 - (1 - x)^p";
+                }
             }
           else
             {
@@ -136,6 +173,29 @@ namespace gradcontact::testing
               q["Fx_fraction"] = uniform(-1., 1.);
               pick(q, {"traction", "tangential_displacement", "dissipated_energy"});
               q["r"] = r_value(true);
+              if (targeted)
+                {
+                  // small amplitudes, the middle and the ends of the loop, the loading branch at small F_x or u0
+                  if (coin())
+                    {
+                      q["FA_fraction"] = log_uniform(1e-5, 1e-2);
+                      q["region"] = "small amplitude";
+                    }
+                  else
+                    q["region"] = "small x of 1 - (1 - x)^p";
+                  const double end = 1. - log_uniform(1e-6, 1e-1);
+                  const double place[] = {0., end, -end, log_uniform(1e-9, 1e-3)};
+                  const std::size_t where = index(4);
+                  if (where == 3 || q["region"] == "small x of 1 - (1 - x)^p")
+                    q["branch"] = "loading";
+                  q["Fx_fraction"] = q["branch"] == "loading" ? place[3] : place[where];
+                  pick(q, {"traction", "tangential_displacement", "hysteresis_force", "dissipated_energy"});
+                  if (q["quantity"] == "hysteresis_force")
+                    {
+                      q["u0_fraction"] = q["Fx_fraction"];
+                      q.erase("Fx_fraction");
+                    }
+                }
             }
         }
       return q;
@@ -145,6 +205,14 @@ namespace gradcontact::testing
     double log_uniform(const double lo, const double hi) { return std::exp(uniform(std::log(lo), std::log(hi))); }
 
   private:
+    /// r within 1e-5 of a: inside for a pressure, on either side for a displacement.
+    void target_edge(nlohmann::json &q, const double a, const bool inside_only)
+    {
+      const double x = log_uniform(1e-9, 1e-5);
+      q["r"] = a * ((inside_only || coin()) ? 1. - x : 1. + x);
+      q["region"] = "r within 1e-5 of a";
+    }
+
     std::size_t index(const std::size_t n) { return std::uniform_int_distribution<std::size_t>(0, n - 1)(rng_); }
     bool coin() { return index(2) == 0; }
     void pick(nlohmann::json &q, const std::vector<std::string> &quantities) { q["quantity"] = quantities[index(quantities.size())]; }
@@ -153,20 +221,36 @@ namespace gradcontact::testing
     double fraction_ = 0.5;
   };
 
-  /// Replaces the test-only fraction keys of a request by absolute loads (F_N from the closed form only
-  /// picks a valid load; comparisons do not depend on it).
+  /// The region a request was drawn in ("" for a uniform draw).
+  inline std::string region_of(const nlohmann::json &q) { return q.value("region", ""); }
+
+  /// Replaces the test-only fraction keys of a request by absolute loads (F_N and u_A from the closed form
+  /// only pick a valid load; comparisons do not depend on it) and drops the region mark.
   inline nlohmann::json resolve(nlohmann::json q)
   {
-    if (q.contains("FA_fraction"))
+    q.erase("region");
+    if (q.contains("FA_fraction") || q.contains("Fx_fraction_of_limit"))
       {
         const nlohmann::json material = q["material"];
         const Medium m = medium(GradedHalfSpace{material["E0"], material["c0"], material["k"], material["nu"]});
-        const double FN = force(m, Paraboloid{q["geometry"]["R"].get<double>()}, q["a"].get<double>());
-        const double FA = q["FA_fraction"].get<double>() * q["mu"].get<double>() * FN;
+        const double R = q["geometry"]["R"].get<double>(), a = q["a"].get<double>(), mu = q["mu"].get<double>();
+        const double FN = force(m, Paraboloid{R}, a);
+        if (q.contains("Fx_fraction_of_limit"))
+          {
+            q["Fx"] = q["Fx_fraction_of_limit"].get<double>() * mu * FN;
+            q.erase("Fx_fraction_of_limit");
+            return q;
+          }
+        const double FA = q["FA_fraction"].get<double>() * mu * FN;
         q["FA"] = FA;
-        q["Fx"] = q["Fx_fraction"].get<double>() * FA;
+        if (q.contains("Fx_fraction"))
+          q["Fx"] = q["Fx_fraction"].get<double>() * FA;
+        if (q.contains("u0_fraction"))
+          q["u0"] = q["u0_fraction"].get<double>() *
+                    tangential::displacement_at_A(m, tangential::SphereSlip{R, mu}, a, FA);
         q.erase("FA_fraction");
         q.erase("Fx_fraction");
+        q.erase("u0_fraction");
       }
     return q;
   }

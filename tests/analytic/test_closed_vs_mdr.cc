@@ -30,6 +30,18 @@ namespace
   // Where a value crosses zero (displacement outside a JKR contact, tractions at sign changes), the
   // comparison is absolute against the scale of the quantity.
   constexpr double relative_floor = 1e-12;
+  // The regions where a formula can cancel (random_requests.h: r or c within 1e-5 of a, small fractions of
+  // 1 - (1 - x)^p, small amplitudes): both paths keep their digits there (worst 3.8e-14 over 3000 such draws),
+  // and a cancellation of either loses 1e-11 and more (measured: 2.8e-11 near the edge, 5.5e-11 at small x,
+  // 1e-8 and more for the loop area), so the comparison is 1e-12.
+  constexpr double tol_targeted = 1e-12;
+
+  /// The numerical MDR refuses p(0) of a tip with n + k -> 1 (its integrand lies below the smallest double);
+  /// the closed form answers alone there.
+  bool refused_centre(const batch::Answer &numeric)
+  {
+    return !numeric.ok && numeric.error.find("cannot resolve p(0)") != std::string::npos;
+  }
 
   using testing::resolve;
 
@@ -46,19 +58,25 @@ namespace
     int compared = 0;
     for (int i = 0; i < n; ++i)
       {
-        const json q = resolve(random.next());
+        const json raw = random.next();
+        const std::string region = testing::region_of(raw);
+        const json q = resolve(raw);
         const batch::Answer closed = evaluate(q, "closed_form");
         const batch::Answer numeric = evaluate(q, "numerical_mdr");
         const std::string request = q.dump();
-        CAPTURE(request, closed.error, numeric.error);
+        CAPTURE(request, region, closed.error, numeric.error);
+        if (closed.ok && refused_centre(numeric))
+          continue;
         REQUIRE(closed.ok == numeric.ok); // both valid or both rejected
         if (!closed.ok)
           continue;
         const double scale = std::max(std::abs(numeric.value), std::abs(closed.value));
         const double error = std::abs(closed.value - numeric.value) / std::max(scale, 1e-300);
-        CAPTURE(closed.value, numeric.value, error);
-        CHECK((error <= tol_closed_vs_mdr || std::abs(closed.value - numeric.value) <= relative_floor * scale));
-        const std::string key = q["case"].get<std::string>() + "/" + q["quantity"].get<std::string>();
+        const double tolerance = region.empty() ? tol_closed_vs_mdr : tol_targeted;
+        CAPTURE(closed.value, numeric.value, error, tolerance);
+        CHECK((error <= tolerance || std::abs(closed.value - numeric.value) <= relative_floor * scale));
+        const std::string key = q["case"].get<std::string>() + "/" + q["quantity"].get<std::string>() +
+                                (region.empty() ? "" : " (" + region + ")");
         worst[key] = std::max(worst[key], error);
         ++compared;
       }

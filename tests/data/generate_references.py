@@ -58,8 +58,18 @@ tests/data/closed_form_check.txt); they are the evidence behind analytic/ERRATA.
 
 The group "classical.*" holds k = 0 rows computed from the textbook formulas (Boussinesq, Sneddon, Hertz,
 uniform pressure (elliptic integrals), JKR, Kendall, Mindlin, Mindlin-Deresiewicz), independent of MDR.
+
+The groups "stress.*" hold rows in the regions where a double evaluation can cancel, with inputs that
+are not exact binary stand-ins: p(0) with n + k -> 1 (tiny k), r and c within 1e-5 of a (at a contact radius that
+is not a power of two), small fractions x of 1 - (1 - x)^p on the loading branch, small oscillation amplitudes.
+
+Every row also gets a "conditioning": the relative change of its value when each input alone moves by half an
+ulp (up or down, the larger), summed over the inputs, by the same rules at 34 digits (conditioning()). It is what
+the rounding of the inputs justifies; cases/stress.cc and tests/analytic/test_references.cc allow it plus the
+method's own rounding, and no more.
 """
 import argparse
+import copy
 import json
 import math
 import os
@@ -600,7 +610,8 @@ def evaluate(req):
                 dc = -dl_adh(med, dg, a)
                 vals = (a, dc, mdr_force(med, None, a, dc))
             else:
-                key = ("crit", json.dumps([req["material"], req.get("material2"), geo, req["dgamma"], req["control"]]))
+                key = ("crit", json.dumps([req["material"], req.get("material2"), geo, req["dgamma"], req["control"]],
+                                            default=repr))
                 vals = cached(key, lambda: jkr_critical(med, prof, X(req["a_guess"]), dg, req["control"]))
             return vals[["critical_radius", "critical_depth", "critical_force"].index(q)]
         if q == "contact_radius":
@@ -640,7 +651,8 @@ def evaluate(req):
         o = Osc(med, prof, a, mu, None)
         if q == "stick_radius":
             return o.rad(o.FN - X(req["Fx"]) / mu)
-        c = X(req["c"])
+        # the stick radius given, or the one of the force Fx (findroot on the MDR force)
+        c = X(req["c"]) if "c" in req else o.rad(o.FN - X(req["Fx"]) / mu)
         if q == "traction":
             return mu * (o.p(r, a) - o.p(r, c))
         if q == "tangential_force":
@@ -940,7 +952,8 @@ def closed_forms(req):
             if q == "stick_radius":
                 out.append(("9.80 F_x inverted", a * (1 - X(req["Fx"]) / (mu * FN)) ** (1 / (k + 3))))
                 return out
-            c = X(req["c"])
+            # the stick radius given, or 9.80 inverted for the force Fx
+            c = X(req["c"]) if "c" in req else a * (1 - X(req["Fx"]) / (mu * FN)) ** (1 / (k + 3))
             if q == "traction":
                 out.append(("9.80 tau", mu * pre * (P(r, a) - P(r, c))))
             if q == "tangential_force":
@@ -1090,6 +1103,67 @@ def classical(req):
             return (9 * (2 - nu) * mu ** 2 * FN ** 2 / (10 * G * a)
                     * (1 - (1 - qq) ** (mpf(5) / 3) - mpf(5) / 6 * qq * (1 + (1 - qq) ** (mpf(2) / 3))))
     raise ValueError("no classical formula for %s/%s" % (case, q))
+
+
+# --------------------------------------------------------------------------------------------
+# conditioning: what the rounding of the inputs alone justifies
+# --------------------------------------------------------------------------------------------
+COND_DPS = 34
+SCALAR_INPUTS = ("a", "r", "d", "F", "d0", "dgamma", "sigma_th", "mu", "c", "Fx", "FA", "u0")
+
+
+def input_paths(req):
+    """the numeric inputs of a request: material (and of material2 E0 and nu: k and c0 are shared),
+    geometry, the scalar loads and radii"""
+    paths = [("material", key) for key in ("E0", "c0", "k", "nu")]
+    if "material2" in req:
+        paths += [("material2", key) for key in ("E0", "nu")]
+    paths += [("geometry", key) for key in sorted(req.get("geometry", {}))]
+    paths += [(key,) for key in SCALAR_INPUTS if key in req]
+    return paths
+
+
+def leaf(req, path):
+    node = req
+    for key in path:
+        node = node[key]
+    return node
+
+
+def perturbed(req, path, delta):
+    q = copy.deepcopy(req)
+    node = q
+    for key in path[:-1]:
+        node = node[key]
+    node[path[-1]] = mpf(node[path[-1]]) + delta
+    return q
+
+
+def conditioning(req, hidden):
+    """sum over the inputs of the larger relative change of the value when that input alone moves by half an
+    ulp (up or down), by the same MDR rules at COND_DPS digits. A double implementation that rounds its inputs
+    correctly and loses nothing else is wrong by at most this much (to first order) plus its own rounding;
+    the stability table allows that and no more. Inputs equal to 0 are exact (skipped); a perturbation that
+    leaves the domain is skipped."""
+    with mp.workdps(COND_DPS):
+        base = with_mdr(req, hidden)
+        if base == 0:
+            return 0.0
+        total = mpf(0)
+        for path in input_paths(req):
+            x = float(leaf(req, path))
+            if x == 0:
+                continue
+            half = mpf(math.ulp(x)) / 2
+            worst = mpf(0)
+            for delta in (half, -half):
+                try:
+                    v = with_mdr(perturbed(req, path, delta), hidden)
+                except (Infinite, ValueError, ZeroDivisionError):
+                    continue
+                worst = max(worst, abs(v - base))
+            total += worst
+        return float(total / abs(base))
 
 
 # --------------------------------------------------------------------------------------------
@@ -1434,6 +1508,122 @@ def build(B):
             B.add("classical.mindlin_deresiewicz", "oscillating_sphere", "dissipated_energy", m, g, a=a, mu=MU,
                   FA=qf * MU * FN)
 
+    stress_rows(B)
+
+
+# --------------------------------------------------------------------------------------------
+# stress regions: inputs that are NOT exact binary stand-ins. The grid above uses k = 2^-27,
+# r = a (1 - 2^-20), F_x = fractions 1/8 ... of mu F_N: with such inputs 1 + k, 1 - r/a or 1 - F_x/(mu F_N)
+# are formed without rounding, which hides the cancellations these rows are made to expose.
+# --------------------------------------------------------------------------------------------
+STRESS_KS = [-0.900390625, 0.0, 0.5]
+STRESS_EDGE = [7.3e-6, 3.1e-7, 1.7e-9]           # 1 - r/a and 1 - c/a: within 1e-5 of the edge
+STRESS_FRACTIONS = [3.7e-4, 2.2e-6]              # F_x/(mu F_N), u0/u_A of the loading branch
+STRESS_AMPLITUDES = [1e-3, 2.4e-4, 3.6e-5]       # F_A/(mu F_N), the issue's examples of the loop area
+STRESS_A = 1.2345678e-4                          # a contact radius that is not a power of two (edge rows)
+
+
+def stress_rows(B):
+    a = A_REF
+    # (A) p(0) ~ 1/(n + k - 1) with n + k - 1 -> 0: tiny k for the cone and the power law n = 1, and
+    # n + k -> 1 at k far from 0 (n = 0.75, 1.25); the issue's example first, as given.
+    B.add("stress.k0_centre.cone.pressure", "cone", "pressure",
+          {"E0": 49467813.677098826, "c0": 1.6332952410350124e-06, "k": 2.6108498551709687e-08, "nu": 0.0},
+          {"tan_theta": 0.08939324349288046}, a=50.55419540754115, r=0.0)
+    for k in (2.6108498551709687e-08, 7.3e-11, 4.1e-6):
+        m = mat(k)
+        B.add("stress.k0_centre.cone.pressure", "cone", "pressure", m, {"tan_theta": TAN_T}, a=a, r=0.0)
+        B.add("stress.k0_centre.cone.pressure_near_axis", "cone", "pressure", m, {"tan_theta": TAN_T}, a=a, r=a * 3.3e-7)
+        B.add("stress.k0_centre.power_law.pressure", "power_law", "pressure", m, {"n": 1.0, "A": A_for(1.0)}, a=a, r=0.0)
+        B.add("stress.k0_centre.jkr_power_law.pressure", "jkr_power_law", "pressure", m, {"n": 1.0, "A": A_for(1.0)},
+              a=a, dgamma=DGAMMA, r=0.0)
+    for n, k in ((0.75, 0.2500000033), (1.25, -0.2499999967)):
+        B.add("stress.k0_centre.power_law.pressure", "power_law", "pressure", mat(k), {"n": n, "A": A_for(n)}, a=a, r=0.0)
+
+    # (D) r within 1e-5 of a: 1 - r^2/a^2 from (a - r)(a + r), not from a rounded r/a. The contact radius is
+    # not a power of two here (with a = 2^-13, r/a = 1 - x is exact and its square loses only x^2: the
+    # rounding that the issue is about would not happen).
+    a = STRESS_A
+    for k in STRESS_KS:
+        m = mat(k)
+        m["c0"] = a
+        for x in STRESS_EDGE:
+            r = a * (1 - x)
+            B.add("stress.edge.cone.pressure", "cone", "pressure", m, {"tan_theta": TAN_T}, a=a, r=r)
+            B.add("stress.edge.paraboloid.pressure", "paraboloid", "pressure", m, {"R": R_PARAB}, a=a, r=r)
+            for n in (0.5, 1.5, 3.0):
+                B.add("stress.edge.power_law.pressure", "power_law", "pressure", m, {"n": n, "A": A_for(n)}, a=a, r=r)
+            B.add("stress.edge.flat_punch.pressure", "flat_punch", "pressure", m, {}, a=a, d=2.0 ** -23, r=r)
+            B.add("stress.edge.jkr_paraboloid.pressure", "jkr_paraboloid", "pressure", m, {"R": R_PARAB},
+                  a=a, dgamma=DGAMMA, r=r)
+            B.add("stress.edge.jkr_power_law.pressure", "jkr_power_law", "pressure", m, {"n": 1.5, "A": A_for(1.5)},
+                  a=a, dgamma=DGAMMA, r=r)
+            h0 = 2.0 ** -24
+            B.add("stress.edge.concave_paraboloid.pressure", "concave_paraboloid", "pressure", m, {"h0": h0}, a=a,
+                  d0=float(h0 * (2 * (1 - k) / (1 + k) ** 2 + 0.5)), r=r)
+            # c within 1e-5 of a: 1 - (c/a)^(k+3) and 1 - (c/a)^2 of 9.80
+            c = a * (1 - x)
+            geo = {"R": R_PARAB}
+            B.add("stress.edge.tangential_sphere.tangential_force", "tangential_sphere", "tangential_force", m, geo,
+                  a=a, mu=MU, c=c)
+            B.add("stress.edge.tangential_sphere.tangential_displacement", "tangential_sphere",
+                  "tangential_displacement", m, geo, a=a, mu=MU, c=c)
+            B.add("stress.edge.tangential_sphere.traction", "tangential_sphere", "traction", m, geo,
+                  a=a, mu=MU, c=c, r=0.5 * a)
+        for x in STRESS_EDGE[:2]:
+            for ra in (1 - x, 1 + x):
+                B.add("stress.edge.cone.displacement", "cone", "displacement", m, {"tan_theta": TAN_T}, a=a, r=a * ra)
+                B.add("stress.edge.power_law.displacement", "power_law", "displacement", m, {"n": 1.5, "A": A_for(1.5)},
+                      a=a, r=a * ra)
+
+    # (B) 1 - (1 - x)^p with small x: the loading branch at small F_x or u0, from F_x instead of c
+    a = A_REF
+    for k in STRESS_KS:
+        m = mat(k)
+        geo = {"R": R_PARAB}
+        med = Med({"material": m})
+        prof = profile({"case": "paraboloid", "geometry": geo}, med)
+        FN = mdr_force(med, prof, mpf(a), prof.g(mpf(a)))
+        for f in STRESS_FRACTIONS:
+            Fx = f2(f * MU * FN)
+            for qn in ("tangential_force", "tangential_displacement", "stick_radius"):
+                B.add("stress.small_fraction.tangential_sphere." + qn, "tangential_sphere", qn, m, geo, a=a, mu=MU, Fx=Fx)
+            for ra in (0.0, 0.5):
+                B.add("stress.small_fraction.tangential_sphere.traction", "tangential_sphere", "traction", m, geo,
+                      a=a, mu=MU, Fx=Fx, r=ra * a)
+        FA = f2(0.6 * MU * FN)
+        o = Osc(med, prof, mpf(a), mpf(MU), mpf(FA))
+        for f in STRESS_FRACTIONS:
+            base = dict(a=a, mu=MU, FA=FA)
+            B.add("stress.small_fraction.oscillating_sphere.hysteresis_force.loading", "oscillating_sphere",
+                  "hysteresis_force", m, geo, u0=f2(f * o.uA), branch="loading", **base)
+            B.add("stress.small_fraction.oscillating_sphere.tangential_displacement.loading", "oscillating_sphere",
+                  "tangential_displacement", m, geo, Fx=f2(f * FA), branch="loading", **base)
+            B.add("stress.small_fraction.oscillating_sphere.traction.loading", "oscillating_sphere", "traction", m, geo,
+                  Fx=f2(f * FA), branch="loading", r=0.5 * a, **base)
+
+        # (C) small amplitudes: the loop area is O(phi^3), each branch is 1 - (1 - x)^p with x = O(phi), and
+        # the middle of the loop (F_x = 0, u0 = 0) is a second difference, O(phi^2)
+        for phi in STRESS_AMPLITUDES:
+            FA = f2(phi * MU * FN)
+            base = dict(a=a, mu=MU, FA=FA)
+            o = Osc(med, prof, mpf(a), mpf(MU), mpf(FA))
+            B.add("stress.small_amplitude.oscillating_sphere.dissipated_energy", "oscillating_sphere",
+                  "dissipated_energy", m, geo, **base)
+            for br in ("unloading", "reloading"):
+                for fu in (0.75, 0.0, -0.75, -0.999):
+                    u0 = f2(fu * o.uA) if br == "unloading" else f2(-fu * o.uA)
+                    B.add("stress.small_amplitude.oscillating_sphere.hysteresis_force." + br, "oscillating_sphere",
+                          "hysteresis_force", m, geo, u0=u0, branch=br, **base)
+                for fx in (0.5, 0.0, -0.5):
+                    Fx = f2(fx * FA) if br == "unloading" else f2(-fx * FA)
+                    B.add("stress.small_amplitude.oscillating_sphere.tangential_displacement." + br,
+                          "oscillating_sphere", "tangential_displacement", m, geo, Fx=Fx, branch=br, **base)
+                    if br == "unloading" or fx == 0.0:
+                        for ra in (0.0, 0.5):
+                            B.add("stress.small_amplitude.oscillating_sphere.traction." + br, "oscillating_sphere",
+                                  "traction", m, geo, Fx=Fx, branch=br, r=ra * a, **base)
+
 
 
 def extra_checks():
@@ -1538,11 +1728,16 @@ def main():
     ap.add_argument("--out", default=os.path.join(HERE, "references.jsonl"))
     ap.add_argument("--report", default=os.path.join(HERE, "closed_form_check.txt"))
     ap.add_argument("--check-every", type=int, default=7, help="recompute every n-th row at %d digits" % CHECK_DPS)
+    ap.add_argument("--no-conditioning", action="store_true",
+                    help="leave out the conditioning column (half-ulp input perturbations, the slow part)")
+    ap.add_argument("--only-group", default="", help="keep only the rows whose group starts with this (development)")
     args = ap.parse_args()
     t0 = time.time()
     mp.mp.dps = WORK_DPS
     B = Builder(args.quick)
     build(B)
+    if args.only_group:
+        B.rows = [(r, h) for (r, h) in B.rows if r["group"].startswith(args.only_group)]
     print("rows:", len(B.rows), "built in %.1f s" % (time.time() - t0), flush=True)
 
     out_rows = []
@@ -1567,7 +1762,7 @@ def main():
         except Infinite as ex:
             skipped.append((req["group"], str(ex)))
             continue
-        if args.check_every and (i % args.check_every == 0 or "edge" in req["group"]):
+        if args.check_every and (i % args.check_every == 0 or "edge" in req["group"] or req["group"].startswith("stress.")):
             mp.mp.dps = CHECK_DPS
             QSTAT["check"] = True
             v2 = classical(req) if req["group"].startswith("classical.") else with_mdr(req, hidden)
@@ -1594,6 +1789,8 @@ def main():
                     cf_fail[lab] = cf_fail.get(lab, 0) + 1
         row = dict(req)
         row["reference"] = fmt(v)
+        if not args.no_conditioning:
+            row["conditioning"] = float("%.3e" % conditioning(req, hidden))
         out_rows.append(row)
         if (i + 1) % 200 == 0:
             print("  %d/%d  %.1f s" % (i + 1, len(B.rows), time.time() - t0), flush=True)
