@@ -441,11 +441,17 @@ namespace gradcontact::cases
     std::ostringstream csv;
     csv << "method,region,rows,refused,nonfinite,worst_relative_error,worst_error_over_allowance,allowance_of_worst,"
            "worst_row,refusal_example\n";
+    // a | inside a cell (|k|) would end it
+    const auto cell = [](std::string text) {
+      for (std::size_t i = text.find('|'); i != std::string::npos; i = text.find('|', i + 2))
+        text.replace(i, 1, "\\|");
+      return text;
+    };
     for (const auto &[key, t] : table)
       {
         const bool pass = t.nonfinite == 0 && t.worst_ratio <= 1.;
         ok = ok && pass;
-        md << "| " << key.first << " | " << key.second << " | " << t.rows << " | " << t.refused << " | " << t.nonfinite
+        md << "| " << key.first << " | " << cell(key.second) << " | " << t.rows << " | " << t.refused << " | " << t.nonfinite
            << " | " << format(t.worst) << " | " << format(t.worst_ratio) << " (" << format(t.worst_allowance) << ") | "
            << t.worst_row << " | " << (pass ? "yes" : "**NO**") << " |\n";
         csv << key.first << ",\"" << key.second << "\"," << t.rows << ',' << t.refused << ',' << t.nonfinite << ','
