@@ -453,29 +453,33 @@ namespace gradcontact::mdr
     };
   }
 
-  double PartialSlip::loop_displacement(const double FA, const double Fx) const
+  PartialSlip::LoopIntegrands PartialSlip::loop_integrands(const double FA) const
   {
     const double k = m_.k, K = 2. * m_.cN0 / (std::pow(m_.c0, k) * (k + 1.)), s = FA / 2.;
-    const auto h = loading_gaps(FA);
+    const auto   h = loading_gaps(FA);
     const double c = m_.alpha() / K;
-    const auto density = [&](const double F) { return c * std::pow(a_ - h(F), -(k + 1.)); };
-    const auto second = [&](const double x) {
+    LoopIntegrands loop;
+    loop.density = [=](const double F) { return c * std::pow(a_ - h(F), -(k + 1.)); };
+    loop.second  = [=, density = loop.density](const double x) {
       const double h0 = h(x), b0 = a_ - h0;
       return density(x) * std::expm1(-(k + 1.) * std::log1p(-(h(x + s) - h0) / b0));
     };
-    return gauss_integral(second, 0., s) - 2. * gauss_integral(density, s, -Fx / 2.); // t - s = -Fx/2
+    return loop;
+  }
+
+  double PartialSlip::loop_displacement(const double FA, const double Fx) const
+  {
+    const double         s = FA / 2.;
+    const LoopIntegrands loop = loop_integrands(FA);
+    return gauss_integral(loop.second, 0., s) - 2. * gauss_integral(loop.density, s, -Fx / 2.); // t - s = -Fx/2
   }
 
   double PartialSlip::loop_force(const double FA, const double u0) const
   {
-    const double k = m_.k, K = 2. * m_.cN0 / (std::pow(m_.c0, k) * (k + 1.)), s = FA / 2.;
-    const auto h = loading_gaps(FA);
-    const double c = m_.alpha() / K;
-    const auto density = [&](const double F) { return c * std::pow(a_ - h(F), -(k + 1.)); };
-    const auto second = [&](const double x) {
-      const double h0 = h(x), b0 = a_ - h0;
-      return density(x) * std::expm1(-(k + 1.) * std::log1p(-(h(x + s) - h0) / b0));
-    };
+    const double         s    = FA / 2.;
+    const LoopIntegrands loop = loop_integrands(FA);
+    const auto          &density = loop.density;
+    const auto          &second  = loop.second;
     // The force T of the loading curve with delta(T) = (uA - u0)/2 is s + e/2 with
     // 2 [delta(s + e/2) - delta(s)] = D2 delta(s) - u0; then F_x = FA - 2T = -e.
     const double rhs = gauss_integral(second, 0., s) - u0;

@@ -113,6 +113,13 @@ namespace gradcontact::mdr
     /// Legendre series of the gap a - b(F) on [0, FA] (see mdr_contact.cc).
     /// The gap a - b(F) of the loading curve's slip radius as a function of the tangential force F in [0, FA].
     std::function<double(double)> loading_gaps(double FA) const;
+    /// The integrands of the loop (FA) in the force F: the density du/dF of the loading curve and the
+    /// second difference of the loading curve at x; shared by loop_displacement and loop_force.
+    struct LoopIntegrands
+    {
+      std::function<double(double)> density, second;
+    };
+    LoopIntegrands loop_integrands(double FA) const;
     double loop_displacement(double FA, double Fx) const;
     double loop_force(double FA, double u0) const;
     double loop_traction(double FA, double Fx, double r) const;

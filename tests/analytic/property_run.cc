@@ -48,10 +48,9 @@ using nlohmann::json;
 
 namespace
 {
-  // test_closed_vs_mdr.cc: closed forms ~1e-13, nested quadrature ~1e-11, conditioning at random points.
-  constexpr double tol_closed_vs_mdr = 1e-9;
-  constexpr double relative_floor    = 1e-12;
-  constexpr double tol_targeted      = 1e-12;
+  using testing::relative_floor;
+  using testing::tol_closed_vs_mdr;
+  using testing::tol_targeted;
 
   struct Options
   {

@@ -24,17 +24,9 @@ using nlohmann::json;
 
 namespace
 {
-  // Closed form against numerical MDR: both are accurate to ~1e-13 (closed) and ~1e-11 (quadrature,
-  // nested); 1e-9 leaves room for the conditioning of the quantity at random points (r near a).
-  constexpr double tol_closed_vs_mdr = 1e-9;
-  // Where a value crosses zero (displacement outside a JKR contact, tractions at sign changes), the
-  // comparison is absolute against the scale of the quantity.
-  constexpr double relative_floor = 1e-12;
-  // The regions where a formula can cancel (random_requests.h: r or c within 1e-5 of a, small fractions of
-  // 1 - (1 - x)^p, small amplitudes): both paths keep their digits there (worst 3.8e-14 over 3000 such draws),
-  // and a cancellation of either loses 1e-11 and more (measured: 2.8e-11 near the edge, 5.5e-11 at small x,
-  // 1e-8 and more for the loop area), so the comparison is 1e-12.
-  constexpr double tol_targeted = 1e-12;
+  using testing::relative_floor;
+  using testing::tol_closed_vs_mdr;
+  using testing::tol_targeted;
 
   /// The numerical MDR refuses p(0) of a tip with n + k -> 1 (its integrand lies below the smallest double);
   /// the closed form answers alone there.
