@@ -315,8 +315,7 @@ namespace gradcontact::cases
         fs::remove_all(tmp);
         throw;
       }
-    fs::remove_all(folder);
-    fs::rename(tmp, folder);
+    replace_folder(tmp, folder);
     std::cout << "wrote " << folder.string() << "/ (part " << o.part << (o.quick ? ", quick" : "") << ")\n";
     return 0;
   }

@@ -323,7 +323,9 @@ namespace gradcontact::cases
           reliability(r, "c/a = " + format(x));
           const double seconds = seconds_since(start);
           const std::string metric = "c/a = " + format(x);
-          check("tangential force F_x", metric + ", relative", r.force, "closed form 9.80",
+          // The force of the prescribed traction mu [p(r; a) - p(r; c)]: a check of the load's quadrature
+          // (the FE takes the traction as its input), not an FE result.
+          check("F_x of the imposed traction (input check)", metric + ", relative", r.force, "closed form 9.80",
                 [&] { return reference.get("tangential_sphere", "tangential_force", stick(c)); }, s.tolerances.force,
                 r.n_dofs, seconds);
           const double u0 = check("stick-zone mean u_x (u0)", metric + ", relative", r.stick.mean_ux, "closed form 9.80",
@@ -407,7 +409,7 @@ namespace gradcontact::cases
           const std::string metric = "F/F_A = " + format(f);
           reliability(r, metric);
           // The force of the prescribed traction (9.82): a check of the load's quadrature.
-          result.rows.push_back(compare("F_x of the unloading traction", metric + ", relative to F_A", "FE quadrature",
+          result.rows.push_back(compare("F_x of the imposed unloading traction (input check)", metric + ", relative to F_A", "FE quadrature",
                                         "F_x", F, r.force, o.FA, s.tolerances.force, r.n_dofs, seconds));
           if (std::find(forces.begin(), forces.end(), f) != forces.end())
             {

@@ -11,6 +11,8 @@
 
 #include <cerrno>
 #include <csignal>
+#include <fcntl.h>
+#include <stdio.h> // renameat2, RENAME_EXCHANGE (glibc >= 2.28)
 #include <unistd.h>
 
 namespace gradcontact::cases
@@ -103,6 +105,42 @@ namespace gradcontact::cases
   }
 
   fs::path temporary_sibling(const fs::path &target) { return temporary_sibling(target, ::getpid()); }
+
+  void replace_folder(const fs::path &tmp, const fs::path &folder)
+  {
+    const auto fail = [&](const char *what) {
+      throw fs::filesystem_error(std::string("cannot put the report in place (") + what + ")", tmp, folder,
+                                 std::error_code(errno, std::generic_category()));
+    };
+    // Another run may put its report in place, or take the old one away, between two steps: retry.
+    for (int attempt = 0; attempt < 100; ++attempt)
+      {
+        if (::rename(tmp.c_str(), folder.c_str()) == 0)
+          return; // nothing (or an empty folder) was there
+        if (errno != ENOTEMPTY && errno != EEXIST)
+          fail("rename");
+        if (::renameat2(AT_FDCWD, tmp.c_str(), AT_FDCWD, folder.c_str(), RENAME_EXCHANGE) == 0)
+          {
+            fs::remove_all(tmp); // the earlier report
+            return;
+          }
+        if (errno == EINVAL || errno == ENOSYS)
+          {
+            // A file system without exchange: move the old report aside under a name of this process.
+            const fs::path aside = temporary_sibling(folder.parent_path() / (folder.filename().string() + ".old"));
+            fs::remove_all(aside);
+            if (::rename(folder.c_str(), aside.c_str()) == 0)
+              fs::remove_all(aside);
+            else if (errno != ENOENT)
+              fail("rename aside");
+            continue;
+          }
+        if (errno != ENOENT)
+          fail("exchange");
+      }
+    errno = EBUSY;
+    fail("another run replaced the folder 100 times in a row");
+  }
 
   std::vector<fs::path> remove_stale_temporaries(const fs::path &folder)
   {

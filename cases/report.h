@@ -70,6 +70,12 @@ namespace gradcontact::cases
   /// Those of other hosts are kept (their processes cannot be asked). Returns the removed paths.
   std::vector<std::filesystem::path> remove_stale_temporaries(const std::filesystem::path &folder);
 
+  /// Moves the complete folder `tmp` to `folder`, replacing what is there in one step: rename(2) when
+  /// `folder` is absent, else an atomic exchange of the two (renameat2 RENAME_EXCHANGE) and the old report,
+  /// now at `tmp`, removed. Two runs that finish at once each leave a whole report behind (the later one
+  /// stays); neither sees the other's folder vanish. Throws std::filesystem::error naming both paths.
+  void replace_folder(const std::filesystem::path &tmp, const std::filesystem::path &folder);
+
   /// Writes `folder` through a temporary sibling and replaces the old report only when complete.
   template <class Writer>
   void atomic_folder(const std::filesystem::path &folder, const Writer &writer)
@@ -87,8 +93,7 @@ namespace gradcontact::cases
         fs::remove_all(tmp);
         throw;
       }
-    fs::remove_all(folder);
-    fs::rename(tmp, folder);
+    replace_folder(tmp, folder);
   }
 
   std::string format(double x);

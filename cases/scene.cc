@@ -433,6 +433,11 @@ namespace gradcontact::cases
   SceneKind scene_kind(const Scene &s)
   {
     const std::string where = "scene " + s.file + ": ";
+    if (s.references.fem && s.material.nu >= 0.5 &&
+        s.discretization.formulation == DiscretizationParameters::Formulation::displacement)
+      throw std::invalid_argument(where + "Material/nu = 0.5 with Discretization/formulation = displacement: the "
+                                  "displacement formulation needs nu in [0, 0.5) (it locks); incompressible "
+                                  "nu = 0.5 needs formulation = mixed or automatic");
     if (s.load.contact == LoadParameters::Contact::unilateral)
       {
         using Type = LoadParameters::Type;

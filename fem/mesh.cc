@@ -162,9 +162,17 @@ namespace gradcontact::fem
       const fs::path msh     = fs::path(cache) / (name.str() + ".msh");
       const fs::path keyfile = fs::path(cache) / (name.str() + ".key");
 
+      // The key file holds the key and the size and hash of the .msh it was written with: a cached mesh
+      // that was truncated (a full disk) or changed after (a copy) fails the check and is made again.
+      const auto checksum = [](const std::string &text) {
+        std::ostringstream c;
+        c << "msh_bytes=" << text.size() << " msh_hash=" << std::hex << std::hash<std::string>{}(text) << '\n';
+        return c.str();
+      };
       MeshInfo info;
       info.near_field_source = msh.string();
-      info.cache_hit = fs::exists(msh) && fs::exists(keyfile) && read_file(keyfile.string()) == key.str();
+      info.cache_hit = fs::exists(msh) && fs::exists(keyfile) &&
+                       read_file(keyfile.string()) == key.str() + checksum(read_file(msh.string()));
       if (!info.cache_hit)
         {
           // Write to a private name and rename: a concurrent or interrupted run never sees half a file.
@@ -187,8 +195,10 @@ namespace gradcontact::fem
                                        std::to_string(rc) + ", command: " + cmd.str() + "):\n" + out);
             }
           fs::remove(log);
+          const std::string key_tmp = keyfile.string() + ".tmp" + std::to_string(::getpid());
+          std::ofstream(key_tmp) << key.str() << checksum(read_file(tmp));
           fs::rename(tmp, msh);
-          std::ofstream(keyfile) << key.str();
+          fs::rename(key_tmp, keyfile);
         }
 
       GridIn<2> grid_in;

@@ -11,6 +11,7 @@
 #include <stdexcept>
 #include <sys/wait.h>
 #include <unistd.h>
+#include <vector>
 
 using namespace gradcontact::cases;
 namespace fs = std::filesystem;
@@ -101,4 +102,98 @@ TEST_CASE("A failed writer shall leave neither a report nor a temporary", "[case
                                   }),
                     std::runtime_error);
   CHECK(fs::is_empty(reports.path()));
+}
+
+TEST_CASE("Runs that write the same report at once shall each succeed and leave one whole report", "[cases]")
+{
+  const TemporaryFolder reports("gradcontact-concurrent");
+  const fs::path target = reports.path() / "scene";
+  // Eight processes each replace the report 25 times; a report is whole when its two files carry the same
+  // writer mark. Before the exchange, a run that found the other's folder in place failed with "cannot
+  // rename: Directory not empty" and could leave no report at all.
+  constexpr int writers = 8, rounds = 25;
+  std::vector<pid_t> children;
+  for (int w = 0; w < writers; ++w)
+    {
+      const pid_t child = ::fork();
+      REQUIRE(child >= 0);
+      if (child == 0)
+        {
+          int status = 0;
+          try
+            {
+              for (int i = 0; i < rounds; ++i)
+                atomic_folder(target, [&](const fs::path &tmp) {
+                  const std::string mark = std::to_string(w) + "-" + std::to_string(i) + "\n";
+                  std::ofstream(tmp / "errors.csv") << mark;
+                  std::ofstream(tmp / "summary.md") << mark;
+                });
+            }
+          catch (...)
+            {
+              status = 1;
+            }
+          ::_exit(status);
+        }
+      children.push_back(child);
+    }
+  int failed = 0;
+  for (const pid_t child : children)
+    {
+      int status = 0;
+      ::waitpid(child, &status, 0);
+      failed += !(WIFEXITED(status) && WEXITSTATUS(status) == 0);
+    }
+  CHECK(failed == 0);
+  const auto read = [](const fs::path &p) {
+    std::ifstream in(p);
+    std::string s;
+    std::getline(in, s);
+    return s;
+  };
+  REQUIRE(fs::exists(target / "errors.csv"));
+  CHECK(read(target / "errors.csv") == read(target / "summary.md"));
+  CHECK(read(target / "errors.csv").find("-" + std::to_string(rounds - 1)) != std::string::npos);
+  for (const auto &entry : fs::directory_iterator(reports.path()))
+    CHECK(entry.path().filename() == "scene");
+}
+
+TEST_CASE("Two gradcontact runs of the same scene into one reports folder at once shall both pass", "[cases]")
+{
+  const TemporaryFolder folder("gradcontact-two-runs");
+  const fs::path reports = folder.path() / "reports";
+  const fs::path scene = folder.path() / "one_check.jsonl";
+  std::ofstream(scene) << R"({"case":"flat_punch","quantity":"force","material":{"E0":1e9,"c0":1e-3,"k":0.5,"nu":0.3},"a":1e-4,"d":1e-6})"
+                       << "\n";
+  std::vector<pid_t> children;
+  for (int i = 0; i < 2; ++i)
+    {
+      const pid_t child = ::fork();
+      REQUIRE(child >= 0);
+      if (child == 0)
+        {
+          int status = 1;
+          try
+            {
+              for (int round = 0; round < 20; ++round)
+                if (run({scene.string(), "--reports", reports.string(), "--quiet"}) != 0)
+                  ::_exit(1);
+              status = 0;
+            }
+          catch (...)
+            {
+            }
+          ::_exit(status);
+        }
+      children.push_back(child);
+    }
+  for (const pid_t child : children)
+    {
+      int status = 0;
+      ::waitpid(child, &status, 0);
+      CHECK((WIFEXITED(status) && WEXITSTATUS(status) == 0));
+    }
+  CHECK(fs::exists(reports / "one_check" / "errors.csv"));
+  for (const auto &entry : fs::directory_iterator(reports))
+    CHECK(entry.path().filename().string().find(".tmp") == std::string::npos);
 }

@@ -9,9 +9,11 @@
 //                 of t = 1 is \int r dr = R^2 / 2 (partition of unity), and a line density in the FE
 //                 space is recovered exactly from its own nodal forces
 //   dense solve   the prescribed solve equals a dense LU solve of the reduced system
+//   mesh cache    a damaged cached near field gives the same mesh as a fresh gmsh run
 #include <fem/boundary_ids.h>
 #include <fem/direct_system.h>
 #include <fem/graded_elasticity.h>
+#include <fem/mesh.h>
 #include <fem/modulus.h>
 #include <fem/surface_trace.h>
 
@@ -28,7 +30,10 @@
 #include <catch2/catch.hpp>
 
 #include <cmath>
+#include <filesystem>
+#include <fstream>
 #include <memory>
+#include <unistd.h>
 #include <vector>
 
 using namespace gradcontact::fem;
@@ -272,4 +277,42 @@ TEST_CASE("The direct system shall impose prescribed values and agree with a den
   const dealii::Vector<double> v = system.solve(false, {}, b, reaction, seconds);
   CHECK(reaction.linfty_norm() < 1e-12 * b.linfty_norm());
   CHECK(v.l2_norm() > 0);
+}
+
+TEST_CASE("A damaged cached near-field mesh shall be detected and made again", "[fem]")
+{
+  namespace fs = std::filesystem;
+  const fs::path cache = fs::temp_directory_path() / ("gradcontact-cache-test-" + std::to_string(::getpid()));
+  fs::remove_all(cache);
+  MeshParameters p;
+  p.h_edge          = 1e-2; // a small gmsh mesh (a second)
+  p.far_field_size  = 1e3;
+  p.cache_directory = cache.string();
+
+  dealii::Triangulation<2> fresh;
+  const MeshInfo first = make_mesh(p, fresh);
+  REQUIRE_FALSE(first.cache_hit);
+  dealii::Triangulation<2> cached;
+  REQUIRE(make_mesh(p, cached).cache_hit);
+  REQUIRE(cached.n_active_cells() == fresh.n_active_cells());
+
+  // Truncate the cached .msh to half its length (a full disk), then change one byte and keep the length (a
+  // damaged copy): each is found, gmsh runs again, and the mesh is the fresh one.
+  const fs::path msh = first.near_field_source;
+  const auto size = fs::file_size(msh);
+  fs::resize_file(msh, size / 2);
+  dealii::Triangulation<2> after_truncation;
+  const MeshInfo repaired = make_mesh(p, after_truncation);
+  CHECK_FALSE(repaired.cache_hit);
+  CHECK(after_truncation.n_active_cells() == fresh.n_active_cells());
+  CHECK(fs::file_size(msh) == size);
+  {
+    std::fstream f(msh, std::ios::in | std::ios::out | std::ios::binary);
+    f.seekp(static_cast<std::streamoff>(size / 2));
+    f.put('#');
+  }
+  dealii::Triangulation<2> after_change;
+  CHECK_FALSE(make_mesh(p, after_change).cache_hit);
+  CHECK(after_change.n_active_cells() == fresh.n_active_cells());
+  fs::remove_all(cache);
 }

@@ -9,11 +9,16 @@
 //   constant p0   w_c = 2 c0^k (1 - nu^2) cos(k pi / 2) F / (h_N (1 - k) E0 pi a^{1+k})       (9.39)
 //   concave       F = 2 h_N E0 a^{1+k} / ((1 - nu^2)(1 + k) c0^k) (d0 + 2 h0 / (k + 3)),
 //                 complete contact iff d0 > 2 (1 - k) h0 / (1 + k)^2                           (9.34), (9.35)
+// The surface displacement outside the contact is taken from the analytic library (analytic/normal.h,
+// checked against 34-digit references of the MDR integrals), not written out here.
 // Tolerances are the measured errors of the default discretisation (fem/README.md) with a margin of
 // about 2.5x, each with its reason; they are not loosened to pass.
 #include <fem/axisymmetric_solver.h>
 #include <fem/gauss_jacobi.h>
 #include <fem/modulus.h>
+
+#include <analytic/material.h>
+#include <analytic/normal.h>
 
 #include <catch2/catch.hpp>
 
@@ -64,13 +69,18 @@ namespace
   constexpr double flat_punch_tolerance = 5e-6;
   // Paraboloid under contact-radius control: the depth from the edge-node criterion has an O(h_edge)
   // error, measured 4.0e-7 / 6.7e-7 / 8.0e-7 for k = 0 / 0.5 / -0.5 (1.8e-5 for k = -0.5 without the
-  // surface layer). The force at the FE depth: 1.1e-7 / 1.4e-6 / 6.6e-8; the required bounds are 1e-5
-  // (force at given depth) and 1e-4 (contact radius at given depth).
+  // surface layer). The force at the FE depth: 1.1e-7 / 1.4e-6 / 6.6e-8; the required bound is 1e-5.
+  // The contact radius at the FE depth, a(d) = sqrt((1 + k) R d), is off by half the depth error, so the
+  // depth bound is also the radius check (a separate 1e-4 radius bound could not fail).
   constexpr double paraboloid_depth_tolerance = 5e-6;
   constexpr double paraboloid_force_tolerance = 1e-5;
-  constexpr double contact_radius_tolerance   = 1e-4;
   // Recovered pressure at 0.05 a .. 0.9 a, relative to p(0): measured <= 2.3e-6 (k = -0.5).
   constexpr double paraboloid_pressure_tolerance = 1e-5;
+  // Surface displacement of the paraboloid outside the contact, measured (k = 0 / 0.5 / -0.5):
+  // w(1.5 a) 5.6e-7 / 2.4e-6 / 1.0e-6, w(10 a) 4.5e-6 / 8.6e-6 / 7.9e-7, w(1000 a) 1.7e-5 / 5.2e-4 / 1.2e-6
+  // (at k = 0.5 the far rings, h ~ 0.15 r, resolve the slower decay worst).
+  constexpr double outside_displacement_tolerance = 2.5e-5; // r = 1.5 a and 10 a
+  constexpr double far_displacement_tolerance     = 1.5e-3; // r = 1000 a
   // Constant pressure: w_c, measured 2.1e-7 (k = 0), 9.7e-7 (k = 0.5).
   constexpr double pressure_centre_tolerance = 1e-5;
 } // namespace
@@ -211,7 +221,6 @@ TEST_CASE("The solver shall reproduce the flat-punch force (9.16) and the parabo
   REQUIRE(hertz.consistent_contact);
   REQUIRE_THAT(hertz.depth, WithinRel(d_ref, paraboloid_depth_tolerance));
   REQUIRE_THAT(hertz.force, WithinRel(F_at_depth, paraboloid_force_tolerance));
-  REQUIRE_THAT(a, WithinRel(a_at_depth, contact_radius_tolerance));
   for (const Sample &p : hertz.pressure)
     {
       const double exact = p0 * std::pow(1 - p.r * p.r / (a * a), (1 + k) / 2);
@@ -219,11 +228,18 @@ TEST_CASE("The solver shall reproduce the flat-punch force (9.16) and the parabo
       std::cout << "[fem]   p(" << p.r / a << " a) error / p0 " << (p.value - exact) / p0 << '\n';
       REQUIRE_THAT(p.value, WithinAbs(exact, paraboloid_pressure_tolerance * p0));
     }
-  // The surface far outside sinks by less than at the edge and decays monotonically.
+  // The surface outside the contact against the closed form at the prescribed radius a (w(r) for r > a,
+  // analytic/normal.h), relative to the depth: see far_displacement_tolerance.
+  const auto medium = gradcontact::medium(gradcontact::GradedHalfSpace{E0, c0, k, nu});
   REQUIRE(hertz.displacement.size() == 3);
-  REQUIRE(hertz.displacement[0].value > hertz.displacement[1].value);
-  REQUIRE(hertz.displacement[1].value > hertz.displacement[2].value);
-  REQUIRE(hertz.displacement[2].value > 0);
+  for (const Sample &w : hertz.displacement)
+    {
+      const double exact = gradcontact::displacement(medium, gradcontact::Paraboloid{R}, a, w.r);
+      CAPTURE(w.r / a, w.value, exact, w.value / exact - 1);
+      std::cout << "[fem]   w(" << w.r / a << " a) error " << w.value / exact - 1 << '\n';
+      REQUIRE_THAT(w.value, WithinRel(exact, w.r < 100 * a ? outside_displacement_tolerance
+                                                            : far_displacement_tolerance));
+    }
 }
 
 TEST_CASE("The solver shall give the centre displacement of a constant pressure (9.39) and "
@@ -243,6 +259,7 @@ TEST_CASE("The solver shall give the centre displacement of a constant pressure 
                      (h_N(k, nu) * (1 - k) * E0 * pi * std::pow(a, 1 + k));
   CAPTURE(k, pressure.depth, w_c, pressure.depth / w_c - 1);
   std::cout << "[fem] constant pressure k = " << k << ": w_c error " << pressure.depth / w_c - 1 << '\n';
+  // An input check, not an FE result: the reported force is the quadrature of the prescribed pressure.
   REQUIRE_THAT(pressure.force, WithinRel(F, 1e-14));
   REQUIRE_THAT(pressure.depth, WithinRel(w_c, pressure_centre_tolerance));
 
