@@ -72,7 +72,9 @@ namespace gradcontact::fem
 
   AdhesiveContact::AdhesiveContact(const Material &material_, const std::optional<Profile> &profile_,
                                    SettingsFunction settings_, const AdhesionParameters &parameters_)
-    : material((material_.validate(), material_))
+    // nu = 0.5 is allowed here: each radius's settings choose the formulation, and its solver refuses
+    // nu = 0.5 with the displacement formulation.
+    : material((material_.validate(true), material_))
     , profile(profile_)
     , settings(std::move(settings_))
     , parameters((parameters_.validate(), parameters_))

@@ -3,10 +3,12 @@
 // References: classical closed forms written out here (Boussinesq's flat punch, Hertz's pressure, the
 // Winkler law of the Gibson medium 9.44) and the closed forms of analytic/normal.h for k = 0.5, an
 // independent code path. Every tolerance is a measured error times a stated margin.
+#include <fem/adhesion.h>
 #include <fem/axisymmetric_solver.h>
 #include <fem/fourier_mode1_solver.h>
 #include <fem/modulus.h>
 
+#include <analytic/adhesion.h>
 #include <analytic/material.h>
 #include <analytic/normal.h>
 
@@ -115,6 +117,17 @@ TEST_CASE("The mixed formulation shall give Boussinesq's punch force and Hertz's
 constexpr double mixed_k05_punch_tolerance    = 4e-5;
 constexpr double mixed_k05_pressure_tolerance = 3.5e-5;
 
+// Depth and force control with the mixed formulation, the answer at a / (1 + 1e-4) on the recommended
+// mesh with rings g = 1.6 and the surface layer 1e-6 a (the layer limits it, as the punch above). Measured
+// (paraboloid / cone): force at the given depth 1.47e-5 / 1.48e-5, depth at the given force 8.4e-6 / 5.9e-6,
+// contact radius <= 5.8e-6; 3 trial sets each. 2.5x margin; the radius bound stays well below the 1e-4
+// between the answer and the mesh's own radius, so a solver that skipped the search fails.
+constexpr double mixed_control_force_tolerance  = 4e-5;
+constexpr double mixed_control_radius_tolerance = 1.5e-5;
+// JKR pull-off with the mixed formulation, degree 2, force control: measured F 3.7e-6, a_c 3.4e-6,
+// d_c 4.2e-5 (7 radii); the bound is the one required of the displacement formulation.
+constexpr double mixed_pull_off_tolerance = 1e-4;
+
 TEST_CASE("The mixed formulation shall match the power-law closed forms at k = 0.5, nu = 0.5", "[fem]")
 {
   const double k = 0.5, nu = 0.5;
@@ -150,6 +163,85 @@ TEST_CASE("The mixed formulation shall match the power-law closed forms at k = 0
 }
 
 
+
+TEST_CASE("The mixed formulation shall find the contact radius under depth and force control (k = 0.5, nu = 0.5)",
+          "[fem]")
+{
+  // The paraboloid and the cone at a / (1 + 1e-4) on the mesh graded at a, as the displacement formulation
+  // does (test_contact.cc); the closed forms of analytic/normal.h at nu = 0.5. Measured: see the constants.
+  const double k = 0.5, nu = 0.5;
+  Material     material{std::make_shared<PowerLawModulus>(E0, c0, k), nu};
+  MeshParameters mesh          = recommended_mesh_parameters(a, k);
+  mesh.ring_growth             = 1.6;
+  mesh.surface_layer_thickness = 1e-6;
+  AxisymmetricSolver        solver(material, mesh, mixed());
+  const gradcontact::Medium m      = gradcontact::medium(gradcontact::GradedHalfSpace{E0, c0, k, nu});
+  const double              a_true = a / (1 + 1e-4);
+  for (const bool by_depth : {true, false})
+    for (const bool cone : {false, true})
+      {
+        const gradcontact::PowerLaw f = cone ? gradcontact::as_power_law(gradcontact::Cone{0.1})
+                                             : gradcontact::as_power_law(gradcontact::Paraboloid{50 * a});
+        LoadCase load;
+        load.type    = by_depth ? LoadType::indenter_depth : LoadType::indenter_force;
+        load.profile = cone ? Profile::cone(0.1) : Profile::paraboloid(50 * a);
+        load.depth   = gradcontact::depth(m, f, a_true);
+        load.force   = gradcontact::force(m, f, a_true);
+        const Result r = solver.run(load);
+        std::cout << "[fem] mixed, nu = 0.5, k = 0.5, " << (cone ? "cone" : "paraboloid")
+                  << (by_depth ? " depth" : " force") << " control: F " << r.force / load.force - 1 << ", d "
+                  << r.depth / load.depth - 1 << ", a " << r.contact_radius / a_true - 1 << ", " << r.iterations
+                  << " trial sets\n";
+        CAPTURE(cone, by_depth, r.force / load.force - 1, r.depth / load.depth - 1, r.contact_radius / a_true - 1,
+                r.iterations, r.message);
+        REQUIRE(r.reliable);
+        REQUIRE(r.consistent_contact);
+        if (by_depth)
+          CHECK_THAT(r.force, WithinRel(load.force, mixed_control_force_tolerance));
+        else
+          CHECK_THAT(r.depth, WithinRel(load.depth, mixed_control_force_tolerance));
+        CHECK_THAT(r.contact_radius, WithinRel(a_true, mixed_control_radius_tolerance));
+      }
+}
+
+TEST_CASE("The mixed formulation shall give the JKR pull-off of the paraboloid (9.55-9.56) at nu = 0.5", "[fem]")
+{
+  // The adhesive search on meshes of the mixed formulation (degree 2, the recommended geometry for each
+  // radius), k = 0.5, nu = 0.5, against the closed forms at nu = 0.5, under both controls.
+  const double k = 0.5, nu = 0.5, R = 5e-3, dgamma = 0.05;
+  Material     material{std::make_shared<PowerLawModulus>(E0, c0, k), nu};
+  const gradcontact::Medium m = gradcontact::medium(gradcontact::GradedHalfSpace{E0, c0, k, nu});
+  AdhesiveContact sphere(material, Profile::paraboloid(R), [k](const double radius) {
+    Settings s = recommended_settings(radius, k, 1e-5);
+    s.discretization.degree      = 2;
+    s.discretization.formulation = Formulation::mixed;
+    return s;
+  });
+  // Force control only: the displacement-control search differs in the search, not in the FE (tested with
+  // the displacement formulation in test_adhesion.cc).
+  for (const auto control : {AdhesionControl::force})
+    {
+      const auto ref = gradcontact::jkr::critical_state(m, gradcontact::Paraboloid{R}, dgamma,
+                                                        gradcontact::jkr::Control::force);
+      const auto c   = sphere.critical_state(dgamma, control, 1.2 * ref.radius);
+      std::cout << "[fem] mixed, nu = 0.5, k = 0.5, pull-off "
+                << (control == AdhesionControl::force ? "force" : "displacement") << " control: F "
+                << c.state.force / ref.force - 1 << ", a " << c.state.radius / ref.radius - 1 << ", d "
+                << c.state.depth / ref.depth - 1 << ", " << c.radii_solved << " radii\n";
+      CAPTURE(control == AdhesionControl::force, c.state.force / ref.force - 1, c.state.radius / ref.radius - 1,
+              c.state.depth / ref.depth - 1);
+      CHECK_THAT(c.state.force, WithinRel(ref.force, mixed_pull_off_tolerance));
+      CHECK_THAT(c.state.radius, WithinRel(ref.radius, mixed_pull_off_tolerance));
+      CHECK_THAT(c.state.depth, WithinRel(ref.depth, mixed_pull_off_tolerance));
+    }
+  // The displacement formulation at nu = 0.5 is refused when a radius is solved, naming the fix.
+  AdhesiveContact locked(material, Profile::paraboloid(R), [k](const double radius) {
+    Settings s = recommended_settings(radius, k, 1e-5);
+    s.discretization.degree = 2;
+    return s;
+  });
+  CHECK_THROWS_WITH(locked.critical_state(dgamma, AdhesionControl::force, 1e-4), Contains("mixed formulation"));
+}
 
 // The Gibson medium (9.42-9.44): E = E0 z / c0, nu = 1/2 behaves as a Winkler foundation,
 // p = k_W w with k_W = 2 E0 / (3 c0): under p0 on r <= a, w = p0 / k_W inside and 0 outside; a flat
