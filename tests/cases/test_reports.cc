@@ -7,7 +7,9 @@
 
 #include <catch2/catch.hpp>
 
+#include <cmath>
 #include <fstream>
+#include <iterator>
 #include <stdexcept>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -196,4 +198,81 @@ TEST_CASE("Two gradcontact runs of the same scene into one reports folder at onc
   CHECK(fs::exists(reports / "one_check" / "errors.csv"));
   for (const auto &entry : fs::directory_iterator(reports))
     CHECK(entry.path().filename().string().find(".tmp") == std::string::npos);
+}
+
+namespace
+{
+  /// The rows of a CSV file with a header, split at commas outside double quotes.
+  std::vector<std::vector<std::string>> read_csv(const fs::path &file)
+  {
+    std::vector<std::vector<std::string>> rows;
+    std::ifstream in(file);
+    for (std::string line; std::getline(in, line);)
+      {
+        std::vector<std::string> fields(1);
+        bool quoted = false;
+        for (const char c : line)
+          if (c == '"')
+            quoted = !quoted;
+          else if (c == ',' && !quoted)
+            fields.emplace_back();
+          else
+            fields.back() += c;
+        rows.push_back(fields);
+      }
+    return rows;
+  }
+} // namespace
+
+TEST_CASE("A convergence scene's report shall hold its rows against the reference and the observed order",
+          "[cases]")
+{
+  // A homogeneous flat punch (k = 0): the reference is Sneddon's F = 2 E0 a d / (1 - nu^2), written out here,
+  // independent of the analytic library and of the FE. Degree 1, uniform refinements 0-2 of a coarse mesh
+  // (1.2 s): the force is an energy functional, its error falls as h^2 (measured order 2.03).
+  const TemporaryFolder folder("gradcontact-report-contents");
+  const fs::path scene = folder.path() / "punch_h.prm";
+  std::ofstream(scene) << "subsection Material\n  set k = 0\n  set E0 = 2e9\n  set c0 = 3e-4\n  set nu = 0.3\nend\n"
+                          "subsection Load\n  set type = flat punch\n  set a = 1e-4\n  set depth = 1e-6\nend\n"
+                          "subsection Discretization\n  set degree = 1\n  set refinements = 0, 1, 2\n"
+                          "  set force tolerance = 1e-3\nend\n"
+                          "subsection Tolerances\n  set force = 1e-2\nend\n";
+  const fs::path reports = folder.path() / "reports";
+  REQUIRE(run({scene.string(), "--reports", reports.string(), "--quiet"}) == 0);
+
+  const auto rows = read_csv(reports / "punch_h" / "errors.csv");
+  const std::vector<std::string> columns{"quantity", "metric", "method", "reference", "reference_value", "value",
+                                         "abs_error", "rel_error", "tolerance", "pass", "dofs", "seconds", "error"};
+  REQUIRE(rows.size() == 4);
+  CHECK(rows[0] == columns);
+  const double sneddon = 2 * 2e9 * 1e-4 * 1e-6 / (1 - 0.3 * 0.3);
+  std::vector<double> errors;
+  for (std::size_t i = 1; i < rows.size(); ++i)
+    {
+      const auto &r = rows[i];
+      REQUIRE(r.size() == columns.size());
+      CAPTURE(i, r[0], r[2], r[4], r[5], r[7]);
+      CHECK(r[0] == "force");
+      CHECK(r[2] == "FE (" + std::to_string(i - 1) + " ref.)");
+      CHECK(std::stod(r[4]) == Approx(sneddon).epsilon(1e-14));
+      const double value = std::stod(r[5]);
+      CHECK(std::stod(r[7]) == Approx(std::abs(value / sneddon - 1)).epsilon(1e-10));
+      CHECK(r[9] == "pass");
+      errors.push_back(std::abs(value / sneddon - 1));
+    }
+  // Each refinement divides the error by about 4 (h^2).
+  CHECK(errors[0] / errors[1] == Approx(4).epsilon(0.15));
+  CHECK(errors[1] / errors[2] == Approx(4).epsilon(0.15));
+  CHECK(errors[2] < 1e-3);
+
+  std::ifstream in(reports / "punch_h" / "convergence.md");
+  const std::string md((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  for (const char *level : {"| 0 |", "| 1 |", "| 2 |"})
+    CHECK(md.find(level) != std::string::npos);
+  const std::string marker = "Observed order over the last three levels: ";
+  const auto at = md.find(marker);
+  REQUIRE(at != std::string::npos);
+  const double order = std::stod(md.substr(at + marker.size()));
+  CHECK(order > 1.8);
+  CHECK(order < 2.3);
 }
