@@ -24,6 +24,12 @@ namespace gradcontact
     // about log10(1/distance) digits to cancellation, so Euler's integral is used instead.
     constexpr double degenerate_width = 0.05;
     bool near_integer(const double s) { return std::abs(s - std::round(s)) < degenerate_width; }
+    // Region predicate of hyp2f1_minus_one above z = 1/2: the difference F - 1 of a correctly rounded F
+    // loses eps |F| / |F - 1| relative, at most one bit where |F - 1| >= |F|/2. Below that (a b -> 0, e.g.
+    // k -> -1 in 9.73, where F - 1 = O(a b)) the connection formula's own rounding is amplified too: the
+    // difference loses 4.4e-14 at k = -0.906, z = 0.516 (the family of 9.73), the Taylor steps of the
+    // equation for F - 1 keep 1.6e-15 (tests/data/special_functions.csv, rows hyp2f1_minus_one).
+    bool difference_keeps_digits(const double F) { return std::abs(F - 1.) >= 0.5 * std::abs(F); }
 
     double hyp2f1_taylor(const double a, const double b, const double c, const double z)
     {
@@ -46,7 +52,8 @@ namespace gradcontact
     //
     // With minus_one, the same for u = F - 1, which solves the equation with the source a b on the right
     // (z (1-z) u'' + [c - (a+b+1) z] u' - a b u = a b): where F - 1 is small (a b -> 0) every term of u
-    // keeps its relative accuracy, while F - 1 formed at the end would lose eps/|F - 1|.
+    // keeps its relative accuracy, while F - 1 formed at the end would lose eps |F|/|F - 1| (used wherever that
+    // loss exceeds one bit, not only where the connection formula is degenerate).
     double hyp2f1_taylor_minus_one(double a, double b, double c, double z);
 
     double hyp2f1_ode(const double a, const double b, const double c, const double w, const bool minus_one = false)
@@ -190,8 +197,9 @@ namespace gradcontact
     if (detail::taylor_region(z))
       return detail::hyp2f1_taylor_minus_one(a, b, c, z);
     const double s = c - a - b;
-    if (!detail::near_integer(s))
+    if (!detail::near_integer(s) && detail::difference_keeps_digits(F))
       return F - 1.;
+    // F - 1 directly: the Taylor steps of its inhomogeneous equation (no difference formed)
     const double w = one_minus_z >= 0. ? one_minus_z : 1. - z;
     if (w > 0.)
       return detail::hyp2f1_ode(a, b, c, w, true);

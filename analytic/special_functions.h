@@ -29,8 +29,9 @@ namespace gradcontact
   /// instead of 1 - z.
   double hyp2f1(double a, double b, double c, double z, double one_minus_z = -1.);
 
-  /// 2F1(a, b; c; z) - 1 without the cancellation of the difference for small z (the Taylor series
-  /// without its first term for z <= 1/2; the difference above). Same arguments as hyp2f1.
+  /// 2F1(a, b; c; z) - 1 without the cancellation of the difference: the Taylor series without its first
+  /// term for z <= 1/2; above, the difference where it loses at most one bit, else the Taylor steps of
+  /// the hypergeometric equation for F - 1 (or expm1 of Gauss's sum at z = 1). Same arguments as hyp2f1.
   double hyp2f1_minus_one(double a, double b, double c, double z, double one_minus_z = -1.);
 
   /// 1 / Gamma(x), zero at the poles x = 0, -1, -2, ...

@@ -33,6 +33,37 @@ namespace gradcontact::testing
   // cancellation of either loses 1e-11 and more (measured: 2.8e-11 near the edge, 5.5e-11 at small x, 1e-8
   // and more for the loop area), so the comparison is 1e-12.
   constexpr double tol_targeted = 1e-12;
+  // The requests are valid by construction, so a closed form answers every one (0 refusals over 2e5 points,
+  // seeds 12345 and 20261122; 0 over 1e5 points of property_run, seed 20261123). An explicit refusal is still an
+  // answer (no critical state, a load beyond the gross-slip limit), but a run that is mostly refused tests
+  // nothing: at most this fraction of the evaluated points may be refused (test_closed_vs_mdr.cc, property_run).
+  constexpr double max_refused_fraction = 0.1;
+
+  /// p(0) of a power-law tip (cone n = 1, power_law, jkr_power_law) with n + k - 1 < (1 + k)/10: the
+  /// numerical MDR's integrand p(0) ~ int_0 x^(n+k-2) dx has its mass below the smallest double there, and it
+  /// refuses these requests explicitly (analytic/batch.cc). The one region where the closed form answers alone.
+  inline bool centre_out_of_reach(const nlohmann::json &q)
+  {
+    if (q.value("quantity", "") != "pressure" || !q.contains("r") || q["r"].get<double>() != 0.)
+      return false;
+    const std::string c = q.value("case", "");
+    double n = 0.;
+    if (c == "cone")
+      n = 1.;
+    else if (c == "power_law" || c == "jkr_power_law")
+      n = q["geometry"]["n"].get<double>();
+    else
+      return false;
+    const double k = q["material"]["k"].get<double>();
+    return (n - 1.) + k < 0.1 * (1. + k);
+  }
+
+  /// The numerical MDR's error on request q is its explained refusal of p(0) (centre_out_of_reach), and q
+  /// is such a request: any other refusal is a disagreement.
+  inline bool excused_centre_refusal(const nlohmann::json &q, const std::string &numeric_error)
+  {
+    return numeric_error.find("cannot resolve p(0)") != std::string::npos && centre_out_of_reach(q);
+  }
 
   class RandomRequests
   {

@@ -24,18 +24,11 @@ using nlohmann::json;
 
 namespace
 {
+  using testing::max_refused_fraction;
   using testing::relative_floor;
+  using testing::resolve;
   using testing::tol_closed_vs_mdr;
   using testing::tol_targeted;
-
-  /// The numerical MDR refuses p(0) of a tip with n + k -> 1 (its integrand lies below the smallest double);
-  /// the closed form answers alone there.
-  bool refused_centre(const batch::Answer &numeric)
-  {
-    return !numeric.ok && numeric.error.find("cannot resolve p(0)") != std::string::npos;
-  }
-
-  using testing::resolve;
 
   batch::Answer evaluate(json q, const char *method)
   {
@@ -57,8 +50,8 @@ namespace
         const batch::Answer numeric = evaluate(q, "numerical_mdr");
         const std::string request = q.dump();
         CAPTURE(request, region, closed.error, numeric.error);
-        if (closed.ok && refused_centre(numeric))
-          continue;
+        if (closed.ok && !numeric.ok && testing::excused_centre_refusal(q, numeric.error))
+          continue; // the closed form answers alone (random_requests.h)
         REQUIRE(closed.ok == numeric.ok); // both valid or both rejected
         if (!closed.ok)
           continue;
@@ -119,7 +112,8 @@ TEST_CASE("closed forms give no NaN or inf over 1e5 random points", "[analytic]"
       else if (a.error.find("internal error") != std::string::npos || a.error.empty())
         FAIL("unexplained error for " << q.dump() << ": " << a.error);
     }
-  CHECK(valid > 90000);
+  CAPTURE(valid, max_refused_fraction);
+  CHECK(100000 - valid <= max_refused_fraction * 100000);
 }
 
 TEST_CASE("ERRATA 9.20: the printed cone displacement is wrong, the corrected one agrees", "[analytic]")
@@ -182,6 +176,24 @@ TEST_CASE("regression: the optimal profile near the axis (found by the 1e5-point
   REQUIRE(closed.ok);
   CAPTURE(closed.value, reference);
   CHECK(std::abs(closed.value / reference - 1.) < 1e-13);
+}
+
+TEST_CASE("The middle of a large loop at k -> -1 shall keep its digits (the second difference of 9.84 as (k+3)/2 -> 1)",
+          "[analytic]")
+{
+  // F_x at u0 = 0 on unloading, as a fraction of F_A = 0.95 mu F_N: [n(v_A) - 2 n(v_A/2)] / n(v_A) with
+  // n(v) = 1 - (1 - v)^Q, Q = (k+3)/2 = 1 + 2^-11 (exact) and n(v_A) = 0.95 (9.84, 9.85). The second
+  // difference vanishes like Q - 1; its printed form 2 (1-h)^Q - (1-2h)^Q - 1 at h = v_A/2 = 0.47 loses
+  // 3.1e-13 here.
+  const Medium m = medium(GradedHalfSpace{1e9, 1e-3, -0.9990234375, 0.3});
+  const double R = 1e-2, a = 1e-4, mu = 0.3;
+  const double FA = 0.95 * mu * force(m, Paraboloid{R}, a);
+  const double ratio =
+    tangential::hysteresis_force(m, tangential::SphereSlip{R, mu}, a, FA, Branch::unloading, 0.) / FA;
+  // mpmath at 40 digits: Q = 1 + 2^-11, vA = 1 - 0.05^(1/Q), (0.95 - 2 (1 - (1 - vA/2)^Q)) / 0.95
+  const double reference = -2.7067199363631744929e-4;
+  CAPTURE(ratio, reference);
+  CHECK(std::abs(ratio / reference - 1.) < 1e-14);
 }
 
 TEST_CASE("The reversal radius of an oscillation (9.81) shall equal the numerical MDR's and its end states",
