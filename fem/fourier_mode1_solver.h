@@ -49,7 +49,8 @@
 //
 // Quadrature: the stiffness uses the rules of graded_elasticity.h (Gauss-Jacobi in the cells at z = 0
 // when E ~ z^s there); the traction integrals are split at `radius` and at the breakpoints of tau
-// (a kink such as the stick radius c) and graded geometrically toward them, 8 Gauss points per piece.
+// (a kink such as the stick radius c) and graded geometrically toward them, 8 Gauss points per piece,
+// also on the faces next to one (within two face lengths; fem/surface_trace.h, traction_integrals).
 //
 // Check. Every run compares pi u.Au with the work of the loads (prescribed displacements and
 // tractions); above 1e-6 the result is marked unreliable.

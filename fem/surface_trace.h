@@ -74,7 +74,9 @@ namespace gradcontact::fem
                            std::vector<std::pair<double, double>> &points);
 
   /// For every face, \int_{face, r <= radius} t(r) phi_i(r) r dr for its nodes i (phi_i the Lagrange
-  /// basis of the face), split at `breakpoints` (kinks of t) and at `radius`, graded toward them.
+  /// basis of the face), split at `breakpoints` (kinks of t) and at `radius`, graded toward them, also
+  /// where one lies in a neighbouring face within two piece lengths of the end (a nearby singularity
+  /// outside a piece slows Gauss down as much as one at its end).
   /// `where` names the load in the error thrown when t is not finite.
   std::vector<std::vector<double>> traction_integrals(const std::vector<SurfaceFace> &faces,
                                                       const std::function<double(double)> &t, double radius,

@@ -15,6 +15,7 @@
 #include <cmath>
 #include <iostream>
 #include <memory>
+#include <vector>
 
 using namespace gradcontact::fem;
 using Catch::Matchers::WithinAbs;
@@ -267,4 +268,70 @@ TEST_CASE("The FE pull-off force converges at the energy rate 2p under uniform h
       CHECK(order > 1.8);
       CHECK(order < 2.3);
     }
+}
+
+TEST_CASE("The FE pull-off error shall be the error of the two FE states it is built from (k = 0), and fall "
+          "with the edge cell",
+          "[verification]")
+{
+  // Requirement: the critical-state search and the fit of ln K, ln F_n add nothing measurable to the
+  // pull-off force; its error is that of the FE states. At k = 0 the meshes of all radii are scaled copies,
+  // so the FE gives K = K_1 a and F_n = A a^3 exactly; F(a) = F_n - K delta with delta = sqrt(4 pi a dgamma
+  // / K') (the JKR superposition, 9.45-9.49) has its minimum at F_c = -pi dgamma K_1 / A. Against JKR's
+  // -3/2 pi dgamma R (K_1 = 2 E*, A = 4 E* / (3 R): Boussinesq and Hertz, 9.16 and 9.26) the relative error
+  // is therefore (1 + e_K) / (1 + e_Fn) - 1, with e_K and e_Fn the errors of the flat-punch stiffness and
+  // of the non-adhesive force at one radius against the closed forms.
+  // Scene: the paraboloid of `gradcontact bench` (E0 = 2 GPa, c0 = 3 a, a = 0.1 mm, R = 50 a, dgamma =
+  // 0.05 J/m^2), degree 3, on its levels 2 and 3 (fe_mesh_level in cases/fe_bench.cc: h_edge 1e-4 a, rings
+  // 1.3, h_far 4; h_edge 1e-5 a, rings 1.15, h_far 3).
+  // Measured, level 2: e_K = 1.17e-5, e_Fn = 2.02e-5, F_c -8.48e-6 (degree 4: 6.7e-6, 1.20e-5, -5.3e-6).
+  // Both states are limited by the edge cell (the edge singularity: a degree step gains 1.7x, rings of 1.15
+  // change F_c by 6e-7), and the error of F_n exceeds that of K there, so the pull-off error is negative at
+  // level 2 while it is positive at levels 0-1 (level 1: e_K = 2.9e-5, e_Fn = -2.4e-5, F_c 5.3e-5).
+  // Level 3: e_K = 7.9e-7, e_Fn = 7.1e-7, F_c 7.8e-8 (degree 4: 1.4e-8).
+  // The error of F_c minus (1 + e_K) / (1 + e_Fn) - 1: 7.5e-14 / 3.5e-12 at levels 2 / 3 (the fitted
+  // a K'/K is 1 within 1e-11 and enters F_c one to one; the search ends where F is flat in a).
+  // Tolerances: the search and fit 1e-10; the level-2 deviation is tracked at its measured value (5 %: a
+  // change of the mesh or of a state's accuracy shows here); level 3 at 10x its measurement.
+  constexpr double search_tolerance = 1e-10;
+  constexpr double level2_error     = -8.48e-6;
+  constexpr double level2_tolerance = 0.05;
+  constexpr double level3_bound     = 8e-7;
+  const double     k                = 0.;
+  const auto       m                = medium(k);
+  const double     F_c_jkr          = -1.5 * pi * dgamma * R; // JKR (1971), force control
+  struct Level
+  {
+    double h_edge, ring_growth, h_far;
+  };
+  std::vector<double> errors;
+  for (const Level level : {Level{1e-4, 1.3, 4.}, Level{1e-5, 1.15, 3.}})
+    {
+      AdhesiveContact sphere(power_law_material(k), Profile::paraboloid(R), [level](const double a) {
+        Settings s{recommended_mesh_parameters(a, 0.), DiscretizationParameters{}};
+        s.mesh.h_edge           = level.h_edge;
+        s.mesh.ring_growth      = level.ring_growth;
+        s.mesh.h_far            = level.h_far;
+        s.discretization.degree = 3;
+        return s;
+      });
+      const auto ref = gradcontact::jkr::critical_state(m, gradcontact::Paraboloid{R}, dgamma,
+                                                        gradcontact::jkr::Control::force);
+      const auto   c           = sphere.critical_state(dgamma, AdhesionControl::force, 1.2 * ref.radius);
+      const double a_c         = c.state.radius;
+      const auto  &state       = sphere.state(a_c); // K and F_n at a_c (scale-free at k = 0: any radius)
+      const double e_K         = state.stiffness / gradcontact::force(m, gradcontact::FlatPunch{a_c}, 1.) - 1;
+      const double e_Fn        = state.force / gradcontact::force(m, gradcontact::Paraboloid{R}, a_c) - 1;
+      const double error       = c.state.force / F_c_jkr - 1;
+      const double from_states = (1 + e_K) / (1 + e_Fn) - 1;
+      std::cout << "[verification] pull-off k = 0, degree 3, h_edge " << level.h_edge << " a: error " << error
+                << " (e_K " << e_K << ", e_Fn " << e_Fn << ", error - from states " << error - from_states << ")\n";
+      CAPTURE(level.h_edge, error, e_K, e_Fn, from_states, error - from_states, c.state.scaling_exponent,
+              c.search_shift, c.max_dofs);
+      CHECK_THAT(error, WithinAbs(from_states, search_tolerance));
+      errors.push_back(error);
+    }
+  CAPTURE(errors[0], level2_error, level2_tolerance, errors[1], level3_bound);
+  CHECK_THAT(errors[0], WithinRel(level2_error, level2_tolerance));
+  CHECK(std::abs(errors[1]) < level3_bound);
 }

@@ -258,10 +258,16 @@ TEST_CASE("Under an oscillating tangential force the solver shall follow the unl
   // r <= c_A, where nothing ever slipped (in c_A < r <= b the slip of the loading stays). The loop area
   // W = \int_{-F_A}^{F_A} [u_un(F) - u_re(F)] dF, u_re(F) = -u_un(-F), by 12-point Gauss-Legendre in F;
   // the same rule on the closed-form u_un reproduces (9.86) to 2.3e-9, so the quadrature is not the limit.
-  // Measured: branch u0 <= 3.9e-8, W 4.1e-7 (without the levels toward c_A: 6e-5 and 8.4e-5).
+  // Measured: branch u0 <= 3.9e-8, W 5.3e-8 (without the levels toward c_A: 6e-5 and 8.4e-5).
+  // F_x of the quadrature of tau (9.82) against Fx: <= 1.0e-11 at all 15 forces, the largest at
+  // Fx = -0.125 F_A, whose reversal radius b = 0.7903 a lies 4.3e-4 a (0.017 face lengths) beyond the end
+  // of the face [0.7647, 0.7899] a: the traction integrals grade that face toward b (fem/surface_trace.h);
+  // integrated with one Gauss rule it is 4.1e-6 off, and W 4.1e-7. What remains is the graded rule's own
+  // error at a kink (16 pieces of ratio 0.25, 8 points each).
   // Tolerances: 10x the measurement; the required bound for W is 1e-4.
   constexpr double branch_tolerance = 4e-7;
-  constexpr double energy_tolerance = 4e-6;
+  constexpr double energy_tolerance = 5e-7;
+  constexpr double force_tolerance  = 1e-10;
   namespace t                       = gradcontact::tangential;
   const double k = 0, nu = 0.3, R = 50 * a, mu = 0.3, phi = 0.9;
   const auto   medium = gradcontact::medium(gradcontact::GradedHalfSpace{E0, c0, k, nu});
@@ -280,11 +286,8 @@ TEST_CASE("Under an oscillating tangential force the solver shall follow the unl
     const TangentialResult res = solver.run(TangentialLoad::profile(tau, a, cA, cuts));
     CAPTURE(Fx / FA, b / a, cA / a);
     REQUIRE(res.reliable);
-    // F_x of the quadrature of tau (9.82) against Fx: measured <= 1e-10 at 14 of 15 forces, but 4.1e-6
-    // at Fx = -0.125 F_A (b = 0.7903 a, 4.3e-4 a inside a surface face): not explained yet (the loading
-    // traction (9.80) gives 1e-15 everywhere); bounded here at 2.5x that value (fem/README.md, "Limits").
-    CAPTURE(res.force, Fx, res.force / Fx - 1);
-    REQUIRE_THAT(res.force, WithinRel(Fx, 1e-5));
+    CAPTURE(res.force, Fx, res.force / Fx - 1, force_tolerance);
+    REQUIRE_THAT(res.force, WithinRel(Fx, force_tolerance));
     return res.stick.mean_ux;
   };
   for (const double f : {0.5, -0.5, -1.0})
