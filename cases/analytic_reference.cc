@@ -90,6 +90,7 @@ namespace gradcontact::cases
   {
     const MaterialParameters &m = s.material;
     base.material = GradedHalfSpace{m.E0, m.c0, m.k, m.nu};
+    idealised_material = m.modulus != MaterialParameters::Modulus::power_law;
     base.method = method;
     if (problem == Problem::tangential)
       {
@@ -139,6 +140,7 @@ namespace gradcontact::cases
 
   std::string AnalyticReference::label() const
   {
-    return base.method == batch::Method::closed_form ? "closed form" : "numerical MDR";
+    const std::string method = base.method == batch::Method::closed_form ? "closed form" : "numerical MDR";
+    return idealised_material ? method + " (power-law idealisation E0, c0, k)" : method;
   }
 } // namespace gradcontact::cases

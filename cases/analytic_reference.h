@@ -54,11 +54,16 @@ namespace gradcontact::cases
     /// The contact radius of the reference state (given, or solved from d or F).
     double radius() const;
     batch::Method method() const { return base.method; }
-    /// "closed form" or "numerical MDR", for report rows.
+    /// "closed form" or "numerical MDR", for report rows; when the scene's modulus is not the power law
+    /// (layered, an expression, ...), followed by " (power-law idealisation E0, c0, k)": the chapter's
+    /// material, not the scene's.
     std::string label() const;
+    /// Whether the scene's modulus differs from the power law E0 (z/c0)^k the reference assumes.
+    bool idealised() const { return idealised_material; }
 
   private:
     batch::Request base;
+    bool idealised_material = false;
   };
 } // namespace gradcontact::cases
 

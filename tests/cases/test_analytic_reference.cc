@@ -100,3 +100,17 @@ TEST_CASE("The tangential reference shall carry the scene's sphere and friction 
   CHECK(closed.get("flat_punch", "force", [](batch::Request &q) { q.d = 1e-7; }) ==
         value_of(R"({"case":"flat_punch","quantity":"force",)" + material + R"(,"a":1e-4,"d":1e-7})"));
 }
+
+TEST_CASE("A reference for a scene whose modulus is not the power law shall say it uses the power-law "
+          "idealisation",
+          "[cases]")
+{
+  const AnalyticReference power(scene_with(with_material({"Load/type=flat punch"})), batch::Method::closed_form,
+                                AnalyticReference::Problem::normal);
+  CHECK(power.label() == "closed form");
+  CHECK_FALSE(power.idealised());
+  const AnalyticReference layered(scene_with(with_material({"Load/type=flat punch", "Material/modulus=layered"})),
+                                  batch::Method::numerical_mdr, AnalyticReference::Problem::normal);
+  CHECK(layered.idealised());
+  CHECK(layered.label() == "numerical MDR (power-law idealisation E0, c0, k)");
+}
