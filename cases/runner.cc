@@ -1,6 +1,7 @@
 #include "runner.h"
 
 #include "fe_adhesion.h"
+#include "fe_map.h"
 #include "fe_scene.h"
 #include "fe_tangential.h"
 #include "report.h"
@@ -223,6 +224,8 @@ namespace gradcontact::cases
             return run_adhesion_scene(scene, folder, verbose);
           case SceneKind::tangential:
             return run_tangential_scene(scene, folder, verbose);
+          case SceneKind::map:
+            return run_map_scene(scene, folder, verbose);
         }
       throw std::logic_error("run_scene: scene " + scene.file + " has no kind");
     }

@@ -51,13 +51,21 @@ namespace gradcontact::cases
     prm.declare_entry("c0", "1e-3", Patterns::Double(0.), "Characteristic depth c0 [m], > 0.");
     prm.declare_entry("k", "0.5", Patterns::Double(-1., 1.), "Exponent k of the grading, -1 < k < 1.");
     prm.declare_entry("nu", "0.3", Patterns::Double(0., 0.5), "Poisson ratio, 0 <= nu <= 1/2; the FE model needs Discretization/formulation = mixed (or automatic) at nu = 1/2.");
-    prm.declare_entry("modulus", "power law", Patterns::Selection("power law|layered|expression"),
+    prm.declare_entry("modulus", "power law",
+                      Patterns::Selection("power law|layered|expression|shifted power law|coating|table"),
                       "How the FE model represents E(z): pointwise power law, N layers with exact layer "
-                      "averages, or an expression in z.");
+                      "averages, an expression in z, E0 ((z + z0)/c0)^k (a finite surface modulus), a graded "
+                      "coating of thickness H on the homogeneous substrate E0 (H/c0)^k, or a CSV table. The "
+                      "closed forms and the numerical MDR always use the power law E0 (z/c0)^k.");
     prm.declare_entry("layers", "16", Patterns::Integer(1, 100000), "Layered modulus: number of layers.");
     prm.declare_entry("layered depth", "10", Patterns::Double(0.), "Layered modulus: depth of the layered zone / a.");
     prm.declare_entry("expression", "E0*(z/c0)^k", Patterns::Anything(),
                       "Expression modulus: E(z) (muparser; constants E0, c0, k).");
+    prm.declare_entry("surface depth", "0", Patterns::Double(0.), "Shifted power law: z0 [m], > 0.");
+    prm.declare_entry("coating thickness", "0", Patterns::Double(0.), "Coating: its thickness H [m], > 0.");
+    prm.declare_entry("table file", "", Patterns::Anything(),
+                      "Table: a CSV file of z [m], E [Pa] rows (z from 0, increasing; linear between rows, "
+                      "constant below the last); a relative path is taken from the scene's folder.");
     prm.leave_subsection();
   }
   void MaterialParameters::parse(ParameterHandler &prm)
@@ -68,11 +76,28 @@ namespace gradcontact::cases
     k = prm.get_double("k");
     nu = prm.get_double("nu");
     const std::string m = prm.get("modulus");
-    modulus = m == "power law" ? Modulus::power_law : (m == "layered" ? Modulus::layered : Modulus::expression);
+    const std::map<std::string, Modulus> moduli{{"power law", Modulus::power_law},
+                                                {"layered", Modulus::layered},
+                                                {"expression", Modulus::expression},
+                                                {"shifted power law", Modulus::shifted_power_law},
+                                                {"coating", Modulus::coating},
+                                                {"table", Modulus::table}};
+    modulus = moduli.at(m);
     layers = prm.get_integer("layers");
     layered_depth = prm.get_double("layered depth");
     expression = prm.get("expression");
+    surface_depth = prm.get_double("surface depth");
+    coating_thickness = prm.get_double("coating thickness");
+    table_file = prm.get("table file");
     prm.leave_subsection();
+    if (modulus == Modulus::shifted_power_law && !(surface_depth > 0.))
+      throw std::invalid_argument("Material/surface depth = " + format(surface_depth) +
+                                  " must be z0 in (0, inf) [m] with Material/modulus = shifted power law");
+    if (modulus == Modulus::coating && !(coating_thickness > 0.))
+      throw std::invalid_argument("Material/coating thickness = " + format(coating_thickness) +
+                                  " must be H in (0, inf) [m] with Material/modulus = coating");
+    if (modulus == Modulus::table && table_file.empty())
+      throw std::invalid_argument("Material/table file is empty: Material/modulus = table needs a CSV file");
     if (E0 <= 0. || c0 <= 0.)
       throw std::invalid_argument("Material: E0 and c0 must be > 0");
     if (k <= -1. || k >= 1.)
@@ -354,6 +379,41 @@ namespace gradcontact::cases
                                   " must be F_A/(mu F_N) in (0, 1); at 1 and above the sphere slides (gross slip)");
   }
 
+  void MapParameters::declare(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Map");
+    prm.declare_entry("parameter", "none", Patterns::Selection("none|surface depth|coating thickness"),
+                      "What the ratios set: none (no map), surface depth (Material/modulus = shifted power law, "
+                      "z0 = a / ratio) or coating thickness (Material/modulus = coating, H = a / ratio).");
+    prm.declare_entry("ratios", "", Patterns::List(Patterns::Double(0.), 0, 100),
+                      "The ratios a/z0 or a/H of the map, > 0.");
+    prm.declare_entry("k values", "", Patterns::List(Patterns::Double(-1., 1.), 0, 20),
+                      "The exponents k of the map, -1 < k < 1; empty: Material/k.");
+    prm.declare_entry("thresholds", "0.01, 0.001", Patterns::List(Patterns::Double(0.), 1, 10),
+                      "Deviations from the power law whose ratio the map reports (\"within 1 % when a/z0 >= ...\").");
+    prm.leave_subsection();
+  }
+  void MapParameters::parse(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Map");
+    const std::string p = prm.get("parameter");
+    parameter = p == "surface depth" ? Parameter::surface_depth
+                                     : (p == "coating thickness" ? Parameter::coating_thickness : Parameter::none);
+    ratios = to_doubles(prm.get("ratios"));
+    exponents = to_doubles(prm.get("k values"));
+    thresholds = to_doubles(prm.get("thresholds"));
+    prm.leave_subsection();
+    for (const double r : ratios)
+      if (!(r > 0.))
+        throw std::invalid_argument("Map/ratios: " + format(r) + " must be in (0, inf)");
+    for (const double k : exponents)
+      if (!(k > -1. && k < 1.))
+        throw std::invalid_argument("Map/k values: " + format(k) + " must be in (-1, 1)");
+    for (const double t : thresholds)
+      if (!(t > 0.))
+        throw std::invalid_argument("Map/thresholds: " + format(t) + " must be in (0, inf)");
+  }
+
   std::string to_string(const SceneKind kind)
   {
     switch (kind)
@@ -368,6 +428,8 @@ namespace gradcontact::cases
           return "adhesion";
         case SceneKind::tangential:
           return "tangential";
+        case SceneKind::map:
+          return "map";
       }
     return "unknown";
   }
@@ -451,6 +513,26 @@ namespace gradcontact::cases
           throw std::invalid_argument(where + "Load/contact = unilateral is a normal-contact scene (no Adhesion, "
                                       "Tangential or Candidate entries)");
       }
+    if (s.map.enabled())
+      {
+        using Type = LoadParameters::Type;
+        if (s.tangential.enabled() || s.adhesion.enabled(s.load) || !s.candidate.profile.empty() ||
+            s.load.contact == LoadParameters::Contact::unilateral)
+          throw std::invalid_argument(where + "Map/parameter is set: a map is a normal-contact scene (no Adhesion, "
+                                      "Tangential or Candidate entries, Load/contact = disc)");
+        if (s.load.type == Type::constant_pressure || s.load.type == Type::concave_punch)
+          throw std::invalid_argument(where + "Map/parameter is set with Load/type = " +
+                                      (s.load.type == Type::constant_pressure ? "constant pressure" : "concave punch") +
+                                      ": a map needs a flat punch, paraboloid, cone or power law");
+        if (s.load.control != LoadParameters::Control::contact_radius)
+          throw std::invalid_argument(where + "Map/parameter is set: Load/control must be contact radius (the map "
+                                      "runs at Load/a and compares at the FE depth)");
+        if (!s.references.fem)
+          throw std::invalid_argument(where + "Map/parameter is set with References/fem = false: a map is FE data");
+        if (s.map.ratios.empty())
+          throw std::invalid_argument(where + "Map/ratios is empty: give the ratios a/z0 or a/H of the map");
+        return SceneKind::map;
+      }
     if (s.tangential.enabled())
       {
         if (s.adhesion.enabled(s.load))
@@ -495,6 +577,7 @@ namespace gradcontact::cases
       CandidateParameters::declare(prm);
       AdhesionParameters::declare(prm);
       TangentialParameters::declare(prm);
+      MapParameters::declare(prm);
     }
   } // namespace
 
@@ -567,6 +650,7 @@ namespace gradcontact::cases
         s.candidate.parse(prm);
         s.adhesion.parse(prm);
         s.tangential.parse(prm);
+        s.map.parse(prm);
       }
     catch (const std::exception &e)
       {

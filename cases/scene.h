@@ -27,13 +27,19 @@ namespace gradcontact::cases
     {
       power_law,
       layered,
-      expression
+      expression,
+      shifted_power_law, ///< E0 ((z + z0)/c0)^k: a finite surface modulus
+      coating,           ///< the power law over 0 < z <= H on the homogeneous substrate E0 (H/c0)^k
+      table              ///< a measured E(z) from a CSV file (z [m], E [Pa])
     };
     double E0 = 1e9, c0 = 1e-3, k = 0.5, nu = 0.3;
     Modulus modulus = Modulus::power_law;
     unsigned int layers = 16;    ///< layered: number of layers
     double layered_depth = 10.;  ///< layered: depth of the layered zone / a (below: the power law)
     std::string expression;      ///< expression: E(z), constants E0, c0, k
+    double surface_depth = 0.;   ///< shifted power law: z0 [m], > 0
+    double coating_thickness = 0.; ///< coating: H [m], > 0
+    std::string table_file;      ///< table: the CSV file (relative to the scene's folder)
     static void declare(dealii::ParameterHandler &prm);
     void parse(dealii::ParameterHandler &prm);
   };
@@ -168,6 +174,26 @@ namespace gradcontact::cases
     void parse(dealii::ParameterHandler &prm);
   };
 
+  /// An applicability map (cases/fe_map.h): the FE model of a real grading (a finite surface modulus or a
+  /// coating) against the power-law closed forms, over ratios a/z0 or a/H and several k. A scene is a map
+  /// when `parameter` is not none.
+  struct MapParameters
+  {
+    enum class Parameter
+    {
+      none,
+      surface_depth,    ///< Material/modulus = shifted power law, z0 = a / ratio
+      coating_thickness ///< Material/modulus = coating, H = a / ratio
+    };
+    Parameter parameter = Parameter::none;
+    std::vector<double> ratios;     ///< a/z0 or a/H, > 0
+    std::vector<double> exponents;  ///< k values; empty: Material/k
+    std::vector<double> thresholds = {0.01, 0.001}; ///< deviations whose ratio the map reports
+    bool enabled() const { return parameter != Parameter::none; }
+    static void declare(dealii::ParameterHandler &prm);
+    void parse(dealii::ParameterHandler &prm);
+  };
+
   /// What a scene checks, decided once from its entries by scene_kind(); the runner dispatches on it.
   enum class SceneKind
   {
@@ -175,10 +201,11 @@ namespace gradcontact::cases
     analytic,   ///< References/fem = false: the closed form against the numerical MDR only (cases/fe_scene.h)
     candidate,  ///< Candidate/profile set: a user's closed forms against the numerical MDR and the FE model
     adhesion,   ///< Adhesion/work of adhesion > 0, or the optimal profile (cases/fe_adhesion.h)
-    tangential  ///< Tangential/study != none (cases/fe_tangential.h)
+    tangential, ///< Tangential/study != none (cases/fe_tangential.h)
+    map         ///< Map/parameter != none (cases/fe_map.h)
   };
 
-  /// The name of a kind, for reports ("normal", "analytic", "candidate", "adhesion", "tangential").
+  /// The name of a kind, for reports ("normal", "analytic", "candidate", "adhesion", "tangential", "map").
   std::string to_string(SceneKind kind);
 
   struct Scene
@@ -194,6 +221,7 @@ namespace gradcontact::cases
     CandidateParameters candidate;
     AdhesionParameters adhesion;
     TangentialParameters tangential;
+    MapParameters map;
     std::string resolved; ///< every entry after overrides, as a .prm, stored with the report
     SceneKind kind = SceneKind::normal; ///< scene_kind() of the entries, set by read_scene
   };

@@ -8,6 +8,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <fstream>
+#include <limits>
 #include <sstream>
 #include <stdexcept>
 
@@ -21,6 +23,46 @@ namespace gradcontact::fem
     // [z1, z2] with z1 > 0 is split at z1 * 2^j: E varies by a bounded factor on each piece.
     constexpr double average_split_ratio = 2.0;
 
+    // The mean of (x/c)^k over [x2 - length, x2], 0 < length <= x2, c > 0:
+    //   (x2/c)^k (1 - t^{1+k}) / ((1+k)(1 - t)),  t = x1/x2,  1 - t = length/x2,
+    // with 1 - t^{1+k} = -expm1((1+k) log1p(-length/x2)): short intervals deep down (or far below a
+    // shift) do not cancel; the length is passed, not x2 - x1, for the same reason.
+    double power_mean(const double c, const double k, const double x2, const double length)
+    {
+      const double one_minus_t = length / x2;
+      const double factor      = (one_minus_t == 1.0) ?
+                                   1.0 / (1.0 + k) :
+                                   -std::expm1((1.0 + k) * std::log1p(-one_minus_t)) / ((1.0 + k) * one_minus_t);
+      return std::pow(x2 / c, k) * factor;
+    }
+
+    std::string decimal(const double x)
+    {
+      std::ostringstream s;
+      s.precision(17);
+      s << x;
+      return s.str();
+    }
+
+    void check_average_interval(const std::string &where, const double z1, const double z2)
+    {
+      if (!(z1 >= 0.0))
+        fail(where, "z1", z1, "[0, inf)");
+      if (!(z2 > z1))
+        fail(where, "z2", z2, "(z1, inf)");
+    }
+
+    // E0, c0 and k of the power law (9.1), shared by the fields built on it.
+    void check_power_law(const std::string &where, const double E0, const double c0, const double k)
+    {
+      if (!(E0 > 0.0) || !std::isfinite(E0))
+        fail(where, "E0", E0, "(0, inf)");
+      if (!(c0 > 0.0) || !std::isfinite(c0))
+        fail(where, "c0", c0, "(0, inf)");
+      // k = 1 is the Gibson medium (9.42); whether a solver accepts it is decided by Material::validate.
+      if (!(k > -1.0 && k <= 1.0))
+        fail(where, "k", k, "(-1, 1]");
+    }
   } // namespace
 
 
@@ -64,13 +106,7 @@ namespace gradcontact::fem
     , c0(c0)
     , k(k)
   {
-    if (!(E0 > 0.0) || !std::isfinite(E0))
-      fail("PowerLawModulus", "E0", E0, "(0, inf)");
-    if (!(c0 > 0.0) || !std::isfinite(c0))
-      fail("PowerLawModulus", "c0", c0, "(0, inf)");
-    // k = 1 is the Gibson medium (9.42); whether a solver accepts it is decided by Material::validate.
-    if (!(k > -1.0 && k <= 1.0))
-      fail("PowerLawModulus", "k", k, "(-1, 1]");
+    check_power_law("PowerLawModulus", E0, c0, k);
   }
 
   double PowerLawModulus::value(const double z) const
@@ -97,6 +133,196 @@ namespace gradcontact::fem
     std::ostringstream s;
     s.precision(17);
     s << "power law E(z) = " << E0 << " (z/" << c0 << ")^" << k;
+    return s.str();
+  }
+
+
+
+  ShiftedPowerLawModulus::ShiftedPowerLawModulus(const double E0, const double c0, const double k,
+                                                 const double z0)
+    : E0(E0)
+    , c0(c0)
+    , k(k)
+    , z0(z0)
+  {
+    check_power_law("ShiftedPowerLawModulus", E0, c0, k);
+    // z0 = 0 is the power law itself (PowerLawModulus, singular at the surface).
+    if (!(z0 > 0.0) || !std::isfinite(z0))
+      fail("ShiftedPowerLawModulus", "z0", z0, "(0, inf) (z0 = 0 is PowerLawModulus)");
+  }
+
+  double ShiftedPowerLawModulus::value(const double z) const
+  {
+    return E0 * std::pow((z + z0) / c0, k);
+  }
+
+  double ShiftedPowerLawModulus::average(const double z1, const double z2) const
+  {
+    check_average_interval("ShiftedPowerLawModulus::average", z1, z2);
+    // The power law's mean over [z1 + z0, z2 + z0], of length z2 - z1.
+    return E0 * power_mean(c0, k, z2 + z0, z2 - z1);
+  }
+
+  std::string ShiftedPowerLawModulus::description() const
+  {
+    std::ostringstream s;
+    s.precision(17);
+    s << "shifted power law E(z) = " << E0 << " ((z + " << z0 << ")/" << c0 << ")^" << k;
+    return s.str();
+  }
+
+
+
+  CoatingModulus::CoatingModulus(const double E0, const double c0, const double k, const double H)
+    : E0(E0)
+    , c0(c0)
+    , k(k)
+    , H(H)
+  {
+    check_power_law("CoatingModulus", E0, c0, k);
+    if (!(H > 0.0) || !std::isfinite(H))
+      fail("CoatingModulus", "H", H, "(0, inf)");
+  }
+
+  double CoatingModulus::value(const double z) const
+  {
+    return E0 * std::pow(std::min(z, H) / c0, k);
+  }
+
+  double CoatingModulus::average(const double z1, const double z2) const
+  {
+    check_average_interval("CoatingModulus::average", z1, z2);
+    if (z1 >= H)
+      return substrate_modulus();
+    if (z2 <= H)
+      return E0 * power_mean(c0, k, z2, z2 - z1);
+    return (E0 * power_mean(c0, k, H, H - z1) * (H - z1) + substrate_modulus() * (z2 - H)) / (z2 - z1);
+  }
+
+  std::string CoatingModulus::description() const
+  {
+    std::ostringstream s;
+    s.precision(17);
+    s << "coating E(z) = " << E0 << " (min(z, " << H << ")/" << c0 << ")^" << k;
+    return s.str();
+  }
+
+
+
+  TabulatedModulus::TabulatedModulus(std::vector<double> z_rows, std::vector<double> E_rows)
+    : z(std::move(z_rows))
+    , E(std::move(E_rows))
+  {
+    if (z.size() != E.size())
+      fail("TabulatedModulus", "E.size()", E.size(), "{z.size() = " + std::to_string(z.size()) + "}");
+    if (z.size() < 2)
+      fail("TabulatedModulus", "z.size()", z.size(), "[2, inf)");
+    if (z[0] != 0.0)
+      fail("TabulatedModulus", "z[0]", z[0], "{0} (the table starts at the surface)");
+    for (std::size_t i = 0; i < z.size(); ++i)
+      {
+        if (i > 0 && !(z[i] > z[i - 1] && std::isfinite(z[i])))
+          fail("TabulatedModulus", "z[" + std::to_string(i) + "]", z[i],
+               "(z[" + std::to_string(i - 1) + "] = " + decimal(z[i - 1]) + ", inf): z must increase strictly");
+        if (!(E[i] > 0.0) || !std::isfinite(E[i]))
+          fail("TabulatedModulus", "E[" + std::to_string(i) + "]", E[i], "(0, inf)");
+      }
+  }
+
+  std::shared_ptr<TabulatedModulus> TabulatedModulus::from_csv(const std::string &file)
+  {
+    std::ifstream in(file);
+    if (!in)
+      throw std::invalid_argument("TabulatedModulus::from_csv: cannot open \"" + file + "\"");
+    std::vector<double> z, E;
+    std::string         line;
+    bool                header_allowed = true;
+    for (unsigned int line_number = 1; std::getline(in, line); ++line_number)
+      {
+        const auto where = [&] { return "TabulatedModulus::from_csv: \"" + file + "\" line " +
+                                        std::to_string(line_number); };
+        const auto first = line.find_first_not_of(" \t\r");
+        if (first == std::string::npos || line[first] == '#')
+          continue;
+        // Two numbers separated by a comma and/or blanks; nothing else on the line.
+        std::string fields = line;
+        std::replace(fields.begin(), fields.end(), ',', ' ');
+        std::istringstream row(fields);
+        double             zi = 0, Ei = 0;
+        std::string        rest;
+        const bool numeric = static_cast<bool>(row >> zi >> Ei) && !(row >> rest);
+        if (!numeric)
+          {
+            // The first non-comment line may be a header ("z,E", "depth_m,E_Pa", ...).
+            if (header_allowed)
+              {
+                header_allowed = false;
+                continue;
+              }
+            throw std::invalid_argument(where() + ": \"" + line + "\" is not two numbers z, E");
+          }
+        header_allowed = false;
+        if (z.empty() && zi != 0.0)
+          fail(where(), "z", zi, "{0}: the first row is the surface");
+        if (!z.empty() && !(zi > z.back()))
+          fail(where(), "z", zi, "(" + decimal(z.back()) + ", inf): z must increase strictly");
+        if (!(Ei > 0.0) || !std::isfinite(Ei))
+          fail(where(), "E", Ei, "(0, inf)");
+        z.push_back(zi);
+        E.push_back(Ei);
+      }
+    try
+      {
+        return std::make_shared<TabulatedModulus>(std::move(z), std::move(E));
+      }
+    catch (const std::invalid_argument &e)
+      {
+        throw std::invalid_argument("TabulatedModulus::from_csv: \"" + file + "\": " + e.what());
+      }
+  }
+
+  double TabulatedModulus::value(const double depth) const
+  {
+    if (depth >= z.back())
+      return E.back();
+    // The row interval [z_{i-1}, z_i) holding depth (z_0 = 0 <= depth).
+    const std::size_t i = std::upper_bound(z.begin(), z.end(), depth) - z.begin();
+    if (i == 0)
+      return E.front(); // depth < 0: not part of the body; the surface value
+    const double w = (depth - z[i - 1]) / (z[i] - z[i - 1]);
+    return (1.0 - w) * E[i - 1] + w * E[i];
+  }
+
+  double TabulatedModulus::integral(const double x) const
+  {
+    double sum = 0.0;
+    for (std::size_t i = 1; i < z.size() && z[i - 1] < x; ++i)
+      {
+        const double hi = std::min(x, z[i]);
+        sum += 0.5 * (E[i - 1] + value(hi)) * (hi - z[i - 1]);
+      }
+    if (x > z.back())
+      sum += E.back() * (x - z.back());
+    return sum;
+  }
+
+  double TabulatedModulus::average(const double z1, const double z2) const
+  {
+    check_average_interval("TabulatedModulus::average", z1, z2);
+    // Inside one row interval (or below the table) the mean is the trapezoid of the ends; otherwise the
+    // difference of the running integral.
+    const auto row = [&](const double x) { return std::upper_bound(z.begin(), z.end(), x) - z.begin(); };
+    if (row(z1) == row(z2) || z1 >= z.back())
+      return 0.5 * (value(z1) + value(z2));
+    return (integral(z2) - integral(z1)) / (z2 - z1);
+  }
+
+  std::string TabulatedModulus::description() const
+  {
+    std::ostringstream s;
+    s.precision(6);
+    s << "table of " << z.size() << " rows to z = " << z.back() << ", E from " << E.front() << " to "
+      << E.back();
     return s.str();
   }
 

@@ -1,7 +1,7 @@
 // Young's modulus fields E(z) of the graded half-space and the material of the FE model.
 //
 // The half-space occupies z > 0 (z points into the material); the Poisson ratio nu is constant.
-// Three fields are provided, all behind ModulusField so that the assembly never knows which one it sees:
+// Every field is a ModulusField, so that the assembly never knows which one it sees:
 //
 //   PowerLawModulus     E(z) = E0 (z / c0)^k,  -1 < k <= 1                                  (9.1)
 //                       (k = 1 with nu = 1/2 is the Gibson medium, 9.42-9.44: only the mixed
@@ -10,6 +10,12 @@
 //                       E_i = (z_i - z_{i-1})^{-1} \int_{z_{i-1}}^{z_i} E(z) dz, and that field below
 //                       the last interface
 //   ExpressionModulus   any E(z) given as a deal.II FunctionParser expression in the variable z
+//
+// and three "real gradings", where the power law (9.1) stops describing the material:
+//
+//   ShiftedPowerLawModulus  E(z) = E0 ((z + z0) / c0)^k, z0 > 0: a finite surface modulus E0 (z0/c0)^k
+//   CoatingModulus          a power-law coating of thickness H on the homogeneous substrate E0 (H/c0)^k
+//   TabulatedModulus        a measured profile: piecewise linear between rows (z_i, E_i), constant below
 //
 // A field may be singular at the surface like z^s (s = k for the power law). It reports s through
 // surface_exponent(); the assembly then integrates the cells touching z = 0 with a Gauss-Jacobi rule that
@@ -114,6 +120,81 @@ namespace gradcontact::fem
     std::unique_ptr<Parser> parser;
     std::string expression;
     double exponent;
+  };
+
+  /// E(z) = E0 ((z + z0) / c0)^k, E0 > 0, c0 > 0, -1 < k <= 1, z0 > 0: the power law (9.1) shifted by z0,
+  /// with the finite surface modulus E0 (z0/c0)^k; regular at z = 0 (surface exponent 0).
+  /// Limits (flat punch of radius a, fem/README.md "Real gradings"):
+  ///  - z0 >> a: Sneddon's punch on E0 (z0/c0)^k, F/F_S - 1 = k (a/z0) [c1 ln(z0/a) + c2], c1 = 0.773
+  ///    at nu = 0.3 (the depth moment of Boussinesq's energy density), c2 = O(1);
+  ///  - z0 << a, k > 0: the power law (9.16) times 1 + (1 - 2 nu)(1 + k) h_N / (2 pi k (1 - k)(1 - nu)^2)
+  ///    (z0/a)^{1-k} (the compliance of the stiffer surface layer under the punch pressure); the mesh
+  ///    must resolve z0: surface_layer_thickness = z0 / a;
+  ///  - z0 << a, k < 0: E ~ z^k is nearly singular in every surface cell thicker than z0, which the
+  ///    plain Gauss rule of a regular field under-integrates: no mesh of the near field resolves it.
+  class ShiftedPowerLawModulus : public ModulusField
+  {
+  public:
+    ShiftedPowerLawModulus(double E0, double c0, double k, double z0);
+    double value(double z) const override;
+    /// Exact: E0 c0^{-k} ((z2 + z0)^{1+k} - (z1 + z0)^{1+k}) / ((1+k)(z2 - z1)).
+    double average(double z1, double z2) const override;
+    std::string description() const override;
+
+    const double E0, c0, k, z0;
+  };
+
+  /// A graded coating of thickness H on a homogeneous substrate: E0 (z/c0)^k (9.1) for 0 < z <= H, the
+  /// substrate modulus E0 (H/c0)^k for z > H; E0 > 0, c0 > 0, -1 < k <= 1, H > 0. Continuous with a kink
+  /// at H, which discontinuities() reports, so that the cells crossing it get the QIterated rule: without
+  /// it, a surface cell crossing H applies Gauss-Jacobi to E / xi^k, singular above H (2e-5 of the force
+  /// at k = 0.5, H = 1e-4 a); with it such a cell loses Gauss-Jacobi (up to 5e-5 at k = -0.5,
+  /// H = 0.01..0.1 a, where the surface cells are about H thick; fem/README.md "Real gradings").
+  /// Limits (flat punch): H >> a is the power law (9.16) up to C (a/H)^{1+k}, like a truncation;
+  /// H << a is Sneddon's punch on the substrate up to O(H/a ln(a/H)).
+  class CoatingModulus : public ModulusField
+  {
+  public:
+    CoatingModulus(double E0, double c0, double k, double H);
+    double value(double z) const override;
+    double surface_exponent() const override { return k; }
+    std::vector<double> discontinuities() const override { return {H}; }
+    /// Exact: the power-law integral over [z1, min(z2, H)] plus the substrate over [max(z1, H), z2].
+    double average(double z1, double z2) const override;
+    std::string description() const override;
+
+    /// E0 (H/c0)^k.
+    double substrate_modulus() const { return value(H); }
+
+    const double E0, c0, k, H;
+  };
+
+  /// A measured profile E(z) as a table: rows (z_i, E_i), 0 = z_0 < z_1 < ... < z_{n-1}, E_i > 0 finite,
+  /// n >= 2; E is linear in z between rows and E_{n-1} below the last row. Continuous, so no
+  /// discontinuities(): the rows are kinks, which plain Gauss integrates with an error far below that of
+  /// interpolating E from the table (reporting them changed the force by 4e-4 of the interpolation error
+  /// at 100 rows, for 4x the assembly time; fem/README.md "Real gradings").
+  class TabulatedModulus : public ModulusField
+  {
+  public:
+    TabulatedModulus(std::vector<double> z, std::vector<double> E);
+
+    /// Reads a table from a CSV file: two numeric columns z [m], E [Pa] separated by ',' (or blanks),
+    /// one row a line; an optional header line (the first non-comment line, if it is not numeric),
+    /// lines starting with '#' and blank lines are skipped. Throws std::invalid_argument naming the file
+    /// and the line of a bad row (not two numbers, z not increasing, E <= 0 or not finite).
+    static std::shared_ptr<TabulatedModulus> from_csv(const std::string &file);
+
+    double value(double z) const override;
+    /// Exact: the trapezoid of every row interval in [z1, z2] (and the constant below the last row).
+    double average(double z1, double z2) const override;
+    std::string description() const override;
+
+    const std::vector<double> z, E;
+
+  private:
+    /// \int_0^x E(z) dz.
+    double integral(double x) const;
   };
 
   /// The graded body: E(z) and a constant Poisson ratio, -1 < nu < 1/2 (displacement formulation) or
