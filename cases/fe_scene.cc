@@ -461,9 +461,10 @@ namespace gradcontact::cases
               try
                 {
                   const double value = ref->at("displacement", w.r);
-                  // Under a punch whose depth is given, w inside the contact is the imposed displacement.
+                  // Under a punch whose depth is given on the disc r <= a, w there is the imposed displacement
+                  // (not with Load/contact = unilateral, where the contact set is found).
                   const bool imposed = (s.load.type == Type::flat_punch || s.load.type == Type::concave_punch) &&
-                                       w.r < s.load.a;
+                                       s.load.contact == LoadParameters::Contact::disc && w.r < s.load.a;
                   result.rows.push_back(compare(imposed ? "displacement (imposed: input check)" : "displacement", "r/a = " + format(w.r / s.load.a) + ", relative", checked,
                                                 ref->label(), value, w.value, value, s.tolerances.displacement, fe.n_dofs,
                                                 run.seconds));
