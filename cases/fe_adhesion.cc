@@ -4,6 +4,7 @@
 #include "fe_model.h"
 
 #include "analytic_reference.h"
+#include "fe_scene.h"
 
 #include <analytic/batch.h>
 #include <fem/adhesion.h>
@@ -515,11 +516,7 @@ namespace gradcontact::cases
   {
     require_kind(s, SceneKind::adhesion, "run_adhesion_scene");
     const auto start = std::chrono::steady_clock::now();
-    SceneResult result;
-    result.name = s.info.name;
-    result.description = s.info.description;
-    result.kind = to_string(s.kind);
-    std::ofstream(folder / "parameters.prm") << s.resolved;
+    SceneResult result = started(s, folder);
     AdhesionStudy(s, folder, verbose, result).run();
     result.seconds = seconds_since(start);
     return result;

@@ -2,6 +2,7 @@
 
 #include "analytic_reference.h"
 #include "fe_model.h"
+#include "fe_scene.h"
 
 #include <fem/axisymmetric_solver.h>
 
@@ -136,11 +137,7 @@ namespace gradcontact::cases
   {
     require_kind(s, SceneKind::map, "run_map_scene");
     const auto start = std::chrono::steady_clock::now();
-    SceneResult result;
-    result.name = s.info.name;
-    result.description = s.info.description;
-    result.kind = to_string(s.kind);
-    std::ofstream(folder / "parameters.prm") << s.resolved;
+    SceneResult result = started(s, folder);
 
     const std::vector<double> ks = s.map.exponents.empty() ? std::vector<double>{s.material.k} : s.map.exponents;
     std::vector<double> ratios = s.map.ratios;

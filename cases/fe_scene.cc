@@ -332,22 +332,22 @@ namespace gradcontact::cases
       return references;
     }
 
-    /// The result of a scene before its rows, with parameters.prm written into the report folder.
-    SceneResult started(const Scene &s, const fs::path &folder)
-    {
-      SceneResult result;
-      result.name = s.info.name;
-      result.description = s.info.description;
-      result.kind = to_string(s.kind);
-      std::ofstream(folder / "parameters.prm") << s.resolved;
-      return result;
-    }
 
     double seconds_since(const std::chrono::steady_clock::time_point start)
     {
       return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     }
   } // namespace
+
+  SceneResult started(const Scene &s, const fs::path &folder)
+  {
+    SceneResult result;
+    result.name = s.info.name;
+    result.description = s.info.description;
+    result.kind = to_string(s.kind);
+    std::ofstream(folder / "parameters.prm") << s.resolved;
+    return result;
+  }
 
   SceneResult run_candidate_scene(const Scene &s, const fs::path &folder)
   {

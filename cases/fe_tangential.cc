@@ -1,6 +1,7 @@
 #include "fe_tangential.h"
 
 #include "analytic_reference.h"
+#include "fe_scene.h"
 #include "fe_model.h"
 
 #include <analytic/batch.h>
@@ -558,11 +559,7 @@ namespace gradcontact::cases
     const auto start = std::chrono::steady_clock::now();
     require_kind(scene, SceneKind::tangential, "run_tangential_scene");
     const Scene s = with_holl_ratio(scene);
-    SceneResult result;
-    result.name = s.info.name;
-    result.description = s.info.description;
-    result.kind = to_string(s.kind);
-    std::ofstream(folder / "parameters.prm") << s.resolved;
+    SceneResult result = started(s, folder);
     TangentialStudy study(s, folder, verbose, result);
     try
       {
