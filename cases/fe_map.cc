@@ -42,6 +42,33 @@ namespace gradcontact::cases
     return ratios[i] * std::exp(std::log(threshold / d0) * slope);
   }
 
+  std::string threshold_cell(const std::vector<double> &ratios, const std::vector<double> &deviations,
+                             const double threshold, const bool toward_large)
+  {
+    if (!toward_large)
+      {
+        // the power law is the limit ratio -> 0: read the map in 1/ratio, which grows toward it
+        std::vector<double> inverse, flipped;
+        for (std::size_t i = ratios.size(); i-- > 0;)
+          {
+            inverse.push_back(1. / ratios[i]);
+            flipped.push_back(deviations[i]);
+          }
+        const std::optional<double> at = threshold_ratio(inverse, flipped, threshold);
+        if (!at)
+          return "not within it down to " + format(ratios.front());
+        if (*at == inverse.front() && std::abs(flipped.front()) <= threshold)
+          return "at every ratio (up to " + format(ratios.back()) + ")";
+        return "<= " + format(1. / *at);
+      }
+    const std::optional<double> at = threshold_ratio(ratios, deviations, threshold);
+    if (!at)
+      return "not within it up to " + format(ratios.back());
+    if (*at == ratios.front() && std::abs(deviations.front()) <= threshold)
+      return "at every ratio (from " + format(ratios.front()) + ")";
+    return ">= " + format(*at);
+  }
+
   namespace
   {
     /// One FE solve of a map: the FE state and its deviations from the power law at the FE depth.
@@ -125,6 +152,15 @@ namespace gradcontact::cases
       return s.map.parameter == MapParameters::Parameter::surface_depth ? "a/z0" : "a/H";
     }
 
+    /// `text` for a markdown table cell: | escaped.
+    std::string cell(const std::string &text)
+    {
+      std::string out;
+      for (const char c : text)
+        out += c == '|' ? std::string("\\|") : std::string(1, c);
+      return out;
+    }
+
     std::string percent(const double t)
     {
       std::ostringstream o;
@@ -182,7 +218,7 @@ namespace gradcontact::cases
         const MapPoint exact = solve(graded(s, k, 0.), 0.);
         const std::string metric = "k = " + format(k) + ", the power law itself (" + x + (toward_large ? " -> inf)" : " -> 0)");
         if (!exact.error.empty())
-          result.rows.push_back(failed("force", "FE", "closed form", "k = " + format(k) + ": " + exact.error));
+          result.rows.push_back(failed("force at the FE depth", "FE", "closed form", metric + ": " + exact.error));
         else
           {
             result.rows.push_back(compare("force at the FE depth", metric, "FE", "closed form", 1., 1. + exact.force, 1.,
@@ -210,14 +246,14 @@ namespace gradcontact::cases
             points.push_back(solve(graded(s, k, ratio), ratio));
             const MapPoint &p = points.back();
             csv << k << ',' << ratio << ',' << p.force << ',' << (indenter ? p.radius : std::nan("")) << ','
-                << p.pressure << ',' << p.dofs << ',' << p.seconds << ",\"" << p.error << "\"\n";
+                << p.pressure << ',' << p.dofs << ',' << p.seconds << ',' << csv_quote(p.error) << '\n';
             md << "| " << format(ratio);
             if (p.error.empty())
               {
                 md << " | " << format(p.force) << " | " << (indenter ? format(p.radius) + " | " : "") << format(p.pressure);
               }
             else
-              md << " | failed: " << p.error << " | " << (indenter ? "- | " : "") << "-";
+              md << " | failed: " << cell(p.error) << " | " << (indenter ? "- | " : "") << "-";
             md << " | " << p.dofs << " | " << format(p.seconds) << " |\n";
             if (verbose)
               std::cerr << "  k = " << k << ", " << x << " = " << ratio << ": force " << p.force << ", radius "
@@ -244,7 +280,7 @@ namespace gradcontact::cases
           md << "FE resolution at " << x << " = " << format(nearest) << " (the change with one uniform refinement more, "
              << finer.dofs << " DoFs):";
           if (resolution.empty())
-            md << " not measured (" << (at == points.end() ? "no point was solved" : finer.error) << ")";
+            md << " not measured (" << (at == points.end() ? "no point was solved" : cell(finer.error)) << ")";
           for (const auto &[q, change] : resolution)
             md << " " << quantity_label(q) << " " << format(change) << ";";
           md << "\n\n";
@@ -270,37 +306,17 @@ namespace gradcontact::cases
                     thresholds_md << " no point |";
                     continue;
                   }
-                if (resolution.count(q) == 0 || resolution[q] > t / 3)
+                if (resolution.count(q) == 0)
                   {
-                    thresholds_md << " below the FE resolution (" << format(resolution.count(q) ? resolution[q] : NAN)
-                                  << ") |";
+                    thresholds_md << " FE resolution not measured |";
                     continue;
                   }
-                if (!toward_large)
+                if (!(resolution[q] <= t / 3))
                   {
-                    // a coating is the power law as a/H -> 0: read the map in H/a, which grows toward it
-                    std::vector<double> inverse, flipped;
-                    for (std::size_t i = r.size(); i-- > 0;)
-                      {
-                        inverse.push_back(1. / r[i]);
-                        flipped.push_back(d[i]);
-                      }
-                    const std::optional<double> at = threshold_ratio(inverse, flipped, t);
-                    if (!at)
-                      thresholds_md << " not within it down to " << format(r.front()) << " |";
-                    else if (*at == inverse.front() && std::abs(flipped.front()) <= t)
-                      thresholds_md << " at every ratio (up to " << format(r.back()) << ") |";
-                    else
-                      thresholds_md << " <= " << format(1. / *at) << " |";
+                    thresholds_md << " below the FE resolution (" << format(resolution[q]) << ") |";
                     continue;
                   }
-                const std::optional<double> at = threshold_ratio(r, d, t);
-                if (!at)
-                  thresholds_md << " not within it up to " << format(r.back()) << " |";
-                else if (*at == r.front() && std::abs(d.front()) <= t)
-                  thresholds_md << " at every ratio (from " << format(r.front()) << ") |";
-                else
-                  thresholds_md << " >= " << format(*at) << " |";
+                thresholds_md << " " << threshold_cell(r, d, t, toward_large) << " |";
               }
             thresholds_md << '\n';
           }

@@ -28,6 +28,11 @@ namespace gradcontact::cases
   std::optional<double> threshold_ratio(const std::vector<double> &ratios, const std::vector<double> &deviations,
                                         double threshold);
 
+  /// The text of one threshold cell of map.md: ">= X" (toward_large: the power law is the limit ratio -> inf),
+  /// "<= X" (the limit ratio -> 0), "at every ratio (...)" or "not within it ...". `ratios` ascending.
+  std::string threshold_cell(const std::vector<double> &ratios, const std::vector<double> &deviations, double threshold,
+                             bool toward_large);
+
   SceneResult run_map_scene(const Scene &scene, const std::filesystem::path &folder, bool verbose);
 } // namespace gradcontact::cases
 

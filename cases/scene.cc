@@ -531,6 +531,8 @@ namespace gradcontact::cases
           throw std::invalid_argument(where + "Map/parameter is set with References/fem = false: a map is FE data");
         if (s.map.ratios.empty())
           throw std::invalid_argument(where + "Map/ratios is empty: give the ratios a/z0 or a/H of the map");
+        if (!(s.load.a > 0.))
+          throw std::invalid_argument(where + "Load/a = " + format(s.load.a) + " must be in (0, inf) (z0 or H = a / ratio)");
         return SceneKind::map;
       }
     if (s.tangential.enabled())

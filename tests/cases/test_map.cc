@@ -23,14 +23,38 @@ TEST_CASE("The threshold of a map shall be where a power-law decay of the deviat
   std::vector<double> deviations;
   for (const double r : ratios)
     deviations.push_back(-0.3 / std::sqrt(r));
-  CHECK(*threshold_ratio(ratios, deviations, 1e-2) == Approx(900).epsilon(1e-12));
+  const auto crossing = threshold_ratio(ratios, deviations, 1e-2);
+  REQUIRE(crossing.has_value());
+  CHECK(*crossing == Approx(900).epsilon(1e-12));
+  CHECK(threshold_cell(ratios, deviations, 1e-2, true) == ">= 900");
   // Within at every ratio, and never within.
-  CHECK(*threshold_ratio(ratios, deviations, 1.) == 1.);
+  const auto every = threshold_ratio(ratios, deviations, 1.);
+  REQUIRE(every.has_value());
+  CHECK(*every == 1.);
+  CHECK(threshold_cell(ratios, deviations, 1., true) == "at every ratio (from 1)");
   CHECK_FALSE(threshold_ratio(ratios, deviations, 1e-3).has_value());
+  CHECK(threshold_cell(ratios, deviations, 1e-3, true) == "not within it up to 10000");
   // A deviation that comes back above the threshold at a larger ratio moves the answer past it.
   deviations[3] = 0.5;
-  CHECK(*threshold_ratio(ratios, deviations, 0.1) > 1000.);
+  const auto past = threshold_ratio(ratios, deviations, 0.1);
+  REQUIRE(past.has_value());
+  CHECK(*past > 1000.);
   CHECK_THROWS_WITH(threshold_ratio({1, 2}, {0.1}, 0.01), Catch::Contains("2 ratios and 1 deviations"));
+}
+
+TEST_CASE("A coating map shall read its threshold toward a/H -> 0", "[cases]")
+{
+  // |deviation| = 0.3 (a/H)^0.5 (a coating is the power law as a/H -> 0): within 1e-2 when
+  // a/H <= (1e-2 / 0.3)^2 = 1/900.
+  const std::vector<double> ratios{1e-4, 1e-3, 1e-2, 0.1, 1};
+  std::vector<double> deviations;
+  for (const double r : ratios)
+    deviations.push_back(0.3 * std::sqrt(r));
+  const std::string at = threshold_cell(ratios, deviations, 1e-2, false);
+  REQUIRE(at.rfind("<= ", 0) == 0);
+  CHECK(std::stod(at.substr(3)) == Approx(1. / 900).epsilon(1e-5)); // format() keeps 6 digits
+  CHECK(threshold_cell(ratios, deviations, 1., false) == "at every ratio (up to 1)");
+  CHECK(threshold_cell(ratios, deviations, 1e-4, false) == "not within it down to 0.0001");
 }
 
 TEST_CASE("A map scene shall check the power law itself and write the map, its thresholds and plots", "[cases]")
