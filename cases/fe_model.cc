@@ -48,18 +48,6 @@ namespace gradcontact::cases
     return material;
   }
 
-  double deep_exponent(const fem::ModulusField &modulus)
-  {
-    if (const auto *layered = dynamic_cast<const fem::LayeredModulus *>(&modulus))
-      return deep_exponent(*layered->base);
-    // E0 ((z + z0)/c0)^k behaves as z^k far below z0; a coating's substrate and a table's last row are constant.
-    if (const auto *shifted = dynamic_cast<const fem::ShiftedPowerLawModulus *>(&modulus))
-      return shifted->k;
-    if (dynamic_cast<const fem::CoatingModulus *>(&modulus) || dynamic_cast<const fem::TabulatedModulus *>(&modulus))
-      return 0.;
-    return modulus.surface_exponent();
-  }
-
   fem::Formulation fe_formulation(const Scene &s)
   {
     switch (s.discretization.formulation)
@@ -122,7 +110,7 @@ namespace gradcontact::cases
     // The truncation error falls like (a/L)^(1 + s) with s the exponent of the field far below the surface:
     // for layers over a power law that is the power law's. Measured (flat punch, 16 layers over 10 a, k = -0.5):
     // L/a of s = 0 (1.1e8) lost 1.2e-4 of the force against L/a = 1e16.
-    const double deep = deep_exponent(*material.modulus);
+    const double deep = material.modulus->deep_exponent();
     if (deep != material.modulus->surface_exponent())
       settings.mesh.far_field_size = fem::recommended_settings(contact_radius, deep, tolerance).mesh.far_field_size;
     // A finite surface modulus E0 ((z + z0)/c0)^k: the power law's mesh with surface cells of z0/4, so that E

@@ -24,10 +24,6 @@ namespace gradcontact::cases
   /// Material/layered depth times Load/a deep.
   fem::Material fe_material(const Scene &scene);
 
-  /// The exponent s of E ~ z^s deep below the surface, which sets the far field: a layered field's base's,
-  /// else the surface exponent (the power law and the expression have one exponent).
-  double deep_exponent(const fem::ModulusField &modulus);
-
   /// Discretization/formulation as the FE enum.
   fem::Formulation fe_formulation(const Scene &scene);
 

@@ -43,6 +43,10 @@ namespace gradcontact::fem
     /// The exponent s of the surface behaviour E(z) ~ z^s as z -> 0 (0 when E is regular there).
     virtual double surface_exponent() const { return 0.0; }
 
+    /// The exponent of E(z) ~ z^s far below the surface, which sets the truncation error of the far field
+    /// (recommended_mesh_parameters): the surface exponent unless the field says otherwise.
+    virtual double deep_exponent() const { return surface_exponent(); }
+
     /// Depths where E jumps (layer interfaces); quadrature is subdivided in cells that straddle one.
     virtual std::vector<double> discontinuities() const { return {}; }
 
@@ -95,6 +99,8 @@ namespace gradcontact::fem
 
     double value(double z) const override;
     std::vector<double> discontinuities() const override { return interfaces; }
+    /// The base's: below the last interface E is the base.
+    double deep_exponent() const override { return base->deep_exponent(); }
     std::string description() const override;
 
     const std::shared_ptr<const ModulusField> base;
@@ -137,6 +143,8 @@ namespace gradcontact::fem
   public:
     ShiftedPowerLawModulus(double E0, double c0, double k, double z0);
     double value(double z) const override;
+    /// ((z + z0)/c0)^k behaves as z^k far below z0.
+    double deep_exponent() const override { return k; }
     /// Exact: E0 c0^{-k} ((z2 + z0)^{1+k} - (z1 + z0)^{1+k}) / ((1+k)(z2 - z1)).
     double average(double z1, double z2) const override;
     std::string description() const override;
@@ -158,6 +166,8 @@ namespace gradcontact::fem
     CoatingModulus(double E0, double c0, double k, double H);
     double value(double z) const override;
     double surface_exponent() const override { return k; }
+    /// The homogeneous substrate.
+    double deep_exponent() const override { return 0.0; }
     std::vector<double> discontinuities() const override { return {H}; }
     /// Exact: the power-law integral over [z1, min(z2, H)] plus the substrate over [max(z1, H), z2].
     double average(double z1, double z2) const override;

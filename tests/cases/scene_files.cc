@@ -1,6 +1,7 @@
 #include "scene_files.h"
 
 #include <fstream>
+#include <iterator>
 #include <random>
 #include <unistd.h>
 
@@ -32,5 +33,31 @@ namespace gradcontact::cases::testing
     for (const std::string &o : overrides)
       parsed.push_back(parse_override(o));
     return read_scene(file.string(), parsed);
+  }
+
+  std::string read_text(const fs::path &file)
+  {
+    std::ifstream in(file);
+    return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  }
+
+  std::vector<std::vector<std::string>> read_csv(const fs::path &file)
+  {
+    std::vector<std::vector<std::string>> rows;
+    std::ifstream in(file);
+    for (std::string line; std::getline(in, line);)
+      {
+        std::vector<std::string> fields(1);
+        bool quoted = false;
+        for (const char c : line)
+          if (c == '"')
+            quoted = !quoted;
+          else if (c == ',' && !quoted)
+            fields.emplace_back();
+          else
+            fields.back() += c;
+        rows.push_back(fields);
+      }
+    return rows;
   }
 } // namespace gradcontact::cases::testing

@@ -27,6 +27,12 @@ namespace gradcontact::cases::testing
 
   /// The scene of every default entry with `overrides` ("Section/key=value") applied.
   Scene scene_with(const std::vector<std::string> &overrides);
+
+  /// The whole text of `file`.
+  std::string read_text(const std::filesystem::path &file);
+
+  /// The rows of a CSV file (header included), split at commas outside double quotes.
+  std::vector<std::vector<std::string>> read_csv(const std::filesystem::path &file);
 } // namespace gradcontact::cases::testing
 
 #endif

@@ -71,22 +71,18 @@ TEST_CASE("A map scene shall check the power law itself and write the map, its t
   const fs::path out = reports / "small_map";
   for (const char *file : {"errors.csv", "map.csv", "map.md"})
     CHECK(fs::exists(out / file));
-  std::ifstream in(out / "map.md");
-  const std::string md((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const std::string md = testing::read_text(out / "map.md");
   CHECK(md.find("| 0.01 |") != std::string::npos);
   CHECK(md.find("within 1 % when a/H |") != std::string::npos);
   // A coating 100 a thick is the power law within a few per cent at most; one a / 1 thick is far from it.
-  std::ifstream csv(out / "map.csv");
-  std::string header, thick, thin;
-  std::getline(csv, header);
-  std::getline(csv, thick);
-  std::getline(csv, thin);
-  CHECK(header.rfind("k,a_over_H,force_deviation", 0) == 0);
-  const auto force_deviation = [](const std::string &line) {
-    const auto first = line.find(',');
-    const auto second = line.find(',', first + 1);
-    return std::stod(line.substr(second + 1));
-  };
+  // map.csv: k, a/H, the force deviation, ...; rows in ascending a/H (thick coating first).
+  const auto csv = testing::read_csv(out / "map.csv");
+  REQUIRE(csv.size() == 3);
+  CHECK(csv[0][0] == "k");
+  CHECK(csv[0][1] == "a_over_H");
+  CHECK(csv[0][2] == "force_deviation");
+  const auto force_deviation = [](const std::vector<std::string> &row) { return std::stod(row.at(2)); };
+  const auto &thick = csv[1], &thin = csv[2];
   CHECK(std::abs(force_deviation(thick)) < std::abs(force_deviation(thin)));
 }
 

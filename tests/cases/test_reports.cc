@@ -200,30 +200,6 @@ TEST_CASE("Two gradcontact runs of the same scene into one reports folder at onc
     CHECK(entry.path().filename().string().find(".tmp") == std::string::npos);
 }
 
-namespace
-{
-  /// The rows of a CSV file with a header, split at commas outside double quotes.
-  std::vector<std::vector<std::string>> read_csv(const fs::path &file)
-  {
-    std::vector<std::vector<std::string>> rows;
-    std::ifstream in(file);
-    for (std::string line; std::getline(in, line);)
-      {
-        std::vector<std::string> fields(1);
-        bool quoted = false;
-        for (const char c : line)
-          if (c == '"')
-            quoted = !quoted;
-          else if (c == ',' && !quoted)
-            fields.emplace_back();
-          else
-            fields.back() += c;
-        rows.push_back(fields);
-      }
-    return rows;
-  }
-} // namespace
-
 TEST_CASE("A convergence scene's report shall hold its rows against the reference and the observed order",
           "[cases]")
 {
@@ -240,7 +216,7 @@ TEST_CASE("A convergence scene's report shall hold its rows against the referenc
   const fs::path reports = folder.path() / "reports";
   REQUIRE(run({scene.string(), "--reports", reports.string(), "--quiet"}) == 0);
 
-  const auto rows = read_csv(reports / "punch_h" / "errors.csv");
+  const auto rows = testing::read_csv(reports / "punch_h" / "errors.csv");
   const std::vector<std::string> columns{"quantity", "metric", "method", "reference", "reference_value", "value",
                                          "abs_error", "rel_error", "tolerance", "pass", "dofs", "seconds", "error"};
   REQUIRE(rows.size() == 4);
@@ -265,8 +241,7 @@ TEST_CASE("A convergence scene's report shall hold its rows against the referenc
   CHECK(errors[1] / errors[2] == Approx(4).epsilon(0.15));
   CHECK(errors[2] < 1e-3);
 
-  std::ifstream in(reports / "punch_h" / "convergence.md");
-  const std::string md((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const std::string md = testing::read_text(reports / "punch_h" / "convergence.md");
   for (const char *level : {"| 0 |", "| 1 |", "| 2 |"})
     CHECK(md.find(level) != std::string::npos);
   const std::string marker = "Observed order over the last three levels: ";

@@ -20,6 +20,8 @@
 #include <analytic/material.h>
 #include <analytic/normal.h>
 
+#include "written_out.h"
+
 #include <catch2/catch.hpp>
 
 #include <cmath>
@@ -39,14 +41,7 @@ namespace
   constexpr double c0 = 3.0e-4; // != a: catches a missing c0^k
   constexpr double a  = 1.0e-4;
 
-  double h_N(const double k, const double v)
-  {
-    const double beta = std::sqrt((1 + k) * (1 - k * v / (1 - v)));                          // (9.7)
-    const double C    = std::pow(2.0, 1 + k) * std::tgamma((3 + k + beta) / 2) *
-                     std::tgamma((3 + k - beta) / 2) / (pi * std::tgamma(2 + k));         // (9.6)
-    return 2 * (1 + k) * std::cos(k * pi / 2) * std::tgamma(1 + k / 2) /
-           (std::sqrt(pi) * C * beta * std::sin(beta * pi / 2) * std::tgamma((1 + k) / 2)); // (9.5)
-  }
+  using gradcontact::fem::testing::h_N;
 
   double flat_punch_force(const double k, const double d)
   {

@@ -82,6 +82,33 @@ namespace
   constexpr double coarse_K_T_tolerance    = 1.5e-3;
   constexpr double coarse_branch_tolerance = 1.5e-3;
   constexpr double coarse_energy_tolerance = 1.5e-3;
+
+  /// One unloading step of an oscillation from the turning point A (F_A, stick radius c_A) on `solver`:
+  /// the traction (9.82) at Fx as the load, its quadrature cut at c_A and at the reversal radius b (9.81).
+  TangentialResult unloading_step(FourierMode1Solver &solver, const gradcontact::Medium &medium,
+                                  const gradcontact::tangential::SphereSlip &slip, const double FA, const double cA,
+                                  const double Fx)
+  {
+    namespace t    = gradcontact::tangential;
+    const double b = t::reversal_radius(medium, slip, a, FA, t::Branch::unloading, Fx);
+    std::vector<double> cuts{cA};
+    if (b > cA && b < a)
+      cuts.push_back(b);
+    auto tau = [&](const double r) { return t::traction(medium, slip, a, FA, t::Branch::unloading, Fx, r); };
+    return solver.run(TangentialLoad::profile(tau, a, cA, cuts));
+  }
+
+  /// The loop area W = \int_{-F_A}^{F_A} [u_un(F) + u_un(-F)] dF (u_re(F) = -u_un(-F)) by n-point
+  /// Gauss-Legendre in F on symmetric nodes.
+  template <class UnloadingDisplacement>
+  double loop_area(const UnloadingDisplacement &u_un, const double FA, const unsigned int n)
+  {
+    const dealii::QGauss<1> gauss(n);
+    double                  W = 0;
+    for (unsigned int q = 0; q < gauss.size(); ++q)
+      W += 2 * 2 * FA * gauss.weight(q) * u_un(FA * (2 * gauss.point(q)[0] - 1));
+    return W;
+  }
 } // namespace
 
 
@@ -278,13 +305,8 @@ TEST_CASE("Under an oscillating tangential force the solver shall follow the unl
   FourierMode1Solver solver(power_law(k, nu), recommended_mesh_parameters(a, k), DiscretizationParameters{},
                             SurfaceRefinement{{cA}, 8});
   auto u_fe = [&](const double Fx) {
-    const double b = a * std::pow(1 - (FA - Fx) / (2 * mu * F_N), 1 / (k + 3)); // (9.81)
-    std::vector<double> cuts{cA};
-    if (b > cA && b < a)
-      cuts.push_back(b);
-    auto tau = [&](const double r) { return t::traction(medium, slip, a, FA, t::Branch::unloading, Fx, r); };
-    const TangentialResult res = solver.run(TangentialLoad::profile(tau, a, cA, cuts));
-    CAPTURE(Fx / FA, b / a, cA / a);
+    const TangentialResult res = unloading_step(solver, medium, slip, FA, cA, Fx);
+    CAPTURE(Fx / FA, t::reversal_radius(medium, slip, a, FA, t::Branch::unloading, Fx) / a, cA / a);
     REQUIRE(res.reliable);
     CAPTURE(res.force, Fx, res.force / Fx - 1, force_tolerance);
     REQUIRE_THAT(res.force, WithinRel(Fx, force_tolerance));
@@ -297,10 +319,7 @@ TEST_CASE("Under an oscillating tangential force the solver shall follow the unl
       CAPTURE(f, u, ref, u / ref - 1, branch_tolerance);
       REQUIRE_THAT(u, WithinRel(ref, branch_tolerance));
     }
-  const dealii::QGauss<1> gauss(12);
-  double                  W_fe = 0;
-  for (unsigned int q = 0; q < gauss.size(); ++q)
-    W_fe += 2 * 2 * FA * gauss.weight(q) * u_fe(FA * (2 * gauss.point(q)[0] - 1)); // symmetric nodes
+  const double W_fe = loop_area(u_fe, FA, 12);
   const double W = t::dissipated_energy(medium, slip, a, FA);
   // Mindlin-Deresiewicz (9.87) for a rigid sphere on one body, derived from the loop of Cattaneo-Mindlin
   // branches with u0 = 3 mu F_N (2 - nu) / (16 G a) [1 - (1 - F/(mu F_N))^{2/3}]:
@@ -374,12 +393,7 @@ TEST_CASE("On a coarse mesh at k = 0.5 (the decoupled pairing nu = 1/(2+k)) the 
 
   // Unloading from A: the traction (9.82) as the load, u0 the mean u_x over r <= c_A (never slipped).
   auto u_fe = [&](const double Fx) {
-    const double b = a * std::pow(1 - (FA - Fx) / (2 * mu * F_N), 1 / (k + 3)); // (9.81)
-    std::vector<double> cuts{cA};
-    if (b > cA && b < a)
-      cuts.push_back(b);
-    auto tau = [&](const double r) { return t::traction(medium, slip, a, FA, t::Branch::unloading, Fx, r); };
-    const TangentialResult res = solver.run(TangentialLoad::profile(tau, a, cA, cuts));
+    const TangentialResult res = unloading_step(solver, medium, slip, FA, cA, Fx);
     REQUIRE(res.reliable);
     return res.stick.mean_ux;
   };
@@ -392,11 +406,7 @@ TEST_CASE("On a coarse mesh at k = 0.5 (the decoupled pairing nu = 1/(2+k)) the 
       CAPTURE(f, u, ref, u / ref - 1);
       CHECK_THAT(u, WithinRel(ref, coarse_branch_tolerance));
     }
-  // W = \int_{-F_A}^{F_A} [u_un(F) + u_un(-F)] dF (u_re(F) = -u_un(-F)) by 6-point Gauss-Legendre in F.
-  const dealii::QGauss<1> gauss(6);
-  double                  W_fe = 0;
-  for (unsigned int q = 0; q < gauss.size(); ++q)
-    W_fe += 2 * 2 * FA * gauss.weight(q) * u_fe(FA * (2 * gauss.point(q)[0] - 1));
+  const double W_fe = loop_area(u_fe, FA, 6);
   const double W = t::dissipated_energy(medium, slip, a, FA);
   std::cout << "[fem] coarse mode 1, k = 0.5: unloading u0 worst " << worst_branch << ", W error " << W_fe / W - 1
             << '\n';

@@ -26,6 +26,8 @@
 #include <fem/axisymmetric_solver.h>
 #include <fem/modulus.h>
 
+#include "written_out.h"
+
 #include <catch2/catch.hpp>
 
 #include <unistd.h>
@@ -57,14 +59,7 @@ namespace
   // c1 of the z0 >> a law at nu = 0.3 (header; generate_boussinesq_depth_moment.py, 31 digits).
   constexpr double boussinesq_depth_moment = 0.7730382950177773;
 
-  double h_N(const double k, const double v)
-  {
-    const double beta = std::sqrt((1 + k) * (1 - k * v / (1 - v)));                          // (9.7)
-    const double C    = std::pow(2.0, 1 + k) * std::tgamma((3 + k + beta) / 2) *
-                     std::tgamma((3 + k - beta) / 2) / (pi * std::tgamma(2 + k));         // (9.6)
-    return 2 * (1 + k) * std::cos(k * pi / 2) * std::tgamma(1 + k / 2) /
-           (std::sqrt(pi) * C * beta * std::sin(beta * pi / 2) * std::tgamma((1 + k) / 2)); // (9.5)
-  }
+  using gradcontact::fem::testing::h_N;
 
   double power_law_force(const double k) // (9.16)
   {
