@@ -105,24 +105,7 @@ namespace gradcontact::cases
     if (!material.modulus)
       throw std::invalid_argument("fe_settings: the material has no modulus field");
     const double tolerance = s.discretization.force_tolerance;
-    fem::Settings settings =
-      fem::recommended_settings(contact_radius, material.modulus->surface_exponent(), tolerance);
-    // The truncation error falls like (a/L)^(1 + s) with s the exponent of the field far below the surface:
-    // for layers over a power law that is the power law's. Measured (flat punch, 16 layers over 10 a, k = -0.5):
-    // L/a of s = 0 (1.1e8) lost 1.2e-4 of the force against L/a = 1e16.
-    const double deep = material.modulus->deep_exponent();
-    if (deep != material.modulus->surface_exponent())
-      settings.mesh.far_field_size = fem::recommended_settings(contact_radius, deep, tolerance).mesh.far_field_size;
-    // A finite surface modulus E0 ((z + z0)/c0)^k: the power law's mesh with surface cells of z0/4, so that E
-    // varies by a bounded factor in each (plain Gauss: E is regular at z = 0), but not thinner than 1e-10 a
-    // (k > 0) or 2e-6 a (k < 0, where thinner cells with the stiff surface are flagged ill-conditioned:
-    // halvings to 5e-7 a gave an energy mismatch of 2.8e-6 at k = -0.5).
-    if (const auto *shifted = dynamic_cast<const fem::ShiftedPowerLawModulus *>(material.modulus.get()))
-      {
-        settings.mesh = fem::recommended_settings(contact_radius, shifted->k, tolerance).mesh;
-        settings.mesh.surface_layer_thickness =
-          std::clamp(shifted->z0 / (4 * contact_radius), shifted->k < 0 ? 2e-6 : 1e-10, 1.);
-      }
+    fem::Settings settings = fem::recommended_settings(contact_radius, *material.modulus, tolerance);
     settings.discretization.degree = s.discretization.degree;
     settings.discretization.formulation = fe_formulation(s);
     settings.mesh.global_refinements = refinement;

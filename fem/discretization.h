@@ -8,6 +8,7 @@
 #define GRADCONTACT_FEM_DISCRETIZATION_H
 
 #include <fem/mesh.h>
+#include <fem/modulus.h>
 
 #include <deal.II/base/types.h>
 
@@ -65,6 +66,11 @@ namespace gradcontact::fem
   /// h_edge = 1e-6 a, h_far = 4 a, g = 1.3 (k = 0: 5.2e-8 in about 2 s; k = -0.5: 1.1e-7 in 6 s; k = 0.5
   /// stays near 1e-6, limited by the u_z ~ z^{1-k} surface layer), and z-halvings only under r <= a.
   Settings recommended_settings(double contact_radius, double surface_exponent, double force_tolerance);
+
+  /// The same for a modulus field: the surface settings of its surface exponent, the far field of its deep
+  /// exponent (the truncation error falls like (a/L)^(1 + s) with s the exponent far below the surface), and
+  /// for a finite surface modulus E0 ((z + z0)/c0)^k the power law's mesh with surface cells of z0/4.
+  Settings recommended_settings(double contact_radius, const ModulusField &modulus, double force_tolerance);
 
   /// Wall-clock seconds of the phases of a solve.
   struct Timings
