@@ -91,6 +91,12 @@ namespace gradcontact::cases
     const MaterialParameters &m = s.material;
     base.material = GradedHalfSpace{m.E0, m.c0, m.k, m.nu};
     idealised_material = m.modulus != MaterialParameters::Modulus::power_law;
+    // An elastic indenter: the second body of 9.4 where the chapter covers the pairing, else the rigid indenter.
+    const IndenterParameters &indenter = s.indenter;
+    if (indenter.elasticity != IndenterParameters::Elasticity::rigid && indenter.covered_by_9_4(m.k))
+      base.material2 = GradedHalfSpace{
+        indenter.E, m.c0, indenter.elasticity == IndenterParameters::Elasticity::graded ? m.k : 0., indenter.nu};
+    idealised_indenter = !indenter.covered_by_9_4(m.k);
     base.method = method;
     if (problem == Problem::tangential)
       {
@@ -141,6 +147,7 @@ namespace gradcontact::cases
   std::string AnalyticReference::label() const
   {
     const std::string method = base.method == batch::Method::closed_form ? "closed form" : "numerical MDR";
-    return idealised_material ? method + " (power-law idealisation E0, c0, k)" : method;
+    return method + (idealised_material ? " (power-law idealisation E0, c0, k)" : "") +
+           (idealised_indenter ? " (rigid-indenter idealisation)" : "");
   }
 } // namespace gradcontact::cases

@@ -56,14 +56,15 @@ namespace gradcontact::cases
     batch::Method method() const { return base.method; }
     /// "closed form" or "numerical MDR", for report rows; when the scene's modulus is not the power law
     /// (layered, an expression, ...), followed by " (power-law idealisation E0, c0, k)": the chapter's
-    /// material, not the scene's.
+    /// material, not the scene's; when the scene's elastic indenter is not covered by 9.4 (a homogeneous one
+    /// on a graded half-space), by " (rigid-indenter idealisation)".
     std::string label() const;
-    /// Whether the scene's modulus differs from the power law E0 (z/c0)^k the reference assumes.
-    bool idealised() const { return idealised_material; }
+    /// Whether the reference assumes another material or indenter than the scene's.
+    bool idealised() const { return idealised_material || idealised_indenter; }
 
   private:
     batch::Request base;
-    bool idealised_material = false;
+    bool idealised_material = false, idealised_indenter = false;
   };
 } // namespace gradcontact::cases
 

@@ -5,6 +5,7 @@
 #include "fe_scene.h"
 
 #include <fem/axisymmetric_solver.h>
+#include <fem/unilateral_contact.h>
 
 #include <algorithm>
 #include <chrono>
@@ -13,6 +14,7 @@
 #include <iostream>
 #include <limits>
 #include <map>
+#include <memory>
 #include <sstream>
 
 namespace gradcontact::cases
@@ -149,7 +151,25 @@ namespace gradcontact::cases
 
     std::string ratio_name(const Scene &s)
     {
-      return s.map.parameter == MapParameters::Parameter::surface_depth ? "a/z0" : "a/H";
+      switch (s.map.parameter)
+        {
+          case MapParameters::Parameter::surface_depth:
+            return "a/z0";
+          case MapParameters::Parameter::indenter_modulus:
+            return "E1/E0";
+          default:
+            return "a/H";
+        }
+    }
+
+    double deviation_of(const MapPoint &p, const std::string &q)
+    {
+      return q == "force" ? p.force : (q == "contact radius" ? p.radius : p.pressure);
+    }
+
+    std::string quantity_label(const std::string &q)
+    {
+      return q == "pressure" ? "p(" + format(axis_sample) + " a)" : q;
     }
 
     /// `text` for a markdown table cell: | escaped.
@@ -167,6 +187,206 @@ namespace gradcontact::cases
       o << t * 100 << " %";
       return o.str();
     }
+
+    /// The points of one k, with what bounds their FE error.
+    struct ExponentMap
+    {
+      std::vector<MapPoint> points;
+      std::map<std::string, double> resolution; ///< per quantity; missing: not measured
+      std::string resolution_text;              ///< for map.md
+    };
+
+    /// The sharp-check rows of `check` (FE against closed forms where they are exact), named by `metric`.
+    void add_check_rows(const Scene &s, const MapPoint &check, const std::string &metric, SceneResult &result)
+    {
+      if (!check.error.empty())
+        {
+          result.rows.push_back(failed("force at the FE depth", "FE", "closed form", metric + ": " + check.error));
+          return;
+        }
+      result.rows.push_back(compare("force at the FE depth", metric, "FE", "closed form", 1., 1. + check.force, 1.,
+                                    s.tolerances.force, check.dofs, check.seconds));
+      if (is_indenter(s))
+        result.rows.push_back(compare("contact radius at the FE depth", metric, "FE", "closed form", 1., 1. + check.radius,
+                                      1., s.tolerances.contact_radius, check.dofs, check.seconds));
+      result.rows.push_back(compare("pressure at r = " + format(axis_sample) + " a", metric, "FE", "closed form", 1.,
+                                    1. + check.pressure, 1., s.tolerances.pressure, check.dofs, check.seconds));
+    }
+
+    /// A real grading at exponent k: the sharp check with the power law itself, the ratios, and the FE
+    /// resolution from one uniform refinement more at the ratio nearest the power law.
+    ExponentMap grading_map(const Scene &s, const double k, const std::vector<double> &ratios, SceneResult &result,
+                            const bool verbose)
+    {
+      const std::string x = ratio_name(s);
+      const bool toward_large = s.map.parameter == MapParameters::Parameter::surface_depth;
+      const std::vector<std::string> quantities = is_indenter(s) ? std::vector<std::string>{"force", "contact radius", "pressure"}
+                                                                 : std::vector<std::string>{"force", "pressure"};
+      ExponentMap out;
+      // The sharp check: the same FE model with the power law itself, where the closed forms are exact.
+      const MapPoint exact = solve(graded(s, k, 0.), 0.);
+      add_check_rows(s, exact, "k = " + format(k) + ", the power law itself (" + x + (toward_large ? " -> inf)" : " -> 0)"),
+                     result);
+      if (verbose)
+        std::cerr << "  k = " << k << ", the power law: force " << exact.force << ", radius " << exact.radius
+                  << ", pressure " << exact.pressure << (exact.error.empty() ? "" : " (" + exact.error + ")") << '\n';
+      for (const double ratio : ratios)
+        out.points.push_back(solve(graded(s, k, ratio), ratio));
+      // The FE resolution of the map: the point nearest the power law again with one uniform refinement
+      // more; a deviation that changes by more than a third of a threshold cannot place that threshold.
+      std::vector<MapPoint>::const_iterator at = out.points.end();
+      for (auto p = out.points.begin(); p != out.points.end(); ++p)
+        if (p->error.empty() && (at == out.points.end() || (toward_large ? p->ratio > at->ratio : p->ratio < at->ratio)))
+          at = p;
+      const double nearest = at == out.points.end() ? ratios.front() : at->ratio;
+      const MapPoint finer = at == out.points.end() ? MapPoint{} : solve(graded(s, k, nearest), nearest, 1);
+      if (at != out.points.end() && finer.error.empty())
+        for (const std::string &q : quantities)
+          out.resolution[q] = std::abs(deviation_of(finer, q) - deviation_of(*at, q));
+      std::ostringstream md;
+      md << "FE resolution at " << x << " = " << format(nearest) << " (the change with one uniform refinement more, "
+         << finer.dofs << " DoFs):";
+      if (out.resolution.empty())
+        md << " not measured (" << (at == out.points.end() ? "no point was solved" : cell(finer.error)) << ")";
+      for (const auto &[q, change] : out.resolution)
+        md << " " << quantity_label(q) << " " << format(change) << ";";
+      out.resolution_text = md.str();
+      return out;
+    }
+
+    /// A homogeneous elastic indenter (E1 = ratio E0, Indenter/nu) on the power law at exponent k, at the rigid
+    /// closed form's depth of Load/a: one two-body solver (fem::UnilateralContactSolver) for every ratio (the
+    /// indenter's compliance rescaled, exact in linear elasticity) and the rigid limit (factor inf). Sharp checks
+    /// on the same mesh: the rigid limit, and a graded indenter E0 (z/c0)^k (Indenter/nu) by the equivalent
+    /// medium (9.4), against the closed forms; the larger of their errors is the map's FE resolution.
+    ExponentMap indenter_map(const Scene &s, const double k, const std::vector<double> &ratios, SceneResult &result,
+                             const bool verbose)
+    {
+      ExponentMap out;
+      Scene g = s;
+      g.material.k = k;
+      g.map.parameter = MapParameters::Parameter::none;
+      g.load.control = LoadParameters::Control::contact_radius;
+      g.indenter.elasticity = IndenterParameters::Elasticity::rigid;
+      const double a = g.load.a;
+      const std::string metric = "k = " + format(k) + ", ";
+      try
+        {
+          const FeModel model = fe_model(g, finest_refinement(g));
+          const AnalyticReference rigid(g, batch::Method::closed_form, AnalyticReference::Problem::normal);
+          fem::UnilateralLoad load;
+          load.indenter = fem::Indenter::of(model.load.profile, a);
+          load.depth = rigid.get("depth");
+          // The contact grows toward the homogeneous pairing's radius at this depth as E1 / E0 falls.
+          Scene homogeneous = g;
+          homogeneous.material.k = 0.;
+          homogeneous.load.control = LoadParameters::Control::depth;
+          homogeneous.load.depth = load.depth;
+          const double widest = std::max(a, AnalyticReference(homogeneous, batch::Method::closed_form,
+                                                              AnalyticReference::Problem::normal).radius());
+          fem::OutputRequest request;
+          request.pressure_radii = {axis_sample * a};
+          const auto point = [&](const fem::UnilateralResult &r, const AnalyticReference &ref, const double ratio,
+                                 const double seconds, const unsigned int dofs) {
+            MapPoint p;
+            p.ratio = ratio;
+            p.dofs = dofs;
+            p.seconds = seconds;
+            if (r.zones.size() != 1 || r.zones.front().r_in > 0)
+              p.error = "the contact is not one disc (" + std::to_string(r.zones.size()) + " zones)";
+            else if (!r.reliable)
+              p.error = "the FE solve is flagged unreliable: " + r.message;
+            else
+              {
+                p.force = r.force / ref.get("force") - 1;
+                p.radius = r.outer_edge / ref.radius() - 1;
+                p.pressure = r.pressure.at(0).value / ref.at("pressure", axis_sample * a) - 1;
+              }
+            return p;
+          };
+          const auto timed = [](const auto &work) {
+            const auto start = std::chrono::steady_clock::now();
+            work();
+            return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+          };
+
+          // The map's solver: a homogeneous indenter E0, nu_i; the rigid limit first.
+          std::unique_ptr<fem::UnilateralContactSolver> solver;
+          const double setup = timed([&] {
+            solver = std::make_unique<fem::UnilateralContactSolver>(
+              model.material, model.settings.mesh, model.settings.discretization, 1.25 * widest, fem::SurfaceRefinement{},
+              fem::Material{std::make_shared<fem::PowerLawModulus>(g.material.E0, g.material.c0, 0.), s.indenter.nu});
+          });
+          fem::UnilateralResult r;
+          solver->set_indenter_modulus_factor(std::numeric_limits<double>::infinity());
+          double seconds = setup + timed([&] { r = solver->run(load, request); });
+          const fem::UnilateralResult rigid_fe = r;
+          const MapPoint rigid_check = point(r, rigid, 0., seconds, solver->n_dofs());
+          add_check_rows(s, rigid_check, metric + "rigid indenter (E1/E0 -> inf)", result);
+          // A point: the FE at E1 against the rigid FE on the same mesh, which is the closed form up to the
+          // rigid check's error.
+          const auto relative = [&](MapPoint p) {
+            if (p.error.empty() && rigid_check.error.empty())
+              {
+                p.force = (1 + p.force) / (1 + rigid_check.force) - 1;
+                p.radius = (1 + p.radius) / (1 + rigid_check.radius) - 1;
+                p.pressure = (1 + p.pressure) / (1 + rigid_check.pressure) - 1;
+              }
+            else if (p.error.empty())
+              p.error = "the rigid limit failed: " + rigid_check.error;
+            return p;
+          };
+          for (const double ratio : ratios)
+            {
+              solver->set_indenter_modulus_factor(ratio);
+              seconds = timed([&] { r = solver->run(load, request); });
+              out.points.push_back(relative(point(r, rigid, ratio, seconds, solver->n_dofs())));
+            }
+
+          // 9.4: a graded indenter of the same law, where the equivalent medium is exact.
+          Scene pair = g;
+          pair.indenter.elasticity = IndenterParameters::Elasticity::graded;
+          // Another E0 and nu than the half-space's: with the same ones the two bodies are one body twice and
+          // the FE's ratio is exact on any mesh.
+          pair.indenter.E = g.material.E0 / 2;
+          pair.indenter.nu = g.material.nu < 0.4 ? 0.45 : 0.2;
+          const AnalyticReference equivalent(pair, batch::Method::closed_form, AnalyticReference::Problem::normal);
+          std::unique_ptr<fem::UnilateralContactSolver> two_graded;
+          seconds = timed([&] {
+            two_graded = std::make_unique<fem::UnilateralContactSolver>(
+              model.material, model.settings.mesh, model.settings.discretization, 1.25 * a, fem::SurfaceRefinement{},
+              fe_indenter_body(pair));
+            r = two_graded->run(load, request);
+          });
+          const MapPoint pair_check = point(r, equivalent, 0., seconds, two_graded->n_dofs());
+          add_check_rows(s, pair_check,
+                         metric + "graded indenter E0/2 (z/c0)^k, nu = " + format(pair.indenter.nu) + " (9.4)", result);
+          if (verbose)
+            std::cerr << "  k = " << k << ": rigid limit force " << rigid_check.force << ", two graded bodies (9.4) force "
+                      << pair_check.force << '\n';
+          // The FE resolution: the error of the FE's ratio (two bodies over the rigid indenter) where 9.4 knows it.
+          const MapPoint pair_ratio = relative(pair_check);
+          if (pair_ratio.error.empty())
+            for (const std::string q : {"force", "contact radius", "pressure"})
+              out.resolution[q] = std::abs(deviation_of(pair_ratio, q)); // (FE / closed form of 9.4) / (the same, rigid) - 1
+          std::ostringstream md;
+          md << "FE resolution (the error of the FE's ratio two bodies / rigid indenter where 9.4 gives it, "
+             << solver->n_dofs() << " DoFs):";
+          if (out.resolution.empty())
+            md << " not measured (" << cell(rigid_check.error + pair_check.error) << ")";
+          for (const auto &[q, change] : out.resolution)
+            md << " " << quantity_label(q) << " " << format(change) << ";";
+          md << " E(a) = E0 (a/c0)^k = " << format(std::pow(a / g.material.c0, k)) << " E0, so E1/E(a) = "
+             << format(std::pow(g.material.c0 / a, k)) << " E1/E0.";
+          out.resolution_text = md.str();
+        }
+      catch (const std::exception &e)
+        {
+          result.rows.push_back(failed("indenter-modulus map", "FE", "closed form", metric + concise(e)));
+          out.resolution_text = "not measured (" + cell(concise(e)) + ")";
+        }
+      return out;
+    }
   } // namespace
 
   SceneResult run_map_scene(const Scene &s, const fs::path &folder, const bool verbose)
@@ -182,28 +402,37 @@ namespace gradcontact::cases
     const bool indenter = is_indenter(s);
     const std::vector<std::string> quantities =
       indenter ? std::vector<std::string>{"force", "contact radius", "pressure"} : std::vector<std::string>{"force", "pressure"};
-    const auto deviation = [](const MapPoint &p, const std::string &q) {
-      return q == "force" ? p.force : (q == "contact radius" ? p.radius : p.pressure);
-    };
-    const auto quantity_label = [](const std::string &q) {
-      return q == "pressure" ? "p(" + format(axis_sample) + " a)" : q;
-    };
+    const bool of_indenter = s.map.parameter == MapParameters::Parameter::indenter_modulus;
+    const std::string reference_name =
+      of_indenter ? "closed form (rigid indenter)" : "closed form (power-law idealisation E0, c0, k)";
 
     std::ofstream csv(folder / "map.csv");
-    csv << "k," << (x == "a/z0" ? "a_over_z0" : "a_over_H") << ",force_deviation,contact_radius_deviation,"
-        << "pressure_deviation,dofs,seconds,error\n";
+    csv << "k," << (x == "a/z0" ? "a_over_z0" : (x == "a/H" ? "a_over_H" : "E1_over_E0"))
+        << ",force_deviation,contact_radius_deviation,pressure_deviation,dofs,seconds,error\n";
     csv.precision(10);
     std::ostringstream md, thresholds_md;
-    md << "# " << s.info.name << ": applicability map\n\n"
-       << (s.info.description.empty() ? "" : s.info.description + "\n\n")
-       << "The FE model of " << (x == "a/z0" ? "E(z) = E0 ((z + z0)/c0)^k (a finite surface modulus)"
-                                             : "a graded coating E0 (z/c0)^k on 0 < z <= H over the substrate E0 (H/c0)^k")
-       << " against the power-law closed forms (E0, c0, k; 9.1) at the FE depth: deviation = FE / closed form - 1"
-       << " (force at the depth" << (indenter ? ", contact radius at the depth" : "") << ", pressure at r = "
-       << format(axis_sample) << " a). Load/a = " << format(s.load.a) << " m, the FE under contact-radius control.\n\n";
-    // The power law is the limit a/z0 -> inf of a finite surface modulus and a/H -> 0 of a coating.
-    const bool toward_large = s.map.parameter == MapParameters::Parameter::surface_depth;
-    thresholds_md << "## Where the power law holds\n\n| k | quantity |";
+    md << "# " << s.info.name << ": applicability map\n\n" << (s.info.description.empty() ? "" : s.info.description + "\n\n");
+    if (of_indenter)
+      md << "The FE model of a homogeneous elastic indenter (E1 = ratio E0, nu = " << format(s.indenter.nu)
+         << ", a half-space carrying the profile) on E0 (z/c0)^k, at the depth where the rigid indenter's closed form "
+            "has the contact radius Load/a = "
+         << format(s.load.a) << " m: deviation = FE(E1) / FE(rigid indenter) - 1 on one mesh (force, contact radius, "
+            "pressure at r = "
+         << format(axis_sample) << " a), the deviation from the rigid indenter's closed forms up to the rigid FE's "
+            "own error (the sharp-check rows of errors.csv). One mesh and solver per k (fem::UnilateralContactSolver, "
+            "the contact set found); E1 enters as the scale of the indenter's compliance.\n\n";
+    else
+      md << "The FE model of "
+         << (x == "a/z0" ? "E(z) = E0 ((z + z0)/c0)^k (a finite surface modulus)"
+                         : "a graded coating E0 (z/c0)^k on 0 < z <= H over the substrate E0 (H/c0)^k")
+         << " against the power-law closed forms (E0, c0, k; 9.1) at the FE depth: deviation = FE / closed form - 1"
+         << " (force at the depth" << (indenter ? ", contact radius at the depth" : "") << ", pressure at r = "
+         << format(axis_sample) << " a). Load/a = " << format(s.load.a) << " m, the FE under contact-radius control.\n\n";
+    // The chapter's idealisation is the limit a/z0 -> inf of a finite surface modulus, a/H -> 0 of a coating and
+    // E1/E0 -> inf of the indenter.
+    const bool toward_large = s.map.parameter != MapParameters::Parameter::coating_thickness;
+    thresholds_md << "## Where " << (of_indenter ? "the rigid indenter's closed forms hold" : "the power law holds")
+                  << "\n\n| k | quantity |";
     for (const double t : s.map.thresholds)
       thresholds_md << " within " << percent(t) << " when " << x << " |";
     thresholds_md << "\n|---|---|";
@@ -214,77 +443,35 @@ namespace gradcontact::cases
     std::map<std::string, std::vector<Series>> plots;
     for (const double k : ks)
       {
-        // The sharp check: the same FE model with the power law itself, where the closed forms are exact.
-        const MapPoint exact = solve(graded(s, k, 0.), 0.);
-        const std::string metric = "k = " + format(k) + ", the power law itself (" + x + (toward_large ? " -> inf)" : " -> 0)");
-        if (!exact.error.empty())
-          result.rows.push_back(failed("force at the FE depth", "FE", "closed form", metric + ": " + exact.error));
-        else
-          {
-            result.rows.push_back(compare("force at the FE depth", metric, "FE", "closed form", 1., 1. + exact.force, 1.,
-                                          s.tolerances.force, exact.dofs, exact.seconds));
-            if (indenter)
-              result.rows.push_back(compare("contact radius at the FE depth", metric, "FE", "closed form", 1.,
-                                            1. + exact.radius, 1., s.tolerances.contact_radius, exact.dofs, exact.seconds));
-            result.rows.push_back(compare("pressure at r = " + format(axis_sample) + " a", metric, "FE", "closed form", 1.,
-                                          1. + exact.pressure, 1., s.tolerances.pressure, exact.dofs, exact.seconds));
-          }
-        if (verbose)
-          std::cerr << "  k = " << k << ", the power law: force " << exact.force << ", radius " << exact.radius
-                    << ", pressure " << exact.pressure << (exact.error.empty() ? "" : " (" + exact.error + ")") << '\n';
-
-        if (toward_large && k < 0)
+        if (toward_large && !of_indenter && k < 0)
           md << "k < 0 with a finite surface modulus: where z0 is thinner than the surface cells (outside r <= 1.05 a "
                 "they are not halved), the plain Gauss rule under-integrates E ~ (z + z0)^k near z = 0, so the FE "
                 "carries an error of about 1e-3 of the force at a/z0 >= 1e4 that one uniform refinement reduces only "
                 "in part (fem/README.md, \"Limits\"); read the thresholds below 1 % with that in mind.\n\n";
+        const ExponentMap map = of_indenter ? indenter_map(s, k, ratios, result, verbose) : grading_map(s, k, ratios, result, verbose);
+        const std::vector<MapPoint> &points = map.points;
+        std::map<std::string, double> resolution = map.resolution;
         md << "## k = " << format(k) << "\n\n| " << x << " | force | " << (indenter ? "contact radius | " : "")
            << "p(" << format(axis_sample) << " a) | DoFs | s |\n|---|---|" << (indenter ? "---|" : "") << "---|---|---|\n";
-        std::vector<MapPoint> points;
-        for (const double ratio : ratios)
+        for (const MapPoint &p : points)
           {
-            points.push_back(solve(graded(s, k, ratio), ratio));
-            const MapPoint &p = points.back();
-            csv << k << ',' << ratio << ',' << p.force << ',' << (indenter ? p.radius : std::nan("")) << ','
+            csv << k << ',' << p.ratio << ',' << p.force << ',' << (indenter ? p.radius : std::nan("")) << ','
                 << p.pressure << ',' << p.dofs << ',' << p.seconds << ',' << csv_quote(p.error) << '\n';
-            md << "| " << format(ratio);
+            md << "| " << format(p.ratio);
             if (p.error.empty())
-              {
-                md << " | " << format(p.force) << " | " << (indenter ? format(p.radius) + " | " : "") << format(p.pressure);
-              }
+              md << " | " << format(p.force) << " | " << (indenter ? format(p.radius) + " | " : "") << format(p.pressure);
             else
               md << " | failed: " << cell(p.error) << " | " << (indenter ? "- | " : "") << "-";
             md << " | " << p.dofs << " | " << format(p.seconds) << " |\n";
             if (verbose)
-              std::cerr << "  k = " << k << ", " << x << " = " << ratio << ": force " << p.force << ", radius "
+              std::cerr << "  k = " << k << ", " << x << " = " << p.ratio << ": force " << p.force << ", radius "
                         << p.radius << ", pressure " << p.pressure << (p.error.empty() ? "" : " (" + p.error + ")")
                         << ", " << p.seconds << " s\n";
             if (!p.error.empty())
-              result.rows.push_back(failed("map point", "FE", "closed form (power-law idealisation E0, c0, k)",
-                                           "k = " + format(k) + ", " + x + " = " + format(ratio) + ": " + p.error));
+              result.rows.push_back(failed("map point", "FE", reference_name,
+                                           "k = " + format(k) + ", " + x + " = " + format(p.ratio) + ": " + p.error));
           }
-        // The FE resolution of the map: the point nearest the power law again with one uniform refinement
-        // more; a deviation that changes by more than a third of a threshold cannot place that threshold.
-        std::map<std::string, double> resolution;
-        {
-          // the solved point nearest the power law
-          std::vector<MapPoint>::const_iterator at = points.end();
-          for (auto p = points.begin(); p != points.end(); ++p)
-            if (p->error.empty() && (at == points.end() || (toward_large ? p->ratio > at->ratio : p->ratio < at->ratio)))
-              at = p;
-          const double nearest = at == points.end() ? ratios.front() : at->ratio;
-          const MapPoint finer = at == points.end() ? MapPoint{} : solve(graded(s, k, nearest), nearest, 1);
-          if (at != points.end() && finer.error.empty())
-            for (const std::string &q : quantities)
-              resolution[q] = std::abs(deviation(finer, q) - deviation(*at, q));
-          md << "FE resolution at " << x << " = " << format(nearest) << " (the change with one uniform refinement more, "
-             << finer.dofs << " DoFs):";
-          if (resolution.empty())
-            md << " not measured (" << (at == points.end() ? "no point was solved" : cell(finer.error)) << ")";
-          for (const auto &[q, change] : resolution)
-            md << " " << quantity_label(q) << " " << format(change) << ";";
-          md << "\n\n";
-        }
+        md << map.resolution_text << "\n\n";
         for (const std::string &q : quantities)
           {
             std::vector<double> r, d;
@@ -293,9 +480,9 @@ namespace gradcontact::cases
               if (p.error.empty())
                 {
                   r.push_back(p.ratio);
-                  d.push_back(deviation(p, q));
+                  d.push_back(deviation_of(p, q));
                   curve.x.push_back(p.ratio);
-                  curve.y.push_back(std::max(std::abs(deviation(p, q)), 1e-16));
+                  curve.y.push_back(std::max(std::abs(deviation_of(p, q)), 1e-16));
                 }
             plots[q].push_back(curve);
             thresholds_md << "| " << format(k) << " | " << quantity_label(q) << " |";
@@ -323,7 +510,7 @@ namespace gradcontact::cases
       }
     std::ofstream(folder / "map.md") << md.str() << thresholds_md.str()
                                      << "\nThe thresholds interpolate log-log between the last ratio outside and the next "
-                                        "one toward the power law; every ratio of the map beyond it is within.\n";
+                                        "one toward the chapter's idealisation; every ratio of the map beyond it is within.\n";
     if (s.outputs.plots)
       for (auto &[q, series] : plots)
         {
@@ -331,7 +518,8 @@ namespace gradcontact::cases
             series.push_back(Series{percent(t), {ratios.front(), ratios.back()}, {t, t}, false, false});
           std::string stem = "map-" + q;
           std::replace(stem.begin(), stem.end(), ' ', '_');
-          write_plot(folder, stem, s.info.name + ": |" + quantity_label(q) + " / power law - 1|", x,
+          write_plot(folder, stem,
+                     s.info.name + ": |" + quantity_label(q) + (of_indenter ? " / rigid indenter - 1|" : " / power law - 1|"), x,
                      "|deviation|", series, true, true);
         }
     result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

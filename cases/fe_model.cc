@@ -48,6 +48,15 @@ namespace gradcontact::cases
     return material;
   }
 
+  std::optional<fem::Material> fe_indenter_body(const Scene &s)
+  {
+    const IndenterParameters &i = s.indenter;
+    if (i.elasticity == IndenterParameters::Elasticity::rigid)
+      return std::nullopt;
+    const double k = i.elasticity == IndenterParameters::Elasticity::graded ? s.material.k : 0.;
+    return fem::Material{std::make_shared<fem::PowerLawModulus>(i.E, s.material.c0, k), i.nu};
+  }
+
   fem::Formulation fe_formulation(const Scene &s)
   {
     switch (s.discretization.formulation)
@@ -125,6 +134,7 @@ namespace gradcontact::cases
   {
     FeModel model;
     model.material = fe_material(s);
+    model.indenter_body = fe_indenter_body(s);
     model.load = fe_load(s);
     model.settings = fe_settings(s, model.material, s.load.a, refinement);
     return model;

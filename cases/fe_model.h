@@ -18,11 +18,17 @@
 #include <fem/axisymmetric_solver.h>
 #include <fem/modulus.h>
 
+#include <optional>
+
 namespace gradcontact::cases
 {
   /// The FE material of the scene (power law, layered or expression modulus). The layered zone is
   /// Material/layered depth times Load/a deep.
   fem::Material fe_material(const Scene &scene);
+
+  /// The elastic indenter of Indenter/elasticity as the second body of fem::UnilateralContactSolver: a
+  /// homogeneous E, nu, or the power law E (z/c0)^k with the Material's k and c0; none when rigid.
+  std::optional<fem::Material> fe_indenter_body(const Scene &scene);
 
   /// Discretization/formulation as the FE enum.
   fem::Formulation fe_formulation(const Scene &scene);
@@ -46,6 +52,7 @@ namespace gradcontact::cases
   struct FeModel
   {
     fem::Material material;
+    std::optional<fem::Material> indenter_body; ///< fe_indenter_body
     fem::LoadCase load;
     fem::Settings settings;
   };

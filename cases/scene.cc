@@ -154,6 +154,29 @@ namespace gradcontact::cases
     prm.leave_subsection();
   }
 
+  void IndenterParameters::declare(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Indenter");
+    prm.declare_entry("elasticity", "rigid", Patterns::Selection("rigid|homogeneous|graded"),
+                      "rigid; homogeneous (an elastic body E, nu carrying the profile, e.g. a sphere of radius R >> a "
+                      "modelled as a half-space); graded (a second body E (z/c0)^k with the Material's k and c0, 9.4). "
+                      "Elastic indenters need Load/contact = unilateral.");
+    prm.declare_entry("E", "1e9", Patterns::Double(0.), "homogeneous: the indenter's E; graded: its E0 [Pa], > 0.");
+    prm.declare_entry("nu", "0.3", Patterns::Double(0., 0.5), "The indenter's Poisson ratio, [0, 0.5].");
+    prm.leave_subsection();
+  }
+  void IndenterParameters::parse(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Indenter");
+    const std::string e = prm.get("elasticity");
+    elasticity = e == "rigid" ? Elasticity::rigid : (e == "homogeneous" ? Elasticity::homogeneous : Elasticity::graded);
+    E = prm.get_double("E");
+    nu = prm.get_double("nu");
+    prm.leave_subsection();
+    if (elasticity != Elasticity::rigid && !(E > 0.))
+      throw std::invalid_argument("Indenter/E: " + format(E) + " must be in (0, inf) for an elastic indenter");
+  }
+
   void DiscretizationParameters::declare(ParameterHandler &prm)
   {
     prm.enter_subsection("Discretization");
@@ -382,11 +405,13 @@ namespace gradcontact::cases
   void MapParameters::declare(ParameterHandler &prm)
   {
     prm.enter_subsection("Map");
-    prm.declare_entry("parameter", "none", Patterns::Selection("none|surface depth|coating thickness"),
+    prm.declare_entry("parameter", "none", Patterns::Selection("none|surface depth|coating thickness|indenter modulus"),
                       "What the ratios set: none (no map), surface depth (Material/modulus = shifted power law, "
-                      "z0 = a / ratio) or coating thickness (Material/modulus = coating, H = a / ratio).");
+                      "z0 = a / ratio), coating thickness (Material/modulus = coating, H = a / ratio) or indenter "
+                      "modulus (a homogeneous elastic indenter E1 = ratio E0 with Indenter/nu, against the rigid "
+                      "indenter's closed forms).");
     prm.declare_entry("ratios", "", Patterns::List(Patterns::Double(0.), 0, 100),
-                      "The ratios a/z0 or a/H of the map, > 0.");
+                      "The ratios a/z0, a/H or E1/E0 of the map, > 0.");
     prm.declare_entry("k values", "", Patterns::List(Patterns::Double(-1., 1.), 0, 20),
                       "The exponents k of the map, -1 < k < 1; empty: Material/k.");
     prm.declare_entry("thresholds", "0.01, 0.001", Patterns::List(Patterns::Double(0.), 1, 10),
@@ -397,8 +422,10 @@ namespace gradcontact::cases
   {
     prm.enter_subsection("Map");
     const std::string p = prm.get("parameter");
-    parameter = p == "surface depth" ? Parameter::surface_depth
-                                     : (p == "coating thickness" ? Parameter::coating_thickness : Parameter::none);
+    parameter = p == "surface depth"       ? Parameter::surface_depth
+                : p == "coating thickness" ? Parameter::coating_thickness
+                : p == "indenter modulus"  ? Parameter::indenter_modulus
+                                           : Parameter::none;
     ratios = to_doubles(prm.get("ratios"));
     exponents = to_doubles(prm.get("k values"));
     thresholds = to_doubles(prm.get("thresholds"));
@@ -513,6 +540,21 @@ namespace gradcontact::cases
           throw std::invalid_argument(where + "Load/contact = unilateral is a normal-contact scene (no Adhesion, "
                                       "Tangential or Candidate entries)");
       }
+    if (s.indenter.elasticity != IndenterParameters::Elasticity::rigid)
+      {
+        if (s.load.contact != LoadParameters::Contact::unilateral)
+          throw std::invalid_argument(where + "Indenter/elasticity = " +
+                                      (s.indenter.elasticity == IndenterParameters::Elasticity::graded ? "graded"
+                                                                                                      : "homogeneous") +
+                                      " needs Load/contact = unilateral (the two-body model finds the contact set)");
+        if (s.indenter.elasticity == IndenterParameters::Elasticity::graded &&
+            s.material.modulus != MaterialParameters::Modulus::power_law)
+          throw std::invalid_argument(where + "Indenter/elasticity = graded takes the Material's k and c0 of the power "
+                                      "law (9.4): Material/modulus must be power law");
+        if (s.map.enabled())
+          throw std::invalid_argument(where + "Map/parameter is set: the map chooses the indenter; Indenter/elasticity "
+                                      "must be rigid");
+      }
     if (s.map.enabled())
       {
         using Type = LoadParameters::Type;
@@ -530,7 +572,17 @@ namespace gradcontact::cases
         if (!s.references.fem)
           throw std::invalid_argument(where + "Map/parameter is set with References/fem = false: a map is FE data");
         if (s.map.ratios.empty())
-          throw std::invalid_argument(where + "Map/ratios is empty: give the ratios a/z0 or a/H of the map");
+          throw std::invalid_argument(where + "Map/ratios is empty: give the ratios a/z0, a/H or E1/E0 of the map");
+        if (s.map.parameter == MapParameters::Parameter::indenter_modulus)
+          {
+            if (s.load.type == Type::flat_punch)
+              throw std::invalid_argument(where + "Map/parameter = indenter modulus with Load/type = flat punch: the "
+                                          "elastic indenter's contact set is found, which needs a curved indenter "
+                                          "(paraboloid, cone or power law)");
+            if (s.material.modulus != MaterialParameters::Modulus::power_law)
+              throw std::invalid_argument(where + "Map/parameter = indenter modulus needs Material/modulus = power law "
+                                          "(the map isolates the indenter's elasticity)");
+          }
         if (!(s.load.a > 0.))
           throw std::invalid_argument(where + "Load/a = " + format(s.load.a) + " must be in (0, inf) (z0 or H = a / ratio)");
         return SceneKind::map;
@@ -572,6 +624,7 @@ namespace gradcontact::cases
       SceneInfo::declare(prm);
       MaterialParameters::declare(prm);
       LoadParameters::declare(prm);
+      IndenterParameters::declare(prm);
       DiscretizationParameters::declare(prm);
       OutputParameters::declare(prm);
       ReferenceParameters::declare(prm);
@@ -645,6 +698,7 @@ namespace gradcontact::cases
         s.info.parse(prm);
         s.material.parse(prm);
         s.load.parse(prm);
+        s.indenter.parse(prm);
         s.discretization.parse(prm);
         s.outputs.parse(prm);
         s.references.parse(prm);

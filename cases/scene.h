@@ -77,6 +77,29 @@ namespace gradcontact::cases
     void parse(dealii::ParameterHandler &prm);
   };
 
+  /// The indenter's elasticity (Load/contact = unilateral, fem::UnilateralContactSolver): rigid, a homogeneous
+  /// elastic body E, nu (a sphere of radius R >> a as a half-space), or a second graded body E (z/c0)^k with the
+  /// Material's k and c0 (9.4: the equivalent medium is exact). The chapter's closed forms take the second
+  /// graded body (and a homogeneous one at k = 0) through 9.4; a homogeneous body at k != 0 has no closed form,
+  /// and the rows say they assume a rigid indenter.
+  struct IndenterParameters
+  {
+    enum class Elasticity
+    {
+      rigid,
+      homogeneous,
+      graded
+    };
+    Elasticity elasticity = Elasticity::rigid;
+    double E = 1e9;  ///< homogeneous: E [Pa]; graded: its E0 [Pa]
+    double nu = 0.3; ///< Poisson's ratio of the indenter
+    /// The chapter's closed forms hold for this pairing (rigid, a graded body of the Material's law, or a
+    /// homogeneous one on a homogeneous half-space).
+    bool covered_by_9_4(double k) const { return elasticity != Elasticity::homogeneous || k == 0.; }
+    static void declare(dealii::ParameterHandler &prm);
+    void parse(dealii::ParameterHandler &prm);
+  };
+
   struct DiscretizationParameters
   {
     unsigned int degree = 3;
@@ -183,7 +206,8 @@ namespace gradcontact::cases
     {
       none,
       surface_depth,    ///< Material/modulus = shifted power law, z0 = a / ratio
-      coating_thickness ///< Material/modulus = coating, H = a / ratio
+      coating_thickness, ///< Material/modulus = coating, H = a / ratio
+      indenter_modulus   ///< a homogeneous elastic indenter (Indenter/nu), E1 = ratio E0, against the rigid one
     };
     Parameter parameter = Parameter::none;
     std::vector<double> ratios;     ///< a/z0 or a/H, > 0
@@ -214,6 +238,7 @@ namespace gradcontact::cases
     SceneInfo info;
     MaterialParameters material;
     LoadParameters load;
+    IndenterParameters indenter;
     DiscretizationParameters discretization;
     OutputParameters outputs;
     ReferenceParameters references;

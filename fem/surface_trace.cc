@@ -275,6 +275,68 @@ namespace gradcontact::fem
     return coupling;
   }
 
+  SurfaceCoupling hat_coupling(const std::vector<SurfaceFace> &faces, const unsigned int c,
+                               const std::vector<double> &vertex_r, const unsigned int n_gauss)
+  {
+    const unsigned int m = vertex_r.size();
+    if (m < 2)
+      fail("hat_coupling", "number of vertices", m, "at least 2");
+    for (unsigned int k = 1; k < m; ++k)
+      if (!(vertex_r[k] > vertex_r[k - 1]))
+        fail("hat_coupling", "vertex radius", vertex_r[k], "ascending");
+    const double begin = vertex_r.front(), end = vertex_r.back();
+    // psi_k at r in [vertex_r[j], vertex_r[j + 1]]: the two hats of that interval.
+    const auto interval = [&](const double r) {
+      const auto it = std::upper_bound(vertex_r.begin(), vertex_r.end(), r);
+      return std::min<std::size_t>(std::max<std::ptrdiff_t>(it - vertex_r.begin(), 1), m - 1) - 1;
+    };
+    SurfaceCoupling                                 coupling;
+    std::map<types::global_dof_index, unsigned int> index;
+    coupling.vertex_r = vertex_r;
+    std::vector<const SurfaceFace *> overlapping;
+    for (const SurfaceFace &face : faces)
+      if (face.r1 > begin && face.r0 < end)
+        {
+          overlapping.push_back(&face);
+          for (const auto d : face.dofs[c])
+            if (index.emplace(d, index.size()).second)
+              coupling.dofs.push_back(d);
+        }
+    coupling.matrix.reinit(coupling.dofs.size(), m);
+    const QGauss<1> quadrature(n_gauss);
+    for (const SurfaceFace *face : overlapping)
+      {
+        // The face within [begin, end], split at the vertices inside it.
+        std::vector<double> cuts{std::max(face->r0, begin)};
+        for (const double v : vertex_r)
+          if (v > cuts.front() && v < std::min(face->r1, end))
+            cuts.push_back(v);
+        cuts.push_back(std::min(face->r1, end));
+        const auto &dofs = face->dofs[c];
+        for (std::size_t piece = 0; piece + 1 < cuts.size(); ++piece)
+          {
+            const double x0 = cuts[piece], x1 = cuts[piece + 1];
+            const std::size_t j = interval(0.5 * (x0 + x1));
+            const double      v0 = vertex_r[j], v1 = vertex_r[j + 1];
+            for (unsigned int q = 0; q < quadrature.size(); ++q)
+              {
+                const double r = x0 + (x1 - x0) * quadrature.point(q)[0];
+                const double w = quadrature.weight(q) * (x1 - x0) * r;
+                const double t = (r - v0) / (v1 - v0);
+                for (unsigned int i = 0; i < dofs.size(); ++i)
+                  {
+                    std::vector<double> unit(dofs.size(), 0.0);
+                    unit[i]          = 1;
+                    const double phi = lagrange(face->r, unit, r);
+                    coupling.matrix(index[dofs[i]], j) += phi * (1 - t) * w;
+                    coupling.matrix(index[dofs[i]], j + 1) += phi * t * w;
+                  }
+              }
+          }
+      }
+    return coupling;
+  }
+
   std::vector<double> recover_line_density(const std::vector<SurfaceFace> &faces, const unsigned int c,
                                            const Vector<double> &forces, const double edge,
                                            const unsigned int n_gauss, const std::size_t n_dofs)

@@ -108,6 +108,14 @@ namespace gradcontact::fem
   SurfaceCoupling linear_density_coupling(const std::vector<SurfaceFace> &faces, unsigned int c, double limit,
                                           unsigned int n_gauss);
 
+  /// The same coupling for hats on given vertices (ascending, e.g. another body's surface vertices, so
+  /// that the meshes need not match): D_ik = \int phi_i psi_k r dr over [vertex_r.front(), vertex_r.back()],
+  /// every face split at the vertices inside it, Gauss with `n_gauss` points per piece (exact for a
+  /// polynomial trace of degree n_gauss - 2). `dofs` are the DoFs of component c of the faces that overlap
+  /// that interval; `vertex_mass` is left empty.
+  SurfaceCoupling hat_coupling(const std::vector<SurfaceFace> &faces, unsigned int c,
+                               const std::vector<double> &vertex_r, unsigned int n_gauss);
+
   /// Consistent recovery of a line density p from nodal forces R_i = \int p phi_i r dr on the faces
   /// with r1 <= limit: M p = R with M_ij = \int phi_i phi_j r dr (Gauss with `n_gauss` points per face).
   /// `forces` and the result are indexed by global DoF (size n_dofs); component c of the faces.

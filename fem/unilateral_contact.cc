@@ -97,87 +97,56 @@ namespace gradcontact::fem
 
 
 
-  UnilateralContactSolver::UnilateralContactSolver(const Material &material_, const MeshParameters &mesh,
-                                                   const DiscretizationParameters &discretization_,
-                                                   const double candidate_radius, const SurfaceRefinement &refinement)
-    : material(material_)
-    , discretization(discretization_)
-    , used_formulation(checked_formulation(material_, discretization_))
-    , fe(axisymmetric_element(discretization_.degree, used_formulation))
+  UnilateralContactSolver::Body::Body(const Material &material_, const MeshParameters &mesh,
+                                      const DiscretizationParameters &discretization, const double candidate_radius,
+                                      const SurfaceRefinement &refinement, const std::string &name_)
+    : name(name_)
+    , material(material_)
+    , used_formulation(checked_formulation(material_, discretization))
+    , fe(axisymmetric_element(discretization.degree, used_formulation))
     , dof_handler(triangulation)
   {
-    mesh.validate();
-    if (!(candidate_radius > 0) || !std::isfinite(candidate_radius))
-      fail("UnilateralContactSolver", "candidate_radius", candidate_radius, "(0, inf)");
-    make_grid(mesh, refinement);
-    setup_system(candidate_radius);
-    assemble_system();
-    build_compliance();
-  }
-
-  UnilateralContactSolver::~UnilateralContactSolver()
-  {
-    dof_handler.clear();
-  }
-
-
-
-  void UnilateralContactSolver::make_grid(const MeshParameters &mesh, const SurfaceRefinement &refinement)
-  {
-    const auto start = std::chrono::steady_clock::now();
-    mesh_info        = make_mesh(mesh, triangulation);
+    auto start = std::chrono::steady_clock::now();
+    mesh_info  = make_mesh(mesh, triangulation);
     refine_toward_surface_points(refinement, triangulation);
-    setup_time.mesh = seconds_since(start);
-  }
+    time.mesh = seconds_since(start);
 
-
-
-  void UnilateralContactSolver::setup_system(const double candidate_radius)
-  {
-    const auto start = std::chrono::steady_clock::now();
+    start = std::chrono::steady_clock::now();
     dof_handler.distribute_dofs(fe);
     constraints.clear();
     make_homogeneous_constraints(dof_handler, mapping, fe, constraints);
     system.reinit(dof_handler, constraints);
-
     const std::vector<double> dof_r = support_radii(mapping, dof_handler);
-
     // The candidates: the surface z-DoFs of the faces with r1 <= the candidate radius and the vertices
     // of those faces, both ascending in r, with the coupling D of the linear pressure.
-    surface_faces   = collect_surface_faces(dof_handler, dof_r, 2);
-    candidate_limit = std::min(candidate_radius, surface_faces.back().r1);
-    SurfaceCoupling coupling = linear_density_coupling(surface_faces, 1, candidate_limit, discretization.degree + 2);
+    surface_faces      = collect_surface_faces(dof_handler, dof_r, 2);
+    const double limit = std::min(candidate_radius, surface_faces.back().r1);
+    coupling           = linear_density_coupling(surface_faces, 1, limit, discretization.degree + 2);
     if (coupling.dofs.empty())
       fail("UnilateralContactSolver", "candidate_radius", candidate_radius, "at least one surface face wide");
     candidates = coupling.dofs;
-    vertex_r   = coupling.vertex_r;
-    all.D      = std::move(coupling.matrix);
-    all.M      = std::move(coupling.vertex_mass);
-    candidate_r.clear();
     for (const auto d : candidates)
       {
         if (constraints.is_constrained(d))
-          fail("UnilateralContactSolver", "candidate_radius", candidate_radius,
+          fail("UnilateralContactSolver (" + name + ")", "candidate_radius", candidate_radius,
                "inside the truncation radius (the surface DoF at r = " + std::to_string(dof_r[d]) + " is fixed)");
         candidate_r.push_back(dof_r[d]);
       }
-    setup_time.setup = seconds_since(start);
-  }
+    time.setup = seconds_since(start);
 
-
-
-  void UnilateralContactSolver::assemble_system()
-  {
-    const auto    start = std::chrono::steady_clock::now();
+    start = std::chrono::steady_clock::now();
     CellStiffness cell_stiffness(material, fe, mapping, discretization);
     system.assemble(dof_handler, cell_stiffness, {}); // contact enters as nodal forces: nothing prescribed
-    setup_time.assemble = seconds_since(start);
+    time.assemble = seconds_since(start);
   }
 
+  UnilateralContactSolver::Body::~Body()
+  {
+    dof_handler.clear();
+  }
 
-
-  Vector<double> UnilateralContactSolver::surface_response(const FullMatrix<double> &D, const unsigned int k,
-                                                           double &factorize_seconds)
+  Vector<double> UnilateralContactSolver::Body::response(const FullMatrix<double> &D, const unsigned int k,
+                                                         double &factorize_seconds)
   {
     Vector<double> b(dof_handler.n_dofs()), reaction;
     for (unsigned int i = 0; i < D.m(); ++i)
@@ -189,42 +158,183 @@ namespace gradcontact::fem
     return column;
   }
 
-
-
-  void UnilateralContactSolver::build_compliance()
+  FullMatrix<double> UnilateralContactSolver::Body::compliance(const FullMatrix<double> &D, double &factorize_seconds)
   {
-    // (C D)_ik = u_i of the nodal forces of the pressure psi_k: one back-substitution per vertex. The
-    // time counts as setup (the factorisation as this solver's factorize, reported by the first run).
-    const auto         start = std::chrono::steady_clock::now();
-    const unsigned int n = all.D.m(), m = all.D.n();
-    all.CD.reinit(n, m);
-    for (unsigned int k = 0; k < m; ++k)
+    FullMatrix<double> CD(D.m(), D.n());
+    for (unsigned int k = 0; k < D.n(); ++k)
       {
         double               factor = 0;
-        const Vector<double> column = surface_response(all.D, k, factor);
-        setup_time.factorize += factor;
-        for (unsigned int i = 0; i < n; ++i)
-          all.CD(i, k) = column[i];
+        const Vector<double> column = response(D, k, factor);
+        factorize_seconds += factor;
+        for (unsigned int i = 0; i < D.m(); ++i)
+          CD(i, k) = column[i];
       }
-    all.K = contact_matrix(all.D, all.CD);
-    setup_time.setup += seconds_since(start) - setup_time.factorize;
+    return CD;
+  }
+
+  UnilateralContactSolver::Body::HatCompliance
+  UnilateralContactSolver::Body::hat_compliance(const std::vector<double> &vertex_r, const std::vector<double> &radii,
+                                                const unsigned int n_gauss, double &factorize_seconds,
+                                                const unsigned int first_column, const HatCompliance *previous)
+  {
+    HatCompliance      h;
+    h.coupling = hat_coupling(surface_faces, 1, vertex_r, n_gauss);
+    const FullMatrix<double> &D = h.coupling.matrix;
+    const unsigned int m = vertex_r.size(), n = radii.size();
+    std::vector<const SurfaceFace *> at;
+    for (const double r : radii)
+      {
+        at.push_back(find_face(surface_faces, r));
+        if (!at.back())
+          fail("UnilateralContactSolver (" + name + ")", "sample radius", r,
+               "on the surface [0, " + std::to_string(surface_faces.back().r1) + "]");
+      }
+    h.K.reinit(m, m);
+    h.at_radii.reinit(n, m);
+    for (unsigned int k = 0; k < std::min(first_column, m); ++k)
+      {
+        for (unsigned int i = 0; i < n; ++i)
+          h.at_radii(i, k) = previous->at_radii(i, k);
+        for (unsigned int j = 0; j < std::min(first_column, m); ++j)
+          h.K(j, k) = previous->K(j, k);
+      }
+    for (unsigned int k = first_column; k < m; ++k)
+      {
+        Vector<double> b(dof_handler.n_dofs()), reaction;
+        for (unsigned int i = 0; i < D.m(); ++i)
+          b[h.coupling.dofs[i]] = D(i, k);
+        double               factor = 0;
+        const Vector<double> u      = system.solve(false, {}, b, reaction, factor);
+        factorize_seconds += factor;
+        for (unsigned int i = 0; i < n; ++i)
+          h.at_radii(i, k) = face_value(*at[i], 1, u, radii[i]);
+        for (unsigned int j = 0; j < m; ++j)
+          {
+            double weighted = 0; // \int psi_j u r dr
+            for (unsigned int i = 0; i < D.m(); ++i)
+              weighted += D(i, j) * u[h.coupling.dofs[i]];
+            h.K(j, k) = weighted;
+            if (j < first_column)
+              h.K(k, j) = weighted;
+          }
+      }
+    for (unsigned int j = 0; j < m; ++j)
+      for (unsigned int k = 0; k < j; ++k)
+        h.K(j, k) = h.K(k, j) = 0.5 * (h.K(j, k) + h.K(k, j));
+    return h;
+  }
+
+  Vector<double> UnilateralContactSolver::Body::field(const std::vector<types::global_dof_index> &dofs,
+                                                      const std::vector<double> &values, EnergyCheck &check)
+  {
+    Vector<double> b(dof_handler.n_dofs()), reaction;
+    for (unsigned int i = 0; i < values.size(); ++i)
+      b[dofs[i]] = values[i];
+    double         unused = 0;
+    Vector<double> u      = system.solve(false, {}, b, reaction, unused);
+    check = check_energy(system.energy(u), b * u, mesh_info.min_surface_cell, name);
+    return u;
   }
 
 
 
-  UnilateralContactSolver::SurfaceOperator UnilateralContactSolver::surface_operator(const Indenter &indenter)
+  UnilateralContactSolver::UnilateralContactSolver(const Material &material, const MeshParameters &mesh,
+                                                   const DiscretizationParameters &discretization_,
+                                                   const double candidate_radius, const SurfaceRefinement &refinement,
+                                                   const std::optional<Material> &indenter_body)
+    : discretization(discretization_)
   {
-    if (candidate_r.back() <= indenter.extent * (1 + node_tolerance))
+    mesh.validate();
+    if (!(candidate_radius > 0) || !std::isfinite(candidate_radius))
+      fail("UnilateralContactSolver", "candidate_radius", candidate_radius, "(0, inf)");
+    half_space = std::make_unique<Body>(material, mesh, discretization, candidate_radius, refinement, "half-space");
+    if (indenter_body)
+      {
+        // The indenter's own surface layer (a homogeneous body needs no z-halvings; 1e-10 a thin cells make
+        // its solve garbage) and far field (the same truncation error (a/L)^{1+s}, s its deep exponent); the
+        // surface vertices stay the half-space's.
+        if (!indenter_body->modulus)
+          throw std::invalid_argument("UnilateralContactSolver: the elastic indenter's modulus field is empty");
+        MeshParameters own = mesh;
+        const double   s1 = material.modulus->deep_exponent(), s2 = indenter_body->modulus->deep_exponent();
+        own.far_field_size = std::clamp(std::pow(mesh.far_field_size, (1 + s1) / (1 + s2)), 1e4, 1e16);
+        own.surface_layer_thickness = std::max(
+          mesh.surface_layer_thickness,
+          recommended_mesh_parameters(mesh.contact_radius, indenter_body->modulus->surface_exponent(), 1e-8)
+            .surface_layer_thickness);
+        indenter = std::make_unique<Body>(*indenter_body, own, discretization, candidate_radius, refinement, "indenter");
+      }
+    candidate_limit = std::min(candidate_radius, half_space->surface_faces.back().r1);
+
+    // (C D)_ik = u_i of the nodal forces of the pressure psi_k: one back-substitution per vertex and body.
+    // The time counts as setup (the factorisations as this solver's factorize, reported by the first run).
+    const auto start = std::chrono::steady_clock::now();
+    setup_time       = half_space->time;
+    all.D            = half_space->coupling.matrix;
+    all.M            = half_space->coupling.vertex_mass;
+    all.CD           = half_space->compliance(all.D, setup_time.factorize);
+    all.K_half_space = contact_matrix(all.D, all.CD);
+    if (indenter)
+      {
+        all.indenter = indenter->hat_compliance(half_space->coupling.vertex_r, half_space->candidate_r,
+                                                discretization.degree + 2, setup_time.factorize);
+        setup_time.mesh += indenter->time.mesh;
+        setup_time.assemble += indenter->time.assemble;
+        setup_time.setup += indenter->time.setup;
+      }
+    combine(all);
+    setup_time.setup += seconds_since(start) - setup_time.factorize;
+  }
+
+  UnilateralContactSolver::~UnilateralContactSolver() = default;
+
+  unsigned int UnilateralContactSolver::n_dofs() const
+  {
+    return half_space->dof_handler.n_dofs() + (indenter ? indenter->dof_handler.n_dofs() : 0);
+  }
+
+  void UnilateralContactSolver::set_indenter_modulus_factor(const double factor)
+  {
+    if (!indenter)
+      throw std::invalid_argument("UnilateralContactSolver::set_indenter_modulus_factor: the indenter is rigid");
+    if (!(factor > 0))
+      fail("UnilateralContactSolver::set_indenter_modulus_factor", "factor", factor, "(0, inf] (inf: rigid)");
+    indenter_factor = factor;
+    combine(all);
+  }
+
+  void UnilateralContactSolver::combine(SurfaceOperator &op) const
+  {
+    op.K = op.K_half_space;
+    if (indenter)
+      op.K.add(1 / indenter_factor, op.indenter.K);
+  }
+
+  FullMatrix<double> UnilateralContactSolver::gap_compliance(const SurfaceOperator &op) const
+  {
+    FullMatrix<double> C(op.CD);
+    if (indenter)
+      C.add(1 / indenter_factor, op.indenter.at_radii);
+    return C;
+  }
+
+
+
+  UnilateralContactSolver::SurfaceOperator UnilateralContactSolver::surface_operator(const Indenter &shape)
+  {
+    const std::vector<double> &candidate_r = half_space->candidate_r;
+    if (candidate_r.back() <= shape.extent * (1 + node_tolerance))
       return all;
     // The faces up to the extent. The pressure of every vertex but the last has the same nodal forces
-    // as on all faces (a leading block of C D); the last one's half hat needs one more solve.
-    SurfaceOperator    op;
-    SurfaceCoupling    coupling = linear_density_coupling(surface_faces, 1, indenter.extent, discretization.degree + 2);
+    // as on all faces (a leading block of C D); the last one's half hat needs one more solve per body.
+    SurfaceOperator op;
+    SurfaceCoupling coupling =
+      linear_density_coupling(half_space->surface_faces, 1, shape.extent, discretization.degree + 2);
     const unsigned int n = coupling.dofs.size(), m = coupling.vertex_r.size();
     if (n == 0)
-      fail("UnilateralLoad (" + indenter.name + ")", "extent", indenter.extent, "at least one surface face wide");
+      fail("UnilateralLoad (" + shape.name + ")", "extent", shape.extent, "at least one surface face wide");
     for (unsigned int i = 0; i < n; ++i)
-      AssertThrow(coupling.dofs[i] == candidates[i], ExcInternalError());
+      AssertThrow(coupling.dofs[i] == half_space->candidates[i], ExcInternalError());
     op.D = std::move(coupling.matrix);
     op.M = std::move(coupling.vertex_mass);
     op.CD.reinit(n, m);
@@ -232,10 +342,16 @@ namespace gradcontact::fem
       for (unsigned int k = 0; k + 1 < m; ++k)
         op.CD(i, k) = all.CD(i, k);
     double               unused = 0;
-    const Vector<double> last   = surface_response(op.D, m - 1, unused);
+    const Vector<double> last   = half_space->response(op.D, m - 1, unused);
     for (unsigned int i = 0; i < n; ++i)
       op.CD(i, m - 1) = last[i];
-    op.K = contact_matrix(op.D, op.CD);
+    op.K_half_space = contact_matrix(op.D, op.CD);
+    if (indenter)
+      op.indenter = indenter->hat_compliance(coupling.vertex_r,
+                                             std::vector<double>(half_space->candidate_r.begin(),
+                                                                 half_space->candidate_r.begin() + n),
+                                             discretization.degree + 2, unused, m - 1, &all.indenter);
+    combine(op);
     return op;
   }
 
@@ -249,6 +365,8 @@ namespace gradcontact::fem
     const unsigned int m        = op.D.n(); // pressure vertices
     const bool         by_force = load.control == ContactControl::force;
     const double       target   = load.force / (2 * numbers::PI); // 1^T D p
+    const std::vector<double> &vertex_r = half_space->coupling.vertex_r;
+    const FullMatrix<double>   C        = gap_compliance(op);      // the gap's displacements of each vertex pressure
 
     // D^T 1 and D^T f: the weighted unit depth and profile.
     Vector<double> ones(n), fv(n), D1(m), Df(m);
@@ -303,7 +421,7 @@ namespace gradcontact::fem
       for (unsigned int k = 0; k < m; ++k)
         pv[k] = s.p[k];
       op.D.vmult(lambda, pv);
-      op.CD.vmult(u, pv);
+      C.vmult(u, pv);
       for (unsigned int i = 0; i < n; ++i)
         h[i] = u[i] - s.depth + f[i];
       op.D.Tvmult(w, h);
@@ -321,10 +439,95 @@ namespace gradcontact::fem
       for (unsigned int k = 0; k < m; ++k)
         active[k] = load.depth - f_vertex[k] > 0;
 
+    const unsigned int max_steps = 50 + 4 * m; // per stage
+
+    // After a cycle of PDAS: the primal active-set method of Lawson and Hanson (Solving Least Squares
+    // Problems, 1974, ch. 23) for the convex problem min 1/2 p^T K p - b^T p, p >= 0 (with 1^T D p = F/(2 pi)
+    // under force control), whose optimality conditions are this LCP: p stays feasible and the energy
+    // falls at every step, so no set repeats and it ends for a symmetric positive definite K. It keeps
+    // p >= 0 at every vertex (no tensile runs at a corner).
+    const auto monotone = [&](ActiveSetSolution &s) {
+      const unsigned int steps_before = s.iterations;
+      std::vector<bool>  P(m, false);
+      if (by_force)
+        P[std::min_element(f_vertex.begin(), f_vertex.end()) - f_vertex.begin()] = true;
+      ActiveSetSolution current;
+      state(P, current);
+      std::vector<bool> blocked(m, false); // added, but not positive when solved (round-off): skipped
+      for (unsigned int step = 1;; ++step)
+        {
+          current.iterations = steps_before + step;
+          current.monotone_steps = step;
+          if (step > max_steps)
+            {
+              std::ostringstream msg;
+              msg << "unilateral contact (" << load.indenter.name << "): the active set did not settle after "
+                  << steps_before << " PDAS steps and " << step - 1 << " steps of the monotone method, "
+                  << std::count(P.begin(), P.end(), true) << " of " << m << " candidate vertices in contact";
+              throw std::runtime_error(msg.str());
+            }
+          double w_scale = 0;
+          for (unsigned int k = 0; k < m; ++k)
+            w_scale = std::max(w_scale, std::abs(D1[k]) * std::abs(current.depth));
+          for (unsigned int i = 0; i < n; ++i)
+            w_scale = std::max(w_scale, std::abs(current.u[i]) * op.D.linfty_norm());
+          unsigned int add = m;
+          for (unsigned int k = 0; k < m; ++k)
+            if (!P[k] && !blocked[k] && current.weighted_gap[k] < -gap_zero * w_scale &&
+                (add == m || current.weighted_gap[k] < current.weighted_gap[add]))
+              add = k;
+          if (add == m)
+            {
+              s = current;
+              return;
+            }
+          P[add] = true;
+          for (bool first = true;; first = false)
+            {
+              ActiveSetSolution trial;
+              state(P, trial);
+              double       alpha = 1;
+              unsigned int limit = m;
+              for (unsigned int k = 0; k < m; ++k)
+                if (P[k] && !(trial.p[k] > 0))
+                  {
+                    const double step_to_zero = current.p[k] / (current.p[k] - trial.p[k]);
+                    if (step_to_zero < alpha)
+                      {
+                        alpha = step_to_zero;
+                        limit = k;
+                      }
+                  }
+              if (limit == m)
+                {
+                  current = trial;
+                  std::fill(blocked.begin(), blocked.end(), false);
+                  break;
+                }
+              if (first && limit == add && !(alpha > 0))
+                {
+                  P[add]       = false; // the new vertex is not positive even alone: skip it
+                  blocked[add] = true;
+                  break;
+                }
+              // Back to the boundary of p >= 0 on the segment from the current p toward the trial one;
+              // the vertices that reach zero leave P.
+              for (unsigned int k = 0; k < m; ++k)
+                if (P[k])
+                  {
+                    current.p[k] += alpha * (trial.p[k] - current.p[k]);
+                    if (k == limit || !(current.p[k] > 0))
+                      {
+                        P[k]         = false;
+                        current.p[k] = 0;
+                      }
+                  }
+            }
+        }
+    };
+
     ActiveSetSolution           s;
     std::set<std::vector<bool>> seen;
-    bool                        least_index = false;
-    const unsigned int          max_steps   = 50 + 4 * m;
     for (unsigned int step = 1;; ++step)
       {
         state(active, s);
@@ -379,18 +582,15 @@ namespace gradcontact::fem
           {
             std::ostringstream msg;
             msg << "unilateral contact (" << load.indenter.name << "): the active set did not settle after " << step
-                << " steps (" << s.least_index_steps << " by the least-index rule), "
+                << " PDAS steps, "
                 << std::count(active.begin(), active.end(), true) << " of " << m << " candidate vertices in contact";
             throw std::runtime_error(msg.str());
           }
         seen.insert(active);
-        if (!least_index && seen.count(next))
-          least_index = true; // a cycle: from here on one vertex a step
-        if (least_index)
+        if (seen.count(next))
           {
-            next                  = active;
-            next[first_violation] = !active[first_violation];
-            ++s.least_index_steps;
+            monotone(s); // a cycle
+            return s;
           }
         active = next;
       }
@@ -401,7 +601,9 @@ namespace gradcontact::fem
   void UnilateralContactSolver::edges(const UnilateralLoad &load, const ActiveSetSolution &s,
                                       const std::vector<double> &f, UnilateralResult &result) const
   {
-    const unsigned int m = s.active.size();
+    const std::vector<double> &vertex_r    = half_space->coupling.vertex_r;
+    const std::vector<double> &candidate_r = half_space->candidate_r;
+    const unsigned int         m           = s.active.size();
     for (unsigned int k = 0; k < m; ++k)
       if (s.active[k])
         {
@@ -443,8 +645,11 @@ namespace gradcontact::fem
     result.outer_edge   = r_e;
     // Sub-node estimates. From the pressure at the last two vertices in contact, p = K (a - r)^alpha,
     // alpha = (1 + s)/2 (9.26; s the surface exponent of E); from the gaps of the next two displacement
-    // nodes outside, h = K (r - a)^beta, beta = (3 + s)/2. Each is kept only inside the bracket.
-    const double exponent_s = material.modulus->surface_exponent();
+    // nodes outside, h = K (r - a)^beta, beta = (3 + s)/2. Each is kept only inside the bracket. With an
+    // elastic indenter the more compliant surface sets the edge at small scales: the larger exponent.
+    const double exponent_s =
+      std::max(half_space->material.modulus->surface_exponent(),
+               indenter ? indenter->material.modulus->surface_exponent() : -std::numeric_limits<double>::infinity());
     // An estimate a little outside the bracket (the edge on a node, round-off) is clamped into it.
     const double width      = result.edge_bracket.second - result.edge_bracket.first;
     const auto   in_bracket = [&](double &x) {
@@ -486,9 +691,12 @@ namespace gradcontact::fem
 
 
 
-  void UnilateralContactSolver::sample(const Vector<double> &u, const std::vector<double> &p,
-                                       const OutputRequest &outputs, UnilateralResult &result) const
+  void UnilateralContactSolver::sample(const Vector<double> &u, const Vector<double> *u_indenter,
+                                       const std::vector<double> &p, const OutputRequest &outputs,
+                                       UnilateralResult &result) const
   {
+    const std::vector<SurfaceFace> &surface_faces = half_space->surface_faces;
+    const std::vector<double> &vertex_r = half_space->coupling.vertex_r;
     const double edge = result.zones.empty() ? 0 : result.zones.back().r_out;
     unsigned int outside = 0;
     for (const double r : outputs.pressure_radii)
@@ -516,16 +724,38 @@ namespace gradcontact::fem
           fail("UnilateralContactSolver output", "displacement radius", r,
                "on the surface [0, " + std::to_string(surface_faces.back().r1) + "]");
         result.displacement.push_back({r, face_value(*face, 1, u, r)});
+        if (u_indenter)
+          {
+            const SurfaceFace *its = find_face(indenter->surface_faces, r);
+            if (!its)
+              fail("UnilateralContactSolver output", "displacement radius", r,
+                   "on the indenter's surface [0, " + std::to_string(indenter->surface_faces.back().r1) + "]");
+            result.indenter_displacement.push_back({r, face_value(*its, 1, *u_indenter, r) / indenter_factor});
+          }
       }
     if (!outputs.vtu_file.empty())
       {
-        DataOut<2> data_out;
-        data_out.attach_dof_handler(dof_handler);
-        std::vector<std::string> names{"u_r", "u_z"};
-        if (used_formulation == Formulation::mixed)
-          names.push_back("q");
-        data_out.add_data_vector(u, names);
-        write_vtu(data_out, mapping, discretization.degree, outputs.vtu_file, "UnilateralContactSolver");
+        // The half-space in vtu_file; an elastic indenter beside it, in <stem>-indenter.vtu (its own axes:
+        // z into the indenter).
+        const auto write = [&](const Body &body, const Vector<double> &field, const std::string &file) {
+          DataOut<2> data_out;
+          data_out.attach_dof_handler(body.dof_handler);
+          std::vector<std::string> names{"u_r", "u_z"};
+          if (body.used_formulation == Formulation::mixed)
+            names.push_back("q");
+          data_out.add_data_vector(field, names);
+          write_vtu(data_out, body.mapping, discretization.degree, file, "UnilateralContactSolver");
+        };
+        write(*half_space, u, outputs.vtu_file);
+        if (u_indenter)
+          {
+            Vector<double> scaled(*u_indenter);
+            scaled /= indenter_factor;
+            std::string file = outputs.vtu_file;
+            const auto  dot  = file.rfind(".vtu");
+            file.insert(dot == std::string::npos ? file.size() : dot, "-indenter");
+            write(*indenter, scaled, file);
+          }
       }
   }
 
@@ -535,7 +765,10 @@ namespace gradcontact::fem
   {
     load.validate();
     UnilateralResult result;
-    result.start(setup_time, dof_handler.n_dofs(), triangulation.n_active_cells(), mesh_info);
+    result.start(setup_time, n_dofs(),
+                 half_space->triangulation.n_active_cells() + (indenter ? indenter->triangulation.n_active_cells() : 0),
+                 half_space->mesh_info);
+    const std::vector<double> &candidate_r = half_space->candidate_r;
     setup_time.factorize = 0; // reported once, by the first run
 
     const auto            start = std::chrono::steady_clock::now();
@@ -553,7 +786,7 @@ namespace gradcontact::fem
     const ActiveSetSolution s = solve_active_set(load, op, f);
     result.depth             = s.depth;
     result.iterations        = s.iterations;
-    result.least_index_steps = s.least_index_steps;
+    result.monotone_steps = s.monotone_steps;
     double sum               = 0;
     for (const double l : s.lambda)
       sum += l;
@@ -565,18 +798,29 @@ namespace gradcontact::fem
         result.nodal_force.push_back({candidate_r[i], 2 * numbers::PI * s.lambda[i]});
       }
 
-    // The field of the contact forces, and the energy check u.Au = lambda.u.
-    Vector<double> b(dof_handler.n_dofs()), reaction;
-    for (unsigned int i = 0; i < n; ++i)
-      b[candidates[i]] = s.lambda[i];
-    double         unused = 0;
-    Vector<double> u      = system.solve(false, {}, b, reaction, unused);
+    // The fields of the contact forces, and the energy checks u.Au = lambda.u (the indenter's at its
+    // unscaled modulus: the check does not depend on the scale).
+    EnergyCheck          check;
+    const Vector<double> u = half_space->field(half_space->candidates, s.lambda, check);
     if (result.active_nodes > 0)
-      result.record(check_energy(system.energy(u), b * u, mesh_info.min_surface_cell));
+      result.record(check);
+    Vector<double> u_indenter;
+    if (indenter)
+      {
+        // Its nodal forces: the same vertex pressures through its own coupling.
+        const FullMatrix<double> &D_indenter = op.indenter.coupling.matrix;
+        Vector<double>            pv(s.p.size()), lambda(D_indenter.m());
+        for (unsigned int k = 0; k < s.p.size(); ++k)
+          pv[k] = s.p[k];
+        D_indenter.vmult(lambda, pv);
+        u_indenter = indenter->field(op.indenter.coupling.dofs, std::vector<double>(lambda.begin(), lambda.end()), check);
+        if (result.active_nodes > 0)
+          result.record(check);
+      }
     result.time.solve = seconds_since(start);
 
     const auto post = std::chrono::steady_clock::now();
-    sample(u, s.p, outputs, result);
+    sample(u, indenter ? &u_indenter : nullptr, s.p, outputs, result);
     result.time.postprocess = seconds_since(post);
     return result;
   }
@@ -584,15 +828,16 @@ namespace gradcontact::fem
 
 
   UnilateralResult solve_remeshed(const Material &material, const Settings &settings, const UnilateralLoad &load,
-                                  const double first_radius, const OutputRequest &outputs, const double tolerance,
-                                  const unsigned int max_meshes, const double candidate_factor)
+                                  const double first_radius, const OutputRequest &outputs, const Remeshing &remeshing)
   {
     if (!(first_radius > 0) || !std::isfinite(first_radius))
       fail("solve_remeshed", "first_radius", first_radius, "(0, inf)");
-    if (!(tolerance > 0))
-      fail("solve_remeshed", "tolerance", tolerance, "(0, inf)");
-    if (max_meshes < 1)
-      fail("solve_remeshed", "max_meshes", max_meshes, ">= 1");
+    if (!(remeshing.tolerance > 0))
+      fail("solve_remeshed", "tolerance", remeshing.tolerance, "(0, inf)");
+    if (remeshing.max_meshes < 1)
+      fail("solve_remeshed", "max_meshes", remeshing.max_meshes, ">= 1");
+    if (!(remeshing.candidate_factor > 1) || !std::isfinite(remeshing.candidate_factor))
+      fail("solve_remeshed", "candidate_factor", remeshing.candidate_factor, "(1, inf)");
     double             radius = first_radius;
     std::ostringstream history;
     history << "edges found on meshes graded toward";
@@ -600,7 +845,8 @@ namespace gradcontact::fem
       {
         MeshParameters mesh = settings.mesh;
         mesh.contact_radius = radius;
-        UnilateralContactSolver solver(material, mesh, settings.discretization, candidate_factor * radius);
+        UnilateralContactSolver solver(material, mesh, settings.discretization, remeshing.candidate_factor * radius, {},
+                                       remeshing.indenter_body);
         UnilateralResult        result = solver.run(load, outputs);
         if (result.zones.empty())
           throw std::runtime_error("solve_remeshed (" + load.indenter.name + "): no contact at this load");
@@ -608,9 +854,9 @@ namespace gradcontact::fem
         // Converged when the edge moves by less than the tolerance or stays within the vertex spacing
         // of the edge grading (the estimate inside a bracket scatters by about that much).
         const double change = std::abs(result.outer_edge - radius) / radius;
-        if (change <= std::max(tolerance, 2 * settings.mesh.h_edge) || result.edge_at_extent)
+        if (change <= std::max(remeshing.tolerance, 2 * settings.mesh.h_edge) || result.edge_at_extent)
           return result;
-        if (m == max_meshes)
+        if (m == remeshing.max_meshes)
           {
             result.message += " remeshing stopped after " + std::to_string(m) + " meshes (" + history.str() + ")";
             result.reliable = false;

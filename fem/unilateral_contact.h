@@ -24,13 +24,22 @@
 //   depth control:  K_II p_I = (D^T g)_I;
 //   force control:  K_II p_I - d (D^T 1)_I = -(D^T f)_I,  1^T D p = F / (2 pi);
 // then I <- {k in I : p_k >= 0} u {k not in I : w_k < 0}. Its convergence is proven for M-matrices,
-// which K is not; a set met before (a cycle) switches to Murty's least-index rule, one vertex a step
-// (the one of smallest r that violates its condition), which ends for a symmetric positive definite K
-// (Murty, Linear Algebra Appl. 8 (1974) 223-230). Next to a singular edge (the corner of a punch, p ~
-// (a - r)^{-(1-k)/2}) a linear pressure alternates in sign while the force there is compressive: a run of
-// tensile vertices inside a zone is released only when the forces (M p)_k of its vertices' shares sum to
-// a tensile force (M the non-negative mass matrix of the hat functions); at a zone's end it is released
-// as PDAS would. A run that does not settle within 50 + 4 m steps (m vertices) stops with its counts.
+// which K is not. Next to a singular edge (the corner of a punch, p ~ (a - r)^{-(1-k)/2}) a linear pressure
+// alternates in sign while the force there is compressive: a run of tensile vertices inside a zone is
+// released only when the forces (M p)_k of its vertices' shares sum to a tensile force (M the non-negative
+// mass matrix of the hat functions); at a zone's end it is released as PDAS would. A set met before (a
+// cycle) switches to the primal active-set method of Lawson and Hanson for the equivalent convex problem
+// min 1/2 p^T K p - b^T p, p >= 0 (Solving Least Squares Problems, 1974, ch. 23): feasible iterates and a
+// falling energy, so it ends for a symmetric positive definite K; it keeps p >= 0 at every vertex. Each
+// stage stops with its counts after 50 + 4 m steps (m vertices).
+//
+// Elastic indenter. The indenter may be a second half-space of the meridian model with its own E(z) and nu,
+// meshed like the first (same surface vertices, checked) and carrying the profile f on its surface: the
+// contact of two graded bodies with the same k and c0, for which the chapter's equivalent medium (9.4) is
+// exact, or a homogeneous elastic sphere of radius R >> a (k = 0, f = r^2/(2R): Hertz's idealisation of the
+// sphere as a half-space, its finite size and the load's path through it are not modelled). Frictionless, both
+// surfaces carry the same pressure and displace into their own body: the gap is h = f - d + u + u', with
+// u' = C' D p, so that K = D^T (C + C') D and d is the approach of the two bodies' far fields.
 //
 // Contact edges. The outer edge of the outermost zone lies between its last vertex in contact and the
 // next vertex (`edge_bracket`). Inside it: p ~ K (a - r)^{(1+s)/2} at the last two vertices (9.26, s the
@@ -54,6 +63,8 @@
 
 #include <functional>
 #include <limits>
+#include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -113,10 +124,11 @@ namespace gradcontact::fem
     double edge_from_pressure = std::numeric_limits<double>::quiet_NaN();
     double edge_from_gap      = std::numeric_limits<double>::quiet_NaN();
     unsigned int active_nodes = 0, candidate_nodes = 0;
-    unsigned int iterations   = 0; ///< active-set steps (PDAS and least-index together)
-    unsigned int least_index_steps = 0; ///< of which after a cycle
+    unsigned int iterations   = 0; ///< active-set steps (PDAS and the monotone method together)
+    unsigned int monotone_steps = 0; ///< of which by the monotone method, after a cycle of PDAS
     std::vector<Sample> pressure; ///< p(r), linear between the vertices; radii beyond the contact are left out (message)
-    std::vector<Sample> displacement;   ///< w(r) = u_z(r, 0)
+    std::vector<Sample> displacement;   ///< w(r) = u_z(r, 0) of the half-space
+    std::vector<Sample> indenter_displacement; ///< the elastic indenter's w'(r), into the indenter (empty: rigid)
     std::vector<Sample> nodal_gap;      ///< h at the candidate nodes (0 in contact)
     std::vector<Sample> nodal_force;    ///< 2 pi lambda at the candidate nodes: the force of each node's ring
   };
@@ -126,83 +138,131 @@ namespace gradcontact::fem
   public:
     /// The mesh of `mesh` (graded toward its contact radius, the expected edge), refined toward
     /// `refinement` (e.g. an inner edge), and the candidates r <= candidate_radius (physical units).
+    /// `indenter_body`: none for a rigid indenter; else the indenter is a second half-space of this
+    /// material (its own E(z) and nu) on the same mesh, whose surface carries the profile f (see the
+    /// header: two graded bodies, 9.4, or a homogeneous sphere of radius R >> a).
     /// Throws std::invalid_argument on bad input.
     UnilateralContactSolver(const Material &material, const MeshParameters &mesh,
                             const DiscretizationParameters &discretization, double candidate_radius,
-                            const SurfaceRefinement &refinement = {});
+                            const SurfaceRefinement &refinement = {},
+                            const std::optional<Material> &indenter_body = std::nullopt);
     ~UnilateralContactSolver();
 
     /// Solves one load. std::runtime_error when the active set does not settle (counts in the
     /// message) or the contact reaches the candidate radius.
     UnilateralResult run(const UnilateralLoad &load, const OutputRequest &outputs = {});
 
-    unsigned int n_dofs() const { return dof_handler.n_dofs(); }
-    unsigned int n_candidates() const { return candidates.size(); }
+    /// Scales the elastic indenter's modulus by `factor` in (0, inf] (its compliance by 1/factor; exact in
+    /// linear elasticity at a fixed Poisson ratio; inf: the rigid indenter): one solver serves a sweep of the
+    /// indenter's modulus. 1 at construction; std::invalid_argument without an elastic indenter.
+    void set_indenter_modulus_factor(double factor);
+
+    unsigned int n_dofs() const;
+    unsigned int n_candidates() const { return half_space->candidates.size(); }
+    bool         elastic_indenter() const { return indenter != nullptr; }
 
   private:
-    void make_grid(const MeshParameters &mesh, const SurfaceRefinement &refinement);
-    void setup_system(double candidate_radius);
-    void assemble_system();
-    void build_compliance();
+    /// One half-space of the meridian model: mesh, element, the stiffness A (factorised once) and the
+    /// candidates of its contact surface.
+    struct Body
+    {
+      Body(const Material &material, const MeshParameters &mesh, const DiscretizationParameters &discretization,
+           double candidate_radius, const SurfaceRefinement &refinement, const std::string &name);
+      ~Body();
+      /// The candidates' displacements under the nodal forces of column k of D (one back-substitution).
+      dealii::Vector<double> response(const dealii::FullMatrix<double> &D, unsigned int k, double &factorize_seconds);
+      /// (A^{-1})_SS D, column by column.
+      dealii::FullMatrix<double> compliance(const dealii::FullMatrix<double> &D, double &factorize_seconds);
+      /// The response to hats on another body's vertices (the meshes need not match): with D_b the coupling
+      /// of those hats to this body's trace (hat_coupling), K = D_b^T A^{-1} D_b (the weighted displacements,
+      /// symmetrised) and the displacements at `radii`. Columns from `first_column` on are computed; the
+      /// others are copied from `previous` (the same hats).
+      struct HatCompliance
+      {
+        SurfaceCoupling            coupling;
+        dealii::FullMatrix<double> K;        ///< m x m
+        dealii::FullMatrix<double> at_radii; ///< n x m
+      };
+      HatCompliance hat_compliance(const std::vector<double> &vertex_r, const std::vector<double> &radii,
+                                   unsigned int n_gauss, double &factorize_seconds, unsigned int first_column = 0,
+                                   const HatCompliance *previous = nullptr);
+      /// The field under the nodal forces `values` on `dofs`, with the energy check.
+      dealii::Vector<double> field(const std::vector<dealii::types::global_dof_index> &dofs,
+                                   const std::vector<double> &values, EnergyCheck &check);
+
+      const std::string                 name; ///< "half-space" or "indenter", for messages
+      const Material                    material;
+      const Formulation                 used_formulation;
+      dealii::Triangulation<2>          triangulation;
+      MeshInfo                          mesh_info;
+      const dealii::FESystem<2>         fe;
+      dealii::DoFHandler<2>             dof_handler;
+      const dealii::MappingQ1<2>        mapping;
+      dealii::AffineConstraints<double> constraints;
+      DirectSystem                      system; ///< A; no prescribed DoFs (contact enters as nodal forces)
+      std::vector<SurfaceFace>                     surface_faces;
+      std::vector<dealii::types::global_dof_index> candidates;  ///< surface z-DoFs, ascending r
+      std::vector<double>                          candidate_r; ///< their radii
+      SurfaceCoupling                              coupling;    ///< D and M of every candidate
+      Timings                                      time;
+    };
 
     struct ActiveSetSolution
     {
       std::vector<bool>   active;
-      std::vector<double> p, lambda, u, weighted_gap; ///< at the candidates
+      std::vector<double> p, lambda, u, weighted_gap; ///< at the candidates (u: the gap's displacement, both bodies)
       double              depth = 0;
-      unsigned int        iterations = 0, least_index_steps = 0;
+      unsigned int        iterations = 0, monotone_steps = 0;
     };
     /// The condensed problem on the leading candidates.
     struct SurfaceOperator
     {
-      dealii::FullMatrix<double> D; ///< coupling of the vertex pressures to the nodal forces
-      dealii::FullMatrix<double> CD; ///< (A^{-1})_SS D: the surface displacements of each vertex pressure
-      dealii::FullMatrix<double> K;  ///< D^T C D
-      dealii::FullMatrix<double> M; ///< the vertex mass matrix (forces of the vertices' shares of p)
+      dealii::FullMatrix<double> D;  ///< coupling of the vertex pressures to the nodal forces
+      dealii::FullMatrix<double> CD; ///< (A^{-1})_SS D of the half-space: its surface displacements of each vertex pressure
+      dealii::FullMatrix<double> K_half_space; ///< D^T C D
+      Body::HatCompliance        indenter; ///< the elastic indenter's at its unscaled modulus (empty: rigid)
+      dealii::FullMatrix<double> K;  ///< K_half_space + indenter.K / factor
+      dealii::FullMatrix<double> M;  ///< the vertex mass matrix (forces of the vertices' shares of p)
     };
     /// The operator of the candidates the indenter can reach (r <= its extent).
     SurfaceOperator   surface_operator(const Indenter &indenter);
-    /// The candidates' displacements under the nodal forces of column k of D (one back-substitution).
-    dealii::Vector<double> surface_response(const dealii::FullMatrix<double> &D, unsigned int k,
-                                            double &factorize_seconds);
+    /// C D + the indenter's displacements at the candidates / factor: the gap's displacements of each vertex pressure.
+    dealii::FullMatrix<double> gap_compliance(const SurfaceOperator &op) const;
+    /// K of `op` at the current factor.
+    void combine(SurfaceOperator &op) const;
     ActiveSetSolution solve_active_set(const UnilateralLoad &load, const SurfaceOperator &op,
                                        const std::vector<double> &f) const;
     void              edges(const UnilateralLoad &load, const ActiveSetSolution &s, const std::vector<double> &f,
                             UnilateralResult &result) const;
-    void sample(const dealii::Vector<double> &u, const std::vector<double> &p, const OutputRequest &outputs,
-                UnilateralResult &result) const;
+    void sample(const dealii::Vector<double> &u, const dealii::Vector<double> *u_indenter, const std::vector<double> &p,
+                const OutputRequest &outputs, UnilateralResult &result) const;
 
-    const Material                 material;
     const DiscretizationParameters discretization;
-    const Formulation              used_formulation;
+    std::unique_ptr<Body>          half_space;
+    std::unique_ptr<Body>          indenter; ///< null: a rigid indenter
+    double                         indenter_factor = 1;
+    double                         candidate_limit = 0;
+    SurfaceOperator                all;       ///< the operator of every candidate
+    Timings                        setup_time;
+  };
 
-    dealii::Triangulation<2>   triangulation;
-    MeshInfo                   mesh_info;
-    const dealii::FESystem<2>  fe;
-    dealii::DoFHandler<2>      dof_handler;
-    const dealii::MappingQ1<2> mapping;
-
-    dealii::AffineConstraints<double> constraints;
-    DirectSystem                      system; ///< A; no prescribed DoFs (contact enters as nodal forces)
-
-    std::vector<SurfaceFace>                     surface_faces;
-    std::vector<dealii::types::global_dof_index> candidates;  ///< surface z-DoFs, ascending r
-    std::vector<double>                          candidate_r; ///< their radii
-    std::vector<double>                          vertex_r;    ///< the surface vertices of the candidate faces
-    double                                       candidate_limit = 0;
-    SurfaceOperator                              all;         ///< the operator of every candidate
-    Timings                                      setup_time;
+  /// How solve_remeshed remeshes.
+  struct Remeshing
+  {
+    double       tolerance        = 1e-6; ///< relative change of the edge that ends it
+    unsigned int max_meshes       = 6;
+    double       candidate_factor = 1.6;  ///< candidate radius / the mesh's radius, > 1
+    std::optional<Material> indenter_body; ///< an elastic indenter (UnilateralContactSolver); none: rigid
   };
 
   /// Solves `load` on meshes graded toward the outer edge found, starting at `first_radius`, until the
-  /// edge moves by less than `tolerance` or twice the mesh's h_edge (relative), or after `max_meshes`
-  /// meshes (then `reliable` is false and the message lists the edges); the candidate radius
-  /// is `candidate_factor` times the mesh's radius. Settings give everything else (the mesh's contact
-  /// radius is replaced). The result of the last mesh; its message records the sequence of edges.
+  /// edge moves by less than the tolerance or twice the mesh's h_edge (relative), or after max_meshes
+  /// meshes (then `reliable` is false and the message lists the edges). Settings give everything else
+  /// (the mesh's contact radius is replaced). The result of the last mesh; its message records the
+  /// sequence of edges.
   UnilateralResult solve_remeshed(const Material &material, const Settings &settings, const UnilateralLoad &load,
                                   double first_radius, const OutputRequest &outputs = {},
-                                  double tolerance = 1e-6, unsigned int max_meshes = 6,
-                                  double candidate_factor = 1.6);
+                                  const Remeshing &remeshing = {});
 } // namespace gradcontact::fem
 
 #endif
