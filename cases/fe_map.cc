@@ -3,6 +3,7 @@
 #include "analytic_reference.h"
 #include "fe_model.h"
 #include "fe_scene.h"
+#include "map_published.h"
 
 #include <fem/axisymmetric_solver.h>
 #include <fem/unilateral_contact.h>
@@ -96,6 +97,11 @@ namespace gradcontact::cases
       g.map.parameter = MapParameters::Parameter::none;
       if (ratio == 0.)
         g.material.modulus = MaterialParameters::Modulus::power_law;
+      else if (s.map.parameter == MapParameters::Parameter::erf_width)
+        {
+          g.material.modulus = MaterialParameters::Modulus::error_function;
+          g.material.erf_width = s.load.a / ratio;
+        }
       else if (s.map.parameter == MapParameters::Parameter::surface_depth)
         {
           g.material.modulus = MaterialParameters::Modulus::shifted_power_law;
@@ -155,6 +161,8 @@ namespace gradcontact::cases
         {
           case MapParameters::Parameter::surface_depth:
             return "a/z0";
+          case MapParameters::Parameter::erf_width:
+            return "a/w";
           case MapParameters::Parameter::indenter_modulus:
             return "E1/E0";
           default:
@@ -219,7 +227,7 @@ namespace gradcontact::cases
                             const bool verbose)
     {
       const std::string x = ratio_name(s);
-      const bool toward_large = s.map.parameter == MapParameters::Parameter::surface_depth;
+      const bool toward_large = s.map.parameter != MapParameters::Parameter::coating_thickness;
       const std::vector<std::string> quantities = is_indenter(s) ? std::vector<std::string>{"force", "contact radius", "pressure"}
                                                                  : std::vector<std::string>{"force", "pressure"};
       ExponentMap out;
@@ -407,7 +415,7 @@ namespace gradcontact::cases
       of_indenter ? "closed form (rigid indenter)" : "closed form (power-law idealisation E0, c0, k)";
 
     std::ofstream csv(folder / "map.csv");
-    csv << "k," << (x == "a/z0" ? "a_over_z0" : (x == "a/H" ? "a_over_H" : "E1_over_E0"))
+    csv << "k," << (x == "a/z0" ? "a_over_z0" : x == "a/w" ? "a_over_w" : x == "a/H" ? "a_over_H" : "E1_over_E0")
         << ",force_deviation,contact_radius_deviation,pressure_deviation,dofs,seconds,error\n";
     csv.precision(10);
     std::ostringstream md, thresholds_md;
@@ -423,13 +431,15 @@ namespace gradcontact::cases
             "the contact set found); E1 enters as the scale of the indenter's compliance.\n\n";
     else
       md << "The FE model of "
-         << (x == "a/z0" ? "E(z) = E0 ((z + z0)/c0)^k (a finite surface modulus)"
-                         : "a graded coating E0 (z/c0)^k on 0 < z <= H over the substrate E0 (H/c0)^k")
+         << (x == "a/z0"  ? "E(z) = E0 ((z + z0)/c0)^k (a finite surface modulus)"
+             : x == "a/w" ? "E(z) = E0 [1 + (m - 1) erfc(z/w)], m = " + format(s.material.surface_modulus_ratio) +
+                              " (the error-function grading of Lee, Barber & Thouless 2009)"
+                          : "a graded coating E0 (z/c0)^k on 0 < z <= H over the substrate E0 (H/c0)^k")
          << " against the power-law closed forms (E0, c0, k; 9.1) at the FE depth: deviation = FE / closed form - 1"
          << " (force at the depth" << (indenter ? ", contact radius at the depth" : "") << ", pressure at r = "
          << format(axis_sample) << " a). Load/a = " << format(s.load.a) << " m, the FE under contact-radius control.\n\n";
-    // The chapter's idealisation is the limit a/z0 -> inf of a finite surface modulus, a/H -> 0 of a coating and
-    // E1/E0 -> inf of the indenter.
+    // The chapter's idealisation is the limit a/z0 -> inf of a finite surface modulus (a/w -> inf of the error
+    // function), a/H -> 0 of a coating and E1/E0 -> inf of the indenter.
     const bool toward_large = s.map.parameter != MapParameters::Parameter::coating_thickness;
     thresholds_md << "## Where " << (of_indenter ? "the rigid indenter's closed forms hold" : "the power law holds")
                   << "\n\n| k | quantity |";
@@ -506,6 +516,18 @@ namespace gradcontact::cases
                 thresholds_md << " " << threshold_cell(r, d, t, toward_large) << " |";
               }
             thresholds_md << '\n';
+          }
+        if (s.map.parameter == MapParameters::Parameter::erf_width)
+          {
+            std::vector<double> r, force, radius;
+            for (const MapPoint &p : points)
+              if (p.error.empty())
+                {
+                  r.push_back(p.ratio);
+                  force.push_back(p.force);
+                  radius.push_back(p.radius);
+                }
+            md << published_comparison(s, r, force, radius);
           }
       }
     std::ofstream(folder / "map.md") << md.str() << thresholds_md.str()

@@ -1,10 +1,12 @@
 // gradcontact/cases: applicability maps (SceneKind::map). The chapter's closed forms assume E(z) = E0 (z/c0)^k
 // from z = 0 (9.1). A real grading departs from it near the surface (a finite surface modulus, E0 ((z + z0)/c0)^k)
 // or at depth (a graded coating of thickness H on a homogeneous substrate). A map runs the FE model of such a
-// grading at the ratios a/z0 or a/H of the scene and several k, and tabulates how far its force, contact radius
-// and pressure near the axis are from the power-law closed forms at the same depth, with the ratio beyond which
-// they are within each threshold ("within 1 % when a/z0 >= ..." for a surface modulus, whose limit a/z0 -> inf
-// is the power law; "a/H <= ..." for a coating, whose limit is a/H -> 0).
+// grading at the ratios a/z0 or a/H of the scene and several k (or, at k = 0, a/w of the error-function grading
+// E0 [1 + (m - 1) erfc(z/w)], whose map.md adds a published comparison: cases/map_published.h), and tabulates how
+// far its force, contact radius and pressure near the axis are from the power-law closed forms at the same depth,
+// with the ratio beyond which they are within each threshold ("within 1 % when a/z0 >= ..." for a surface modulus,
+// whose limit a/z0 -> inf is the power law, as a/w -> inf is for the error function; "a/H <= ..." for a coating,
+// whose limit is a/H -> 0).
 //
 // Before the map is believed, the same FE model with the power law itself (where the closed forms are exact)
 // must agree with them within the scene's tolerances: those are the rows of errors.csv. The map is in

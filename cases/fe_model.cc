@@ -35,6 +35,10 @@ namespace gradcontact::cases
         case MaterialParameters::Modulus::coating:
           material.modulus = std::make_shared<fem::CoatingModulus>(m.E0, m.c0, m.k, m.coating_thickness);
           break;
+        case MaterialParameters::Modulus::error_function:
+          material.modulus =
+            std::make_shared<fem::ErrorFunctionModulus>(m.E0, m.surface_modulus_ratio * m.E0, m.erf_width);
+          break;
         case MaterialParameters::Modulus::table:
           {
             // A relative path is taken from the scene's folder.

@@ -4,6 +4,7 @@
 
 #include <deal.II/base/utilities.h>
 
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -52,17 +53,23 @@ namespace gradcontact::cases
     prm.declare_entry("k", "0.5", Patterns::Double(-1., 1.), "Exponent k of the grading, -1 < k < 1.");
     prm.declare_entry("nu", "0.3", Patterns::Double(0., 0.5), "Poisson ratio, 0 <= nu <= 1/2; the FE model needs Discretization/formulation = mixed (or automatic) at nu = 1/2.");
     prm.declare_entry("modulus", "power law",
-                      Patterns::Selection("power law|layered|expression|shifted power law|coating|table"),
+                      Patterns::Selection("power law|layered|expression|shifted power law|coating|table|error function"),
                       "How the FE model represents E(z): pointwise power law, N layers with exact layer "
                       "averages, an expression in z, E0 ((z + z0)/c0)^k (a finite surface modulus), a graded "
-                      "coating of thickness H on the homogeneous substrate E0 (H/c0)^k, or a CSV table. The "
-                      "closed forms and the numerical MDR always use the power law E0 (z/c0)^k.");
+                      "coating of thickness H on the homogeneous substrate E0 (H/c0)^k, a CSV table, or the "
+                      "error-function grading E0 [1 + (m - 1) erfc(z/w)] (Lee, Barber & Thouless 2009; needs k = 0). "
+                      "The closed forms and the numerical MDR always use the power law E0 (z/c0)^k.");
     prm.declare_entry("layers", "16", Patterns::Integer(1, 100000), "Layered modulus: number of layers.");
     prm.declare_entry("layered depth", "10", Patterns::Double(0.), "Layered modulus: depth of the layered zone / a.");
     prm.declare_entry("expression", "E0*(z/c0)^k", Patterns::Anything(),
                       "Expression modulus: E(z) (muparser; constants E0, c0, k).");
     prm.declare_entry("surface depth", "0", Patterns::Double(0.), "Shifted power law: z0 [m], > 0.");
     prm.declare_entry("coating thickness", "0", Patterns::Double(0.), "Coating: its thickness H [m], > 0.");
+    prm.declare_entry("surface modulus ratio", "10", Patterns::Double(0.),
+                      "Error function: m = E(0) / E0, > 0 (E0 is the modulus far below the surface; m > 1 a stiff "
+                      "skin, m < 1 a soft one).");
+    prm.declare_entry("erf width", "0", Patterns::Double(0.),
+                      "Error function: the width w [m] of E0 [1 + (m - 1) erfc(z/w)], > 0.");
     prm.declare_entry("table file", "", Patterns::Anything(),
                       "Table: a CSV file of z [m], E [Pa] rows (z from 0, increasing; linear between rows, "
                       "constant below the last); a relative path is taken from the scene's folder.");
@@ -81,7 +88,8 @@ namespace gradcontact::cases
                                                 {"expression", Modulus::expression},
                                                 {"shifted power law", Modulus::shifted_power_law},
                                                 {"coating", Modulus::coating},
-                                                {"table", Modulus::table}};
+                                                {"table", Modulus::table},
+                                                {"error function", Modulus::error_function}};
     modulus = moduli.at(m);
     layers = prm.get_integer("layers");
     layered_depth = prm.get_double("layered depth");
@@ -89,6 +97,8 @@ namespace gradcontact::cases
     surface_depth = prm.get_double("surface depth");
     coating_thickness = prm.get_double("coating thickness");
     table_file = prm.get("table file");
+    surface_modulus_ratio = prm.get_double("surface modulus ratio");
+    erf_width = prm.get_double("erf width");
     prm.leave_subsection();
     if (modulus == Modulus::shifted_power_law && !(surface_depth > 0.))
       throw std::invalid_argument("Material/surface depth = " + format(surface_depth) +
@@ -96,6 +106,17 @@ namespace gradcontact::cases
     if (modulus == Modulus::coating && !(coating_thickness > 0.))
       throw std::invalid_argument("Material/coating thickness = " + format(coating_thickness) +
                                   " must be H in (0, inf) [m] with Material/modulus = coating");
+    // The ratio is also read by an erf-width map, whatever Material/modulus says.
+    if (!(surface_modulus_ratio > 0.) || !std::isfinite(surface_modulus_ratio))
+      throw std::invalid_argument("Material/surface modulus ratio = " + format(surface_modulus_ratio) +
+                                  " must be m = E(0)/E0 in (0, inf)");
+    if (modulus == Modulus::error_function && !(erf_width > 0.))
+      throw std::invalid_argument("Material/erf width = " + format(erf_width) +
+                                  " must be w in (0, inf) [m] with Material/modulus = error function");
+    if (modulus == Modulus::error_function && k != 0.)
+      throw std::invalid_argument("Material/k = " + format(k) +
+                                  " must be 0 with Material/modulus = error function (E0 is the modulus below the "
+                                  "skin; the closed forms compare with the homogeneous E0)");
     if (modulus == Modulus::table && table_file.empty())
       throw std::invalid_argument("Material/table file is empty: Material/modulus = table needs a CSV file");
     if (E0 <= 0. || c0 <= 0.)
@@ -405,13 +426,15 @@ namespace gradcontact::cases
   void MapParameters::declare(ParameterHandler &prm)
   {
     prm.enter_subsection("Map");
-    prm.declare_entry("parameter", "none", Patterns::Selection("none|surface depth|coating thickness|indenter modulus"),
+    prm.declare_entry("parameter", "none",
+                      Patterns::Selection("none|surface depth|coating thickness|erf width|indenter modulus"),
                       "What the ratios set: none (no map), surface depth (Material/modulus = shifted power law, "
-                      "z0 = a / ratio), coating thickness (Material/modulus = coating, H = a / ratio) or indenter "
-                      "modulus (a homogeneous elastic indenter E1 = ratio E0 with Indenter/nu, against the rigid "
-                      "indenter's closed forms).");
+                      "z0 = a / ratio), coating thickness (Material/modulus = coating, H = a / ratio), erf width "
+                      "(Material/modulus = error function with Material/surface modulus ratio, w = a / ratio; k = 0) "
+                      "or indenter modulus (a homogeneous elastic indenter E1 = ratio E0 with Indenter/nu, against the "
+                      "rigid indenter's closed forms).");
     prm.declare_entry("ratios", "", Patterns::List(Patterns::Double(0.), 0, 100),
-                      "The ratios a/z0, a/H or E1/E0 of the map, > 0.");
+                      "The ratios a/z0, a/H, a/w or E1/E0 of the map, > 0.");
     prm.declare_entry("k values", "", Patterns::List(Patterns::Double(-1., 1.), 0, 20),
                       "The exponents k of the map, -1 < k < 1; empty: Material/k.");
     prm.declare_entry("thresholds", "0.01, 0.001", Patterns::List(Patterns::Double(0.), 1, 10),
@@ -424,6 +447,7 @@ namespace gradcontact::cases
     const std::string p = prm.get("parameter");
     parameter = p == "surface depth"       ? Parameter::surface_depth
                 : p == "coating thickness" ? Parameter::coating_thickness
+                : p == "erf width"         ? Parameter::erf_width
                 : p == "indenter modulus"  ? Parameter::indenter_modulus
                                            : Parameter::none;
     ratios = to_doubles(prm.get("ratios"));
@@ -572,7 +596,7 @@ namespace gradcontact::cases
         if (!s.references.fem)
           throw std::invalid_argument(where + "Map/parameter is set with References/fem = false: a map is FE data");
         if (s.map.ratios.empty())
-          throw std::invalid_argument(where + "Map/ratios is empty: give the ratios a/z0, a/H or E1/E0 of the map");
+          throw std::invalid_argument(where + "Map/ratios is empty: give the ratios a/z0, a/H, a/w or E1/E0 of the map");
         if (s.map.parameter == MapParameters::Parameter::indenter_modulus)
           {
             if (s.load.type == Type::flat_punch)
@@ -583,6 +607,12 @@ namespace gradcontact::cases
               throw std::invalid_argument(where + "Map/parameter = indenter modulus needs Material/modulus = power law "
                                           "(the map isolates the indenter's elasticity)");
           }
+        if (s.map.parameter == MapParameters::Parameter::erf_width)
+          for (const double k : s.map.exponents.empty() ? std::vector<double>{s.material.k} : s.map.exponents)
+            if (k != 0.)
+              throw std::invalid_argument(where + "Map/parameter = erf width with k = " + format(k) + " (" +
+                                          (s.map.exponents.empty() ? "Material/k" : "Map/k values") +
+                                          "): the error-function grading needs k = 0 (homogeneous E0 below the skin)");
         if (!(s.load.a > 0.))
           throw std::invalid_argument(where + "Load/a = " + format(s.load.a) + " must be in (0, inf) (z0 or H = a / ratio)");
         return SceneKind::map;

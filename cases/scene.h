@@ -30,7 +30,8 @@ namespace gradcontact::cases
       expression,
       shifted_power_law, ///< E0 ((z + z0)/c0)^k: a finite surface modulus
       coating,           ///< the power law over 0 < z <= H on the homogeneous substrate E0 (H/c0)^k
-      table              ///< a measured E(z) from a CSV file (z [m], E [Pa])
+      table,             ///< a measured E(z) from a CSV file (z [m], E [Pa])
+      error_function     ///< E0 [1 + (m - 1) erfc(z/w)]: the surface modulus m E0 relaxing to E0 over w (k = 0)
     };
     double E0 = 1e9, c0 = 1e-3, k = 0.5, nu = 0.3;
     Modulus modulus = Modulus::power_law;
@@ -40,6 +41,8 @@ namespace gradcontact::cases
     double surface_depth = 0.;   ///< shifted power law: z0 [m], > 0
     double coating_thickness = 0.; ///< coating: H [m], > 0
     std::string table_file;      ///< table: the CSV file (relative to the scene's folder)
+    double surface_modulus_ratio = 10.; ///< error function: m = E(0) / E0, > 0
+    double erf_width = 0.;       ///< error function: w [m], > 0
     static void declare(dealii::ParameterHandler &prm);
     void parse(dealii::ParameterHandler &prm);
   };
@@ -207,10 +210,11 @@ namespace gradcontact::cases
       none,
       surface_depth,    ///< Material/modulus = shifted power law, z0 = a / ratio
       coating_thickness, ///< Material/modulus = coating, H = a / ratio
+      erf_width,         ///< Material/modulus = error function, w = a / ratio (k = 0)
       indenter_modulus   ///< a homogeneous elastic indenter (Indenter/nu), E1 = ratio E0, against the rigid one
     };
     Parameter parameter = Parameter::none;
-    std::vector<double> ratios;     ///< a/z0 or a/H, > 0
+    std::vector<double> ratios;     ///< a/z0, a/H, a/w or E1/E0, > 0
     std::vector<double> exponents;  ///< k values; empty: Material/k
     std::vector<double> thresholds = {0.01, 0.001}; ///< deviations whose ratio the map reports
     bool enabled() const { return parameter != Parameter::none; }

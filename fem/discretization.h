@@ -69,7 +69,8 @@ namespace gradcontact::fem
 
   /// The same for a modulus field: the surface settings of its surface exponent, the far field of its deep
   /// exponent (the truncation error falls like (a/L)^(1 + s) with s the exponent far below the surface), and
-  /// for a finite surface modulus E0 ((z + z0)/c0)^k the power law's mesh with surface cells of z0/4.
+  /// for a finite surface modulus E0 ((z + z0)/c0)^k the power law's mesh with surface cells of z0/4, for the
+  /// error-function grading the homogeneous mesh with surface cells of w/4.
   Settings recommended_settings(double contact_radius, const ModulusField &modulus, double force_tolerance);
 
   /// Wall-clock seconds of the phases of a solve.

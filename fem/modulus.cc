@@ -208,6 +208,58 @@ namespace gradcontact::fem
 
 
 
+  ErrorFunctionModulus::ErrorFunctionModulus(const double E_bulk, const double E_surface, const double width)
+    : E_bulk(E_bulk)
+    , E_surface(E_surface)
+    , width(width)
+  {
+    if (!(E_bulk > 0.0) || !std::isfinite(E_bulk))
+      fail("ErrorFunctionModulus", "E_bulk", E_bulk, "(0, inf)");
+    if (!(E_surface > 0.0) || !std::isfinite(E_surface))
+      fail("ErrorFunctionModulus", "E_surface", E_surface, "(0, inf)");
+    if (!(width > 0.0) || !std::isfinite(width))
+      fail("ErrorFunctionModulus", "width", width, "(0, inf)");
+  }
+
+  double ErrorFunctionModulus::value(const double z) const
+  {
+    return E_bulk + (E_surface - E_bulk) * std::erfc(z / width);
+  }
+
+  double ErrorFunctionModulus::average(const double z1, const double z2) const
+  {
+    check_average_interval("ErrorFunctionModulus::average", z1, z2);
+    const double length = z2 - z1;
+    double       mean_erfc = 0.0; // the mean of erfc(z/w) over [z1, z2]
+    if (length < width)
+      {
+        // erfc(z/w) is entire and varies on the scale w: Gauss on [z1, z2] is exact to round-off, where the
+        // difference of the primitives below would lose the digits of length / w.
+        const dealii::QGauss<1> gauss(average_points);
+        for (unsigned int i = 0; i < gauss.size(); ++i)
+          mean_erfc += gauss.weight(i) * std::erfc((z1 + length * gauss.point(i)[0]) / width);
+      }
+    else
+      {
+        // G(x) = x erfc(x) - exp(-x^2)/sqrt(pi), G'(x) = erfc(x).
+        constexpr double inv_sqrt_pi = 0.564189583547756286948079451560772586;
+        const auto G = [](const double x) { return x * std::erfc(x) - std::exp(-x * x) * inv_sqrt_pi; };
+        mean_erfc = (G(z2 / width) - G(z1 / width)) * width / length;
+      }
+    return E_bulk + (E_surface - E_bulk) * mean_erfc;
+  }
+
+  std::string ErrorFunctionModulus::description() const
+  {
+    std::ostringstream s;
+    s.precision(17);
+    s << "error function E(z) = " << E_bulk << " + (" << E_surface << " - " << E_bulk << ") erfc(z/" << width
+      << ")";
+    return s.str();
+  }
+
+
+
   TabulatedModulus::TabulatedModulus(std::vector<double> z_rows, std::vector<double> E_rows)
     : z(std::move(z_rows))
     , E(std::move(E_rows))

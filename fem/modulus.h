@@ -11,11 +11,13 @@
 //                       the last interface
 //   ExpressionModulus   any E(z) given as a deal.II FunctionParser expression in the variable z
 //
-// and three "real gradings", where the power law (9.1) stops describing the material:
+// and four "real gradings", where the power law (9.1) stops describing the material:
 //
 //   ShiftedPowerLawModulus  E(z) = E0 ((z + z0) / c0)^k, z0 > 0: a finite surface modulus E0 (z0/c0)^k
 //   CoatingModulus          a power-law coating of thickness H on the homogeneous substrate E0 (H/c0)^k
 //   TabulatedModulus        a measured profile: piecewise linear between rows (z_i, E_i), constant below
+//   ErrorFunctionModulus    E(z) = E_b + (E_s - E_b) erfc(z / w): a surface modulus E_s that relaxes to the
+//                           bulk E_b over the width w, like a diffusion profile
 //
 // A field may be singular at the surface like z^s (s = k for the power law). It reports s through
 // surface_exponent(); the assembly then integrates the cells touching z = 0 with a Gauss-Jacobi rule that
@@ -205,6 +207,34 @@ namespace gradcontact::fem
   private:
     /// \int_0^x E(z) dz.
     double integral(double x) const;
+  };
+
+  /// The error-function grading E(z) = E_b + (E_s - E_b) erfc(z / w), E_b > 0 the bulk modulus far below
+  /// the surface, E_s > 0 the surface modulus E(0), w > 0 the width; E_s > E_b is a stiff skin (an oxidised
+  /// or implanted surface, a diffusion profile erfc(z / (2 sqrt(D t))) with w = 2 sqrt(D t)), E_s < E_b a
+  /// soft one. The "more practical" of the gradings in the FE study of D. Lee, J.R. Barber, M.D. Thouless,
+  /// "Indentation of an elastic half space with material properties varying with depth", Int. J. Eng. Sci.
+  /// 47 (2009) 1274-1283 (its error-function grading, next to a power law truncated to a finite surface
+  /// value); written here with w as the only length. Regular at z = 0, homogeneous below a few w.
+  /// Limits (flat punch of radius a, fem/README.md "Real gradings"; tests/fem/test_real_gradings.cc):
+  ///  - w >> a: Sneddon's punch on E_s, with the surface slope E'(0)/E_s = -(1 - E_b/E_s) 2/(sqrt(pi) w) in
+  ///    the place of k/z0 of the shifted power law: F/F_S(E_s) - 1 = (E_b/E_s - 1) (2/sqrt(pi)) (a/w)
+  ///    [c1 ln(w/a) + c2], c1 = 0.773 at nu = 0.3, c2 = O(1);
+  ///  - w << a: Sneddon's punch on E_b, F/F_S(E_b) - 1 = (w/a) [A ln(a/w) + B]: a thin layer under the edge
+  ///    of the punch, A from its in-plane stiffness \int (E - E_b) dz and its normal compliance
+  ///    \int (1/E_b - 1/E) dz; the mesh must resolve w over the whole near field, not only under the punch
+  ///    (recommended_settings: surface_layer_thickness = w / (4 a), halving_radius = near_field_size).
+  class ErrorFunctionModulus : public ModulusField
+  {
+  public:
+    ErrorFunctionModulus(double E_bulk, double E_surface, double width);
+    double value(double z) const override;
+    /// Exact: E_b + (E_s - E_b) w [G(z2/w) - G(z1/w)] / (z2 - z1), G(x) = x erfc(x) - exp(-x^2)/sqrt(pi)
+    /// the primitive of erfc; 24-point Gauss where z2 - z1 < w (there the primitives cancel).
+    double average(double z1, double z2) const override;
+    std::string description() const override;
+
+    const double E_bulk, E_surface, width;
   };
 
   /// The graded body: E(z) and a constant Poisson ratio, -1 < nu < 1/2 (displacement formulation) or

@@ -2,6 +2,7 @@
 #include "scene_files.h"
 
 #include <cases/fe_map.h>
+#include <cases/map_published.h>
 #include <cases/runner.h>
 
 #include <catch2/catch.hpp>
@@ -94,4 +95,74 @@ TEST_CASE("A map scene with a load it cannot map shall be an error naming the en
                           "subsection Map\n  set parameter = surface depth\n  set ratios = 1\nend\n";
   CHECK_THROWS_WITH(read_scene(scene.string(), {}), Catch::Contains("bad_map.prm") && Catch::Contains("Map/parameter") &&
                                                   Catch::Contains("constant pressure"));
+}
+
+TEST_CASE("An error-function scene shall name its entries, values and ranges when they are bad", "[cases]")
+{
+  using testing::scene_with;
+  const std::vector<std::string> erf{"Material/modulus=error function", "Material/k=0", "Material/erf width=1e-5"};
+  const auto with = [&](std::vector<std::string> extra) {
+    extra.insert(extra.begin(), erf.begin(), erf.end());
+    return scene_with(extra);
+  };
+  CHECK(with({}).material.modulus == MaterialParameters::Modulus::error_function);
+  CHECK_THROWS_WITH(with({"Material/erf width=0"}), Catch::Contains("Material/erf width = 0") &&
+                                                      Catch::Contains("(0, inf)") && Catch::Contains("error function"));
+  CHECK_THROWS_WITH(with({"Material/k=0.5"}), Catch::Contains("Material/k = 0.5 must be 0"));
+  CHECK_THROWS_WITH(with({"Material/surface modulus ratio=0"}),
+                    Catch::Contains("Material/surface modulus ratio = 0") && Catch::Contains("(0, inf)"));
+  // A map over a/w needs k = 0, from Material/k or every Map/k value.
+  CHECK_THROWS_WITH(scene_with({"Map/parameter=erf width", "Map/ratios=1"}),
+                    Catch::Contains("Map/parameter = erf width with k = 0.5 (Material/k)"));
+  CHECK_THROWS_WITH(scene_with({"Map/parameter=erf width", "Map/ratios=1", "Map/k values=0, 0.25"}),
+                    Catch::Contains("k = 0.25 (Map/k values)"));
+  CHECK(scene_with({"Map/parameter=erf width", "Map/ratios=1", "Material/k=0"}).kind == SceneKind::map);
+}
+
+TEST_CASE("The load-displacement exponent of a map shall be exact for power-law deviations", "[cases]")
+{
+  // With 1 + dF = (a/w)^beta and 1 + da = (a/w)^gamma, ln d = n (1 - gamma) ln(a/w) + const and
+  // ln F = (n + 1)/n ln d + beta ln(a/w): N = (n + 1)/n + beta / (n (1 - gamma)) on every interval.
+  const double n = GENERATE(2.0, 1.0, 1.5), beta = -0.3, gamma = 0.1;
+  const std::vector<double> ratios{0.01, 0.1, 1, 10, 1e3};
+  std::vector<double> force, radius;
+  for (const double r : ratios)
+    {
+      force.push_back(std::pow(r, beta) - 1);
+      radius.push_back(std::pow(r, gamma) - 1);
+    }
+  const auto exponents = load_exponents(n, ratios, force, radius);
+  REQUIRE(exponents.size() == ratios.size() - 1);
+  for (const LoadExponent &e : exponents)
+    {
+      CAPTURE(n, e.ratio_low, e.exponent);
+      CHECK_THAT(e.exponent, Catch::Matchers::WithinRel((n + 1) / n + beta / (n * (1 - gamma)), 1e-12));
+    }
+  CHECK_THAT(load_exponents(n, {1, 10}, {0, 0}, {0, 0}).front().exponent, Catch::Matchers::WithinRel((n + 1) / n, 1e-15));
+  CHECK_THROWS_WITH(load_exponents(n, {1, 10}, {0}, {0, 0}), Catch::Contains("2 ratios, 1 force"));
+  CHECK_THROWS_WITH(load_exponents(0, {1, 10}, {0, 0}, {0, 0}), Catch::Contains("n = 0"));
+}
+
+TEST_CASE("An erf-width map shall write the published comparison with the trend of its own points", "[cases]")
+{
+  // A stiff skin (m = 10) under a paraboloid, coarse: the exponent dips below Hertz's 1.5 between the limits.
+  const TemporaryFolder folder("gradcontact-map-erf");
+  const fs::path scene = folder.path() / "erf_map.prm";
+  std::ofstream(scene) << "subsection Material\n  set k = 0\n  set surface modulus ratio = 10\nend\n"
+                          "subsection Load\n  set type = paraboloid\n  set a = 1e-4\n  set R = 5e-3\nend\n"
+                          "subsection Discretization\n  set degree = 1\n  set force tolerance = 1e-3\nend\n"
+                          "subsection Tolerances\n  set force = 1e-2\n  set contact radius = 1e-2\n"
+                          "  set pressure = 1e-1\nend\n"
+                          "subsection Map\n  set parameter = erf width\n  set ratios = 0.1, 1, 10\nend\n";
+  const fs::path reports = folder.path() / "reports";
+  REQUIRE(run({scene.string(), "--reports", reports.string(), "--quiet"}) == 0);
+  const std::string md = testing::read_text(reports / "erf_map" / "map.md");
+  CHECK(md.find("within 1 % when a/w |") != std::string::npos);
+  CHECK(md.find("### Published comparison") != std::string::npos);
+  CHECK(md.find("Int. J. Eng. Sci. 47 (2009) 1274-1283") != std::string::npos);
+  CHECK(md.find("| 0.1 - 1 |") != std::string::npos);
+  CHECK(md.find("closer to linear than the homogeneous half-space, as published") != std::string::npos);
+  const auto csv = testing::read_csv(reports / "erf_map" / "map.csv");
+  REQUIRE(csv.size() == 4);
+  CHECK(csv[0][1] == "a_over_w");
 }
