@@ -166,3 +166,45 @@ TEST_CASE("An erf-width map shall write the published comparison with the trend 
   REQUIRE(csv.size() == 4);
   CHECK(csv[0][1] == "a_over_w");
 }
+
+TEST_CASE("An indenter-modulus map at k = 0 shall be Hertz's two elastic bodies", "[cases]")
+{
+  // A homogeneous indenter E1 = ratio E0 (nu1 = nu = 0.3) on a homogeneous half-space: at a given depth Hertz's
+  // force scales with E* = (1/E*_0 + 1/E*_1)^-1, so F / F_rigid - 1 = -x / (1 + x), x = E0 / E1 (equal nu), and
+  // the contact radius a = sqrt(R d) does not change. The 1 % threshold is where x / (1 + x) = 0.01: E1/E0 = 99.
+  const TemporaryFolder folder("gradcontact-indenter-map");
+  const fs::path scene = folder.path() / "hertz_map.prm";
+  std::ofstream(scene) << "subsection Material\n  set k = 0\n  set nu = 0.3\nend\n"
+                          "subsection Load\n  set type = paraboloid\n  set a = 1e-4\n  set R = 5e-3\nend\n"
+                          "subsection Indenter\n  set nu = 0.3\nend\n"
+                          "subsection Discretization\n  set degree = 2\nend\n"
+                          "subsection Tolerances\n  set force = 1e-4\n  set contact radius = 1e-4\n"
+                          "  set pressure = 1e-3\nend\n"
+                          "subsection Map\n  set parameter = indenter modulus\n  set ratios = 1, 10, 100, 1000\n"
+                          "  set thresholds = 0.01\nend\n";
+  const fs::path reports = folder.path() / "reports";
+  REQUIRE(run({scene.string(), "--reports", reports.string(), "--quiet"}) == 0);
+  const fs::path out = reports / "hertz_map";
+  const auto csv = testing::read_csv(out / "map.csv");
+  REQUIRE(csv.size() == 5);
+  CHECK(csv[0][1] == "E1_over_E0");
+  for (std::size_t i = 1; i < csv.size(); ++i)
+    {
+      const double ratio = std::stod(csv[i][1]), x = 1 / ratio;
+      CAPTURE(ratio, csv[i][2], csv[i][3]);
+      CHECK(std::stod(csv[i][2]) == Approx(-x / (1 + x)).margin(1e-4));
+      CHECK(std::abs(std::stod(csv[i][3])) < 1e-4);
+    }
+  // The threshold cell of the force: log-log interpolation between 10 and 100 of -x/(1+x) (not a power law:
+  // within 0.2 % of 99).
+  const std::string md = testing::read_text(out / "map.md");
+  const std::string row = "| 0 | force | >= ";
+  const auto at = md.find(row);
+  REQUIRE(at != std::string::npos);
+  CHECK(std::stod(md.substr(at + row.size())) == Approx(99.).epsilon(2e-3));
+  // The sharp checks (the rigid limit and two graded bodies by 9.4) are rows of errors.csv, and pass.
+  const auto errors = testing::read_csv(out / "errors.csv");
+  REQUIRE(errors.size() >= 7);
+  for (std::size_t i = 1; i < errors.size(); ++i)
+    CHECK(errors[i][9] == "pass");
+}
