@@ -21,6 +21,7 @@
 #include <fstream>
 #include <iostream>
 #include <functional>
+#include <limits>
 #include <map>
 #include <optional>
 #include <stdexcept>
@@ -182,12 +183,110 @@ namespace gradcontact::cases
       return f;
     }
 
-    SceneResult run_candidate(const Scene &s)
+    /// Load/contact = unilateral: the candidate's closed forms against the FE with the contact set found (a
+    /// disc, an annulus, several zones, or up to the indenter's edge), the profile a rigid (or Indenter) indenter
+    /// of Candidate/indenter radius under Load/control depth or force. The expressions take the FE's depth d and
+    /// force F; the numerical MDR assumes a disc and is not compared (the scene's description says so).
+    SceneResult run_unilateral_candidate(const Scene &s, const std::map<std::string, double> &constants)
     {
       SceneResult result;
       const CandidateParameters &c = s.candidate;
+      const auto t0 = std::chrono::steady_clock::now();
+      const FeModel model = fe_model(s, finest_refinement(s));
+      fem::UnilateralLoad load;
+      if (!c.profile_table.empty())
+        {
+          // A relative path is taken from the scene's folder.
+          fs::path table(c.profile_table);
+          if (table.is_relative() && !s.file.empty())
+            table = fs::path(s.file).parent_path() / table;
+          load.indenter = fem::Indenter::from_csv(table.string());
+        }
+      else
+        {
+          const auto f = parse_expression<1>("profile", "r", c.profile, constants);
+          load.indenter = fem::Indenter{[f](const double r) { return f->value(dealii::Point<1>(r)); },
+                                        std::numeric_limits<double>::infinity(), "candidate profile"};
+        }
+      if (c.indenter_radius > 0.)
+        load.indenter.extent = std::min(load.indenter.extent, c.indenter_radius);
+      load.control = s.load.control == Control::force ? fem::ContactControl::force : fem::ContactControl::depth;
+      load.depth = s.load.depth;
+      load.force = s.load.force;
+      fem::OutputRequest out;
+      for (const double x : s.outputs.pressure_radii)
+        out.pressure_radii.push_back(x * s.load.a);
+      for (const double x : s.outputs.displacement_radii)
+        out.displacement_radii.push_back(x * s.load.a);
+      fem::Remeshing remeshing;
+      remeshing.indenter_body = model.indenter_body;
+      fem::UnilateralResult fe;
+      try
+        {
+          fe = fem::solve_remeshed(model.material, model.settings, load, s.load.a, out, remeshing);
+        }
+      catch (const std::exception &e)
+        {
+          result.rows.push_back(failed("FE solve", "FE", "-", concise(e)));
+          return result;
+        }
+      const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+      if (!fe.reliable)
+        result.rows.push_back(failed("FE solve", "FE", "-", fe.message));
+      const double inner = fe.zones.empty() ? 0. : fe.zones.front().r_in;
+      const auto row = [&](const std::string &quantity, const std::string &metric, const std::string &expression,
+                           const double fe_value, const double tolerance, const std::optional<double> r,
+                           const double scale) {
+        if (expression.empty())
+          return;
+        try
+          {
+            const double value = r ? parse_expression<3>(quantity, "r,d,F", expression, constants)
+                                       ->value(dealii::Point<3>(*r, fe.depth, fe.force))
+                                   : parse_expression<2>(quantity, "d,F", expression, constants)
+                                       ->value(dealii::Point<2>(fe.depth, fe.force));
+            result.rows.push_back(compare(quantity, metric, "candidate", "FE (unilateral)", fe_value, value, scale,
+                                          tolerance, fe.n_dofs, seconds));
+          }
+        catch (const std::exception &e)
+          {
+            result.rows.push_back(failed(quantity, "candidate", "FE (unilateral)", concise(e)));
+          }
+      };
+      const double a = s.load.a;
+      if (load.control == fem::ContactControl::force)
+        row("depth", "relative", c.depth, fe.depth, s.tolerances.depth, std::nullopt, fe.depth);
+      else
+        row("force", "relative", c.force, fe.force, s.tolerances.force, std::nullopt, fe.force);
+      row("outer radius", "relative", c.outer_radius, fe.outer_edge, s.tolerances.contact_radius, std::nullopt,
+          fe.outer_edge);
+      // The inner edge lies between two vertices (its bracket is the mesh's spacing there): relative to the
+      // outer edge.
+      row("inner radius", "relative to the outer radius", c.inner_radius, inner, s.tolerances.contact_radius,
+          std::nullopt, fe.outer_edge);
+      double p_max = 0.;
+      for (const fem::Sample &p : fe.pressure)
+        p_max = std::max(p_max, std::abs(p.value));
+      for (const fem::Sample &p : fe.pressure)
+        row("pressure", "r/a = " + format(p.r / a) + ", rel. to max |p|", c.pressure, p.value, s.tolerances.pressure,
+            p.r, p_max);
+      for (std::size_t i = 0; i < fe.displacement.size(); ++i)
+        {
+          const double w = fe.displacement[i].value + (fe.indenter_displacement.empty() ? 0. : fe.indenter_displacement[i].value);
+          row("displacement", "r/a = " + format(fe.displacement[i].r / a) + ", relative", c.displacement, w,
+              s.tolerances.displacement, fe.displacement[i].r, w);
+        }
+      return result;
+    }
+
+    SceneResult run_candidate(const Scene &s)
+    {
+      const CandidateParameters &c = s.candidate;
       const auto constants = constants_of(s);
+      if (s.load.contact == LoadParameters::Contact::unilateral)
+        return run_unilateral_candidate(s, constants);
       const auto f = parse_expression<1>("profile", "r", c.profile, constants);
+      SceneResult result;
       const auto at = [](const dealii::FunctionParser<1> &g, const double r) { return g.value(dealii::Point<1>(r)); };
       mdr::Profile profile;
       profile.f = [f, at](double r) { return at(*f, r); };
@@ -363,6 +462,10 @@ namespace gradcontact::cases
     require_kind(s, SceneKind::candidate, "run_candidate_scene");
     const auto start = std::chrono::steady_clock::now();
     SceneResult r = started(s, folder);
+    if (s.load.contact == LoadParameters::Contact::unilateral)
+      r.description += (r.description.empty() ? "" : " ") +
+                       std::string("(unilateral contact: the candidate against the FE only; the numerical MDR assumes a "
+                                   "disc and does not apply)");
     r.rows = run_candidate(s).rows;
     r.seconds = seconds_since(start);
     return r;

@@ -306,6 +306,19 @@ namespace gradcontact::cases
     prm.declare_entry("pressure", "", Patterns::Anything(), "Candidate p(r, a) (variables r, a), at Outputs/pressure radii.");
     prm.declare_entry("displacement", "", Patterns::Anything(),
                       "Candidate w(r, a) (variables r, a), at Outputs/displacement radii.");
+    prm.declare_entry("outer radius", "", Patterns::Anything(),
+                      "Load/contact = unilateral: candidate outer edge of the contact (variables d, F).");
+    prm.declare_entry("inner radius", "", Patterns::Anything(),
+                      "Load/contact = unilateral: candidate inner edge of the contact, 0 for a disc (variables d, F).");
+    prm.declare_entry("profile table", "", Patterns::Anything(),
+                      "Load/contact = unilateral: a CSV file of rows r, f(r) [m] (r from 0, ascending; relative to the "
+                      "scene's folder), linear between rows, e.g. a measured indenter, instead of `profile`; its last r "
+                      "is the indenter's radius.");
+    prm.declare_entry("indenter radius", "0", Patterns::Double(0.),
+                      "Load/contact = unilateral: the indenter's radius [m] (a concave punch ends there); 0: unbounded. "
+                      "With unilateral contact every candidate takes the FE's depth d and force F instead of a "
+                      "(d, F; r, d, F for p and w), is compared with the FE only (the MDR assumes a disc), and the "
+                      "profile is indented under Load/control = depth or force.");
     prm.declare_entry("tolerance", "1e-8", Patterns::Double(0.), "Relative tolerance of the candidate.");
     prm.leave_subsection();
   }
@@ -320,6 +333,10 @@ namespace gradcontact::cases
     force = prm.get("force");
     pressure = prm.get("pressure");
     displacement = prm.get("displacement");
+    outer_radius = prm.get("outer radius");
+    inner_radius = prm.get("inner radius");
+    indenter_radius = prm.get_double("indenter radius");
+    profile_table = prm.get("profile table");
     tolerance = prm.get_double("tolerance");
     prm.leave_subsection();
   }
@@ -531,6 +548,29 @@ namespace gradcontact::cases
     void check_candidate(const Scene &s)
     {
       const CandidateParameters &c = s.candidate;
+      if (!c.profile.empty() && !c.profile_table.empty())
+        throw std::invalid_argument("scene " + s.file + ": Candidate/profile and Candidate/profile table are both set; "
+                                    "give one");
+      if (!c.profile_table.empty() && s.load.contact != LoadParameters::Contact::unilateral)
+        throw std::invalid_argument("scene " + s.file + ": Candidate/profile table needs Load/contact = unilateral (a "
+                                    "table has no derivatives for the MDR; it is checked against the FE only)");
+      if (s.load.contact == LoadParameters::Contact::unilateral)
+        {
+          if (!s.references.fem)
+            throw std::invalid_argument("scene " + s.file + ": Candidate with Load/contact = unilateral is checked "
+                                        "against the FE only: References/fem must be true");
+          const bool checks_something = !c.depth.empty() || !c.force.empty() || !c.outer_radius.empty() ||
+                                        !c.inner_radius.empty() ||
+                                        (!c.pressure.empty() && !s.outputs.pressure_radii.empty()) ||
+                                        (!c.displacement.empty() && !s.outputs.displacement_radii.empty());
+          if (!checks_something)
+            throw std::invalid_argument("Candidate: no candidate formula given (depth, force, outer radius, inner "
+                                        "radius, pressure or displacement)");
+          return;
+        }
+      if (!c.outer_radius.empty() || !c.inner_radius.empty() || c.indenter_radius > 0.)
+        throw std::invalid_argument("scene " + s.file + ": Candidate/outer radius, inner radius and indenter radius "
+                                    "need Load/contact = unilateral (with a disc the contact radius is Load/a)");
       if (c.curvature.empty() && !c.pressure.empty())
         // The pressure needs g'(x), a quadrature of f' and f'' nested in another one: finite-difference
         // noise (1e-13) keeps both from meeting their tolerance, and the run takes minutes (measured: 325 s).
@@ -554,15 +594,17 @@ namespace gradcontact::cases
     if (s.load.contact == LoadParameters::Contact::unilateral)
       {
         using Type = LoadParameters::Type;
-        if (s.load.type == Type::flat_punch || s.load.type == Type::constant_pressure)
+        const bool candidate = s.candidate.enabled();
+        if (!candidate && (s.load.type == Type::flat_punch || s.load.type == Type::constant_pressure))
           throw std::invalid_argument(where + "Load/contact = unilateral needs an indenter (Load/type = paraboloid, "
-                                      "cone, power law or concave punch)");
-        if (s.load.type != Type::concave_punch && s.load.control == LoadParameters::Control::contact_radius)
+                                      "cone, power law or concave punch, or a Candidate/profile)");
+        if ((candidate || s.load.type != Type::concave_punch) &&
+            s.load.control == LoadParameters::Control::contact_radius)
           throw std::invalid_argument(where + "Load/contact = unilateral finds the contact radius: Load/control "
                                       "must be depth or force");
-        if (s.tangential.enabled() || s.adhesion.enabled(s.load) || !s.candidate.profile.empty())
-          throw std::invalid_argument(where + "Load/contact = unilateral is a normal-contact scene (no Adhesion, "
-                                      "Tangential or Candidate entries)");
+        if (s.tangential.enabled() || s.adhesion.enabled(s.load))
+          throw std::invalid_argument(where + "Load/contact = unilateral is a normal-contact scene (no Adhesion or "
+                                      "Tangential entries)");
       }
     if (s.indenter.elasticity != IndenterParameters::Elasticity::rigid)
       {
@@ -582,7 +624,7 @@ namespace gradcontact::cases
     if (s.map.enabled())
       {
         using Type = LoadParameters::Type;
-        if (s.tangential.enabled() || s.adhesion.enabled(s.load) || !s.candidate.profile.empty() ||
+        if (s.tangential.enabled() || s.adhesion.enabled(s.load) || s.candidate.enabled() ||
             s.load.contact == LoadParameters::Contact::unilateral)
           throw std::invalid_argument(where + "Map/parameter is set: a map is a normal-contact scene (no Adhesion, "
                                       "Tangential or Candidate entries, Load/contact = disc)");
@@ -631,7 +673,7 @@ namespace gradcontact::cases
         check_adhesion(s, where);
         return SceneKind::adhesion;
       }
-    if (!s.candidate.profile.empty())
+    if (s.candidate.enabled())
       {
         check_candidate(s);
         return SceneKind::candidate;

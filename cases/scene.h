@@ -171,6 +171,13 @@ namespace gradcontact::cases
     std::string slope, curvature;         ///< f'(r), f''(r); empty: fourth-order finite differences of f
     std::string constants;                ///< "R=0.01, A=2"
     std::string depth, force, pressure, displacement; ///< d(a), F(a), p(r, a), w(r, a); empty: not checked
+    /// With Load/contact = unilateral (the contact set found; it may be an annulus or end at the indenter's
+    /// edge): the expressions take the FE's load state d, F instead of a, and these two check the contact.
+    std::string outer_radius, inner_radius; ///< the outer edge and the inner edge (0 for a disc), of d, F
+    double indenter_radius = 0.;            ///< the indenter's radius [m] (unilateral); 0: unbounded
+    std::string profile_table; ///< a CSV file of r, f(r) rows (unilateral only; instead of `profile`)
+    /// A candidate scene: a profile expression or a profile table.
+    bool enabled() const { return !profile.empty() || !profile_table.empty(); }
     double tolerance = 1e-8;
     static void declare(dealii::ParameterHandler &prm);
     void parse(dealii::ParameterHandler &prm);

@@ -1,6 +1,7 @@
 #include <fem/errors.h>
 #include <fem/gauss_jacobi.h>
 #include <fem/modulus.h>
+#include <fem/table_file.h>
 
 #include <deal.II/base/function_parser.h>
 #include <deal.II/base/point.h>
@@ -282,37 +283,14 @@ namespace gradcontact::fem
 
   std::shared_ptr<TabulatedModulus> TabulatedModulus::from_csv(const std::string &file)
   {
-    std::ifstream in(file);
-    if (!in)
-      throw std::invalid_argument("TabulatedModulus::from_csv: cannot open \"" + file + "\"");
+    const TableFile     table = read_table_file(file, "TabulatedModulus::from_csv", "z", "E");
     std::vector<double> z, E;
-    std::string         line;
-    bool                header_allowed = true;
-    for (unsigned int line_number = 1; std::getline(in, line); ++line_number)
+    for (std::size_t i = 0; i < table.x.size(); ++i)
       {
-        const auto where = [&] { return "TabulatedModulus::from_csv: \"" + file + "\" line " +
-                                        std::to_string(line_number); };
-        const auto first = line.find_first_not_of(" \t\r");
-        if (first == std::string::npos || line[first] == '#')
-          continue;
-        // Two numbers separated by a comma and/or blanks; nothing else on the line.
-        std::string fields = line;
-        std::replace(fields.begin(), fields.end(), ',', ' ');
-        std::istringstream row(fields);
-        double             zi = 0, Ei = 0;
-        std::string        rest;
-        const bool numeric = static_cast<bool>(row >> zi >> Ei) && !(row >> rest);
-        if (!numeric)
-          {
-            // The first non-comment line may be a header ("z,E", "depth_m,E_Pa", ...).
-            if (header_allowed)
-              {
-                header_allowed = false;
-                continue;
-              }
-            throw std::invalid_argument(where() + ": \"" + line + "\" is not two numbers z, E");
-          }
-        header_allowed = false;
+        const double zi = table.x[i], Ei = table.y[i];
+        const auto   where = [&] {
+          return "TabulatedModulus::from_csv: \"" + file + "\" line " + std::to_string(table.line[i]);
+        };
         if (z.empty() && zi != 0.0)
           fail(where(), "z", zi, "{0}: the first row is the surface");
         if (!z.empty() && !(zi > z.back()))

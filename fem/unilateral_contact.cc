@@ -1,5 +1,6 @@
 #include <fem/errors.h>
 #include <fem/graded_elasticity.h>
+#include <fem/table_file.h>
 #include <fem/unilateral_contact.h>
 #include <fem/vtu_output.h>
 
@@ -76,6 +77,21 @@ namespace gradcontact::fem
       return (1 - t) * f[j - 1] + t * f[j];
     };
     return i;
+  }
+
+  Indenter Indenter::from_csv(const std::string &file)
+  {
+    TableFile rows = read_table_file(file, "Indenter::from_csv", "r", "f");
+    try
+      {
+        Indenter i = table(std::move(rows.x), std::move(rows.y));
+        i.name     = "indenter of " + file;
+        return i;
+      }
+    catch (const std::invalid_argument &e)
+      {
+        throw std::invalid_argument("Indenter::from_csv: \"" + file + "\": " + e.what());
+      }
   }
 
   void Indenter::validate() const

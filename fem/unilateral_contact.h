@@ -81,6 +81,8 @@ namespace gradcontact::fem
     static Indenter of(const Profile &profile, double a);
     /// f from a table (r_j, f_j), r ascending from 0, linear in between; the extent is the last r_j.
     static Indenter table(std::vector<double> r, std::vector<double> f);
+    /// The same from a file of rows r, f (fem/table_file.h), e.g. a measured profile; errors name the file.
+    static Indenter from_csv(const std::string &file);
     void validate() const;
   };
 
