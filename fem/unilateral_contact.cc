@@ -661,7 +661,7 @@ namespace gradcontact::fem
     result.outer_edge   = r_e;
     // Sub-node estimates. From the pressure at the last two vertices in contact, p = K (a - r)^alpha,
     // alpha = (1 + s)/2 (9.26; s the surface exponent of E); from the gaps of the next two displacement
-    // nodes outside, h = K (r - a)^beta, beta = (3 + s)/2. Each is kept only inside the bracket. With an
+    // nodes beyond the bracket, h = K (r - a)^beta, beta = (3 + s)/2. Each is kept only inside the bracket. With an
     // elastic indenter the more compliant surface sets the edge at small scales: the larger exponent.
     const double exponent_s =
       std::max(half_space->material.modulus->surface_exponent(),
@@ -685,7 +685,9 @@ namespace gradcontact::fem
       }
     const unsigned int n = f.size();
     unsigned int       i = 0;
-    while (i < n && candidate_r[i] <= r_e * (1 + node_tolerance))
+    // The nodes beyond the bracket: those inside it (a midside node, the next vertex) may still be in contact
+    // up to the weak condition's round-off, and a gap of that size breaks the fit.
+    while (i < n && candidate_r[i] <= result.edge_bracket.second * (1 + node_tolerance))
       ++i;
     if (i + 1 < n)
       {
