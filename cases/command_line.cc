@@ -57,8 +57,8 @@ namespace gradcontact::cases
          "run a scene once per value (same options as run; --shard i/N splits\n"
          "the values)",
          sweep},
-        {"figures", "<file.json|folder> [--reports DIR]",
-         "draw the chapter's figures (cases/figures) -> reports/figures/", figures},
+        {"figures", "<file.json|folder> [--reports DIR] [--no-cache]",
+         "draw the chapter's figures (cases/figures), check their FE points -> reports/figures/", figures},
         {"bench", "[--part analytic|fe|peer|all] [--quick] [--reports DIR] [--repeat N]\n"
                   "    [--fe-repeat N] [--references FILE] [--peer-scripts DIR]\n"
                   "    [--scene flat_punch,paraboloid,jkr_paraboloid,tangential_punch]",

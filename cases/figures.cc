@@ -11,10 +11,16 @@
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <functional>
+#include <iomanip>
 #include <iostream>
+#include <limits>
+#include <map>
+#include <sstream>
 #include <stdexcept>
 
 namespace gradcontact::cases
@@ -24,6 +30,19 @@ namespace gradcontact::cases
 
   namespace
   {
+    // The chapter's figures that show data (9.1-9.3, 9.6, 9.10, 9.13, 9.15, 9.20, 9.21, 9.26 and 9.30 are
+    // sketches of the contact geometry or of the MDR model): the index names those not drawn yet.
+    const std::vector<std::string> chapter_data_figures = {
+      "9.4",  "9.5",  "9.7",  "9.8",  "9.9",  "9.11", "9.12", "9.14", "9.16", "9.17", "9.18", "9.19", "9.22",
+      "9.23", "9.24", "9.25", "9.27", "9.28", "9.29", "9.31", "9.32", "9.33", "9.34", "9.35", "9.36"};
+
+    // A title longer than this does not fit above a 1000 px wide plot in gnuplot's default font: it would be
+    // cut off, so it is refused (the caption belongs in "caption").
+    constexpr std::size_t max_title_characters = 95;
+
+    // Bisection steps that solve x(t) = x_point between two drawn samples: 2^-60 of the sample spacing.
+    constexpr int abscissa_bisection_steps = 60;
+
     // key may name a nested entry, e.g. "geometry.n"
     double request_value(json request, const std::string &key, const double t, const bool insert)
     {
@@ -47,13 +66,368 @@ namespace gradcontact::cases
       if (!spec.contains("request"))
         throw std::invalid_argument("figure: a coordinate needs \"sweep\": true or a \"request\"");
       double value = request_value(spec["request"], key, t, true) * scale;
+      // "minus": a request at fixed parameters subtracted before the division (e.g. the shift of 9.74)
+      if (spec.contains("minus"))
+        value -= request_value(spec["minus"], key, t, false) * scale;
       if (spec.contains("divide_by"))
         value /= request_value(spec["divide_by"], key, t, false);
       return value;
     }
 
-    void draw(const fs::path &file, const fs::path &reports)
+    /// An analytic curve as drawn: its spec, and the parameter t of every drawn sample.
+    struct AnalyticCurve
     {
+      const json *spec = nullptr;
+      std::string key;
+      std::vector<double> t, x, y;
+      double y_scale = 0; ///< max |y| over the drawn samples: the scale of a point's error
+      double x_at(const double s) const { return coordinate(spec->at("x"), key, s); }
+      double y_at(const double s) const { return coordinate(spec->at("y"), key, s); }
+    };
+
+    /// One checked point of a figure: the point, its closed-form reference at the same abscissa, the error.
+    struct CheckedPoint
+    {
+      std::string series, reference_curve, note;
+      double x = 0, y = 0, reference = std::numeric_limits<double>::quiet_NaN();
+      double error = std::numeric_limits<double>::infinity(), tolerance = 0;
+      bool pass = false;
+    };
+
+    // The closed form's value at abscissa x on `curve`: every pair of drawn samples that brackets x is
+    // refined by bisection of x(t) - x; the root whose y is closest to y_point is returned (several brackets
+    // exist where x(t) is not monotone, e.g. the depth of an adhesive contact). Returns false when no pair
+    // brackets x (x outside the drawn range). A point at the end of a curve that ends at a turning load (the
+    // loop of 9.84 at F_x = +-F_A) carries the FE error in its abscissa too: within `slack` of an end of the
+    // drawn curve the end itself is the reference.
+    bool reference_at(const AnalyticCurve &curve, const double x, const double y_point, const double slack,
+                      double &y_ref)
+    {
+      bool found = false;
+      double best = std::numeric_limits<double>::infinity();
+      for (std::size_t i = 0; i + 1 < curve.x.size(); ++i)
+        {
+          const double x0 = curve.x[i] - x, x1 = curve.x[i + 1] - x;
+          if (x0 * x1 > 0)
+            continue;
+          double ta = curve.t[i], tb = curve.t[i + 1], fa = x0;
+          double t = x0 == 0 ? ta : x1 == 0 ? tb : 0.5 * (ta + tb);
+          if (x0 != 0 && x1 != 0)
+            for (int k = 0; k < abscissa_bisection_steps; ++k)
+              {
+                t = 0.5 * (ta + tb);
+                const double ft = curve.x_at(t) - x;
+                if ((ft < 0) == (fa < 0))
+                  ta = t, fa = ft;
+                else
+                  tb = t;
+              }
+          double y = std::numeric_limits<double>::quiet_NaN();
+          try
+            {
+              y = curve.y_at(t);
+            }
+          catch (const std::exception &)
+            {
+              continue; // the root sits on the edge of the formula's domain; another bracket may serve
+            }
+          if (std::isfinite(y) && std::abs(y - y_point) < best)
+            {
+              best = std::abs(y - y_point);
+              y_ref = y;
+              found = true;
+            }
+        }
+      if (!found)
+        for (const std::size_t e : {std::size_t(0), curve.x.size() - 1})
+          if (std::abs(curve.x[e] - x) <= slack && std::abs(curve.y[e] - y_point) < best)
+            {
+              best = std::abs(curve.y[e] - y_point);
+              y_ref = curve.y[e];
+              found = true;
+            }
+      return found;
+    }
+
+    /// Checks every point of `points` against the analytic curves named in `check`.
+    std::vector<CheckedPoint> check_points(const Series &points, const json &check,
+                                           const std::map<std::string, AnalyticCurve> &curves, const std::string &figure)
+    {
+      const std::string where = "figures: " + figure + ": point set '" + points.title + "'";
+      if (!check.contains("curves") || !check.at("curves").is_array() || check.at("curves").empty())
+        throw std::invalid_argument(where + ": \"check\" needs \"curves\", a non-empty list of analytic curve titles");
+      if (!check.contains("tolerance") || !check.at("tolerance").is_number())
+        throw std::invalid_argument(where + ": \"check\" needs a numeric \"tolerance\"");
+      const double tolerance = check.at("tolerance");
+      if (!(tolerance > 0 && tolerance < 1))
+        throw std::invalid_argument(where + ": check tolerance = " + format(tolerance) +
+                                    " is outside the valid range (0, 1) (an error relative to the curve's largest |y|)");
+      std::vector<const AnalyticCurve *> references;
+      for (const json &title : check.at("curves"))
+        {
+          const auto c = curves.find(title.get<std::string>());
+          if (c == curves.end())
+            throw std::invalid_argument(where + ": check curve '" + title.get<std::string>() +
+                                        "' is not an analytic curve of this figure");
+          references.push_back(&c->second);
+        }
+      std::vector<CheckedPoint> out;
+      for (std::size_t i = 0; i < points.x.size(); ++i)
+        {
+          CheckedPoint p;
+          p.series = points.title;
+          p.x = points.x[i];
+          p.y = points.y[i];
+          p.tolerance = tolerance;
+          double best = std::numeric_limits<double>::infinity();
+          for (const AnalyticCurve *c : references)
+            {
+              double y_ref = 0;
+              const auto [x_min, x_max] = std::minmax_element(c->x.begin(), c->x.end());
+              if (!reference_at(*c, p.x, p.y, tolerance * (*x_max - *x_min), y_ref))
+                continue;
+              const double error = std::abs(p.y - y_ref) / std::max(c->y_scale, 1e-300);
+              if (error < best)
+                {
+                  best = error;
+                  p.reference = y_ref;
+                  p.error = error;
+                  p.reference_curve = c->spec->value("title", "");
+                }
+            }
+          if (!std::isfinite(p.y))
+            p.note = "the point is not a finite number";
+          else if (p.reference_curve.empty())
+            p.note = "abscissa " + format(p.x) + " outside the drawn range of the reference curve(s)";
+          p.pass = p.note.empty() && p.error <= tolerance;
+          if (p.note.empty() && !p.pass)
+            p.note = "error above tolerance";
+          out.push_back(p);
+        }
+      return out;
+    }
+
+    std::vector<Override> overrides_of(const json &fe, const std::vector<std::string> &extra = {})
+    {
+      std::vector<Override> overrides;
+      for (const json &o : fe.value("set", json::array()))
+        overrides.push_back(parse_override(o.get<std::string>()));
+      for (const std::string &o : extra)
+        overrides.push_back(parse_override(o));
+      return overrides;
+    }
+
+    /// FE point sets cached by the scene's resolved parameters and the point set's request.
+    class PointCache
+    {
+    public:
+      PointCache(fs::path folder, const bool enabled) : folder_(std::move(folder)), enabled_(enabled) {}
+
+      /// The cached points of `key`, else compute() stored under it. The key also names this program's build
+      /// (its size and modification time): a rebuilt FE model recomputes its points.
+      Series get(const std::string &request_key, const std::function<Series()> &compute)
+      {
+        const std::string key = build_id() + "\n" + request_key;
+        const fs::path file = folder_ / (hex(std::hash<std::string>{}(key)) + ".json");
+        if (enabled_ && fs::exists(file))
+          {
+            try
+              {
+                std::ifstream in(file);
+                const json j = json::parse(in);
+                if (j.at("key") == key) // the full key is stored: a hash collision recomputes
+                  {
+                    ++hits;
+                    return {j.at("title"), j.at("x").get<std::vector<double>>(), j.at("y").get<std::vector<double>>(), true};
+                  }
+              }
+            catch (const json::exception &)
+              {
+                // an unreadable cache entry is recomputed and replaced
+              }
+          }
+        Series s = compute();
+        ++misses;
+        fs::create_directories(folder_);
+        const fs::path tmp = temporary_sibling(file);
+        {
+          std::ofstream out(tmp);
+          out << std::setprecision(17) << json{{"key", key}, {"title", s.title}, {"x", s.x}, {"y", s.y}}.dump();
+        }
+        fs::rename(tmp, file);
+        return s;
+      }
+      int hits = 0, misses = 0;
+
+    private:
+      static std::string build_id()
+      {
+        std::error_code ec;
+        const fs::path exe = fs::read_symlink("/proc/self/exe", ec);
+        if (ec)
+          return "unknown build";
+        const auto size = fs::file_size(exe, ec);
+        const auto time = fs::last_write_time(exe, ec).time_since_epoch().count();
+        return exe.string() + " " + std::to_string(size) + " " + std::to_string(time);
+      }
+      static std::string hex(const std::size_t h)
+      {
+        std::ostringstream s;
+        s << std::hex << std::setw(16) << std::setfill('0') << h;
+        return s.str();
+      }
+      fs::path folder_;
+      bool enabled_;
+    };
+
+    /// The FE point set of curve `c` (kinds "fe", "fe_adhesion", "fe_tangential"), through the cache.
+    Series fe_points(const json &c, PointCache &cache)
+    {
+      const std::string title = c.value("title", "FE");
+      if (c.contains("fe"))
+        {
+          // FE points from a .prm scene (with overrides), normalised by the scene's closed form.
+          const json &fe = c.at("fe");
+          const Scene scene = read_scene(fe.at("scene").get<std::string>(), overrides_of(fe));
+          json request = fe;
+          request.erase("scene");
+          request.erase("set");
+          return cache.get("fe\n" + request.dump() + "\n" + scene.resolved, [&] {
+            const FeProfile p = fe_profile(scene, fe.at("quantity"), fe.at("radii").get<std::vector<double>>(),
+                                           fe.at("normaliser"), fe.value("normaliser_r", 0.), fe.value("per_area", false));
+            return Series{title, p.x, p.y, true};
+          });
+        }
+      if (c.contains("fe_adhesion"))
+        {
+          // FE adhesive states (fem/adhesion.h) of a .prm scene at a = x a_c (a_c: the FE critical radius
+          // under the given control); each coordinate is "radius", "depth", "force" or "k", times "scale",
+          // divided by the value of the request "divide_by" when given.
+          const json &fe = c.at("fe_adhesion");
+          // "variants": one FE point set per list of extra overrides (e.g. one per k); otherwise one scene.
+          std::vector<std::vector<std::string>> variants = {{}};
+          if (fe.contains("variants"))
+            variants = fe.at("variants").get<std::vector<std::vector<std::string>>>();
+          Series points{title, {}, {}, true};
+          for (const std::vector<std::string> &variant : variants)
+            {
+              const Scene scene = read_scene(fe.at("scene").get<std::string>(), overrides_of(fe, variant));
+              json request = fe;
+              request.erase("scene");
+              request.erase("set");
+              request.erase("variants");
+              const Series s = cache.get("fe_adhesion\n" + request.dump() + "\n" + scene.resolved, [&] {
+                const FeAdhesiveCurve curve = fe_adhesive_curve(scene, fe.at("a_over_ac").get<std::vector<double>>(),
+                                                                fe.value("control", "force") == "force");
+                const auto axis = [&](const json &spec) {
+                  const std::string q = spec.at("quantity");
+                  if (q != "radius" && q != "depth" && q != "force" && q != "k")
+                    throw std::invalid_argument("figures: fe_adhesion quantity '" + q + "' is not radius, depth, force or k");
+                  double factor = spec.value("scale", 1.);
+                  if (spec.contains("divide_by"))
+                    factor /= batch::evaluate(batch::parse(spec.at("divide_by")));
+                  std::vector<double> out;
+                  for (std::size_t i = 0; i < curve.radius.size(); ++i)
+                    out.push_back(factor * (q == "radius" ? curve.radius[i]
+                                            : q == "depth" ? curve.depth[i]
+                                            : q == "force" ? curve.force[i]
+                                                           : scene.material.k));
+                  return out;
+                };
+                return Series{title, axis(fe.at("x")), axis(fe.at("y")), true};
+              });
+              points.x.insert(points.x.end(), s.x.begin(), s.x.end());
+              points.y.insert(points.y.end(), s.y.begin(), s.y.end());
+            }
+          return points;
+        }
+      // FE points of a tangential .prm scene (cases/fe_tangential.h): partial slip, (u0, F_x) at the stick
+      // radii of the F_x(u0) curve; oscillation, the hysteresis loop. Each coordinate is "displacement"
+      // or "force", times "scale", divided by the value of the request "divide_by" when given.
+      const json &fe = c.at("fe_tangential");
+      const Scene scene = read_scene(fe.at("scene").get<std::string>(), overrides_of(fe));
+      json request = fe;
+      request.erase("scene");
+      request.erase("set");
+      return cache.get("fe_tangential\n" + request.dump() + "\n" + scene.resolved, [&] {
+        const FeTangentialCurve curve = fe_tangential_curve(scene);
+        const auto axis = [&](const json &spec) {
+          const std::string q = spec.at("quantity");
+          if (q != "displacement" && q != "force")
+            throw std::invalid_argument("figures: fe_tangential quantity '" + q + "' is not displacement or force");
+          double factor = spec.value("scale", 1.);
+          if (spec.contains("divide_by"))
+            factor /= batch::evaluate(batch::parse(spec.at("divide_by")));
+          std::vector<double> out;
+          for (const double x : q == "displacement" ? curve.displacement : curve.force)
+            out.push_back(x * factor);
+          return out;
+        };
+        return Series{title, axis(fe.at("x")), axis(fe.at("y")), true};
+      });
+    }
+
+    /// What the index page says about one figure.
+    struct FigureSummary
+    {
+      std::string name, figure, caption;
+      std::size_t points = 0, failed = 0;
+      double worst = 0;
+      bool drawn = false;
+      double seconds = 0;
+    };
+
+    // Writes `text` to `target` through a temporary sibling.
+    void write_atomically(const fs::path &target, const std::string &text)
+    {
+      const fs::path tmp = temporary_sibling(target);
+      {
+        std::ofstream out(tmp);
+        out << text;
+        if (!out)
+          throw std::runtime_error("figures: cannot write " + tmp.string());
+      }
+      fs::rename(tmp, target);
+    }
+
+    std::string tables_csv(const std::vector<CheckedPoint> &points)
+    {
+      std::ostringstream csv;
+      csv << std::setprecision(12)
+          << "series,x,value,reference,reference_curve,error,tolerance,pass,note\n";
+      for (const CheckedPoint &p : points)
+        csv << csv_quote(p.series) << ',' << p.x << ',' << p.y << ',' << p.reference << ','
+            << csv_quote(p.reference_curve) << ',' << p.error << ',' << p.tolerance << ',' << (p.pass ? "true" : "false")
+            << ',' << csv_quote(p.note) << '\n';
+      return csv.str();
+    }
+
+    std::string tables_md(const std::string &title, const std::string &name, const std::vector<CheckedPoint> &points,
+                          const std::map<std::string, std::string> &why)
+    {
+      std::ostringstream md;
+      md << "# " << title << "\n\n![" << name << "](" << name << ".svg)\n\n";
+      if (points.empty())
+        {
+          md << "No checked points: the figure draws closed forms only.\n";
+          return md.str();
+        }
+      md << "Each point against the closed form at the same abscissa; error = |value - reference| / max |y| of the "
+            "reference curve as drawn.\n\n| series | x | value | reference | reference curve | error | tolerance | "
+            "pass | note |\n|---|---|---|---|---|---|---|---|---|\n";
+      for (const CheckedPoint &p : points)
+        md << "| " << p.series << " | " << format(p.x) << " | " << format(p.y) << " | " << format(p.reference) << " | "
+           << p.reference_curve << " | " << format(p.error) << " | " << format(p.tolerance) << " | "
+           << (p.pass ? "pass" : "**FAIL**") << " | " << p.note << " |\n";
+      md << "\nTolerances:\n\n";
+      for (const auto &[series, reason] : why)
+        md << "- " << series << ": " << reason << "\n";
+      return md.str();
+    }
+
+    FigureSummary draw(const fs::path &file, const fs::path &reports, PointCache &cache)
+    {
+      const auto start = std::chrono::steady_clock::now();
       std::ifstream in(file);
       if (!in)
         throw std::runtime_error("figures: cannot open " + file.string());
@@ -67,110 +441,44 @@ namespace gradcontact::cases
           throw std::invalid_argument("figures: " + file.string() + " is not valid JSON (" + e.what() + ")");
         }
       const std::string name = fig.value("name", file.stem().string());
+      const std::string title = fig.value("title", name);
+      if (title.size() > max_title_characters)
+        throw std::invalid_argument("figures: " + file.string() + ": title has " + std::to_string(title.size()) +
+                                    " characters; valid: at most " + std::to_string(max_title_characters) +
+                                    " (longer titles are cut off in the plot; put the rest in \"caption\")");
+      FigureSummary summary{name, fig.value("figure", ""), fig.value("caption", "")};
+
+      // Analytic curves first: the point sets are checked against them by title.
       std::vector<Series> series;
+      std::map<std::string, AnalyticCurve> analytic;
       std::size_t skipped = 0;
       for (const json &c : fig.at("curves"))
         {
-          if (c.contains("fe"))
-            {
-              // FE points from a .prm scene (with overrides), normalised by the scene's closed form.
-              const json &fe = c.at("fe");
-              std::vector<Override> overrides;
-              for (const json &o : fe.value("set", json::array()))
-                overrides.push_back(parse_override(o.get<std::string>()));
-              const fs::path scene_file = fs::path(fe.at("scene").get<std::string>());
-              const Scene scene = read_scene(scene_file.string(), overrides);
-              const FeProfile p = fe_profile(scene, fe.at("quantity"), fe.at("radii").get<std::vector<double>>(),
-                                             fe.at("normaliser"), fe.value("normaliser_r", 0.), fe.value("per_area", false));
-              series.push_back({c.value("title", "FE"), p.x, p.y, true});
-              continue;
-            }
-          if (c.contains("fe_adhesion"))
-            {
-              // FE adhesive states (fem/adhesion.h) of a .prm scene at a = x a_c (a_c: the FE critical radius
-              // under the given control); each coordinate is "radius", "depth" or "force", times "scale",
-              // divided by the value of the request "divide_by" when given.
-              const json &fe = c.at("fe_adhesion");
-              // "variants": one FE point per list of extra overrides (e.g. one per k); otherwise one scene.
-              std::vector<std::vector<std::string>> variants = {{}};
-              if (fe.contains("variants"))
-                variants = fe.at("variants").get<std::vector<std::vector<std::string>>>();
-              Series points{c.value("title", "FE"), {}, {}, true};
-              for (const std::vector<std::string> &variant : variants)
-                {
-                  std::vector<Override> overrides;
-                  for (const json &o : fe.value("set", json::array()))
-                    overrides.push_back(parse_override(o.get<std::string>()));
-                  for (const std::string &o : variant)
-                    overrides.push_back(parse_override(o));
-                  const Scene scene = read_scene(fe.at("scene").get<std::string>(), overrides);
-                  const FeAdhesiveCurve curve = fe_adhesive_curve(scene, fe.at("a_over_ac").get<std::vector<double>>(),
-                                                                  fe.value("control", "force") == "force");
-                  const auto axis = [&](const json &spec) {
-                    const std::string q = spec.at("quantity");
-                    if (q != "radius" && q != "depth" && q != "force" && q != "k")
-                      throw std::invalid_argument("figures: fe_adhesion quantity '" + q + "' is not radius, depth, force or k");
-                    double factor = spec.value("scale", 1.);
-                    if (spec.contains("divide_by"))
-                      factor /= batch::evaluate(batch::parse(spec.at("divide_by")));
-                    std::vector<double> out;
-                    for (std::size_t i = 0; i < curve.radius.size(); ++i)
-                      out.push_back(factor * (q == "radius" ? curve.radius[i]
-                                              : q == "depth" ? curve.depth[i]
-                                              : q == "force" ? curve.force[i]
-                                                             : scene.material.k));
-                    return out;
-                  };
-                  const std::vector<double> x = axis(fe.at("x")), y = axis(fe.at("y"));
-                  points.x.insert(points.x.end(), x.begin(), x.end());
-                  points.y.insert(points.y.end(), y.begin(), y.end());
-                }
-              series.push_back(points);
-              continue;
-            }
-          if (c.contains("fe_tangential"))
-            {
-              // FE points of a tangential .prm scene (cases/fe_tangential.h): partial slip, (u0, F_x) at the stick
-              // radii of the F_x(u0) curve; oscillation, the hysteresis loop. Each coordinate is "displacement"
-              // or "force", times "scale", divided by the value of the request "divide_by" when given.
-              const json &fe = c.at("fe_tangential");
-              std::vector<Override> overrides;
-              for (const json &o : fe.value("set", json::array()))
-                overrides.push_back(parse_override(o.get<std::string>()));
-              const Scene scene = read_scene(fe.at("scene").get<std::string>(), overrides);
-              const FeTangentialCurve curve = fe_tangential_curve(scene);
-              const auto axis = [&](const json &spec) {
-                const std::string q = spec.at("quantity");
-                if (q != "displacement" && q != "force")
-                  throw std::invalid_argument("figures: fe_tangential quantity '" + q + "' is not displacement or force");
-                double factor = spec.value("scale", 1.);
-                if (spec.contains("divide_by"))
-                  factor /= batch::evaluate(batch::parse(spec.at("divide_by")));
-                std::vector<double> out;
-                for (const double x : q == "displacement" ? curve.displacement : curve.force)
-                  out.push_back(x * factor);
-                return out;
-              };
-              series.push_back({c.value("title", "FE"), axis(fe.at("x")), axis(fe.at("y")), true});
-              continue;
-            }
+          if (!c.contains("sweep"))
+            continue;
           const json &sweep = c.at("sweep");
-          const std::string key = sweep.at("key");
+          AnalyticCurve curve;
+          curve.spec = &c;
+          curve.key = sweep.at("key");
           const double from = sweep.at("from"), to = sweep.at("to");
           const int points = sweep.value("points", 200);
+          if (points < 2)
+            throw std::invalid_argument("figures: " + file.string() + ": curve '" + c.value("title", "") +
+                                        "' sweep points = " + std::to_string(points) + "; valid: 2 or more");
           const bool log = sweep.value("log", false);
-          Series s{c.value("title", ""), {}, {}, c.value("points", false)};
           for (int i = 0; i < points; ++i)
             {
-              const double f = points > 1 ? static_cast<double>(i) / (points - 1) : 0.;
+              const double f = static_cast<double>(i) / (points - 1);
               const double t = log ? from * std::pow(to / from, f) : from + (to - from) * f;
               try
                 {
-                  const double x = coordinate(c.at("x"), key, t), y = coordinate(c.at("y"), key, t);
+                  const double x = curve.x_at(t), y = curve.y_at(t);
                   if (std::isfinite(x) && std::isfinite(y))
                     {
-                      s.x.push_back(x);
-                      s.y.push_back(y);
+                      curve.t.push_back(t);
+                      curve.x.push_back(x);
+                      curve.y.push_back(y);
+                      curve.y_scale = std::max(curve.y_scale, std::abs(y));
                     }
                 }
               catch (const std::exception &)
@@ -178,23 +486,130 @@ namespace gradcontact::cases
                   ++skipped; // outside the formula's domain (e.g. r = a for a flat punch): no point
                 }
             }
-          if (s.x.empty())
-            throw std::invalid_argument("figures: " + file.string() + ": curve '" + s.title + "' has no valid point");
-          series.push_back(s);
+          const std::string t = c.value("title", "");
+          if (curve.x.empty())
+            throw std::invalid_argument("figures: " + file.string() + ": curve '" + t + "' has no valid point");
+          if (analytic.count(t))
+            throw std::invalid_argument("figures: " + file.string() + ": two analytic curves are titled '" + t + "'");
+          series.push_back({t, curve.x, curve.y, c.value("points", false)});
+          analytic.emplace(t, std::move(curve));
         }
+
+      // Point sets (FE or tabulated), each checked against the closed form.
+      std::vector<CheckedPoint> checked;
+      std::map<std::string, std::string> why;
+      for (const json &c : fig.at("curves"))
+        {
+          if (c.contains("sweep"))
+            continue;
+          if (c.contains("prescribed"))
+            {
+              // A prescribed input drawn as a line (a load history): not a result, so nothing to check.
+              series.push_back({c.value("title", ""), c.at("prescribed").at("x").get<std::vector<double>>(),
+                                c.at("prescribed").at("y").get<std::vector<double>>(), false});
+              continue;
+            }
+          Series points;
+          if (c.contains("points"))
+            points = {c.value("title", "points"), c.at("points").at("x").get<std::vector<double>>(),
+                      c.at("points").at("y").get<std::vector<double>>(), true};
+          else if (c.contains("fe") || c.contains("fe_adhesion") || c.contains("fe_tangential"))
+            points = fe_points(c, cache);
+          else
+            throw std::invalid_argument("figures: " + file.string() + ": curve '" + c.value("title", "") +
+                                        "' has none of sweep, prescribed, points, fe, fe_adhesion, fe_tangential");
+          if (points.x.size() != points.y.size())
+            throw std::invalid_argument("figures: " + file.string() + ": point set '" + points.title + "' has " +
+                                        std::to_string(points.x.size()) + " abscissae and " +
+                                        std::to_string(points.y.size()) + " values");
+          // "scale_x", "scale_y", "offset_y": a constant change of normalisation applied to a point set after it
+          // is made (e.g. from the scene's own contact radius to the Hertzian one; y -> y scale_y + offset_y).
+          for (double &x : points.x)
+            x *= c.value("scale_x", 1.);
+          for (double &y : points.y)
+            y = y * c.value("scale_y", 1.) + c.value("offset_y", 0.);
+          if (!c.contains("check"))
+            throw std::invalid_argument("figures: " + file.string() + ": point set '" + points.title +
+                                        "' has no \"check\" (every point is compared with a closed form)");
+          const std::vector<CheckedPoint> rows = check_points(points, c.at("check"), analytic, file.string());
+          checked.insert(checked.end(), rows.begin(), rows.end());
+          why[points.title] = c.at("check").value("why", "(no reason given)");
+          series.push_back(points);
+        }
+
       const fs::path folder = reports / "figures";
       fs::create_directories(folder);
-      const bool ok = write_plot(folder, name, fig.value("title", name), fig.value("xlabel", "x"), fig.value("ylabel", "y"),
-                                 series, fig.value("logx", false), fig.value("logy", false));
+      // The plot files are made in a temporary folder and moved beside the tables when all are written.
+      const fs::path tmp = temporary_sibling(folder / name);
+      fs::remove_all(tmp);
+      fs::create_directories(tmp);
+      bool ok = false;
+      try
+        {
+          ok = write_plot(tmp, name, title, fig.value("xlabel", "x"), fig.value("ylabel", "y"), series,
+                          fig.value("logx", false), fig.value("logy", false));
+          write_atomically(tmp / (name + ".csv"), tables_csv(checked));
+          write_atomically(tmp / (name + ".md"), tables_md(title, name, checked, why));
+          for (const auto &e : fs::directory_iterator(tmp))
+            fs::rename(e.path(), folder / e.path().filename());
+          fs::remove_all(tmp);
+        }
+      catch (...)
+        {
+          fs::remove_all(tmp);
+          throw;
+        }
+
+      summary.drawn = ok;
+      summary.points = checked.size();
+      for (const CheckedPoint &p : checked)
+        {
+          summary.failed += !p.pass;
+          summary.worst = std::max(summary.worst, p.error);
+        }
+      summary.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
       std::cout << (ok ? "drew " : "wrote data and script (gnuplot failed) ") << (folder / (name + ".png")).string()
-                << " (" << series.size() << " curves" << (skipped ? ", " + std::to_string(skipped) + " points outside the domain" : "")
-                << ")\n";
+                << " (" << series.size() << " curves"
+                << (skipped ? ", " + std::to_string(skipped) + " points outside the domain" : "");
+      if (!checked.empty())
+        std::cout << ", " << checked.size() << " checked points, worst error " << format(summary.worst)
+                  << (summary.failed ? ", " + std::to_string(summary.failed) + " FAILED" : "");
+      std::cout << ", " << format(summary.seconds) << " s)\n";
+      for (const CheckedPoint &p : checked)
+        if (!p.pass)
+          std::cout << "  FAIL " << p.series << " at x = " << format(p.x) << ": " << p.note << " (value "
+                    << format(p.y) << ", reference " << format(p.reference) << ", error " << format(p.error)
+                    << ", tolerance " << format(p.tolerance) << ")\n";
+      return summary;
+    }
+
+    std::string index_md(const std::vector<FigureSummary> &figures)
+    {
+      std::ostringstream md;
+      md << "# The chapter's figures\n\nEach figure draws the closed forms of the chapter; its FE (or tabulated) "
+            "points are each compared with the closed form at the same abscissa (error relative to the curve's "
+            "largest |y|), in the table linked beside it.\n\n| figure | plot | caption | checked points | worst "
+            "error | failed | table |\n|---|---|---|---|---|---|---|\n";
+      for (const FigureSummary &f : figures)
+        md << "| " << (f.figure.empty() ? "-" : f.figure) << " | [" << f.name << "](" << f.name << ".svg) | "
+           << f.caption << " | " << f.points << " | " << (f.points ? format(f.worst) : "-") << " | " << f.failed
+           << " | [" << f.name << ".md](" << f.name << ".md) |\n";
+      std::vector<std::string> missing;
+      for (const std::string &n : chapter_data_figures)
+        if (std::none_of(figures.begin(), figures.end(), [&](const FigureSummary &f) { return f.figure == n; }))
+          missing.push_back(n);
+      md << "\nChapter figures with data not drawn yet: ";
+      for (std::size_t i = 0; i < missing.size(); ++i)
+        md << (i ? ", " : "") << missing[i];
+      md << (missing.empty() ? "none.\n" : ".\n");
+      return md.str();
     }
   } // namespace
 
   int figures(const std::vector<std::string> &args)
   {
     fs::path reports = "reports";
+    bool use_cache = true;
     std::vector<fs::path> files;
     for (std::size_t i = 0; i < args.size(); ++i)
       {
@@ -204,6 +619,8 @@ namespace gradcontact::cases
               throw std::invalid_argument("figures: --reports needs a folder");
             reports = args[++i];
           }
+        else if (args[i] == "--no-cache")
+          use_cache = false;
         else if (fs::is_directory(args[i]))
           {
             for (const auto &e : fs::directory_iterator(args[i]))
@@ -218,8 +635,17 @@ namespace gradcontact::cases
     if (files.empty())
       throw std::invalid_argument("figures: name a figure file (.json) or a folder of them");
     std::sort(files.begin(), files.end());
+    PointCache cache(reports / "figures" / "cache", use_cache);
+    std::vector<FigureSummary> drawn;
     for (const fs::path &f : files)
-      draw(f, reports);
-    return 0;
+      drawn.push_back(draw(f, reports, cache));
+    write_atomically(reports / "figures" / "index.md", index_md(drawn));
+    std::size_t failed = 0;
+    for (const FigureSummary &f : drawn)
+      failed += f.failed;
+    std::cout << "figures: " << (reports / "figures" / "index.md").string() << " (" << drawn.size() << " figures, FE "
+              << "point sets " << cache.hits << " cached, " << cache.misses << " computed"
+              << (failed ? ", " + std::to_string(failed) + " points FAILED)" : ", all points pass)") << "\n";
+    return failed ? 1 : 0;
   }
 } // namespace gradcontact::cases

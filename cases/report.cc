@@ -220,14 +220,16 @@ namespace gradcontact::cases
     gp << "# gnuplot script: `gnuplot " << stem << ".gp` in this folder remakes " << stem << ".png and " << stem
        << ".svg\n"
        << "set title \"" << title << "\" noenhanced\nset xlabel \"" << xlabel << "\" noenhanced\nset ylabel \"" << ylabel
-       << "\" noenhanced\nset grid\nset key top right\n"
+       << "\" noenhanced\nset grid\n"
+       // the legend outside the plot area, right of it: it cannot cover data
+       << "set key outside right top vertical Left reverse\n"
        << (logx ? "set logscale x\n" : "") << (logy ? "set logscale y\nset format y \"%.0e\"\n" : "");
     std::string plot = "plot ";
     for (std::size_t i = 0; i < series.size(); ++i)
       plot += std::string(i ? ", " : "") + "'" + stem + ".dat' index " + std::to_string(i) + " with " +
               (series[i].linespoints ? "linespoints lw 2 pt 7 ps 1" : series[i].points ? "points pt 7 ps 1.2" : "lines lw 2") + " title \"" + series[i].title + "\" noenhanced";
-    gp << "set terminal pngcairo size 900,600\nset output '" << stem << ".png'\n" << plot << "\n"
-       << "set terminal svg size 900,600\nset output '" << stem << ".svg'\n" << plot << "\n";
+    gp << "set terminal pngcairo size 1100,600\nset output '" << stem << ".png'\n" << plot << "\n"
+       << "set terminal svg size 1100,600\nset output '" << stem << ".svg'\n" << plot << "\n";
     gp.close();
     const std::string command = "cd '" + folder.string() + "' && gnuplot '" + stem + ".gp' > /dev/null 2>&1";
     return std::system(command.c_str()) == 0;

@@ -11,6 +11,9 @@
 #include <cmath>
 #include <fstream>
 #include <sstream>
+#include <stdexcept>
+#include <utility>
+#include <vector>
 
 using namespace gradcontact::cases;
 namespace fs = std::filesystem;
@@ -55,4 +58,191 @@ TEST_CASE("gradcontact figures shall draw Fig. 9.14 and its k = 0 curve shall be
   CHECK(checked == 120);
   CAPTURE(worst);
   CHECK(worst < 1e-10); // the data keep 12 significant digits
+}
+
+// The check of a figure's points, on a figure small enough to run in a test: the Boussinesq flat punch (k = 0
+// of 9.14), p / p_mean = 1 / (2 sqrt(1 - r^2/a^2)), drawn by the closed form, and points tabulated here from
+// that formula written out (independent of the code under test). Three cases: exact points pass; one wrong
+// point fails; a curve drawn over a shorter range than the points fails the points it no longer covers.
+namespace
+{
+  double boussinesq_over_mean(const double r) { return 0.5 / std::sqrt(1 - r * r); }
+
+  // A figure with the k = 0 flat-punch pressure swept over [0, r_max] and the points (r, y) checked against it.
+  std::string punch_figure(const double r_max, const std::vector<double> &r, const std::vector<double> &y,
+                           const double tolerance = 1e-6)
+  {
+    std::ostringstream s;
+    s.precision(17);
+    const std::string material = R"({"E0": 1, "c0": 1, "k": 0, "nu": 0.3})";
+    s << R"({"name": "punch", "figure": "test", "title": "punch", "curves": [)"
+      << R"({"title": "k = 0", "sweep": {"key": "r", "from": 0, "to": )" << r_max << R"(, "points": 50},)"
+      << R"("x": {"sweep": true}, "y": {"request": {"case": "flat_punch", "quantity": "pressure", "material": )"
+      << material << R"(, "a": 1, "d": 1}, "scale": 3.141592653589793, "divide_by": {"case": "flat_punch", )"
+      << R"("quantity": "force", "material": )" << material << R"(, "a": 1, "d": 1}}},)"
+      << R"({"title": "points", "points": {"x": [)";
+    for (std::size_t i = 0; i < r.size(); ++i)
+      s << (i ? ", " : "") << r[i];
+    s << R"(], "y": [)";
+    for (std::size_t i = 0; i < y.size(); ++i)
+      s << (i ? ", " : "") << y[i];
+    s << R"(]}, "check": {"curves": ["k = 0"], "tolerance": )" << tolerance << R"(, "why": "test"}}]})";
+    return s.str();
+  }
+
+  struct Checked
+  {
+    int exit_code = -1;
+    std::vector<std::vector<std::string>> rows; // punch.csv without its header
+  };
+
+  Checked draw_punch(const TemporaryFolder &folder, const std::string &figure)
+  {
+    const fs::path file = folder.path() / "punch.json";
+    std::ofstream(file) << figure;
+    Checked c;
+    c.exit_code = figures({file.string(), "--reports", folder.path().string()});
+    c.rows = testing::read_csv(folder.path() / "figures" / "punch.csv");
+    c.rows.erase(c.rows.begin());
+    return c;
+  }
+
+  const std::vector<double> radii = {0.1, 0.5, 0.8};
+  std::vector<double> exact_values()
+  {
+    std::vector<double> y;
+    for (const double r : radii)
+      y.push_back(boussinesq_over_mean(r));
+    return y;
+  }
+} // namespace
+
+TEST_CASE("gradcontact figures shall pass points that lie on their closed form and tabulate each one", "[cases]")
+{
+  const TemporaryFolder folder("gradcontact-figure-check");
+  const Checked c = draw_punch(folder, punch_figure(0.9, radii, exact_values()));
+  CHECK(c.exit_code == 0);
+  REQUIRE(c.rows.size() == radii.size());
+  for (const auto &row : c.rows)
+    {
+      CAPTURE(row);
+      CHECK(row[7] == "true");
+      CHECK(std::stod(row[5]) < 1e-9); // the closed form at the same abscissa, not an interpolation
+    }
+  const std::string md = testing::read_text(folder.path() / "figures" / "punch.md");
+  CHECK(md.find("| points | 0.5 |") != std::string::npos);
+  const std::string index = testing::read_text(folder.path() / "figures" / "index.md");
+  CHECK(index.find("[punch.md](punch.md)") != std::string::npos);
+}
+
+TEST_CASE("gradcontact figures shall fail on a point beyond its tolerance", "[cases]")
+{
+  const TemporaryFolder folder("gradcontact-figure-wrong");
+  std::vector<double> y = exact_values();
+  y[1] *= 1.01; // 1 % off at r = a/2: above the 1e-6 tolerance
+  const Checked c = draw_punch(folder, punch_figure(0.9, radii, y));
+  CHECK(c.exit_code != 0);
+  REQUIRE(c.rows.size() == radii.size());
+  CHECK(c.rows[0][7] == "true");
+  CHECK(c.rows[1][7] == "false");
+  CHECK(c.rows[1][8] == "error above tolerance");
+  CHECK(c.rows[2][7] == "true");
+}
+
+TEST_CASE("gradcontact figures shall fail on a point outside the drawn range of its curve", "[cases]")
+{
+  const TemporaryFolder folder("gradcontact-figure-truncated");
+  // the curve drawn to r = 0.6 a only: the exact point at r = 0.8 a has no curve under it
+  const Checked c = draw_punch(folder, punch_figure(0.6, radii, exact_values()));
+  CHECK(c.exit_code != 0);
+  REQUIRE(c.rows.size() == radii.size());
+  CHECK(c.rows[0][7] == "true");
+  CHECK(c.rows[1][7] == "true");
+  CHECK(c.rows[2][7] == "false");
+  CHECK(c.rows[2][8].find("outside the drawn range") != std::string::npos);
+}
+
+TEST_CASE("gradcontact figures shall refuse a check tolerance outside (0, 1), naming it", "[cases]")
+{
+  const TemporaryFolder folder("gradcontact-figure-tolerance");
+  const fs::path file = folder.path() / "punch.json";
+  std::ofstream(file) << punch_figure(0.9, radii, exact_values(), 2.);
+  try
+    {
+      figures({file.string(), "--reports", folder.path().string()});
+      FAIL("no error");
+    }
+  catch (const std::invalid_argument &e)
+    {
+      const std::string what = e.what();
+      CAPTURE(what);
+      CHECK(what.find("tolerance = 2") != std::string::npos);
+      CHECK(what.find("(0, 1)") != std::string::npos);
+    }
+  CHECK_FALSE(fs::exists(folder.path() / "figures" / "punch.csv")); // no half-written table
+}
+
+// The same checks on real FE points: the flat punch of cases/default/fe_flat_punch.prm at k = 0.5 (one FE
+// solve; the second figure takes its points from the cache of the first, keyed by the scene's resolved
+// parameters). Made wrong by 1 % (scale_y), or drawn against a curve cut at r = 0.5 a, the figure shall fail.
+namespace
+{
+  std::string fe_punch_figure(const double r_max, const double scale_y)
+  {
+    std::ostringstream s;
+    s.precision(17);
+    const std::string material = R"({"E0": 1, "c0": 1, "k": 0.5, "nu": 0.3})";
+    s << R"({"name": "fe_punch", "title": "fe punch", "curves": [)"
+      << R"({"title": "k = 0.5", "sweep": {"key": "r", "from": 0, "to": )" << r_max << R"(, "points": 60},)"
+      << R"("x": {"sweep": true}, "y": {"request": {"case": "flat_punch", "quantity": "pressure", "material": )"
+      << material << R"(, "a": 1, "d": 1}, "scale": 3.141592653589793, "divide_by": {"case": "flat_punch", )"
+      << R"("quantity": "force", "material": )" << material << R"(, "a": 1, "d": 1}}},)"
+      << R"({"title": "FE", "fe": {"scene": "cases/default/fe_flat_punch.prm", "set": ["Material/k=0.5"], )"
+      << R"("quantity": "pressure", "radii": [0, 0.4, 0.8], "normaliser": "force", "per_area": true}, )"
+      << R"("scale_y": )" << scale_y << R"(, "check": {"curves": ["k = 0.5"], "tolerance": 1e-4, "why": "test"}}]})";
+    return s.str();
+  }
+} // namespace
+
+TEST_CASE("gradcontact figures shall fail on a wrong FE point and on an FE point beyond a truncated curve",
+          "[cases]")
+{
+  const TemporaryFolder folder("gradcontact-figure-fe");
+  const fs::path file = folder.path() / "fe_punch.json";
+  const auto run = [&](const double r_max, const double scale_y) {
+    std::ofstream(file) << fe_punch_figure(r_max, scale_y);
+    const int code = figures({file.string(), "--reports", folder.path().string()});
+    auto rows = testing::read_csv(folder.path() / "figures" / "fe_punch.csv");
+    rows.erase(rows.begin());
+    return std::make_pair(code, rows);
+  };
+  {
+    const auto [code, rows] = run(0.9, 1.0); // the FE as it is: within 1e-4 of 9.14
+    CHECK(code == 0);
+    REQUIRE(rows.size() == 3);
+    for (const auto &row : rows)
+      {
+        CAPTURE(row);
+        CHECK(row[7] == "true");
+      }
+  }
+  {
+    const auto [code, rows] = run(0.9, 1.01); // every FE point 1 % high
+    CHECK(code != 0);
+    REQUIRE(rows.size() == 3);
+    for (const auto &row : rows)
+      {
+        CAPTURE(row);
+        CHECK(row[7] == "false");
+      }
+  }
+  {
+    const auto [code, rows] = run(0.5, 1.0); // the curve stops before the FE point at r = 0.8 a
+    CHECK(code != 0);
+    REQUIRE(rows.size() == 3);
+    CHECK(rows[0][7] == "true");
+    CHECK(rows[1][7] == "true");
+    CHECK(rows[2][7] == "false");
+    CHECK(rows[2][8].find("outside the drawn range") != std::string::npos);
+  }
 }
