@@ -56,17 +56,37 @@ namespace gradcontact::cases
     /// Load/contact = unilateral: the contact set found on meshes graded toward the edge found (from Load/a),
     /// as an fem::Result (the contact radius is the outer edge; r/a of p(r) beyond the contact are left out
     /// and said in the message).
-    fem::Result run_unilateral(const Scene &s, const FeModel &model, const fem::OutputRequest &out)
+    /// Outputs/pressure radii and displacement radii (in units of Load/a) as FE sample radii.
+    fem::OutputRequest output_request(const Scene &s)
+    {
+      fem::OutputRequest out;
+      for (const double x : s.outputs.pressure_radii)
+        out.pressure_radii.push_back(x * s.load.a);
+      for (const double x : s.outputs.displacement_radii)
+        out.displacement_radii.push_back(x * s.load.a);
+      return out;
+    }
+
+    /// The unilateral solve of a scene with `indenter`: Load/control force or depth (Load/force, Load/depth), the
+    /// scene's elastic indenter, meshes graded from Load/a toward the edge found.
+    fem::UnilateralResult solve_unilateral(const Scene &s, const FeModel &model, fem::Indenter indenter,
+                                           const bool by_force, const fem::OutputRequest &out)
     {
       fem::UnilateralLoad load;
-      load.indenter = fem::Indenter::of(model.load.profile, s.load.a);
-      const bool by_force = s.load.type != Type::concave_punch && s.load.control == Control::force;
-      load.control        = by_force ? fem::ContactControl::force : fem::ContactControl::depth;
-      load.depth          = s.load.depth;
-      load.force          = s.load.force;
+      load.indenter = std::move(indenter);
+      load.control  = by_force ? fem::ContactControl::force : fem::ContactControl::depth;
+      load.depth    = s.load.depth;
+      load.force    = s.load.force;
       fem::Remeshing remeshing;
-      remeshing.indenter_body       = model.indenter_body;
-      const fem::UnilateralResult u = fem::solve_remeshed(model.material, model.settings, load, s.load.a, out, remeshing);
+      remeshing.indenter_body = model.indenter_body;
+      return fem::solve_remeshed(model.material, model.settings, load, s.load.a, out, remeshing);
+    }
+
+    fem::Result run_unilateral(const Scene &s, const FeModel &model, const fem::OutputRequest &out)
+    {
+      const bool by_force = s.load.type != Type::concave_punch && s.load.control == Control::force;
+      const fem::UnilateralResult u =
+        solve_unilateral(s, model, fem::Indenter::of(model.load.profile, s.load.a), by_force, out);
       fem::Result r;
       static_cast<fem::RunReport &>(r) = u;
       r.force          = u.force;
@@ -105,11 +125,7 @@ namespace gradcontact::cases
       // toward (0, 0) (fem/README.md, "Accuracy and cost", cone axis: p L2 2.8e-4 -> 5.4e-6 at k = 0).
       if (s.load.type == Type::cone || (s.load.type == Type::power_law && s.load.n < 2))
         model.settings.mesh.axis_refinements = 12;
-      fem::OutputRequest out;
-      for (const double x : s.outputs.pressure_radii)
-        out.pressure_radii.push_back(x * s.load.a);
-      for (const double x : s.outputs.displacement_radii)
-        out.displacement_radii.push_back(x * s.load.a);
+      fem::OutputRequest out = output_request(s);
       if (s.outputs.vtu)
         out.vtu_file = (folder / ("fields-" + std::to_string(refinement) + ".vtu")).string();
       const fem::Result r = s.load.contact == LoadParameters::Contact::unilateral ? run_unilateral(s, model, out) :
@@ -193,37 +209,29 @@ namespace gradcontact::cases
       const CandidateParameters &c = s.candidate;
       const auto t0 = std::chrono::steady_clock::now();
       const FeModel model = fe_model(s, finest_refinement(s));
-      fem::UnilateralLoad load;
+      fem::Indenter indenter;
       if (!c.profile_table.empty())
         {
           // A relative path is taken from the scene's folder.
           fs::path table(c.profile_table);
           if (table.is_relative() && !s.file.empty())
             table = fs::path(s.file).parent_path() / table;
-          load.indenter = fem::Indenter::from_csv(table.string());
+          indenter = fem::Indenter::from_csv(table.string());
         }
       else
         {
           const auto f = parse_expression<1>("profile", "r", c.profile, constants);
-          load.indenter = fem::Indenter{[f](const double r) { return f->value(dealii::Point<1>(r)); },
-                                        std::numeric_limits<double>::infinity(), "candidate profile"};
+          indenter = fem::Indenter{[f](const double r) { return f->value(dealii::Point<1>(r)); },
+                                   std::numeric_limits<double>::infinity(), "candidate profile"};
         }
       if (c.indenter_radius > 0.)
-        load.indenter.extent = std::min(load.indenter.extent, c.indenter_radius);
-      load.control = s.load.control == Control::force ? fem::ContactControl::force : fem::ContactControl::depth;
-      load.depth = s.load.depth;
-      load.force = s.load.force;
-      fem::OutputRequest out;
-      for (const double x : s.outputs.pressure_radii)
-        out.pressure_radii.push_back(x * s.load.a);
-      for (const double x : s.outputs.displacement_radii)
-        out.displacement_radii.push_back(x * s.load.a);
-      fem::Remeshing remeshing;
-      remeshing.indenter_body = model.indenter_body;
+        indenter.extent = std::min(indenter.extent, c.indenter_radius);
+      const bool by_force = s.load.control == Control::force;
+      const fem::OutputRequest out = output_request(s);
       fem::UnilateralResult fe;
       try
         {
-          fe = fem::solve_remeshed(model.material, model.settings, load, s.load.a, out, remeshing);
+          fe = solve_unilateral(s, model, std::move(indenter), by_force, out);
         }
       catch (const std::exception &e)
         {
@@ -254,7 +262,7 @@ namespace gradcontact::cases
           }
       };
       const double a = s.load.a;
-      if (load.control == fem::ContactControl::force)
+      if (by_force)
         row("depth", "relative", c.depth, fe.depth, s.tolerances.depth, std::nullopt, fe.depth);
       else
         row("force", "relative", c.force, fe.force, s.tolerances.force, std::nullopt, fe.force);
@@ -356,12 +364,7 @@ namespace gradcontact::cases
           const auto t0 = std::chrono::steady_clock::now();
           const FeModel model = candidate_fe_model(s, fem::Profile::custom(profile.f, 2.));
           fem::AxisymmetricSolver solver(model.material, model.settings.mesh, model.settings.discretization);
-          fem::OutputRequest out;
-          for (const double x : s.outputs.pressure_radii)
-            out.pressure_radii.push_back(x * a);
-          for (const double x : s.outputs.displacement_radii)
-            out.displacement_radii.push_back(x * a);
-          const fem::Result fe = solver.run(model.load, out);
+          const fem::Result fe = solver.run(model.load, output_request(s));
           const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
           const auto fe_row = [&](const std::string &quantity, const std::string &metric, const std::string &expression,
                                   const double fe_value, const double tolerance, const std::optional<double> r) {

@@ -256,30 +256,17 @@ namespace gradcontact::fem
 
   UnilateralContactSolver::UnilateralContactSolver(const Material &material, const MeshParameters &mesh,
                                                    const DiscretizationParameters &discretization_,
-                                                   const double candidate_radius, const SurfaceRefinement &refinement,
+                                                   const double candidate_radius_, const SurfaceRefinement &refinement_,
                                                    const std::optional<Material> &indenter_body)
     : discretization(discretization_)
+    , mesh_parameters(mesh)
+    , candidate_radius(candidate_radius_)
+    , refinement(refinement_)
   {
     mesh.validate();
     if (!(candidate_radius > 0) || !std::isfinite(candidate_radius))
       fail("UnilateralContactSolver", "candidate_radius", candidate_radius, "(0, inf)");
     half_space = std::make_unique<Body>(material, mesh, discretization, candidate_radius, refinement, "half-space");
-    if (indenter_body)
-      {
-        // The indenter's own surface layer (a homogeneous body needs no z-halvings; 1e-10 a thin cells make
-        // its solve garbage) and far field (the same truncation error (a/L)^{1+s}, s its deep exponent); the
-        // surface vertices stay the half-space's.
-        if (!indenter_body->modulus)
-          throw std::invalid_argument("UnilateralContactSolver: the elastic indenter's modulus field is empty");
-        MeshParameters own = mesh;
-        const double   s1 = material.modulus->deep_exponent(), s2 = indenter_body->modulus->deep_exponent();
-        own.far_field_size = std::clamp(std::pow(mesh.far_field_size, (1 + s1) / (1 + s2)), 1e4, 1e16);
-        own.surface_layer_thickness = std::max(
-          mesh.surface_layer_thickness,
-          recommended_mesh_parameters(mesh.contact_radius, indenter_body->modulus->surface_exponent(), 1e-8)
-            .surface_layer_thickness);
-        indenter = std::make_unique<Body>(*indenter_body, own, discretization, candidate_radius, refinement, "indenter");
-      }
     candidate_limit = std::min(candidate_radius, half_space->surface_faces.back().r1);
 
     // (C D)_ik = u_i of the nodal forces of the pressure psi_k: one back-substitution per vertex and body.
@@ -290,16 +277,42 @@ namespace gradcontact::fem
     all.M            = half_space->coupling.vertex_mass;
     all.CD           = half_space->compliance(all.D, setup_time.factorize);
     all.K_half_space = contact_matrix(all.D, all.CD);
-    if (indenter)
+    setup_time.setup += seconds_since(start) - setup_time.factorize;
+    set_indenter_body(indenter_body);
+  }
+
+  void UnilateralContactSolver::set_indenter_body(const std::optional<Material> &indenter_body)
+  {
+    indenter.reset();
+    all.indenter    = Body::HatCompliance();
+    indenter_factor = 1;
+    if (indenter_body)
       {
+        // The indenter's own surface layer (a homogeneous body needs no z-halvings; 1e-10 a thin cells make
+        // its solve garbage) and far field (the same truncation error (a/L)^{1+s}, s its deep exponent); the
+        // surface vertices stay the half-space's.
+        if (!indenter_body->modulus)
+          throw std::invalid_argument("UnilateralContactSolver: the elastic indenter's modulus field is empty");
+        MeshParameters own = mesh_parameters;
+        const double   s1  = half_space->material.modulus->deep_exponent();
+        const double   s2  = indenter_body->modulus->deep_exponent();
+        own.far_field_size = std::clamp(std::pow(mesh_parameters.far_field_size, (1 + s1) / (1 + s2)), 1e4, 1e16);
+        own.surface_layer_thickness =
+          std::max(mesh_parameters.surface_layer_thickness,
+                   recommended_mesh_parameters(mesh_parameters.contact_radius,
+                                               indenter_body->modulus->surface_exponent(), 1e-8)
+                     .surface_layer_thickness);
+        indenter = std::make_unique<Body>(*indenter_body, own, discretization, candidate_radius, refinement, "indenter");
+        const auto   start            = std::chrono::steady_clock::now();
+        const double factorize_before = setup_time.factorize;
         all.indenter = indenter->hat_compliance(half_space->coupling.vertex_r, half_space->candidate_r,
                                                 discretization.degree + 2, setup_time.factorize);
         setup_time.mesh += indenter->time.mesh;
         setup_time.assemble += indenter->time.assemble;
-        setup_time.setup += indenter->time.setup;
+        setup_time.setup +=
+          indenter->time.setup + seconds_since(start) - (setup_time.factorize - factorize_before);
       }
     combine(all);
-    setup_time.setup += seconds_since(start) - setup_time.factorize;
   }
 
   UnilateralContactSolver::~UnilateralContactSolver() = default;

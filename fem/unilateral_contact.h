@@ -154,6 +154,10 @@ namespace gradcontact::fem
     /// message) or the contact reaches the candidate radius.
     UnilateralResult run(const UnilateralLoad &load, const OutputRequest &outputs = {});
 
+    /// Replaces the indenter (none: rigid) and resets its modulus factor to 1; the half-space, its factorisation
+    /// and its surface compliance are kept (only the new indenter is meshed and factorised).
+    void set_indenter_body(const std::optional<Material> &indenter_body);
+
     /// Scales the elastic indenter's modulus by `factor` in (0, inf] (its compliance by 1/factor; exact in
     /// linear elasticity at a fixed Poisson ratio; inf: the rigid indenter): one solver serves a sweep of the
     /// indenter's modulus. 1 at construction; std::invalid_argument without an elastic indenter.
@@ -240,6 +244,9 @@ namespace gradcontact::fem
                 const OutputRequest &outputs, UnilateralResult &result) const;
 
     const DiscretizationParameters discretization;
+    const MeshParameters           mesh_parameters;  ///< the half-space's (the indenter's derives from it)
+    const double                   candidate_radius;
+    const SurfaceRefinement        refinement;
     std::unique_ptr<Body>          half_space;
     std::unique_ptr<Body>          indenter; ///< null: a rigid indenter
     double                         indenter_factor = 1;

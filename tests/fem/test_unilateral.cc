@@ -209,6 +209,33 @@ namespace
   {
     return gradcontact::fem::testing::h_N(k, v) * E / (1 - v * v);
   }
+
+  /// The two graded bodies of the 9.4 tests: the half-space E0 (z/c0)^k, nu1 = 0.2, and the indenter
+  /// E0/4 (z/c0)^k, nu2 = 0.45, carrying the paraboloid R = 50 a at the depth of the contact radius a.
+  struct TwoBodies
+  {
+    static constexpr double nu1 = 0.2, nu2 = 0.45, E02 = E0 / 4, R = 50 * a;
+    double                  k;
+
+    UnilateralContactSolver solver(const Settings &s) const
+    {
+      return UnilateralContactSolver(Material{std::make_shared<PowerLawModulus>(E0, c0, k), nu1}, s.mesh,
+                                     s.discretization, 1.6 * a, {},
+                                     Material{std::make_shared<PowerLawModulus>(E02, c0, k), nu2});
+    }
+    UnilateralLoad load() const
+    {
+      UnilateralLoad l;
+      l.indenter = Indenter::of(Profile::paraboloid(R), a);
+      l.depth    = a * a / ((1 + k) * R);
+      return l;
+    }
+    /// The force of the equivalent medium (9.4): the compliances 1 / cN0_i add.
+    double equivalent_force() const
+    {
+      return paraboloid_force(1 / (1 / foundation(E0, k, nu1) + 1 / foundation(E02, k, nu2)), k, R);
+    }
+  };
 } // namespace
 
 TEST_CASE("Two graded bodies of one k and c0 shall press like the chapter's equivalent medium (9.4)", "[fem]")
@@ -219,21 +246,17 @@ TEST_CASE("Two graded bodies of one k and c0 shall press like the chapter's equi
   // sum. k = 0 is Hertz's two elastic spheres. Each body is meshed (same mesh), contact between their surfaces.
   const double k = GENERATE(-0.5, 0., 0.5);
   CAPTURE(k);
-  const double nu1 = 0.2, nu2 = 0.45, E02 = E0 / 4, R = 50 * a;
-  const Settings s = small_settings(a, k);
-  const Material half_space{std::make_shared<PowerLawModulus>(E0, c0, k), nu1};
-  const Material indenter{std::make_shared<PowerLawModulus>(E02, c0, k), nu2};
-  UnilateralContactSolver solver(half_space, s.mesh, s.discretization, 1.6 * a, {}, indenter);
+  const TwoBodies bodies{k};
+  const double    nu1 = TwoBodies::nu1, nu2 = TwoBodies::nu2, E02 = TwoBodies::E02, R = TwoBodies::R;
+  UnilateralContactSolver solver = bodies.solver(small_settings(a, k));
   REQUIRE(solver.elastic_indenter());
-  UnilateralLoad load;
-  load.indenter = Indenter::of(Profile::paraboloid(R), a);
-  load.depth    = a * a / ((1 + k) * R);
-  OutputRequest out;
+  const UnilateralLoad load = bodies.load();
+  OutputRequest        out;
   out.displacement_radii = {0., 2 * a};
   const UnilateralResult r = solver.run(load, out);
 
   const double cN1 = foundation(E0, k, nu1), cN2 = foundation(E02, k, nu2);
-  const double equivalent = paraboloid_force(1 / (1 / cN1 + 1 / cN2), k, R);                         // (9.4)
+  const double equivalent = bodies.equivalent_force(); // (9.4)
   // Not the equivalent medium: h_N of body 1's nu for both (the nu-dependence of 9.5 dropped).
   const double one_h_N = paraboloid_force(1 / (1 / cN1 + (1 - nu2 * nu2) / (testing::h_N(k, nu1) * E02)), k, R);
   CAPTURE(r.force, equivalent, r.force / equivalent - 1, one_h_N / equivalent - 1, r.outer_edge / a - 1,
@@ -306,16 +329,10 @@ TEST_CASE("Two graded bodies on the fine mesh shall press like the equivalent me
   // The first test of 9.4 on the mesh of recommended_settings(a, k, 1e-6) (degree 3, h_edge 1e-5 a).
   const double k = GENERATE(-0.5, 0.5);
   CAPTURE(k);
-  const double nu1 = 0.2, nu2 = 0.45, E02 = E0 / 4, R = 50 * a;
-  const Settings s = recommended_settings(a, k, 1e-6);
-  const Material half_space{std::make_shared<PowerLawModulus>(E0, c0, k), nu1};
-  const Material indenter{std::make_shared<PowerLawModulus>(E02, c0, k), nu2};
-  UnilateralContactSolver solver(half_space, s.mesh, s.discretization, 1.6 * a, {}, indenter);
-  UnilateralLoad load;
-  load.indenter = Indenter::of(Profile::paraboloid(R), a);
-  load.depth    = a * a / ((1 + k) * R);
-  const UnilateralResult r = solver.run(load);
-  const double equivalent = paraboloid_force(1 / (1 / foundation(E0, k, nu1) + 1 / foundation(E02, k, nu2)), k, R);
+  const TwoBodies         bodies{k};
+  UnilateralContactSolver solver     = bodies.solver(recommended_settings(a, k, 1e-6));
+  const UnilateralResult  r          = solver.run(bodies.load());
+  const double            equivalent = bodies.equivalent_force();
   CAPTURE(r.force / equivalent - 1, r.outer_edge / a - 1, r.n_dofs, r.time.setup + r.time.factorize);
   CHECK(r.reliable);
   // Measured: 2.2e-7 / 1.0e-6 off (k = -0.5 / 0.5; 235k / 311k DoFs, about 100 / 220 s of setup).
@@ -332,23 +349,17 @@ TEST_CASE("The two-body force at a given depth shall converge to the equivalent 
   // Two homogeneous bodies (k = 0: Hertz's two elastic bodies; nu 0.2 and 0.45; E0 and E0/4), degree 1, the
   // meshes graded toward the contact radius of the depth: the force error against 9.4 over global refinements
   // 0, 1, 2. (At k = 0.5 the rates measured 1.67, 1.38: the surface singularity u_z ~ z^{1-k} of degree 1.)
-  const double k = 0., R = 50 * a, nu1 = 0.2, nu2 = 0.45, E02 = E0 / 4;
-  const double depth      = a * a / ((1 + k) * R);
-  const double equivalent = paraboloid_force(1 / (1 / foundation(E0, k, nu1) + 1 / foundation(E02, k, nu2)), k, R);
+  const TwoBodies     bodies{0.};
+  const double        equivalent = bodies.equivalent_force();
   std::vector<double> errors;
   for (unsigned int level = 0; level <= 2; ++level)
     {
-      Settings s                = small_settings(a, k);
+      Settings s                = small_settings(a, 0.);
       s.discretization.degree   = 1;
       s.mesh.h_edge             = 1e-3;
       s.mesh.global_refinements = level;
-      UnilateralContactSolver solver(Material{std::make_shared<PowerLawModulus>(E0, c0, k), nu1}, s.mesh,
-                                     s.discretization, 1.6 * a, {},
-                                     Material{std::make_shared<PowerLawModulus>(E02, c0, k), nu2});
-      UnilateralLoad load;
-      load.indenter = Indenter::of(Profile::paraboloid(R), a);
-      load.depth    = depth;
-      errors.push_back(std::abs(solver.run(load).force / equivalent - 1));
+      UnilateralContactSolver solver = bodies.solver(s);
+      errors.push_back(std::abs(solver.run(bodies.load()).force / equivalent - 1));
     }
   const double order01 = std::log2(errors[0] / errors[1]), order12 = std::log2(errors[1] / errors[2]);
   CAPTURE(errors[0], errors[1], errors[2], order01, order12);
