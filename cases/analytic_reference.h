@@ -57,14 +57,15 @@ namespace gradcontact::cases
     /// "closed form" or "numerical MDR", for report rows; when the scene's modulus is not the power law
     /// (layered, an expression, ...), followed by " (power-law idealisation E0, c0, k)": the chapter's
     /// material, not the scene's; when the scene's elastic indenter is not covered by 9.4 (a homogeneous one
-    /// on a graded half-space), by " (rigid-indenter idealisation)".
+    /// on a graded half-space), by " (rigid-indenter idealisation)"; with Friction/coefficient > 0, by
+    /// " (frictionless idealisation)".
     std::string label() const;
-    /// Whether the reference assumes another material or indenter than the scene's.
-    bool idealised() const { return idealised_material || idealised_indenter; }
+    /// Whether the reference assumes another material, indenter or surface than the scene's.
+    bool idealised() const { return idealised_material || idealised_indenter || idealised_surface; }
 
   private:
     batch::Request base;
-    bool idealised_material = false, idealised_indenter = false;
+    bool idealised_material = false, idealised_indenter = false, idealised_surface = false;
   };
 } // namespace gradcontact::cases
 

@@ -77,8 +77,9 @@ namespace gradcontact::cases
     /// One FE solve of a map: the FE state and its deviations from the power law at the FE depth.
     struct MapPoint
     {
-      double ratio = 0.;                      ///< a/z0 or a/H (0: the power law itself)
+      double ratio = 0.;                      ///< a/z0, a/H, a/w, E1/E0 or mu (0: the idealisation itself)
       double force = 0., radius = 0., pressure = 0.; ///< FE/closed form - 1 (radius: indenters only)
+      double stick = std::numeric_limits<double>::quiet_NaN(); ///< friction: the stick radius / the contact radius
       unsigned int dofs = 0;
       double seconds = 0.;
       std::string error; ///< non-empty when the solve or the reference failed
@@ -165,6 +166,8 @@ namespace gradcontact::cases
             return "a/w";
           case MapParameters::Parameter::indenter_modulus:
             return "E1/E0";
+          case MapParameters::Parameter::friction_coefficient:
+            return "mu";
           default:
             return "a/H";
         }
@@ -393,7 +396,175 @@ namespace gradcontact::cases
         }
       return out;
     }
+
+    /// Coulomb friction mu = ratio (and full stick, ratio inf) between a rigid indenter and the power law at
+    /// exponent k and Poisson ratio nu during loading to the rigid closed form's depth of Load/a: one solver for
+    /// the frictionless run and every mu (fem::UnilateralContactSolver, the shear operator built once). A point is
+    /// FE(mu) / FE(frictionless) - 1 on one mesh; the stick radius is the FE's. Sharp checks: the frictionless FE
+    /// against the closed forms, and at Holl's ratio nu = 1/(2 + k) (pressure causes no radial displacement of
+    /// E ~ z^k) friction must change nothing. The FE resolution: the change of the largest-mu point with twice
+    /// the load steps (the path's discretisation: a vertex that comes into contact during a step carries no
+    /// shear in it), and, at Holl's ratio, the frictional FE's own deviation.
+    ExponentMap friction_map(const Scene &s, const double k, const double nu, const std::vector<double> &ratios,
+                             SceneResult &result, const bool verbose)
+    {
+      ExponentMap out;
+      Scene g = s;
+      g.material.k = k;
+      g.material.nu = nu;
+      g.map.parameter = MapParameters::Parameter::none;
+      g.load.control = LoadParameters::Control::contact_radius;
+      if (nu >= 0.5)
+        g.discretization.formulation = DiscretizationParameters::Formulation::mixed;
+      const double a = g.load.a;
+      const bool holl = std::abs(nu - 1. / (2. + k)) <= 1e-12;
+      const std::string metric = "k = " + format(k) + ", nu = " + (holl ? "1/(2 + k) = " : "") + format(nu) + ", ";
+      try
+        {
+          const FeModel model = fe_model(g, finest_refinement(g));
+          const AnalyticReference frictionless(g, batch::Method::closed_form, AnalyticReference::Problem::normal);
+          fem::UnilateralLoad load;
+          load.indenter = fem::Indenter::of(model.load.profile, a);
+          load.depth = frictionless.get("depth");
+          load.friction.load_steps = s.friction.load_steps;
+          fem::OutputRequest request;
+          request.pressure_radii = {axis_sample * a};
+          const auto timed = [](const auto &work) {
+            const auto start = std::chrono::steady_clock::now();
+            work();
+            return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+          };
+          std::unique_ptr<fem::UnilateralContactSolver> solver;
+          fem::UnilateralResult r;
+          const double setup = timed([&] {
+            solver = std::make_unique<fem::UnilateralContactSolver>(model.material, model.settings.mesh,
+                                                                    model.settings.discretization, 1.6 * a);
+          });
+          // One point: deviations from `base` (the closed forms, or the frictionless FE on the same mesh).
+          const auto point = [&](const double mu, const double seconds, const double force, const double radius,
+                                 const double pressure) {
+            MapPoint p;
+            p.ratio = mu;
+            p.dofs = solver->n_dofs();
+            p.seconds = seconds;
+            if (r.zones.size() != 1 || r.zones.front().r_in > 0)
+              p.error = "the contact is not one disc (" + std::to_string(r.zones.size()) + " zones)";
+            else if (!r.reliable)
+              p.error = "the FE solve is flagged unreliable: " + r.message;
+            else
+              {
+                p.force = r.force / force - 1;
+                p.radius = r.outer_edge / radius - 1;
+                p.pressure = r.pressure.at(0).value / pressure - 1;
+                if (mu > 0)
+                  p.stick = r.stick_radius / r.outer_edge;
+              }
+            return p;
+          };
+          const auto solve = [&](const double mu) {
+            load.friction.coefficient = mu;
+            try
+              {
+                return std::make_pair(timed([&] { r = solver->run(load, request); }), std::string());
+              }
+            catch (const std::exception &e)
+              {
+                return std::make_pair(0., concise(e));
+              }
+          };
+          auto [seconds, error] = solve(0.);
+          seconds += setup;
+          MapPoint smooth_check =
+            error.empty() ? point(0., seconds, frictionless.get("force"), frictionless.radius(),
+                                  frictionless.at("pressure", axis_sample * a))
+                          : MapPoint{};
+          smooth_check.error += error;
+          add_check_rows(s, smooth_check, metric + "frictionless", result);
+          if (!smooth_check.error.empty())
+            {
+              out.resolution_text = "not measured (the frictionless FE failed: " + cell(smooth_check.error) + ")";
+              return out;
+            }
+          const fem::UnilateralResult smooth = r;
+          const auto relative = [&](const double mu, const double seconds_mu, const std::string &error_mu) {
+            if (!error_mu.empty())
+              {
+                MapPoint p;
+                p.ratio = mu;
+                p.error = error_mu;
+                return p;
+              }
+            return point(mu, seconds_mu, smooth.force, smooth.outer_edge, smooth.pressure.at(0).value);
+          };
+          std::vector<double> mus = ratios;
+          if (s.map.full_stick)
+            mus.push_back(std::numeric_limits<double>::infinity());
+          for (const double mu : mus)
+            {
+              const auto [seconds_mu, error_mu] = solve(mu);
+              out.points.push_back(relative(mu, seconds_mu, error_mu));
+              const MapPoint &p = out.points.back();
+              if (holl && p.error.empty())
+                {
+                  // The decoupled pairing: the frictional FE against the frictionless FE (a sharp check).
+                  const std::string what = metric + "mu = " + format(mu) + " against mu = 0 (decoupled: equal)";
+                  result.rows.push_back(compare("force at the depth (friction)", what, "FE", "FE frictionless", 1.,
+                                                1. + p.force, 1., s.tolerances.force, p.dofs, p.seconds));
+                  result.rows.push_back(compare("contact radius (friction)", what, "FE", "FE frictionless", 1.,
+                                                1. + p.radius, 1., s.tolerances.contact_radius, p.dofs, p.seconds));
+                }
+            }
+          // The FE resolution: the path's (twice the load steps at the largest mu solved).
+          const auto largest = std::find_if(out.points.rbegin(), out.points.rend(),
+                                            [](const MapPoint &p) { return p.error.empty(); });
+          std::ostringstream md;
+          if (largest != out.points.rend())
+            {
+              load.friction.load_steps = 2 * s.friction.load_steps;
+              const auto [seconds_2, error_2] = solve(largest->ratio);
+              const MapPoint finer = relative(largest->ratio, seconds_2, error_2);
+              if (finer.error.empty())
+                for (const std::string q : {"force", "contact radius", "pressure"})
+                  out.resolution[q] = std::abs(deviation_of(finer, q) - deviation_of(*largest, q));
+              md << "FE resolution (the change at mu = " << format(largest->ratio) << " with " << load.friction.load_steps
+                 << " load steps instead of " << s.friction.load_steps << "; stick radius " << format(finer.stick)
+                 << " against " << format(largest->stick) << "):";
+              if (!finer.error.empty())
+                md << " not measured (" << cell(finer.error) << ")";
+            }
+          else
+            md << "FE resolution: not measured (no frictional point was solved)";
+          for (const auto &[q, change] : out.resolution)
+            md << " " << quantity_label(q) << " " << format(change) << ";";
+          if (holl)
+            md << " Holl's ratio: every deviation below is the FE's own error (exact: 0).";
+          md << " " << solver->n_dofs() << " DoFs; the frictionless FE against the closed forms: force "
+             << format(smooth_check.force) << ", contact radius " << format(smooth_check.radius) << ".";
+          out.resolution_text = md.str();
+          if (verbose)
+            std::cerr << "  k = " << k << ", nu = " << nu << ": frictionless force " << smooth_check.force << '\n';
+        }
+      catch (const std::exception &e)
+        {
+          result.rows.push_back(failed("friction map", "FE", "closed form", metric + concise(e)));
+          out.resolution_text = "not measured (" + cell(concise(e)) + ")";
+        }
+      return out;
+    }
   } // namespace
+
+  std::string friction_threshold_cell(const std::vector<double> &mus, const std::vector<double> &deviations,
+                                      const std::optional<double> full_stick, const double threshold)
+  {
+    const bool stick_within = full_stick && std::abs(*full_stick) <= threshold;
+    if (mus.empty())
+      return full_stick ? (stick_within ? "at full stick" : "not at full stick") : "no point";
+    const std::string finite = threshold_cell(mus, deviations, threshold, false);
+    if (finite.rfind("at every ratio", 0) == 0)
+      return stick_within ? "at every mu (full stick included)"
+                          : "at every mu up to " + format(mus.back()) + (full_stick ? ", not at full stick" : "");
+    return finite;
+  }
 
   SceneResult run_map_scene(const Scene &s, const fs::path &folder, const bool verbose)
   {
@@ -409,14 +580,41 @@ namespace gradcontact::cases
     const std::vector<std::string> quantities =
       indenter ? std::vector<std::string>{"force", "contact radius", "pressure"} : std::vector<std::string>{"force", "pressure"};
     const bool of_indenter = s.map.parameter == MapParameters::Parameter::indenter_modulus;
-    const std::string reference_name =
-      of_indenter ? "closed form (rigid indenter)" : "closed form (power-law idealisation E0, c0, k)";
+    const bool of_friction = s.map.parameter == MapParameters::Parameter::friction_coefficient;
+    const std::string reference_name = of_indenter   ? "closed form (rigid indenter)"
+                                       : of_friction ? "FE frictionless"
+                                                     : "closed form (power-law idealisation E0, c0, k)";
+
+    // The panels of the map: every k, and for a friction map every nu of Map/nu values (and Holl's ratio).
+    struct Panel
+    {
+      double k, nu;
+    };
+    std::vector<Panel> panels;
+    for (const double k : ks)
+      {
+        std::vector<double> nus = of_friction && !s.map.poisson_ratios.empty() ? s.map.poisson_ratios
+                                                                                 : std::vector<double>{s.material.nu};
+        if (of_friction && s.map.holl_ratio && 1. / (2. + k) <= 0.5 &&
+            std::none_of(nus.begin(), nus.end(), [k](const double nu) { return std::abs(nu - 1. / (2. + k)) <= 1e-12; }))
+          nus.push_back(1. / (2. + k));
+        for (const double nu : nus)
+          panels.push_back({k, nu});
+      }
+    const auto panel_name = [&](const Panel &p) {
+      return "k = " + format(p.k) +
+             (of_friction ? ", nu = " + std::string(std::abs(p.nu - 1. / (2. + p.k)) <= 1e-12 ? "1/(2 + k) = " : "") +
+                              format(p.nu)
+                          : "");
+    };
 
     std::ofstream csv(folder / "map.csv");
-    csv << "k," << (x == "a/z0" ? "a_over_z0" : x == "a/w" ? "a_over_w" : x == "a/H" ? "a_over_H" : "E1_over_E0")
-        << ",force_deviation,contact_radius_deviation,pressure_deviation,dofs,seconds,error\n";
+    csv << "k," << (of_friction ? "nu," : "")
+        << (x == "a/z0" ? "a_over_z0" : x == "a/w" ? "a_over_w" : x == "a/H" ? "a_over_H" : x == "mu" ? "mu" : "E1_over_E0")
+        << ",force_deviation,contact_radius_deviation,pressure_deviation," << (of_friction ? "stick_radius_over_a," : "")
+        << "dofs,seconds,error\n";
     csv.precision(10);
-    std::ostringstream md, thresholds_md;
+    std::ostringstream md, thresholds_md, largest_md;
     md << "# " << s.info.name << ": applicability map\n\n" << (s.info.description.empty() ? "" : s.info.description + "\n\n");
     if (of_indenter)
       md << "The FE model of a homogeneous elastic indenter (E1 = ratio E0, nu = " << format(s.indenter.nu)
@@ -427,6 +625,18 @@ namespace gradcontact::cases
          << format(axis_sample) << " a), the deviation from the rigid indenter's closed forms up to the rigid FE's "
             "own error (the sharp-check rows of errors.csv). One mesh and solver per k (fem::UnilateralContactSolver, "
             "the contact set found); E1 enters as the scale of the indenter's compliance.\n\n";
+    else if (of_friction)
+      md << "The FE model of a rigid indenter with Coulomb friction mu between it and E0 (z/c0)^k, loaded from zero "
+            "in "
+         << s.friction.load_steps << " steps to the depth where the frictionless closed form has the contact radius "
+            "Load/a = "
+         << format(s.load.a) << " m: deviation = FE(mu) / FE(frictionless) - 1 on one mesh (force at the depth, "
+            "contact radius, pressure at r = "
+         << format(axis_sample) << " a), the error of the chapter's frictionless closed forms up to the frictionless "
+            "FE's own error (the sharp-check rows of errors.csv); c/a is the radius of the stick zone around the axis "
+            "over the contact radius (slip outside it). One mesh and solver per (k, nu) (fem::UnilateralContactSolver, "
+            "the contact, stick and slip sets found at every step). At Holl's ratio nu = 1/(2 + k) pressure causes no "
+            "radial displacement and friction must change nothing: those rows are sharp checks.\n\n";
     else
       md << "The FE model of "
          << (x == "a/z0"  ? "E(z) = E0 ((z + z0)/c0)^k (a finite surface modulus)"
@@ -437,55 +647,87 @@ namespace gradcontact::cases
          << " (force at the depth" << (indenter ? ", contact radius at the depth" : "") << ", pressure at r = "
          << format(axis_sample) << " a). Load/a = " << format(s.load.a) << " m, the FE under contact-radius control.\n\n";
     // The chapter's idealisation is the limit a/z0 -> inf of a finite surface modulus (a/w -> inf of the error
-    // function), a/H -> 0 of a coating and E1/E0 -> inf of the indenter.
-    const bool toward_large = s.map.parameter != MapParameters::Parameter::coating_thickness;
-    thresholds_md << "## Where " << (of_indenter ? "the rigid indenter's closed forms hold" : "the power law holds")
-                  << "\n\n| k | quantity |";
+    // function), a/H -> 0 of a coating, E1/E0 -> inf of the indenter and mu -> 0 of friction.
+    const bool toward_large = s.map.parameter != MapParameters::Parameter::coating_thickness && !of_friction;
+    thresholds_md << "## Where " << (of_indenter   ? "the rigid indenter's closed forms hold"
+                                     : of_friction ? "the frictionless closed forms hold"
+                                                   : "the power law holds")
+                  << "\n\n| k |" << (of_friction ? " nu |" : "") << " quantity |";
     for (const double t : s.map.thresholds)
       thresholds_md << " within " << percent(t) << " when " << x << " |";
-    thresholds_md << "\n|---|---|";
+    thresholds_md << "\n|---|" << (of_friction ? "---|" : "") << "---|";
     for (std::size_t i = 0; i < s.map.thresholds.size(); ++i)
       thresholds_md << "---|";
     thresholds_md << '\n';
+    if (of_friction)
+      largest_md << "## The largest effect of friction\n\nOver the map's mu" << (s.map.full_stick ? " and full stick" : "")
+                 << ": the largest |FE(mu) / FE(frictionless) - 1| and the stick radius at the largest mu.\n\n"
+                    "| k | nu | force | contact radius | p("
+                 << format(axis_sample) << " a) | c/a at the largest mu |\n|---|---|---|---|---|---|\n";
 
     std::map<std::string, std::vector<Series>> plots;
-    for (const double k : ks)
+    for (const Panel &panel : panels)
       {
+        const double k = panel.k;
         if (toward_large && !of_indenter && k < 0)
           md << "k < 0 with a finite surface modulus: where z0 is thinner than the surface cells (outside r <= 1.05 a "
                 "they are not halved), the plain Gauss rule under-integrates E ~ (z + z0)^k near z = 0, so the FE "
                 "carries an error of about 1e-3 of the force at a/z0 >= 1e4 that one uniform refinement reduces only "
                 "in part (fem/README.md, \"Limits\"); read the thresholds below 1 % with that in mind.\n\n";
-        const ExponentMap map = of_indenter ? indenter_map(s, k, ratios, result, verbose) : grading_map(s, k, ratios, result, verbose);
+        const ExponentMap map = of_indenter   ? indenter_map(s, k, ratios, result, verbose)
+                                : of_friction ? friction_map(s, k, panel.nu, ratios, result, verbose)
+                                              : grading_map(s, k, ratios, result, verbose);
         const std::vector<MapPoint> &points = map.points;
         std::map<std::string, double> resolution = map.resolution;
-        md << "## k = " << format(k) << "\n\n| " << x << " | force | " << (indenter ? "contact radius | " : "")
-           << "p(" << format(axis_sample) << " a) | DoFs | s |\n|---|---|" << (indenter ? "---|" : "") << "---|---|---|\n";
+        md << "## " << panel_name(panel) << "\n\n| " << x << " | force | " << (indenter ? "contact radius | " : "")
+           << "p(" << format(axis_sample) << " a) | " << (of_friction ? "c/a | " : "") << "DoFs | s |\n|---|---|"
+           << (indenter ? "---|" : "") << (of_friction ? "---|" : "") << "---|---|---|\n";
         for (const MapPoint &p : points)
           {
-            csv << k << ',' << p.ratio << ',' << p.force << ',' << (indenter ? p.radius : std::nan("")) << ','
-                << p.pressure << ',' << p.dofs << ',' << p.seconds << ',' << csv_quote(p.error) << '\n';
-            md << "| " << format(p.ratio);
+            csv << k << ',' << (of_friction ? std::to_string(panel.nu) + "," : "") << p.ratio << ',' << p.force << ','
+                << (indenter ? p.radius : std::nan("")) << ',' << p.pressure << ','
+                << (of_friction ? format(p.stick) + "," : "") << p.dofs << ',' << p.seconds << ',' << csv_quote(p.error)
+                << '\n';
+            md << "| " << (std::isinf(p.ratio) ? std::string("inf (full stick)") : format(p.ratio));
             if (p.error.empty())
-              md << " | " << format(p.force) << " | " << (indenter ? format(p.radius) + " | " : "") << format(p.pressure);
+              md << " | " << format(p.force) << " | " << (indenter ? format(p.radius) + " | " : "") << format(p.pressure)
+                 << (of_friction ? " | " + format(p.stick) : "");
             else
-              md << " | failed: " << cell(p.error) << " | " << (indenter ? "- | " : "") << "-";
+              md << " | failed: " << cell(p.error) << " | " << (indenter ? "- | " : "") << "-" << (of_friction ? " | -" : "");
             md << " | " << p.dofs << " | " << format(p.seconds) << " |\n";
             if (verbose)
-              std::cerr << "  k = " << k << ", " << x << " = " << p.ratio << ": force " << p.force << ", radius "
-                        << p.radius << ", pressure " << p.pressure << (p.error.empty() ? "" : " (" + p.error + ")")
-                        << ", " << p.seconds << " s\n";
+              std::cerr << "  " << panel_name(panel) << ", " << x << " = " << p.ratio << ": force " << p.force
+                        << ", radius " << p.radius << ", pressure " << p.pressure
+                        << (of_friction ? ", c/a " + format(p.stick) : "")
+                        << (p.error.empty() ? "" : " (" + p.error + ")") << ", " << p.seconds << " s\n";
             if (!p.error.empty())
-              result.rows.push_back(failed("map point", "FE", reference_name,
-                                           "k = " + format(k) + ", " + x + " = " + format(p.ratio) + ": " + p.error));
+              result.rows.push_back(
+                failed("map point", "FE", reference_name, panel_name(panel) + ", " + x + " = " + format(p.ratio) + ": " + p.error));
           }
         md << map.resolution_text << "\n\n";
+        if (of_friction)
+          {
+            largest_md << "| " << format(k) << " | " << format(panel.nu) << " |";
+            for (const std::string &q : quantities)
+              {
+                double largest = -1;
+                for (const MapPoint &p : points)
+                  if (p.error.empty())
+                    largest = std::max(largest, std::abs(deviation_of(p, q)));
+                largest_md << " " << (largest < 0 ? std::string("no point") : format(largest)) << " |";
+              }
+            const auto last = std::find_if(points.rbegin(), points.rend(), [](const MapPoint &p) { return p.error.empty(); });
+            largest_md << " " << (last == points.rend() ? std::string("-") : format(last->stick)) << " |\n";
+          }
         for (const std::string &q : quantities)
           {
             std::vector<double> r, d;
-            Series curve{"k = " + format(k), {}, {}, false, true};
+            std::optional<double> full_stick;
+            Series curve{panel_name(panel), {}, {}, false, true};
             for (const MapPoint &p : points)
-              if (p.error.empty())
+              if (p.error.empty() && std::isinf(p.ratio))
+                full_stick = deviation_of(p, q);
+              else if (p.error.empty())
                 {
                   r.push_back(p.ratio);
                   d.push_back(deviation_of(p, q));
@@ -493,10 +735,11 @@ namespace gradcontact::cases
                   curve.y.push_back(std::max(std::abs(deviation_of(p, q)), 1e-16));
                 }
             plots[q].push_back(curve);
-            thresholds_md << "| " << format(k) << " | " << quantity_label(q) << " |";
+            thresholds_md << "| " << format(k) << " |" << (of_friction ? " " + format(panel.nu) + " |" : "") << " "
+                          << quantity_label(q) << " |";
             for (const double t : s.map.thresholds)
               {
-                if (r.empty())
+                if (r.empty() && !full_stick)
                   {
                     thresholds_md << " no point |";
                     continue;
@@ -511,9 +754,23 @@ namespace gradcontact::cases
                     thresholds_md << " below the FE resolution (" << format(resolution[q]) << ") |";
                     continue;
                   }
-                thresholds_md << " " << threshold_cell(r, d, t, toward_large) << " |";
+                thresholds_md << " "
+                              << (of_friction ? friction_threshold_cell(r, d, full_stick, t)
+                                              : threshold_cell(r, d, t, toward_large))
+                              << " |";
               }
             thresholds_md << '\n';
+          }
+        if (of_friction)
+          {
+            Series curve{panel_name(panel), {}, {}, false, true};
+            for (const MapPoint &p : points)
+              if (p.error.empty() && !std::isinf(p.ratio))
+                {
+                  curve.x.push_back(p.ratio);
+                  curve.y.push_back(p.stick);
+                }
+            plots["stick radius"].push_back(curve);
           }
         if (s.map.parameter == MapParameters::Parameter::erf_width)
           {
@@ -528,19 +785,29 @@ namespace gradcontact::cases
             md << published_comparison(s, r, force, radius);
           }
       }
-    std::ofstream(folder / "map.md") << md.str() << thresholds_md.str()
+    std::ofstream(folder / "map.md") << md.str() << largest_md.str() << (of_friction ? "\n" : "") << thresholds_md.str()
                                      << "\nThe thresholds interpolate log-log between the last ratio outside and the next "
-                                        "one toward the chapter's idealisation; every ratio of the map beyond it is within.\n";
+                                        "one toward the chapter's idealisation; every ratio of the map beyond it is within."
+                                     << (of_friction ? " Full stick (mu = inf) is read on its own: \"full stick included\" "
+                                                       "when it is within too."
+                                                     : "")
+                                     << "\n";
     if (s.outputs.plots)
       for (auto &[q, series] : plots)
         {
-          for (const double t : s.map.thresholds)
-            series.push_back(Series{percent(t), {ratios.front(), ratios.back()}, {t, t}, false, false});
+          const bool stick = q == "stick radius";
+          if (!stick)
+            for (const double t : s.map.thresholds)
+              series.push_back(Series{percent(t), {ratios.front(), ratios.back()}, {t, t}, false, false});
           std::string stem = "map-" + q;
           std::replace(stem.begin(), stem.end(), ' ', '_');
           write_plot(folder, stem,
-                     s.info.name + ": |" + quantity_label(q) + (of_indenter ? " / rigid indenter - 1|" : " / power law - 1|"), x,
-                     "|deviation|", series, true, true);
+                     stick ? s.info.name + ": stick radius c/a"
+                           : s.info.name + ": |" + quantity_label(q) +
+                               (of_indenter   ? " / rigid indenter - 1|"
+                                : of_friction ? " / frictionless - 1|"
+                                              : " / power law - 1|"),
+                     x, stick ? "c/a" : "|deviation|", series, true, !stick);
         }
     result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     return result;

@@ -6,7 +6,9 @@
 // far its force, contact radius and pressure near the axis are from the power-law closed forms at the same depth,
 // with the ratio beyond which they are within each threshold ("within 1 % when a/z0 >= ..." for a surface modulus,
 // whose limit a/z0 -> inf is the power law, as a/w -> inf is for the error function; "a/H <= ..." for a coating,
-// whose limit is a/H -> 0).
+// whose limit is a/H -> 0). Two maps drop another idealisation on the power law itself: a homogeneous elastic
+// indenter of modulus E1 (the rigid indenter is E1/E0 -> inf), and Coulomb friction mu between a rigid indenter
+// and the surface during loading, over several k and nu (frictionless is mu -> 0; "within 1 % when mu <= ...").
 //
 // Before the map is believed, the same FE model with the power law itself (where the closed forms are exact)
 // must agree with them within the scene's tolerances: those are the rows of errors.csv. The map is in
@@ -34,6 +36,11 @@ namespace gradcontact::cases
   /// "<= X" (the limit ratio -> 0), "at every ratio (...)" or "not within it ...". `ratios` ascending.
   std::string threshold_cell(const std::vector<double> &ratios, const std::vector<double> &deviations, double threshold,
                              bool toward_large);
+
+  /// The threshold cell of a friction map (the idealisation is mu -> 0): threshold_cell over the finite mu
+  /// (ascending), with full stick (mu = inf, when solved) read on its own: "at every mu (full stick included)".
+  std::string friction_threshold_cell(const std::vector<double> &mus, const std::vector<double> &deviations,
+                                      std::optional<double> full_stick, double threshold);
 
   SceneResult run_map_scene(const Scene &scene, const std::filesystem::path &folder, bool verbose);
 } // namespace gradcontact::cases

@@ -77,6 +77,8 @@ namespace gradcontact::cases
       load.control  = by_force ? fem::ContactControl::force : fem::ContactControl::depth;
       load.depth    = s.load.depth;
       load.force    = s.load.force;
+      load.friction.coefficient = s.friction.coefficient;
+      load.friction.load_steps  = s.friction.load_steps;
       fem::Remeshing remeshing;
       remeshing.indenter_body = model.indenter_body;
       return fem::solve_remeshed(model.material, model.settings, load, s.load.a, out, remeshing);
@@ -104,6 +106,12 @@ namespace gradcontact::cases
             r.displacement[i].value += u.indenter_displacement.at(i).value;
           r.message += " elastic indenter: w(r) is the sum of both surfaces' displacements;";
         }
+      if (s.friction.enabled())
+        r.message += " Coulomb friction mu = " + format(s.friction.coefficient) + " during loading (" +
+                     std::to_string(u.path.size()) + " load steps, " + std::to_string(u.iterations) +
+                     " active-set solves): stick radius " + format(u.stick_radius / u.outer_edge) + " of the contact, " +
+                     std::to_string(u.stick_nodes) + " vertices stick, " + std::to_string(u.slip_inward_nodes) +
+                     " slip inward, " + std::to_string(u.slip_outward_nodes) + " outward;";
       r.consistent_contact = u.zones.size() == 1;
       if (u.zones.size() != 1)
         {

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <limits>
 #include <sstream>
 #include <stdexcept>
 
@@ -196,6 +197,36 @@ namespace gradcontact::cases
     prm.leave_subsection();
     if (elasticity != Elasticity::rigid && !(E > 0.))
       throw std::invalid_argument("Indenter/E: " + format(E) + " must be in (0, inf) for an elastic indenter");
+  }
+
+  void FrictionParameters::declare(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Friction");
+    prm.declare_entry("coefficient", "0", Patterns::Anything(),
+                      "Coulomb coefficient mu between the rigid indenter and the surface during normal loading, >= 0, "
+                      "or inf (full stick); 0: frictionless (the chapter's assumption). Needs Load/contact = unilateral "
+                      "and a rigid indenter; the closed-form rows then measure the frictionless idealisation.");
+    prm.declare_entry("load steps", "24", Patterns::Integer(1, 10000),
+                      "Steps of the loading path from zero (the frictional answer depends on the path; a vertex that "
+                      "comes into contact during a step carries no shear in it: an error of the step's size).");
+    prm.leave_subsection();
+  }
+  void FrictionParameters::parse(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Friction");
+    const std::string c = dealii::Utilities::trim(prm.get("coefficient"));
+    load_steps = prm.get_integer("load steps");
+    prm.leave_subsection();
+    if (c == "inf" || c == "full stick")
+      coefficient = std::numeric_limits<double>::infinity();
+    else
+      {
+        std::istringstream in(c);
+        double mu = std::nan("");
+        if (!(in >> mu) || !(in >> std::ws).eof() || !(mu >= 0.) || !std::isfinite(mu))
+          throw std::invalid_argument("Friction/coefficient: '" + c + "' must be a number in [0, inf) or inf (full stick)");
+        coefficient = mu;
+      }
   }
 
   void DiscretizationParameters::declare(ParameterHandler &prm)
@@ -444,16 +475,25 @@ namespace gradcontact::cases
   {
     prm.enter_subsection("Map");
     prm.declare_entry("parameter", "none",
-                      Patterns::Selection("none|surface depth|coating thickness|erf width|indenter modulus"),
+                      Patterns::Selection("none|surface depth|coating thickness|erf width|indenter modulus|friction coefficient"),
                       "What the ratios set: none (no map), surface depth (Material/modulus = shifted power law, "
                       "z0 = a / ratio), coating thickness (Material/modulus = coating, H = a / ratio), erf width "
                       "(Material/modulus = error function with Material/surface modulus ratio, w = a / ratio; k = 0) "
                       "or indenter modulus (a homogeneous elastic indenter E1 = ratio E0 with Indenter/nu, against the "
-                      "rigid indenter's closed forms).");
+                      "rigid indenter's closed forms), or friction coefficient (Coulomb friction mu = ratio between "
+                      "a rigid indenter and the surface during loading, Friction/load steps, against the frictionless "
+                      "indenter, for every k and nu of the map).");
     prm.declare_entry("ratios", "", Patterns::List(Patterns::Double(0.), 0, 100),
-                      "The ratios a/z0, a/H, a/w or E1/E0 of the map, > 0.");
+                      "The ratios a/z0, a/H, a/w, E1/E0 or the friction coefficients mu of the map, > 0.");
     prm.declare_entry("k values", "", Patterns::List(Patterns::Double(-1., 1.), 0, 20),
                       "The exponents k of the map, -1 < k < 1; empty: Material/k.");
+    prm.declare_entry("nu values", "", Patterns::List(Patterns::Double(0., 0.5), 0, 20),
+                      "Friction coefficient map: the Poisson ratios, [0, 0.5) (0.5 with the mixed formulation); empty: "
+                      "Material/nu.");
+    prm.declare_entry("Holl ratio", "true", Patterns::Bool(),
+                      "Friction coefficient map: also nu = 1/(2 + k) where it is <= 1/2 (the decoupled pairing: pressure "
+                      "causes no radial displacement, so friction must change nothing; the map's sharp check).");
+    prm.declare_entry("full stick", "true", Patterns::Bool(), "Friction coefficient map: also mu = inf (full stick).");
     prm.declare_entry("thresholds", "0.01, 0.001", Patterns::List(Patterns::Double(0.), 1, 10),
                       "Deviations from the power law whose ratio the map reports (\"within 1 % when a/z0 >= ...\").");
     prm.leave_subsection();
@@ -466,9 +506,13 @@ namespace gradcontact::cases
                 : p == "coating thickness" ? Parameter::coating_thickness
                 : p == "erf width"         ? Parameter::erf_width
                 : p == "indenter modulus"  ? Parameter::indenter_modulus
+                : p == "friction coefficient" ? Parameter::friction_coefficient
                                            : Parameter::none;
     ratios = to_doubles(prm.get("ratios"));
     exponents = to_doubles(prm.get("k values"));
+    poisson_ratios = to_doubles(prm.get("nu values"));
+    holl_ratio = prm.get_bool("Holl ratio");
+    full_stick = prm.get_bool("full stick");
     thresholds = to_doubles(prm.get("thresholds"));
     prm.leave_subsection();
     for (const double r : ratios)
@@ -606,6 +650,20 @@ namespace gradcontact::cases
           throw std::invalid_argument(where + "Load/contact = unilateral is a normal-contact scene (no Adhesion or "
                                       "Tangential entries)");
       }
+    if (s.friction.enabled())
+      {
+        if (s.load.contact != LoadParameters::Contact::unilateral)
+          throw std::invalid_argument(where + "Friction/coefficient = " + format(s.friction.coefficient) +
+                                      " needs Load/contact = unilateral (the stick and slip zones are found with the "
+                                      "contact set)");
+        if (s.indenter.elasticity != IndenterParameters::Elasticity::rigid)
+          throw std::invalid_argument(where + "Friction/coefficient = " + format(s.friction.coefficient) +
+                                      " is modelled for a rigid indenter: Indenter/elasticity must be rigid");
+        if (s.candidate.enabled() || s.map.enabled())
+          throw std::invalid_argument(where + "Friction/coefficient = " + format(s.friction.coefficient) +
+                                      " with a Candidate or Map: a friction map sets mu from Map/ratios (Map/parameter "
+                                      "= friction coefficient); a candidate is checked frictionless");
+      }
     if (s.indenter.elasticity != IndenterParameters::Elasticity::rigid)
       {
         if (s.load.contact != LoadParameters::Contact::unilateral)
@@ -648,6 +706,19 @@ namespace gradcontact::cases
             if (s.material.modulus != MaterialParameters::Modulus::power_law)
               throw std::invalid_argument(where + "Map/parameter = indenter modulus needs Material/modulus = power law "
                                           "(the map isolates the indenter's elasticity)");
+          }
+        if (s.map.parameter != MapParameters::Parameter::friction_coefficient && !s.map.poisson_ratios.empty())
+          throw std::invalid_argument(where + "Map/nu values is set for Map/parameter other than friction coefficient: "
+                                      "the other maps run at Material/nu");
+        if (s.map.parameter == MapParameters::Parameter::friction_coefficient)
+          {
+            if (s.load.type == Type::flat_punch)
+              throw std::invalid_argument(where + "Map/parameter = friction coefficient with Load/type = flat punch: "
+                                          "the map finds the contact set during loading, which needs a curved "
+                                          "indenter (paraboloid, cone or power law)");
+            if (s.material.modulus != MaterialParameters::Modulus::power_law)
+              throw std::invalid_argument(where + "Map/parameter = friction coefficient needs Material/modulus = power "
+                                          "law (the map isolates friction)");
           }
         if (s.map.parameter == MapParameters::Parameter::erf_width)
           for (const double k : s.map.exponents.empty() ? std::vector<double>{s.material.k} : s.map.exponents)
@@ -704,6 +775,7 @@ namespace gradcontact::cases
       CandidateParameters::declare(prm);
       AdhesionParameters::declare(prm);
       TangentialParameters::declare(prm);
+      FrictionParameters::declare(prm);
       MapParameters::declare(prm);
     }
   } // namespace
@@ -778,6 +850,7 @@ namespace gradcontact::cases
         s.candidate.parse(prm);
         s.adhesion.parse(prm);
         s.tangential.parse(prm);
+        s.friction.parse(prm);
         s.map.parse(prm);
       }
     catch (const std::exception &e)

@@ -103,6 +103,19 @@ namespace gradcontact::cases
     void parse(dealii::ParameterHandler &prm);
   };
 
+  /// Coulomb friction between a rigid indenter and the surface during normal loading (Load/contact = unilateral,
+  /// fem::Friction): the frictionless assumption of the chapter (9.1-9.44) dropped. The answer depends on the
+  /// loading path: the load grows from zero in `load_steps` steps. The closed-form rows then compare the chapter's
+  /// frictionless idealisation with the frictional FE.
+  struct FrictionParameters
+  {
+    double coefficient = 0.;       ///< mu in [0, inf]; 0: frictionless, inf: full stick
+    unsigned int load_steps = 24;  ///< steps of the loading path (mu > 0)
+    bool enabled() const { return coefficient > 0.; }
+    static void declare(dealii::ParameterHandler &prm);
+    void parse(dealii::ParameterHandler &prm);
+  };
+
   struct DiscretizationParameters
   {
     unsigned int degree = 3;
@@ -218,11 +231,15 @@ namespace gradcontact::cases
       surface_depth,    ///< Material/modulus = shifted power law, z0 = a / ratio
       coating_thickness, ///< Material/modulus = coating, H = a / ratio
       erf_width,         ///< Material/modulus = error function, w = a / ratio (k = 0)
-      indenter_modulus   ///< a homogeneous elastic indenter (Indenter/nu), E1 = ratio E0, against the rigid one
+      indenter_modulus,  ///< a homogeneous elastic indenter (Indenter/nu), E1 = ratio E0, against the rigid one
+      friction_coefficient ///< Coulomb friction mu = ratio (Friction/load steps) against the frictionless indenter
     };
     Parameter parameter = Parameter::none;
-    std::vector<double> ratios;     ///< a/z0, a/H, a/w or E1/E0, > 0
+    std::vector<double> ratios;     ///< a/z0, a/H, a/w, E1/E0 or mu, > 0
     std::vector<double> exponents;  ///< k values; empty: Material/k
+    std::vector<double> poisson_ratios; ///< nu values of a friction map; empty: Material/nu
+    bool holl_ratio = true;         ///< friction map: also nu = 1/(2 + k) (decoupled: friction changes nothing)
+    bool full_stick = true;         ///< friction map: also mu = inf
     std::vector<double> thresholds = {0.01, 0.001}; ///< deviations whose ratio the map reports
     bool enabled() const { return parameter != Parameter::none; }
     static void declare(dealii::ParameterHandler &prm);
@@ -257,6 +274,7 @@ namespace gradcontact::cases
     CandidateParameters candidate;
     AdhesionParameters adhesion;
     TangentialParameters tangential;
+    FrictionParameters friction;
     MapParameters map;
     std::string resolved; ///< every entry after overrides, as a .prm, stored with the report
     SceneKind kind = SceneKind::normal; ///< scene_kind() of the entries, set by read_scene

@@ -109,6 +109,10 @@ namespace gradcontact::fem
       fail("UnilateralLoad (depth control)", "depth", depth, "finite");
     if (control == ContactControl::force && !(force > 0 && std::isfinite(force)))
       fail("UnilateralLoad (force control)", "force", force, "(0, inf)");
+    if (!(friction.coefficient >= 0))
+      fail("UnilateralLoad", "friction coefficient", friction.coefficient, "[0, inf] (inf: full stick)");
+    if (friction.enabled() && !(friction.load_steps >= 1 && friction.load_steps <= 10000))
+      fail("UnilateralLoad", "friction load steps", friction.load_steps, "[1, 10000]");
   }
 
 
@@ -495,11 +499,7 @@ namespace gradcontact::fem
                   << std::count(P.begin(), P.end(), true) << " of " << m << " candidate vertices in contact";
               throw std::runtime_error(msg.str());
             }
-          double w_scale = 0;
-          for (unsigned int k = 0; k < m; ++k)
-            w_scale = std::max(w_scale, std::abs(D1[k]) * std::abs(current.depth));
-          for (unsigned int i = 0; i < n; ++i)
-            w_scale = std::max(w_scale, std::abs(current.u[i]) * op.D.linfty_norm());
+          const double w_scale = gap_scale(op, current, D1);
           unsigned int add = m;
           for (unsigned int k = 0; k < m; ++k)
             if (!P[k] && !blocked[k] && current.weighted_gap[k] < -gap_zero * w_scale &&
@@ -561,51 +561,8 @@ namespace gradcontact::fem
       {
         state(active, s);
         s.iterations = step;
-        double p_max = 0, w_scale = 0;
-        for (unsigned int k = 0; k < m; ++k)
-          {
-            p_max   = std::max(p_max, std::abs(s.p[k]));
-            w_scale = std::max(w_scale, std::abs(D1[k]) * std::abs(s.depth));
-          }
-        for (unsigned int i = 0; i < n; ++i)
-          w_scale = std::max(w_scale, std::abs(s.u[i]) * op.D.linfty_norm());
-        // The vertices that violate their condition: free with a negative weighted gap, or in a run of
-        // contact vertices with tensile pressures that ends a contact zone or is tensile as a whole (the
-        // forces (M p)_k of its vertices' shares, M >= 0). Next to a singular edge (the corner of a
-        // punch) the linear pressure alternates in sign while the force there is compressive: such a
-        // run stays in contact. Without such runs this is the PDAS update.
-        Vector<double> pv(m), share(m);
-        for (unsigned int k = 0; k < m; ++k)
-          pv[k] = s.p[k];
-        op.M.vmult(share, pv);
-        const double      share_max       = share.linfty_norm();
-        std::vector<bool> next            = active;
-        unsigned int      first_violation = m;
-        const auto        violates        = [&](const unsigned int k) {
-          next[k]         = !active[k];
-          first_violation = std::min(first_violation, k);
-        };
-        for (unsigned int k = 0; k < m; ++k)
-          if (!active[k] && s.weighted_gap[k] < -gap_zero * w_scale)
-            violates(k);
-        for (unsigned int k = 0; k < m;)
-          {
-            if (!(active[k] && s.p[k] < -force_zero * p_max))
-              {
-                ++k;
-                continue;
-              }
-            unsigned int end = k; // the run [k, end)
-            double       sum = 0;
-            while (end < m && active[end] && s.p[end] < -force_zero * p_max)
-              sum += share[end++];
-            const bool zone_end = k == 0 || !active[k - 1] || end == m || !active[end];
-            if (zone_end || sum < -force_zero * share_max)
-              for (unsigned int j = k; j < end; ++j)
-                violates(j);
-            k = end;
-          }
-        if (first_violation == m)
+        const std::vector<bool> next = next_contact_set(active, s.p, s.weighted_gap, op.M, gap_scale(op, s, D1));
+        if (next == active)
           return s;
         if (step >= max_steps)
           {
@@ -623,6 +580,61 @@ namespace gradcontact::fem
           }
         active = next;
       }
+  }
+
+
+
+  double UnilateralContactSolver::gap_scale(const SurfaceOperator &op, const ActiveSetSolution &s,
+                                            const Vector<double> &D1) const
+  {
+    double w_scale = 0;
+    for (unsigned int k = 0; k < D1.size(); ++k)
+      w_scale = std::max(w_scale, std::abs(D1[k]) * std::abs(s.depth));
+    for (const double u : s.u)
+      w_scale = std::max(w_scale, std::abs(u) * op.D.linfty_norm());
+    return w_scale;
+  }
+
+  std::vector<bool> UnilateralContactSolver::next_contact_set(const std::vector<bool> &active, const std::vector<double> &p,
+                                                              const std::vector<double> &weighted_gap,
+                                                              const FullMatrix<double> &M, const double w_scale)
+  {
+    const unsigned int m     = active.size();
+    double             p_max = 0;
+    for (const double x : p)
+      p_max = std::max(p_max, std::abs(x));
+    // The vertices that violate their condition: free with a negative weighted gap, or in a run of
+    // contact vertices with tensile pressures that ends a contact zone or is tensile as a whole (the
+    // forces (M p)_k of its vertices' shares, M >= 0). Next to a singular edge (the corner of a
+    // punch) the linear pressure alternates in sign while the force there is compressive: such a
+    // run stays in contact. Without such runs this is the PDAS update.
+    Vector<double> pv(m), share(m);
+    for (unsigned int k = 0; k < m; ++k)
+      pv[k] = p[k];
+    M.vmult(share, pv);
+    const double      share_max = share.linfty_norm();
+    std::vector<bool> next      = active;
+    for (unsigned int k = 0; k < m; ++k)
+      if (!active[k] && weighted_gap[k] < -gap_zero * w_scale)
+        next[k] = true;
+    for (unsigned int k = 0; k < m;)
+      {
+        if (!(active[k] && p[k] < -force_zero * p_max))
+          {
+            ++k;
+            continue;
+          }
+        unsigned int end = k; // the run [k, end)
+        double       sum = 0;
+        while (end < m && active[end] && p[end] < -force_zero * p_max)
+          sum += share[end++];
+        const bool zone_end = k == 0 || !active[k - 1] || end == m || !active[end];
+        if (zone_end || sum < -force_zero * share_max)
+          for (unsigned int j = k; j < end; ++j)
+            next[j] = false;
+        k = end;
+      }
+    return next;
   }
 
 
@@ -723,8 +735,8 @@ namespace gradcontact::fem
 
 
   void UnilateralContactSolver::sample(const Vector<double> &u, const Vector<double> *u_indenter,
-                                       const std::vector<double> &p, const OutputRequest &outputs,
-                                       UnilateralResult &result) const
+                                       const std::vector<double> &p, const std::vector<double> &q,
+                                       const OutputRequest &outputs, UnilateralResult &result) const
   {
     const std::vector<SurfaceFace> &surface_faces = half_space->surface_faces;
     const std::vector<double> &vertex_r = half_space->coupling.vertex_r;
@@ -744,6 +756,8 @@ namespace gradcontact::fem
         const unsigned int k  = std::min<std::size_t>(std::max<std::ptrdiff_t>(it - vertex_r.begin(), 1), p.size() - 1);
         const double       t  = (r - vertex_r[k - 1]) / (vertex_r[k] - vertex_r[k - 1]);
         result.pressure.push_back({r, (1 - t) * p[k - 1] + t * p[k]});
+        if (!q.empty())
+          result.shear.push_back({r, (1 - t) * q[k - 1] + t * q[k]});
       }
     if (outside > 0)
       result.message += " " + std::to_string(outside) + " pressure radii beyond the contact (edge " +
@@ -755,6 +769,7 @@ namespace gradcontact::fem
           fail("UnilateralContactSolver output", "displacement radius", r,
                "on the surface [0, " + std::to_string(surface_faces.back().r1) + "]");
         result.displacement.push_back({r, face_value(*face, 1, u, r)});
+        result.radial_displacement.push_back({r, face_value(*face, 0, u, r)});
         if (u_indenter)
           {
             const SurfaceFace *its = find_face(indenter->surface_faces, r);
@@ -814,7 +829,15 @@ namespace gradcontact::fem
           fail("UnilateralLoad (" + load.indenter.name + ")", "f(r) at r = " + std::to_string(candidate_r[i]), f[i],
                "finite");
       }
-    const ActiveSetSolution s = solve_active_set(load, op, f);
+    const bool frictional = load.friction.enabled();
+    if (frictional && indenter)
+      throw std::invalid_argument("UnilateralContactSolver: friction (coefficient " +
+                                  std::to_string(load.friction.coefficient) +
+                                  ") is modelled for a rigid indenter only; this solver has an elastic one");
+    ShearOperator shear;
+    if (frictional)
+      shear = shear_operator(op);
+    const ActiveSetSolution s = frictional ? solve_frictional(load, op, shear, f) : solve_active_set(load, op, f);
     result.depth             = s.depth;
     result.iterations        = s.iterations;
     result.monotone_steps = s.monotone_steps;
@@ -832,7 +855,21 @@ namespace gradcontact::fem
     // The fields of the contact forces, and the energy checks u.Au = lambda.u (the indenter's at its
     // unscaled modulus: the check does not depend on the scale).
     EnergyCheck          check;
-    const Vector<double> u = half_space->field(half_space->candidates, s.lambda, check);
+    std::vector<types::global_dof_index> dofs(half_space->candidates.begin(), half_space->candidates.begin() + n);
+    std::vector<double>                  forces = s.lambda;
+    if (frictional)
+      {
+        dofs.insert(dofs.end(), shear.coupling.dofs.begin(), shear.coupling.dofs.end());
+        forces.insert(forces.end(), s.lambda_r.begin(), s.lambda_r.end());
+        result.path = s.path;
+        result.stick_radius = s.path.back().stick_radius;
+        for (unsigned int k = 0; k < s.active.size(); ++k)
+          if (s.active[k])
+            (s.slip[k] != 1 && s.slip[k] != -1 ? result.stick_nodes :
+             s.q[k] < 0                     ? result.slip_outward_nodes :
+                                              result.slip_inward_nodes)++;
+      }
+    const Vector<double> u = half_space->field(dofs, forces, check);
     if (result.active_nodes > 0)
       result.record(check);
     Vector<double> u_indenter;
@@ -851,7 +888,7 @@ namespace gradcontact::fem
     result.time.solve = seconds_since(start);
 
     const auto post = std::chrono::steady_clock::now();
-    sample(u, indenter ? &u_indenter : nullptr, s.p, outputs, result);
+    sample(u, indenter ? &u_indenter : nullptr, s.p, s.q, outputs, result);
     result.time.postprocess = seconds_since(post);
     return result;
   }

@@ -1,5 +1,5 @@
-// Unilateral (Signorini) frictionless contact of a rigid axisymmetric indenter of any profile with the
-// graded half-space: the contact set is found, not prescribed. It may be a disc, an annulus (a concave
+// Unilateral (Signorini) contact, frictionless or with Coulomb friction, of a rigid or elastic axisymmetric
+// indenter of any profile with the graded half-space: the contact set is found, not prescribed. It may be a disc, an annulus (a concave
 // punch short of complete contact), several rings (a wavy profile), or end at the indenter's own edge
 // (a flat punch with rounded edges, a concave punch).
 //
@@ -40,6 +40,25 @@
 // sphere as a half-space, its finite size and the load's path through it are not modelled). Frictionless, both
 // surfaces carry the same pressure and displace into their own body: the gap is h = f - d + u + u', with
 // u' = C' D p, so that K = D^T (C + C') D and d is the approach of the two bodies' far fields.
+//
+// Friction. With a Coulomb coefficient mu > 0 (mu = inf: full stick) between a rigid indenter and the
+// surface, the radial shear q(r) on the surface (+r outward, linear on the same vertices; q = 0 at the axis)
+// enters too, and the answer depends on the loading path: the load grows from zero in `load_steps` steps
+// (d_j = d (j/N)^2, F_j = F (j/N)^3: evenly spaced contact radii for a paraboloid). At each step, with the
+// weighted radial displacements W = D_r^T u_r (D_r the coupling of the hats to the u_r trace) and W' those of
+// the previous step, a vertex in contact sticks (W_k = W'_k: the rigid indenter does not move radially, so the
+// slip increment is the surface's) with |q_k| <= mu p_k, or slips with q_k = -mu p_k sign(W_k - W'_k); a vertex
+// coming into contact during a step carries no shear in that step and sticks from the next one on (when it
+// touched within the step is not resolved: an error of the step's size; the points the unloaded indenter
+// touches, a flat punch's face, stick from the start). The
+// blocks K_zr = D^T C_zr D_r, K_rr = D_r^T C_rr D_r take one back-substitution per vertex, K_rz = K_zr^T
+// (reciprocity). Each step is solved by a primal-dual active set on the contact, stick and slip sets (the
+// update of Hueber, Stadler and Wohlmuth, SIAM J. Sci. Comput. 30 (2008) 572-596, in one tangential
+// direction): stick where |q_k - (W_k - W'_k)/K_rr,kk| <= mu p_k, else slip in the sign of that quantity; the
+// normal update is the frictionless one. The systems are not symmetric (dense LU); a cycle or too many steps
+// stops with the step, the counts and the set sizes. When the normal and radial responses decouple (a
+// surface where pressure causes no radial displacement: nu = 1/(2 + k), Holl's ratio, for E ~ z^k) friction
+// changes nothing.
 //
 // Contact edges. The outer edge of the outermost zone lies between its last vertex in contact and the
 // next vertex (`edge_bracket`). Inside it: p ~ K (a - r)^{(1+s)/2} at the last two vertices (9.26, s the
@@ -92,9 +111,18 @@ namespace gradcontact::fem
     force  ///< F_N given, d found
   };
 
+  /// Coulomb friction between the rigid indenter and the surface during loading (see the header).
+  struct Friction
+  {
+    double       coefficient = 0;  ///< mu in [0, inf]: 0 frictionless (one solve, no path), inf full stick
+    unsigned int load_steps  = 24; ///< steps of the loading path from zero (mu > 0)
+    bool         enabled() const { return coefficient > 0; }
+  };
+
   struct UnilateralLoad
   {
     Indenter       indenter;
+    Friction       friction;
     ContactControl control = ContactControl::depth;
     double         depth   = 0; ///< d (depth control)
     double         force   = 0; ///< F_N > 0 (force control)
@@ -133,6 +161,22 @@ namespace gradcontact::fem
     std::vector<Sample> indenter_displacement; ///< the elastic indenter's w'(r), into the indenter (empty: rigid)
     std::vector<Sample> nodal_gap;      ///< h at the candidate nodes (0 in contact)
     std::vector<Sample> nodal_force;    ///< 2 pi lambda at the candidate nodes: the force of each node's ring
+    std::vector<Sample> radial_displacement; ///< u_r(r, 0) at the displacement radii
+
+    /// With friction (else empty or NaN): the shear q(r) on the half-space at the pressure radii inside the
+    /// contact (+r outward, linear between the vertices); the radius of the stick zone around the axis
+    /// (between its last stick vertex and the next vertex, the middle; the outer edge when the contact sticks
+    /// to its edge; 0 when the axis slips); the vertices in contact that stick (with those that came into
+    /// contact in the last step), slip outward (q < 0) and inward (q > 0); one point per load step.
+    std::vector<Sample> shear;
+    double              stick_radius = std::numeric_limits<double>::quiet_NaN();
+    unsigned int        stick_nodes = 0, slip_outward_nodes = 0, slip_inward_nodes = 0;
+    struct PathPoint
+    {
+      double       depth = 0, force = 0, outer_edge = 0, stick_radius = 0;
+      unsigned int iterations = 0;
+    };
+    std::vector<PathPoint> path;
   };
 
   class UnilateralContactSolver
@@ -219,6 +263,11 @@ namespace gradcontact::fem
       std::vector<double> p, lambda, u, weighted_gap; ///< at the candidates (u: the gap's displacement, both bodies)
       double              depth = 0;
       unsigned int        iterations = 0, monotone_steps = 0;
+      /// With friction: the vertex shears, their nodal forces on shear.coupling.dofs, the state of each vertex
+      /// (0 stick or free, +1 / -1 slip with q = +mu p / -mu p) and the path.
+      std::vector<double>                    q, lambda_r;
+      std::vector<int>                       slip;
+      std::vector<UnilateralResult::PathPoint> path;
     };
     /// The condensed problem on the leading candidates.
     struct SurfaceOperator
@@ -230,18 +279,39 @@ namespace gradcontact::fem
       dealii::FullMatrix<double> K;  ///< K_half_space + indenter.K / factor
       dealii::FullMatrix<double> M;  ///< the vertex mass matrix (forces of the vertices' shares of p)
     };
+    /// The radial shear of the same vertices (friction): its coupling D_r to the u_r trace (the rows of
+    /// constrained DoFs zero), and the blocks of the header; column 0 (the axis, q = 0) is zero.
+    struct ShearOperator
+    {
+      SurfaceCoupling            coupling;
+      dealii::FullMatrix<double> Cz;   ///< u_z at the candidates of each vertex shear (n x m)
+      dealii::FullMatrix<double> K_zr; ///< D^T Cz: the weighted gaps of each vertex shear
+      dealii::FullMatrix<double> K_rr; ///< D_r^T C_rr D_r: the weighted radial displacements of each vertex shear
+      dealii::FullMatrix<double> K_rz; ///< K_zr^T: the weighted radial displacements of each vertex pressure
+    };
     /// The operator of the candidates the indenter can reach (r <= its extent).
     SurfaceOperator   surface_operator(const Indenter &indenter);
+    /// The shear operator of `op`'s vertices (of every candidate: built once and kept).
+    ShearOperator     shear_operator(const SurfaceOperator &op);
+    ActiveSetSolution solve_frictional(const UnilateralLoad &load, const SurfaceOperator &op, const ShearOperator &shear,
+                                       const std::vector<double> &f) const;
     /// C D + the indenter's displacements at the candidates / factor: the gap's displacements of each vertex pressure.
     dealii::FullMatrix<double> gap_compliance(const SurfaceOperator &op) const;
     /// K of `op` at the current factor.
     void combine(SurfaceOperator &op) const;
     ActiveSetSolution solve_active_set(const UnilateralLoad &load, const SurfaceOperator &op,
                                        const std::vector<double> &f) const;
+    /// The frictionless update of the contact set (PDAS with the rule for tensile runs at a singular edge, see
+    /// the header): the vertices that violate their condition switch; equal to `active` when none does.
+    static std::vector<bool> next_contact_set(const std::vector<bool> &active, const std::vector<double> &p,
+                                              const std::vector<double> &weighted_gap, const dealii::FullMatrix<double> &M,
+                                              double w_scale);
+    /// The scale of the weighted gaps of a state (round-off below gap_zero times it counts as zero).
+    double gap_scale(const SurfaceOperator &op, const ActiveSetSolution &s, const dealii::Vector<double> &D1) const;
     void              edges(const UnilateralLoad &load, const ActiveSetSolution &s, const std::vector<double> &f,
                             UnilateralResult &result) const;
     void sample(const dealii::Vector<double> &u, const dealii::Vector<double> *u_indenter, const std::vector<double> &p,
-                const OutputRequest &outputs, UnilateralResult &result) const;
+                const std::vector<double> &q, const OutputRequest &outputs, UnilateralResult &result) const;
 
     const DiscretizationParameters discretization;
     const MeshParameters           mesh_parameters;  ///< the half-space's (the indenter's derives from it)
@@ -252,6 +322,7 @@ namespace gradcontact::fem
     double                         indenter_factor = 1;
     double                         candidate_limit = 0;
     SurfaceOperator                all;       ///< the operator of every candidate
+    std::unique_ptr<ShearOperator> all_shear; ///< its shear operator, when a frictional load asked for it
     Timings                        setup_time;
   };
 

@@ -1,0 +1,148 @@
+// Requirements of Coulomb friction in the unilateral contact of a rigid indenter (fem/unilateral_contact.h,
+// "Friction"), by its sharp checks: a flat punch that sticks is Mossakovskii's bonded punch; where normal
+// pressure causes no radial displacement (Holl's ratio nu = 1/(2 + k)) friction changes nothing; during
+// loading with full stick the indentation stiffness of a sphere is the bonded punch's at the current radius.
+#include <fem/axisymmetric_solver.h>
+#include <fem/unilateral_contact.h>
+
+#include "written_out.h"
+
+#include <catch2/catch.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <memory>
+#include <vector>
+
+using namespace gradcontact::fem;
+using Catch::Matchers::WithinAbs;
+using Catch::Matchers::WithinRel;
+
+namespace
+{
+  constexpr double E0 = 2.0e9;
+  constexpr double c0 = 3.0e-4;
+  constexpr double a  = 1.0e-4;
+  constexpr double inf = std::numeric_limits<double>::infinity();
+
+  Material material_of(const double k, const double nu) { return Material{std::make_shared<PowerLawModulus>(E0, c0, k), nu}; }
+
+  Settings small_settings(const double k)
+  {
+    Settings s              = recommended_settings(a, k, 1e-6);
+    s.discretization.degree = 2;
+    s.mesh.h_edge           = 1e-4;
+    return s;
+  }
+
+  /// The force of a rigid flat punch bonded to a homogeneous half-space over its whole face, over the
+  /// frictionless punch's 2 E* a d: kappa = (1 - nu) ln(3 - 4 nu) / (1 - 2 nu) (Mossakovskii, Prikl. Mat.
+  /// Mekh. 18 (1954); the same factor relates the no-slip indentation stiffness of any axisymmetric punch to
+  /// its contact radius, dF/dd = 2 E* a kappa: Borodich and Keer, Proc. R. Soc. A 460 (2004) 507-514).
+  double bonded_punch_factor(const double nu) { return (1 - nu) * std::log(3 - 4 * nu) / (1 - 2 * nu); }
+
+  Indenter flat_punch()
+  {
+    Indenter i;
+    i.f      = [](double) { return 0.0; };
+    i.extent = a;
+    i.name   = "flat punch";
+    return i;
+  }
+} // namespace
+
+TEST_CASE("A flat punch that sticks shall be Mossakovskii's bonded punch (k = 0)", "[fem]")
+{
+  const double nu = GENERATE(0.2, 0.3, 0.45);
+  CAPTURE(nu);
+  const Settings          s = small_settings(0);
+  UnilateralContactSolver solver(material_of(0, nu), s.mesh, s.discretization, 1.6 * a);
+  UnilateralLoad          load;
+  load.indenter                 = flat_punch();
+  load.depth                    = 1e-3 * a;
+  const UnilateralResult smooth = solver.run(load);
+  load.friction.coefficient     = inf;
+  load.friction.load_steps      = 1;
+  const UnilateralResult stuck  = solver.run(load);
+  CAPTURE(smooth.force, stuck.force, stuck.force / smooth.force, bonded_punch_factor(nu), stuck.iterations,
+          stuck.stick_nodes, stuck.slip_inward_nodes, stuck.slip_outward_nodes, stuck.n_dofs);
+  CHECK(stuck.reliable);
+  // Measured: 5.3e-6, 1.0e-5, 4.6e-6 (nu = 0.2, 0.3, 0.45). At nu = 0.1 and below the bonded pressure turns
+  // tensile next to the edge (its oscillating singularity) and the contact and stick sets cycle (the solver says so).
+  CHECK_THAT(stuck.force / smooth.force, WithinRel(bonded_punch_factor(nu), 3e-5));
+}
+
+TEST_CASE("At Holl's ratio nu = 1/(2 + k) friction shall change nothing", "[fem]")
+{
+  const double k  = GENERATE(0.25, 0.5);
+  const double mu = GENERATE(0.3, inf);
+  const double nu = 1 / (2 + k);
+  CAPTURE(k, mu);
+  const Settings          s = small_settings(k);
+  UnilateralContactSolver solver(material_of(k, nu), s.mesh, s.discretization, 1.6 * a);
+  UnilateralLoad          load;
+  load.indenter               = Indenter::of(Profile::paraboloid(50 * a), a);
+  load.depth                  = 2e-2 * a;
+  OutputRequest out;
+  out.pressure_radii = {0, 0.5 * a};
+  const UnilateralResult smooth = solver.run(load, out);
+  load.friction.coefficient     = mu;
+  const UnilateralResult rough  = solver.run(load, out);
+  double q_max = 0;
+  for (const Sample &q : rough.shear)
+    q_max = std::max(q_max, std::abs(q.value));
+  CAPTURE(smooth.force, rough.force, smooth.outer_edge, rough.outer_edge, rough.stick_radius, q_max,
+          smooth.pressure[0].value, rough.iterations, rough.stick_nodes, rough.slip_inward_nodes,
+          rough.slip_outward_nodes);
+  CHECK(rough.reliable);
+  // Measured: force 1.1e-7 / 8.2e-7, edge 2.5e-5 / 1.7e-5 (inside the vertex bracket), max |q| / p(0) 1.3e-4 /
+  // 3.8e-6 (k = 0.25 / 0.5; the same for mu = 0.3 and full stick).
+  CHECK_THAT(rough.force, WithinRel(smooth.force, 3e-6));
+  CHECK_THAT(rough.outer_edge, WithinRel(smooth.outer_edge, 1e-4));
+  CHECK(q_max < 5e-4 * smooth.pressure[0].value);
+
+  // Away from Holl's ratio friction does change the force (the check above can fail).
+  UnilateralContactSolver other(material_of(k, 0.2), s.mesh, s.discretization, 1.6 * a);
+  load.friction.coefficient       = 0;
+  const UnilateralResult smooth_2 = other.run(load);
+  load.friction.coefficient       = mu;
+  const UnilateralResult rough_2  = other.run(load);
+  CAPTURE(rough_2.force / smooth_2.force - 1);
+  CHECK(std::abs(rough_2.force / smooth_2.force - 1) > 1e-3);
+}
+
+TEST_CASE("During loading with full stick a sphere's indentation stiffness shall approach the bonded punch's at "
+          "its contact radius (k = 0) as the load steps shrink",
+          "[fem]")
+{
+  const double            nu = 0.3;
+  const Settings          s  = small_settings(0);
+  UnilateralContactSolver solver(material_of(0, nu), s.mesh, s.discretization, 1.6 * a);
+  UnilateralLoad          load;
+  load.indenter             = Indenter::of(Profile::paraboloid(50 * a), a);
+  load.depth                = 2e-2 * a;
+  load.friction.coefficient = inf;
+  // The secant of the last step against 2 E* a kappa at the step's middle radius. A vertex that comes into
+  // contact during a step carries no shear in it (header): the stiffness is low by about the share of the
+  // step's new ring. Measured: -4.6e-3 (24 steps), -1.5e-3 (96 steps).
+  std::vector<double> errors;
+  for (const unsigned int steps : {24u, 96u})
+    {
+      load.friction.load_steps = steps;
+      const UnilateralResult r = solver.run(load);
+      REQUIRE(r.path.size() == steps);
+      const auto  &last = r.path.back(), &before = r.path[r.path.size() - 2];
+      const double slope     = (last.force - before.force) / (last.depth - before.depth);
+      const double radius    = 0.5 * (last.outer_edge + before.outer_edge);
+      const double reference = 2 * E0 / (1 - nu * nu) * radius * bonded_punch_factor(nu);
+      CAPTURE(steps, slope, reference, r.outer_edge / a, r.iterations, r.stick_nodes);
+      CHECK(r.reliable);
+      CHECK(r.slip_inward_nodes + r.slip_outward_nodes == 0);
+      errors.push_back(slope / reference - 1);
+    }
+  CAPTURE(errors[0], errors[1]);
+  CHECK(std::abs(errors[0]) < 6e-3);
+  CHECK(std::abs(errors[1]) < 2e-3);
+  CHECK(std::abs(errors[1]) < 0.5 * std::abs(errors[0]));
+}
