@@ -178,8 +178,17 @@ namespace gradcontact::cases
       return q == "force" ? p.force : (q == "contact radius" ? p.radius : p.pressure);
     }
 
-    std::string quantity_label(const std::string &q)
+    /// The radii (/ a) of a friction map's pressure: its deviation is the change of p(r) over them in the
+    /// area-weighted L2 norm, relative to p's (a point near the axis alone would see the local, log-singular effect
+    /// of the shear's jump at a small stick zone's edge). Inside the contact of every mu (friction shrinks it by a
+    /// few %).
+    const std::vector<double> friction_pressure_radii{0.02, 0.05, 0.1, 0.15, 0.2, 0.25, 0.3, 0.35, 0.4, 0.45,
+                                                      0.5,  0.55, 0.6, 0.65, 0.7, 0.75, 0.8, 0.85, 0.9};
+
+    std::string quantity_label(const std::string &q, const bool of_friction = false)
     {
+      if (q == "pressure" && of_friction)
+        return "p(r), L2 change";
       return q == "pressure" ? "p(" + format(axis_sample) + " a)" : q;
     }
 
@@ -208,7 +217,8 @@ namespace gradcontact::cases
     };
 
     /// The sharp-check rows of `check` (FE against closed forms where they are exact), named by `metric`.
-    void add_check_rows(const Scene &s, const MapPoint &check, const std::string &metric, SceneResult &result)
+    void add_check_rows(const Scene &s, const MapPoint &check, const std::string &metric, SceneResult &result,
+                        const std::string &pressure_row = "pressure at r = " + format(axis_sample) + " a")
     {
       if (!check.error.empty())
         {
@@ -220,8 +230,8 @@ namespace gradcontact::cases
       if (is_indenter(s))
         result.rows.push_back(compare("contact radius at the FE depth", metric, "FE", "closed form", 1., 1. + check.radius,
                                       1., s.tolerances.contact_radius, check.dofs, check.seconds));
-      result.rows.push_back(compare("pressure at r = " + format(axis_sample) + " a", metric, "FE", "closed form", 1.,
-                                    1. + check.pressure, 1., s.tolerances.pressure, check.dofs, check.seconds));
+      result.rows.push_back(compare(pressure_row, metric, "FE", "closed form", 1., 1. + check.pressure, 1.,
+                                    s.tolerances.pressure, check.dofs, check.seconds));
     }
 
     /// A real grading at exponent k: the sharp check with the power law itself, the ratios, and the FE
@@ -428,7 +438,8 @@ namespace gradcontact::cases
           load.depth = frictionless.get("depth");
           load.friction.load_steps = s.friction.load_steps;
           fem::OutputRequest request;
-          request.pressure_radii = {axis_sample * a};
+          for (const double x : friction_pressure_radii)
+            request.pressure_radii.push_back(x * a);
           const auto timed = [](const auto &work) {
             const auto start = std::chrono::steady_clock::now();
             work();
@@ -436,13 +447,33 @@ namespace gradcontact::cases
           };
           std::unique_ptr<fem::UnilateralContactSolver> solver;
           fem::UnilateralResult r;
+          // The change of p(r) from `reference` at the sampled radii in the area-weighted L2 norm (trapezoidal in
+          // r dr), relative to the reference's, with the sign of the change at r = 0.5 a; a radius beyond the
+          // contact is an error (the sampler leaves it out).
+          const auto pressure_change = [&](const std::vector<double> &reference) {
+            if (r.pressure.size() != reference.size())
+              throw std::runtime_error("p(r) sampled at " + std::to_string(r.pressure.size()) + " of " +
+                                       std::to_string(reference.size()) + " radii (beyond the contact?)");
+            const std::vector<double> &x = friction_pressure_radii;
+            double change = 0, norm = 0, sign = 1;
+            for (std::size_t i = 0; i < x.size(); ++i)
+              {
+                const double weight = x[i] * (x[std::min(i + 1, x.size() - 1)] - x[i == 0 ? 0 : i - 1]) / 2;
+                const double dp     = r.pressure[i].value - reference[i];
+                change += weight * dp * dp;
+                norm += weight * reference[i] * reference[i];
+                if (x[i] == 0.5)
+                  sign = dp < 0 ? -1 : 1;
+              }
+            return sign * std::sqrt(change / norm);
+          };
           const double setup = timed([&] {
             solver = std::make_unique<fem::UnilateralContactSolver>(model.material, model.settings.mesh,
                                                                     model.settings.discretization, 1.6 * a);
           });
           // One point: deviations from `base` (the closed forms, or the frictionless FE on the same mesh).
           const auto point = [&](const double mu, const double seconds, const double force, const double radius,
-                                 const double pressure) {
+                                 const std::vector<double> &pressure) {
             MapPoint p;
             p.ratio = mu;
             p.dofs = solver->n_dofs();
@@ -455,7 +486,7 @@ namespace gradcontact::cases
               {
                 p.force = r.force / force - 1;
                 p.radius = r.outer_edge / radius - 1;
-                p.pressure = r.pressure.at(0).value / pressure - 1;
+                p.pressure = pressure_change(pressure);
                 if (mu > 0)
                   p.stick = r.stick_radius / r.outer_edge;
               }
@@ -474,12 +505,23 @@ namespace gradcontact::cases
           };
           auto [seconds, error] = solve(0.);
           seconds += setup;
-          MapPoint smooth_check =
-            error.empty() ? point(0., seconds, frictionless.get("force"), frictionless.radius(),
-                                  frictionless.at("pressure", axis_sample * a))
-                          : MapPoint{};
+          MapPoint smooth_check;
+          if (error.empty())
+            try
+              {
+                std::vector<double> closed_pressure;
+                for (const double x : friction_pressure_radii)
+                  closed_pressure.push_back(frictionless.at("pressure", x * a));
+                smooth_check = point(0., seconds, frictionless.get("force"), frictionless.radius(), closed_pressure);
+              }
+            catch (const std::exception &e)
+              {
+                error = concise(e);
+              }
           smooth_check.error += error;
-          add_check_rows(s, smooth_check, metric + "frictionless", result);
+          add_check_rows(s, smooth_check, metric + "frictionless", result,
+                         "pressure, L2 change over r/a in [" + format(friction_pressure_radii.front()) + ", " +
+                           format(friction_pressure_radii.back()) + "] (area-weighted, relative)");
           if (!smooth_check.error.empty())
             {
               out.resolution_text = "not measured (the frictionless FE failed: " + cell(smooth_check.error) + ")";
@@ -494,7 +536,20 @@ namespace gradcontact::cases
                 p.error = error_mu;
                 return p;
               }
-            return point(mu, seconds_mu, smooth.force, smooth.outer_edge, smooth.pressure.at(0).value);
+            std::vector<double> smooth_pressure;
+            for (const fem::Sample &x : smooth.pressure)
+              smooth_pressure.push_back(x.value);
+            try
+              {
+                return point(mu, seconds_mu, smooth.force, smooth.outer_edge, smooth_pressure);
+              }
+            catch (const std::exception &e)
+              {
+                MapPoint p;
+                p.ratio = mu;
+                p.error = concise(e);
+                return p;
+              }
           };
           std::vector<double> mus = ratios;
           if (s.map.full_stick)
@@ -535,7 +590,7 @@ namespace gradcontact::cases
           else
             md << "FE resolution: not measured (no frictional point was solved)";
           for (const auto &[q, change] : out.resolution)
-            md << " " << quantity_label(q) << " " << format(change) << ";";
+            md << " " << quantity_label(q, true) << " " << format(change) << ";";
           if (holl)
             md << " Holl's ratio: every deviation below is the FE's own error (exact: 0).";
           md << " " << solver->n_dofs() << " DoFs; the frictionless FE against the closed forms: force "
@@ -631,8 +686,10 @@ namespace gradcontact::cases
          << s.friction.load_steps << " steps to the depth where the frictionless closed form has the contact radius "
             "Load/a = "
          << format(s.load.a) << " m: deviation = FE(mu) / FE(frictionless) - 1 on one mesh (force at the depth, "
-            "contact radius, pressure at r = "
-         << format(axis_sample) << " a), the error of the chapter's frictionless closed forms up to the frictionless "
+            "contact radius; for the pressure the change of p(r) sampled at r/a = "
+         << format(friction_pressure_radii.front()) << ", ..., " << format(friction_pressure_radii.back())
+         << " in the area-weighted L2 norm relative to p's, with the sign of the change at r = 0.5 a), the error of the "
+            "chapter's frictionless closed forms up to the frictionless "
             "FE's own error (the sharp-check rows of errors.csv); c/a is the radius of the stick zone around the axis "
             "over the contact radius (slip outside it). One mesh and solver per (k, nu) (fem::UnilateralContactSolver, "
             "the contact, stick and slip sets found at every step). At Holl's ratio nu = 1/(2 + k) pressure causes no "
@@ -662,8 +719,8 @@ namespace gradcontact::cases
     if (of_friction)
       largest_md << "## The largest effect of friction\n\nOver the map's mu" << (s.map.full_stick ? " and full stick" : "")
                  << ": the largest |FE(mu) / FE(frictionless) - 1| and the stick radius at the largest mu.\n\n"
-                    "| k | nu | force | contact radius | p("
-                 << format(axis_sample) << " a) | c/a at the largest mu |\n|---|---|---|---|---|---|\n";
+                    "| k | nu | force | contact radius | "
+                 << quantity_label("pressure", true) << " | c/a at the largest mu |\n|---|---|---|---|---|---|\n";
 
     std::map<std::string, std::vector<Series>> plots;
     for (const Panel &panel : panels)
@@ -680,7 +737,7 @@ namespace gradcontact::cases
         const std::vector<MapPoint> &points = map.points;
         std::map<std::string, double> resolution = map.resolution;
         md << "## " << panel_name(panel) << "\n\n| " << x << " | force | " << (indenter ? "contact radius | " : "")
-           << "p(" << format(axis_sample) << " a) | " << (of_friction ? "c/a | " : "") << "DoFs | s |\n|---|---|"
+           << quantity_label("pressure", of_friction) << " | " << (of_friction ? "c/a | " : "") << "DoFs | s |\n|---|---|"
            << (indenter ? "---|" : "") << (of_friction ? "---|" : "") << "---|---|---|\n";
         for (const MapPoint &p : points)
           {
@@ -736,7 +793,7 @@ namespace gradcontact::cases
                 }
             plots[q].push_back(curve);
             thresholds_md << "| " << format(k) << " |" << (of_friction ? " " + format(panel.nu) + " |" : "") << " "
-                          << quantity_label(q) << " |";
+                          << quantity_label(q, of_friction) << " |";
             for (const double t : s.map.thresholds)
               {
                 if (r.empty() && !full_stick)
@@ -803,7 +860,7 @@ namespace gradcontact::cases
           std::replace(stem.begin(), stem.end(), ' ', '_');
           write_plot(folder, stem,
                      stick ? s.info.name + ": stick radius c/a"
-                           : s.info.name + ": |" + quantity_label(q) +
+                           : s.info.name + ": |" + quantity_label(q, of_friction) +
                                (of_indenter   ? " / rigid indenter - 1|"
                                 : of_friction ? " / frictionless - 1|"
                                               : " / power law - 1|"),

@@ -24,6 +24,7 @@
 #include <limits>
 #include <map>
 #include <optional>
+#include <sstream>
 #include <stdexcept>
 
 namespace gradcontact::cases
@@ -84,7 +85,42 @@ namespace gradcontact::cases
       return fem::solve_remeshed(model.material, model.settings, load, s.load.a, out, remeshing);
     }
 
-    fem::Result run_unilateral(const Scene &s, const FeModel &model, const fem::OutputRequest &out)
+    /// With friction: the loading path and the stick zone of one FE run, as friction-<level>.md / .csv in the
+    /// report (the stick radius, the vertices that stick and slip, d, F, a and c at every load step).
+    void write_friction(const Scene &s, const fem::UnilateralResult &u, const fs::path &folder, const unsigned int level)
+    {
+      const std::string stem = "friction-" + std::to_string(level);
+      std::ofstream csv(folder / (stem + ".csv"));
+      csv.precision(12);
+      csv << "step,depth,force,contact_radius,stick_radius,stick_over_contact,active_set_solves\n";
+      std::ostringstream md;
+      md << "# " << s.info.name << ": Coulomb friction during loading (" << level << " refinement(s))\n\n"
+         << "mu = " << format(s.friction.coefficient) << " between the rigid indenter and E0 (z/c0)^k (k = "
+         << format(s.material.k) << ", nu = " << format(s.material.nu) << "), the load from zero in " << u.path.size()
+         << " steps (fem::UnilateralContactSolver). At the end: contact radius " << format(u.outer_edge)
+         << " m, stick radius c = " << format(u.stick_radius) << " m (c/a = " << format(u.stick_radius / u.outer_edge)
+         << "); of the surface vertices in contact " << u.stick_nodes << " stick, " << u.slip_inward_nodes
+         << " slip inward (q > 0) and " << u.slip_outward_nodes << " outward (q < 0); " << u.iterations
+         << " active-set solves in all.\n\n| step | d [m] | F [N] | a [m] | c [m] | c/a | solves |\n|---|---|---|---|---|---|---|\n";
+      unsigned int step = 0, before = 0;
+      for (const fem::UnilateralResult::PathPoint &p : u.path)
+        {
+          ++step;
+          // no contact yet (the first steps may not reach a vertex beyond the axis): no c/a
+          const bool touching = p.outer_edge > 0;
+          csv << step << ',' << p.depth << ',' << p.force << ',' << p.outer_edge << ',' << p.stick_radius << ','
+              << (touching ? format(p.stick_radius / p.outer_edge) : std::string()) << ',' << p.iterations - before << '\n';
+          md << "| " << step << " | " << format(p.depth) << " | " << format(p.force) << " | " << format(p.outer_edge)
+             << " | " << format(p.stick_radius) << " | "
+             << (touching ? format(p.stick_radius / p.outer_edge) : std::string("- (no contact)")) << " | "
+             << p.iterations - before << " |\n";
+          before = p.iterations;
+        }
+      std::ofstream(folder / (stem + ".md")) << md.str();
+    }
+
+    fem::Result run_unilateral(const Scene &s, const FeModel &model, const fem::OutputRequest &out,
+                               const fs::path &folder, const unsigned int level)
     {
       const bool by_force = s.load.type != Type::concave_punch && s.load.control == Control::force;
       const fem::UnilateralResult u =
@@ -106,6 +142,8 @@ namespace gradcontact::cases
             r.displacement[i].value += u.indenter_displacement.at(i).value;
           r.message += " elastic indenter: w(r) is the sum of both surfaces' displacements;";
         }
+      if (s.friction.enabled())
+        write_friction(s, u, folder, level);
       if (s.friction.enabled())
         r.message += " Coulomb friction mu = " + format(s.friction.coefficient) + " during loading (" +
                      std::to_string(u.path.size()) + " load steps, " + std::to_string(u.iterations) +
@@ -136,7 +174,7 @@ namespace gradcontact::cases
       fem::OutputRequest out = output_request(s);
       if (s.outputs.vtu)
         out.vtu_file = (folder / ("fields-" + std::to_string(refinement) + ".vtu")).string();
-      const fem::Result r = s.load.contact == LoadParameters::Contact::unilateral ? run_unilateral(s, model, out) :
+      const fem::Result r = s.load.contact == LoadParameters::Contact::unilateral ? run_unilateral(s, model, out, folder, refinement) :
                             fem::AxisymmetricSolver(model.material, model.settings.mesh,
                                                     model.settings.discretization).run(model.load, out);
       return {refinement, r, std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count()};

@@ -88,17 +88,9 @@ namespace gradcontact::fem
     const unsigned int steps      = load.friction.load_steps;
     const std::vector<double> &vertex_r = half_space->coupling.vertex_r;
 
-    Vector<double> ones(n), fv(n), D1(m), Df(m);
-    for (unsigned int i = 0; i < n; ++i)
-      {
-        ones[i] = 1;
-        fv[i]   = f[i];
-      }
-    op.D.Tvmult(D1, ones);
-    op.D.Tvmult(Df, fv);
-    std::vector<double> f_vertex(m);
-    for (unsigned int k = 0; k < m; ++k)
-      f_vertex[k] = load.indenter.f(vertex_r[k]);
+    const WeightedProfile      weighted = weighted_profile(op, load, f);
+    const Vector<double>      &D1 = weighted.D1, &Df = weighted.Df;
+    const std::vector<double> &f_vertex = weighted.f_vertex;
 
     // The state of the sets at one load (target: the depth or F / (2 pi)) from the previous step's weighted
     // radial displacements W0: p on the contact set, q on its stick vertices (q = slip mu p on its slip

@@ -398,22 +398,11 @@ namespace gradcontact::fem
     const unsigned int m        = op.D.n(); // pressure vertices
     const bool         by_force = load.control == ContactControl::force;
     const double       target   = load.force / (2 * numbers::PI); // 1^T D p
-    const std::vector<double> &vertex_r = half_space->coupling.vertex_r;
     const FullMatrix<double>   C        = gap_compliance(op);      // the gap's displacements of each vertex pressure
 
-    // D^T 1 and D^T f: the weighted unit depth and profile.
-    Vector<double> ones(n), fv(n), D1(m), Df(m);
-    for (unsigned int i = 0; i < n; ++i)
-      {
-        ones[i] = 1;
-        fv[i]   = f[i];
-      }
-    op.D.Tvmult(D1, ones);
-    op.D.Tvmult(Df, fv);
-    // The geometric overlap at the vertices (the profile interpolated there).
-    std::vector<double> f_vertex(m);
-    for (unsigned int k = 0; k < m; ++k)
-      f_vertex[k] = load.indenter.f(vertex_r[k]);
+    const WeightedProfile      weighted = weighted_profile(op, load, f);
+    const Vector<double>      &D1 = weighted.D1, &Df = weighted.Df;
+    const std::vector<double> &f_vertex = weighted.f_vertex;
 
     // The state of an active set: p on it (0 elsewhere), lambda = D p, u = C lambda, the weighted gaps
     // w = D^T (u - (d - f)); the depth given or found.
@@ -583,6 +572,28 @@ namespace gradcontact::fem
   }
 
 
+
+  UnilateralContactSolver::WeightedProfile
+  UnilateralContactSolver::weighted_profile(const SurfaceOperator &op, const UnilateralLoad &load,
+                                            const std::vector<double> &f) const
+  {
+    const unsigned int n = op.D.m(), m = op.D.n();
+    WeightedProfile    w;
+    Vector<double>     ones(n), fv(n);
+    for (unsigned int i = 0; i < n; ++i)
+      {
+        ones[i] = 1;
+        fv[i]   = f[i];
+      }
+    w.D1.reinit(m);
+    w.Df.reinit(m);
+    op.D.Tvmult(w.D1, ones);
+    op.D.Tvmult(w.Df, fv);
+    w.f_vertex.resize(m);
+    for (unsigned int k = 0; k < m; ++k)
+      w.f_vertex[k] = load.indenter.f(half_space->coupling.vertex_r[k]);
+    return w;
+  }
 
   double UnilateralContactSolver::gap_scale(const SurfaceOperator &op, const ActiveSetSolution &s,
                                             const Vector<double> &D1) const

@@ -306,6 +306,14 @@ namespace gradcontact::fem
     static std::vector<bool> next_contact_set(const std::vector<bool> &active, const std::vector<double> &p,
                                               const std::vector<double> &weighted_gap, const dealii::FullMatrix<double> &M,
                                               double w_scale);
+    /// D^T 1 and D^T f (the weighted unit depth and profile) and f at the vertices (the geometric overlap).
+    struct WeightedProfile
+    {
+      dealii::Vector<double> D1, Df;
+      std::vector<double>    f_vertex;
+    };
+    WeightedProfile weighted_profile(const SurfaceOperator &op, const UnilateralLoad &load,
+                                     const std::vector<double> &f) const;
     /// The scale of the weighted gaps of a state (round-off below gap_zero times it counts as zero).
     double gap_scale(const SurfaceOperator &op, const ActiveSetSolution &s, const dealii::Vector<double> &D1) const;
     void              edges(const UnilateralLoad &load, const ActiveSetSolution &s, const std::vector<double> &f,

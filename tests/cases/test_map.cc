@@ -208,3 +208,69 @@ TEST_CASE("An indenter-modulus map at k = 0 shall be Hertz's two elastic bodies"
   for (std::size_t i = 1; i < errors.size(); ++i)
     CHECK(errors[i][9] == "pass");
 }
+
+TEST_CASE("A friction map shall read its threshold toward mu -> 0 and read full stick on its own", "[cases]")
+{
+  // |deviation| = 0.02 mu (the linear regime of full slip) crosses 1e-3 at mu = 0.05; full stick is read apart.
+  const std::vector<double> mus{0.01, 0.1, 0.3, 1};
+  std::vector<double> deviations;
+  for (const double mu : mus)
+    deviations.push_back(0.02 * mu);
+  const std::string at = friction_threshold_cell(mus, deviations, 0.03, 1e-3);
+  REQUIRE(at.rfind("<= ", 0) == 0);
+  CHECK(std::stod(at.substr(3)) == Approx(0.05).epsilon(1e-5));
+  CHECK(friction_threshold_cell(mus, deviations, 0.03, 0.1) == "at every mu (full stick included)");
+  CHECK(friction_threshold_cell(mus, deviations, 0.3, 0.1) == "at every mu up to 1, not at full stick");
+  CHECK(friction_threshold_cell(mus, deviations, std::nullopt, 0.1) == "at every mu up to 1");
+  CHECK(friction_threshold_cell({}, {}, 0.05, 0.1) == "at full stick");
+}
+
+TEST_CASE("A friction map shall check the frictionless FE and Holl's ratio, and write the map of (k, nu, mu)",
+          "[cases]")
+{
+  // k = 0.5, nu = 0.2 and Holl's ratio 0.4: at 0.4 friction changes nothing (exact: the sharp-check rows pass); at
+  // 0.2 full stick raises the force at the depth.
+  const TemporaryFolder folder("gradcontact-friction-map");
+  const fs::path scene = folder.path() / "friction_map.prm";
+  std::ofstream(scene) << "subsection Material\n  set nu = 0.2\nend\n"
+                          "subsection Load\n  set type = paraboloid\n  set a = 1e-4\n  set R = 5e-3\nend\n"
+                          "subsection Friction\n  set load steps = 6\nend\n"
+                          "subsection Discretization\n  set degree = 2\n  set force tolerance = 1e-2\nend\n"
+                          "subsection Tolerances\n  set force = 1e-2\n  set contact radius = 1e-2\n"
+                          "  set pressure = 5e-2\nend\n"
+                          "subsection Map\n  set parameter = friction coefficient\n  set ratios = 1\n"
+                          "  set k values = 0.5\n  set thresholds = 0.01\nend\n";
+  const fs::path reports = folder.path() / "reports";
+  REQUIRE(run({scene.string(), "--reports", reports.string(), "--quiet"}) == 0);
+  const fs::path out = reports / "friction_map";
+  for (const char *file : {"errors.csv", "map.csv", "map.md"})
+    CHECK(fs::exists(out / file));
+  // map.csv: k, nu, mu, the deviations, c/a, ...; nu = 0.2 (mu = 1, inf), then Holl's 0.4 (mu = 1, inf).
+  const auto csv = testing::read_csv(out / "map.csv");
+  REQUIRE(csv.size() == 5);
+  CHECK(csv[0][1] == "nu");
+  CHECK(csv[0][2] == "mu");
+  CHECK(csv[0][6] == "stick_radius_over_a");
+  CHECK(csv[4][2] == "inf");
+  for (std::size_t i = 1; i < csv.size(); ++i)
+    {
+      const double nu = std::stod(csv[i][1]), force = std::stod(csv[i][3]), stick = std::stod(csv[i][6]);
+      CAPTURE(nu, csv[i][2], force, stick);
+      CHECK(csv[i][9].empty());
+      CHECK(stick > 0);
+      CHECK(stick <= 1);
+      if (nu < 0.3)
+        CHECK(force > 1e-3);
+      else
+        CHECK(std::abs(force) < 1e-6);
+    }
+  // The sharp checks (the frictionless FE against the closed forms; at Holl's ratio friction against none) pass.
+  const auto errors = testing::read_csv(out / "errors.csv");
+  REQUIRE(errors.size() == 11);
+  for (std::size_t i = 1; i < errors.size(); ++i)
+    CHECK(errors[i][9] == "pass");
+  const std::string md = testing::read_text(out / "map.md");
+  CHECK(md.find("## k = 0.5, nu = 1/(2 + k) = 0.4") != std::string::npos);
+  CHECK(md.find("within 1 % when mu |") != std::string::npos);
+  CHECK(md.find("## The largest effect of friction") != std::string::npos);
+}

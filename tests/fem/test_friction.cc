@@ -76,9 +76,8 @@ TEST_CASE("A flat punch that sticks shall be Mossakovskii's bonded punch (k = 0)
 TEST_CASE("At Holl's ratio nu = 1/(2 + k) friction shall change nothing", "[fem]")
 {
   const double k  = GENERATE(0.25, 0.5);
-  const double mu = GENERATE(0.3, inf);
   const double nu = 1 / (2 + k);
-  CAPTURE(k, mu);
+  CAPTURE(k);
   const Settings          s = small_settings(k);
   UnilateralContactSolver solver(material_of(k, nu), s.mesh, s.discretization, 1.6 * a);
   UnilateralLoad          load;
@@ -87,26 +86,29 @@ TEST_CASE("At Holl's ratio nu = 1/(2 + k) friction shall change nothing", "[fem]
   OutputRequest out;
   out.pressure_radii = {0, 0.5 * a};
   const UnilateralResult smooth = solver.run(load, out);
-  load.friction.coefficient     = mu;
-  const UnilateralResult rough  = solver.run(load, out);
-  double q_max = 0;
-  for (const Sample &q : rough.shear)
-    q_max = std::max(q_max, std::abs(q.value));
-  CAPTURE(smooth.force, rough.force, smooth.outer_edge, rough.outer_edge, rough.stick_radius, q_max,
-          smooth.pressure[0].value, rough.iterations, rough.stick_nodes, rough.slip_inward_nodes,
-          rough.slip_outward_nodes);
-  CHECK(rough.reliable);
-  // Measured: force 1.1e-7 / 8.2e-7, edge 2.5e-5 / 1.7e-5 (inside the vertex bracket), max |q| / p(0) 1.3e-4 /
-  // 3.8e-6 (k = 0.25 / 0.5; the same for mu = 0.3 and full stick).
-  CHECK_THAT(rough.force, WithinRel(smooth.force, 3e-6));
-  CHECK_THAT(rough.outer_edge, WithinRel(smooth.outer_edge, 1e-4));
-  CHECK(q_max < 5e-4 * smooth.pressure[0].value);
+  for (const double mu : {0.3, inf})
+    {
+      load.friction.coefficient    = mu;
+      const UnilateralResult rough = solver.run(load, out);
+      double q_max = 0;
+      for (const Sample &q : rough.shear)
+        q_max = std::max(q_max, std::abs(q.value));
+      CAPTURE(mu, smooth.force, rough.force, smooth.outer_edge, rough.outer_edge, rough.stick_radius, q_max,
+              smooth.pressure[0].value, rough.iterations, rough.stick_nodes, rough.slip_inward_nodes,
+              rough.slip_outward_nodes);
+      CHECK(rough.reliable);
+      // Measured: force 1.1e-7 / 8.2e-7, edge 2.5e-5 / 1.7e-5 (inside the vertex bracket), max |q| / p(0) 1.3e-4 /
+      // 3.8e-6 (k = 0.25 / 0.5; the same for mu = 0.3 and full stick).
+      CHECK_THAT(rough.force, WithinRel(smooth.force, 3e-6));
+      CHECK_THAT(rough.outer_edge, WithinRel(smooth.outer_edge, 1e-4));
+      CHECK(q_max < 5e-4 * smooth.pressure[0].value);
+    }
 
-  // Away from Holl's ratio friction does change the force (the check above can fail).
+  // Away from Holl's ratio full stick does change the force (the checks above can fail).
   UnilateralContactSolver other(material_of(k, 0.2), s.mesh, s.discretization, 1.6 * a);
   load.friction.coefficient       = 0;
   const UnilateralResult smooth_2 = other.run(load);
-  load.friction.coefficient       = mu;
+  load.friction.coefficient       = inf;
   const UnilateralResult rough_2  = other.run(load);
   CAPTURE(rough_2.force / smooth_2.force - 1);
   CHECK(std::abs(rough_2.force / smooth_2.force - 1) > 1e-3);
@@ -145,4 +147,91 @@ TEST_CASE("During loading with full stick a sphere's indentation stiffness shall
   CHECK(std::abs(errors[0]) < 6e-3);
   CHECK(std::abs(errors[1]) < 2e-3);
   CHECK(std::abs(errors[1]) < 0.5 * std::abs(errors[0]));
+}
+
+TEST_CASE("A frictional paraboloid on a power-law medium shall load self-similarly, F ~ d^{(3+k)/2}, as the load "
+          "steps shrink",
+          "[fem]")
+{
+  // E(lambda z) = lambda^k E(z) and f(lambda r) = lambda^2 f(r): a state at depth d scaled by lambda^2 in d and
+  // lambda in r is a state, with friction too (the stick condition compares increments, which scale alike).
+  // So along monotone loading F ~ d^{(3+k)/2} and c/a is constant (k = 0: Spence, Proc. R. Soc. A 305 (1968)
+  // 55-80). The FE path carries the error of its steps (a vertex that comes into contact during a step carries
+  // no shear in it) and of the vertex bracket of each edge.
+  const double            k = 0.5, nu = 0.2, mu = 0.3;
+  const Settings          s = small_settings(k);
+  UnilateralContactSolver solver(material_of(k, nu), s.mesh, s.discretization, 1.6 * a);
+  UnilateralLoad          load;
+  load.indenter             = Indenter::of(Profile::paraboloid(50 * a), a);
+  load.depth                = 2e-2 * a;
+  const double smooth_force  = solver.run(load).force;
+  load.friction.coefficient = mu;
+  std::vector<double> errors;
+  for (const unsigned int steps : {24u, 96u})
+    {
+      load.friction.load_steps = steps;
+      const UnilateralResult r = solver.run(load);
+      REQUIRE(r.path.size() == steps);
+      CHECK(r.reliable);
+      // The exponent between the middle of the path and its end (the contact spans many vertices there).
+      const auto  &middle = r.path[steps / 2 - 1], &end = r.path.back();
+      const double exponent = std::log(end.force / middle.force) / std::log(end.depth / middle.depth);
+      CAPTURE(steps, exponent, r.force / smooth_force - 1, r.stick_radius / r.outer_edge, r.slip_inward_nodes,
+              r.slip_outward_nodes);
+      // Friction acts here (it raises the force by more than 3e-3), so the exponent is the frictional path's.
+      CHECK(r.force / smooth_force - 1 > 3e-3);
+      errors.push_back(std::abs(exponent - (3 + k) / 2));
+    }
+  // Measured: 1.3e-3 (24 steps), 3.5e-4 (96 steps).
+  CAPTURE(errors[0], errors[1]);
+  CHECK(errors[1] < errors[0]);
+  CHECK(errors[0] < 3e-3);
+  CHECK(errors[1] < 1e-3);
+}
+
+TEST_CASE("Friction shall refuse bad input with the parameter, its value and the range", "[fem]")
+{
+  UnilateralLoad load;
+  load.indenter             = Indenter::of(Profile::paraboloid(50 * a), a);
+  load.depth                = 1e-2 * a;
+  load.friction.coefficient = -0.1;
+  CHECK_THROWS_WITH(load.validate(), Catch::Contains("friction coefficient") && Catch::Contains("-0.1") &&
+                                       Catch::Contains("[0, inf]"));
+  load.friction.coefficient = std::nan("");
+  CHECK_THROWS_WITH(load.validate(), Catch::Contains("friction coefficient") && Catch::Contains("nan"));
+  load.friction.coefficient = 0.3;
+  load.friction.load_steps  = 0;
+  CHECK_THROWS_WITH(load.validate(), Catch::Contains("friction load steps") && Catch::Contains("[1, 10000]"));
+}
+
+TEST_CASE("The bonded punch's force ratio shall converge to Mossakovskii's factor under uniform refinement",
+          "[verification]")
+{
+  // k = 0, nu = 0.3, degree 1: the full-stick flat punch over the frictionless one against kappa(nu) (the
+  // frictionless force is Sneddon's to 1e-6 on these meshes, so the ratio's error is the bonded solve's).
+  const double nu = 0.3;
+  std::vector<double> errors;
+  for (unsigned int level = 0; level <= 2; ++level)
+    {
+      Settings s                = small_settings(0);
+      s.discretization.degree   = 1;
+      s.mesh.h_edge             = 1e-3;
+      s.mesh.global_refinements = level;
+      UnilateralContactSolver solver(material_of(0, nu), s.mesh, s.discretization, 1.6 * a);
+      UnilateralLoad          load;
+      load.indenter                = flat_punch();
+      load.depth                   = 1e-3 * a;
+      const UnilateralResult smooth = solver.run(load);
+      load.friction.coefficient     = inf;
+      load.friction.load_steps      = 1;
+      const UnilateralResult stuck  = solver.run(load);
+      CHECK(stuck.reliable);
+      errors.push_back(std::abs(stuck.force / smooth.force / bonded_punch_factor(nu) - 1));
+    }
+  // Measured: 4.5e-4, 9.9e-5, 1.5e-5 (orders 2.2, 2.7).
+  const double order01 = std::log2(errors[0] / errors[1]), order12 = std::log2(errors[1] / errors[2]);
+  CAPTURE(errors[0], errors[1], errors[2], order01, order12);
+  CHECK(order01 > 1.5);
+  CHECK(order12 > 1.5);
+  CHECK(errors[2] < 5e-5);
 }
