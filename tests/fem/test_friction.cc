@@ -149,6 +149,42 @@ TEST_CASE("During loading with full stick a sphere's indentation stiffness shall
   CHECK(std::abs(errors[1]) < 0.5 * std::abs(errors[0]));
 }
 
+TEST_CASE("At full stick a sphere's force at a depth shall be kappa(nu) times the frictionless force times its "
+          "contact radius ratio (k = 0)",
+          "[fem]")
+{
+  // With the incremental stiffness dF/dd = 2 E* a kappa(nu) of the bonded punch at the current radius and the
+  // self-similar radius a = lambda sqrt(R d) (Spence, Proc. R. Soc. A 305 (1968) 55-80): F = (4/3) E* kappa
+  // lambda sqrt(R) d^{3/2}, so F / F_Hertz = kappa(nu) a / a_Hertz at equal depth. The FE path (24 and 48 steps,
+  // extrapolated to the first-order error's limit) against it; the contact radii are each within a vertex bracket.
+  const double nu = GENERATE(0.3, 0.4);
+  CAPTURE(nu);
+  const Settings          s = small_settings(0);
+  UnilateralContactSolver solver(material_of(0, nu), s.mesh, s.discretization, 1.6 * a);
+  UnilateralLoad          load;
+  load.indenter                 = Indenter::of(Profile::paraboloid(50 * a), a);
+  load.depth                    = 2e-2 * a;
+  const UnilateralResult smooth = solver.run(load);
+  load.friction.coefficient     = inf;
+  std::vector<double> force, radius;
+  for (const unsigned int steps : {24u, 48u})
+    {
+      load.friction.load_steps = steps;
+      const UnilateralResult r = solver.run(load);
+      CHECK(r.reliable);
+      force.push_back(r.force / smooth.force);
+      radius.push_back(r.outer_edge / smooth.outer_edge);
+    }
+  const double force_ratio = 2 * force[1] - force[0], radius_ratio = 2 * radius[1] - radius[0];
+  const double reference   = bonded_punch_factor(nu) * radius_ratio;
+  CAPTURE(force[0], force[1], radius[0], radius[1], force_ratio, radius_ratio, reference);
+  // Friction matters here (the check can fail): the force rises by 1.6 % / 0.53 % (kappa - 1 = 2.9 % / 0.94 % less
+  // the radius's fall). Measured: 7e-5 / 4.9e-4 (nu = 0.3 / 0.4); at nu = 0.2 (kappa - 1 = 5.1 %) 2.2e-3, where the
+  // bonded edge's oscillating singularity is stronger and the radius less settled along the path.
+  CHECK(force_ratio - 1 > 3e-3);
+  CHECK_THAT(force_ratio, WithinRel(reference, 1e-3));
+}
+
 TEST_CASE("A frictional paraboloid on a power-law medium shall load self-similarly, F ~ d^{(3+k)/2}, as the load "
           "steps shrink",
           "[fem]")
