@@ -226,8 +226,18 @@ namespace gradcontact::cases
        << (logx ? "set logscale x\n" : "") << (logy ? "set logscale y\nset format y \"%.0e\"\n" : "");
     std::string plot = "plot ";
     for (std::size_t i = 0; i < series.size(); ++i)
-      plot += std::string(i ? ", " : "") + "'" + stem + ".dat' index " + std::to_string(i) + " with " +
-              (series[i].linespoints ? "linespoints lw 2 pt 7 ps 1" : series[i].points ? "points pt 7 ps 1.2" : "lines lw 2") + " title \"" + series[i].title + "\" noenhanced";
+      {
+        // gnuplot cycles through 8 colours: from the 9th series on, another point shape and dash tell them apart
+        const std::size_t round = i / 8;
+        constexpr int     shapes[] = {7, 5, 9, 11, 13};
+        const std::string shape    = std::to_string(shapes[round % 5]);
+        const std::string dash  = " dt " + std::to_string(round % 5 + 1);
+        plot += std::string(i ? ", " : "") + "'" + stem + ".dat' index " + std::to_string(i) + " with " +
+                (series[i].linespoints ? "linespoints lw 2 pt " + shape + " ps 1" + dash
+                 : series[i].points    ? "points pt " + shape + " ps 1.2"
+                                       : "lines lw 2" + dash) +
+                " title \"" + series[i].title + "\" noenhanced";
+      }
     gp << "set terminal pngcairo size 1100,600\nset output '" << stem << ".png'\n" << plot << "\n"
        << "set terminal svg size 1100,600\nset output '" << stem << ".svg'\n" << plot << "\n";
     gp.close();
