@@ -590,10 +590,14 @@ namespace gradcontact::cases
                                                 1. + p.radius, 1., s.tolerances.contact_radius, p.dofs, p.seconds));
                 }
             }
-          // The FE resolution: the change of the extrapolation from N/2 and N steps to N and 2N at the largest mu
-          // solved (the mesh's error is the frictionless check's, below).
-          const auto largest = std::find_if(out.points.rbegin(), out.points.rend(),
-                                            [](const MapPoint &p) { return p.error.empty(); });
+          // The FE resolution: the change of the extrapolation from N/2 and N steps to N and 2N at the largest
+          // finite mu solved, where slip and stick meet (full stick only when no finite mu was solved; the mesh's
+          // error is the frictionless check's, below).
+          auto largest = std::find_if(out.points.rbegin(), out.points.rend(), [](const MapPoint &p) {
+            return p.error.empty() && std::isfinite(p.ratio);
+          });
+          if (largest == out.points.rend())
+            largest = std::find_if(out.points.rbegin(), out.points.rend(), [](const MapPoint &p) { return p.error.empty(); });
           std::ostringstream md;
           if (largest != out.points.rend() && steps >= 2)
             {
@@ -741,9 +745,9 @@ namespace gradcontact::cases
     thresholds_md << '\n';
     if (of_friction)
       largest_md << "## The largest effect of friction\n\nOver the map's mu" << (s.map.full_stick ? " and full stick" : "")
-                 << ": the largest |FE(mu) / FE(frictionless) - 1| and the stick radius at the largest mu.\n\n"
+                 << ": the largest |FE(mu) / FE(frictionless) - 1| and the stick radius c/a at the largest finite mu.\n\n"
                     "| k | nu | force | contact radius | "
-                 << quantity_label("pressure", true) << " | c/a at the largest mu |\n|---|---|---|---|---|---|\n";
+                 << quantity_label("pressure", true) << " | c/a at the largest finite mu |\n|---|---|---|---|---|---|\n";
 
     std::map<std::string, std::vector<Series>> plots;
     for (const Panel &panel : panels)
@@ -796,7 +800,8 @@ namespace gradcontact::cases
                     largest = std::max(largest, std::abs(deviation_of(p, q)));
                 largest_md << " " << (largest < 0 ? std::string("no point") : format(largest)) << " |";
               }
-            const auto last = std::find_if(points.rbegin(), points.rend(), [](const MapPoint &p) { return p.error.empty(); });
+            const auto last = std::find_if(points.rbegin(), points.rend(),
+                                           [](const MapPoint &p) { return p.error.empty() && std::isfinite(p.ratio); });
             largest_md << " " << (last == points.rend() ? std::string("-") : format(last->stick)) << " |\n";
           }
         for (const std::string &q : quantities)

@@ -97,21 +97,26 @@ namespace gradcontact::cases
       md << "# " << s.info.name << ": Coulomb friction during loading (" << level << " refinement(s))\n\n"
          << "mu = " << format(s.friction.coefficient) << " between the rigid indenter and E0 (z/c0)^k (k = "
          << format(s.material.k) << ", nu = " << format(s.material.nu) << "), the load from zero in " << u.path.size()
-         << " steps (fem::UnilateralContactSolver). At the end: contact radius " << format(u.outer_edge)
-         << " m, stick radius c = " << format(u.stick_radius) << " m (c/a = " << format(u.stick_radius / u.outer_edge)
-         << "); of the surface vertices in contact " << u.stick_nodes << " stick, " << u.slip_inward_nodes
+         << " steps (fem::UnilateralContactSolver). At the end: contact radius " << format(u.outer_edge) << " m, "
+         << (std::isnan(u.stick_radius) ? std::string("no stick zone at the axis (the axis is not in contact)")
+                                        : "stick radius c = " + format(u.stick_radius) +
+                                            " m (c/a = " + format(u.stick_radius / u.outer_edge) + ")")
+         << "; of the surface vertices in contact " << u.stick_nodes << " stick, " << u.slip_inward_nodes
          << " slip inward (q > 0) and " << u.slip_outward_nodes << " outward (q < 0); " << u.iterations
          << " active-set solves in all.\n\n| step | d [m] | F [N] | a [m] | c [m] | c/a | solves |\n|---|---|---|---|---|---|---|\n";
       unsigned int step = 0, before = 0;
       for (const fem::UnilateralResult::PathPoint &p : u.path)
         {
           ++step;
-          // no contact yet (the first steps may not reach a vertex beyond the axis): no c/a
-          const bool touching = p.outer_edge > 0;
-          csv << step << ',' << p.depth << ',' << p.force << ',' << p.outer_edge << ',' << p.stick_radius << ','
+          // no contact yet (the first steps may not reach a vertex beyond the axis), or none at the axis: no c/a
+          const bool touching = p.outer_edge > 0 && !std::isnan(p.stick_radius);
+          csv << step << ',' << p.depth << ',' << p.force << ',' << p.outer_edge << ',';
+          if (!std::isnan(p.stick_radius))
+            csv << p.stick_radius;
+          csv << ','
               << (touching ? format(p.stick_radius / p.outer_edge) : std::string()) << ',' << p.iterations - before << '\n';
           md << "| " << step << " | " << format(p.depth) << " | " << format(p.force) << " | " << format(p.outer_edge)
-             << " | " << format(p.stick_radius) << " | "
+             << " | " << (std::isnan(p.stick_radius) ? std::string("-") : format(p.stick_radius)) << " | "
              << (touching ? format(p.stick_radius / p.outer_edge) : std::string("- (no contact)")) << " | "
              << p.iterations - before << " |\n";
           before = p.iterations;
@@ -147,7 +152,10 @@ namespace gradcontact::cases
       if (s.friction.enabled())
         r.message += " Coulomb friction mu = " + format(s.friction.coefficient) + " during loading (" +
                      std::to_string(u.path.size()) + " load steps, " + std::to_string(u.iterations) +
-                     " active-set solves): stick radius " + format(u.stick_radius / u.outer_edge) + " of the contact, " +
+                     " active-set solves): " +
+                     (std::isnan(u.stick_radius) ? std::string("no stick zone at the axis")
+                                                 : "stick radius " + format(u.stick_radius / u.outer_edge) + " of the contact") +
+                     ", " +
                      std::to_string(u.stick_nodes) + " vertices stick, " + std::to_string(u.slip_inward_nodes) +
                      " slip inward, " + std::to_string(u.slip_outward_nodes) + " outward;";
       r.consistent_contact = u.zones.size() == 1;

@@ -679,6 +679,9 @@ namespace gradcontact::cases
           throw std::invalid_argument(where + "Map/parameter is set: the map chooses the indenter; Indenter/elasticity "
                                       "must be rigid");
       }
+    if (!s.map.enabled() && !s.map.poisson_ratios.empty())
+      throw std::invalid_argument(where + "Map/nu values is set without a map (Map/parameter = none): it belongs to a "
+                                  "friction coefficient map");
     if (s.map.enabled())
       {
         using Type = LoadParameters::Type;
@@ -707,6 +710,12 @@ namespace gradcontact::cases
               throw std::invalid_argument(where + "Map/parameter = indenter modulus needs Material/modulus = power law "
                                           "(the map isolates the indenter's elasticity)");
           }
+        if (s.map.parameter == MapParameters::Parameter::friction_coefficient &&
+            (s.friction.load_steps < 2 || s.friction.load_steps % 2 != 0))
+          throw std::invalid_argument(where + "Map/parameter = friction coefficient with Friction/load steps = " +
+                                      std::to_string(s.friction.load_steps) +
+                                      ": the map extrapolates from N and 2N steps and measures it from N/2: give an even "
+                                      "number >= 2");
         if (s.map.parameter != MapParameters::Parameter::friction_coefficient && !s.map.poisson_ratios.empty())
           throw std::invalid_argument(where + "Map/nu values is set for Map/parameter other than friction coefficient: "
                                       "the other maps run at Material/nu");

@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <limits>
 #include <set>
 #include <sstream>
 #include <stdexcept>
@@ -30,7 +31,6 @@ namespace gradcontact::fem
     if (of_all && all_shear)
       return *all_shear;
     Body &body = *half_space;
-    const auto start = std::chrono::steady_clock::now();
     ShearOperator s;
     // The hats of the same vertices on the u_r trace, up to the same radius as op's pressure.
     const double limit = body.coupling.vertex_r[op.D.n() - 1];
@@ -64,12 +64,16 @@ namespace gradcontact::fem
             s.K_rr(j, k) = rr;
           }
       }
-    for (unsigned int j = 0; j < m; ++j)
-      for (unsigned int k = 0; k < j; ++k)
+    // Symmetrised against the round-off of the back-substitutions; row and column 0 (the axis: q = 0, W unused)
+    // are zero.
+    for (unsigned int j = 1; j < m; ++j)
+      for (unsigned int k = 1; k < j; ++k)
         s.K_rr(j, k) = s.K_rr(k, j) = 0.5 * (s.K_rr(j, k) + s.K_rr(k, j));
+    for (unsigned int k = 0; k < m; ++k)
+      s.K_rr(0, k) = s.K_rr(k, 0) = 0;
     s.K_rz.reinit(m, m);
     s.K_rz.copy_transposed(s.K_zr);
-    setup_time.setup += seconds_since(start);
+    // (no setup time of its own: the first frictional run builds it, inside its solve time)
     if (of_all)
       all_shear = std::make_unique<ShearOperator>(s);
     return s;
@@ -230,12 +234,17 @@ namespace gradcontact::fem
             for (unsigned int k = 1; k < m; ++k)
               if (next[k] && !in_contact_before[k] && !touching_unloaded[k])
                 next_slip[k] = entering;
-              else if (next[k] && active[k] && !full_stick && slip[k] != entering)
+              else if (next[k] && active[k] && !full_stick && (slip[k] != entering || in_contact_before[k]))
                 {
-                  // Stick while the trial shear q - slip increment / compliance stays inside the cone.
+                  // Stick while the trial shear q - slip increment / compliance stays inside the cone. A vertex
+                  // kept in contact with a tensile pressure (the rule for a singular edge) cannot carry shear
+                  // against its slip: it slides freely (q = 0) while p <= 0.
                   const double xi    = s.q[k] - (W[k] - W0[k]) / shear.K_rr(k, k);
                   const double bound = mu * std::max(s.p[k], 0.0);
-                  next_slip[k]       = std::abs(xi) <= bound * (1 + 1e-12) ? 0 : (xi > 0 ? 1 : -1);
+                  next_slip[k]       = std::abs(xi) <= bound * (1 + 1e-12) ? 0 :
+                                       s.p[k] <= 0                          ? entering :
+                                       xi > 0                               ? 1 :
+                                                                              -1;
                 }
             if (next == active && next_slip == slip)
               {
@@ -316,7 +325,7 @@ namespace gradcontact::fem
         unsigned int k = 0;
         while (k < m && s.active[k] && (s.slip[k] == 0 || s.slip[k] == entering))
           ++k;
-        point.stick_radius = k == 0                 ? 0.0 :
+        point.stick_radius = k == 0                 ? std::numeric_limits<double>::quiet_NaN() : // axis not in contact
                              k == m || !s.active[k] ? edge.outer_edge :
                                                       0.5 * (vertex_r[k - 1] + vertex_r[k]);
         s.path.push_back(point);

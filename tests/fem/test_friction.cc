@@ -84,7 +84,7 @@ TEST_CASE("At Holl's ratio nu = 1/(2 + k) friction shall change nothing", "[fem]
   load.indenter               = Indenter::of(Profile::paraboloid(50 * a), a);
   load.depth                  = 2e-2 * a;
   OutputRequest out;
-  out.pressure_radii = {0, 0.5 * a};
+  out.pressure_radii = {0, 0.25 * a, 0.5 * a, 0.75 * a, 0.9 * a}; // q(r) at the same radii
   const UnilateralResult smooth = solver.run(load, out);
   for (const double mu : {0.3, inf})
     {
@@ -214,6 +214,10 @@ TEST_CASE("A frictional paraboloid on a power-law medium shall load self-similar
       const double exponent = std::log(end.force / middle.force) / std::log(end.depth / middle.depth);
       CAPTURE(steps, exponent, r.force / smooth_force - 1, r.stick_radius / r.outer_edge, r.slip_inward_nodes,
               r.slip_outward_nodes);
+      // Below Holl's ratio (nu < 1/(2 + k)) a pressure pulls the surface toward the axis: where it slips, it slips
+      // inward (q > 0 on the half-space, outward against it), never outward.
+      CHECK(r.slip_inward_nodes > 0);
+      CHECK(r.slip_outward_nodes == 0);
       // Friction acts here (it raises the force by more than 3e-3), so the exponent is the frictional path's.
       CHECK(r.force / smooth_force - 1 > 3e-3);
       errors.push_back(std::abs(exponent - (3 + k) / 2));
