@@ -234,17 +234,15 @@ namespace gradcontact::fem
             for (unsigned int k = 1; k < m; ++k)
               if (next[k] && !in_contact_before[k] && !touching_unloaded[k])
                 next_slip[k] = entering;
-              else if (next[k] && active[k] && !full_stick && (slip[k] != entering || in_contact_before[k]))
+              else if (next[k] && active[k] && !full_stick && slip[k] != entering)
                 {
-                  // Stick while the trial shear q - slip increment / compliance stays inside the cone. A vertex
-                  // kept in contact with a tensile pressure (the rule for a singular edge) cannot carry shear
-                  // against its slip: it slides freely (q = 0) while p <= 0.
+                  // Stick while the trial shear q - slip increment / compliance stays inside the cone. A vertex kept
+                  // in contact under a small tensile pressure next to an edge (the contact set's rule) slips with
+                  // q = +-mu p, a shear of mu |p| against its slip: letting it slide freely instead (q = 0) made
+                  // the sets cycle between the two states (k = 0.5, nu = 0.2, mu = 0.3), so it is left so.
                   const double xi    = s.q[k] - (W[k] - W0[k]) / shear.K_rr(k, k);
                   const double bound = mu * std::max(s.p[k], 0.0);
-                  next_slip[k]       = std::abs(xi) <= bound * (1 + 1e-12) ? 0 :
-                                       s.p[k] <= 0                          ? entering :
-                                       xi > 0                               ? 1 :
-                                                                              -1;
+                  next_slip[k]       = std::abs(xi) <= bound * (1 + 1e-12) ? 0 : (xi > 0 ? 1 : -1);
                 }
             if (next == active && next_slip == slip)
               {

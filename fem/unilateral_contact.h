@@ -55,7 +55,7 @@
 // (reciprocity). Each step is solved by a primal-dual active set on the contact, stick and slip sets (the
 // update of Hueber, Stadler and Wohlmuth, SIAM J. Sci. Comput. 30 (2008) 572-596, in one tangential
 // direction): stick where |q_k - (W_k - W'_k)/K_rr,kk| <= mu p_k, else slip in the sign of that quantity (a vertex
-// kept in contact under a tensile pressure at a singular edge slides freely, q = 0); the
+// kept in contact under a small tensile pressure next to an edge carries q = +-mu p, mu |p| against its slip); the
 // normal update is the frictionless one. The systems are not symmetric (dense LU); a cycle or too many steps
 // stops with the step, the counts and the set sizes. When the normal and radial responses decouple (a
 // surface where pressure causes no radial displacement: nu = 1/(2 + k), Holl's ratio, for E ~ z^k) friction
@@ -168,8 +168,8 @@ namespace gradcontact::fem
     /// contact (+r outward, linear between the vertices); the radius of the stick zone around the axis
     /// (between its last stick vertex and the next vertex, the middle; the outer edge when the contact sticks
     /// to its edge; NaN when the axis is not in contact, e.g. an annulus); the vertices in contact that stick
-    /// (with those that came into contact in the last step or slide freely under a tensile pressure at an
-    /// edge), slip outward (q < 0) and inward (q > 0); one point per load step.
+    /// (with those that came into contact in the last step), slip outward (q < 0) and inward (q > 0); one point
+    /// per load step.
     std::vector<Sample> shear;
     double              stick_radius = std::numeric_limits<double>::quiet_NaN();
     unsigned int        stick_nodes = 0, slip_outward_nodes = 0, slip_inward_nodes = 0;
