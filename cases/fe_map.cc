@@ -275,6 +275,45 @@ namespace gradcontact::cases
       return out;
     }
 
+    /// The seconds `work` takes.
+    template <typename Work>
+    double seconds_of(const Work &work)
+    {
+      const auto start = std::chrono::steady_clock::now();
+      work();
+      return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    }
+
+    /// A panel of the two-solver maps (indenter modulus, friction): the scene at exponent k and Poisson ratio nu
+    /// with a rigid indenter under contact-radius control at Load/a, its FE model, the closed forms there and the
+    /// unilateral load at their depth.
+    struct UnilateralPanel
+    {
+      Scene scene;
+      FeModel model;
+      std::unique_ptr<AnalyticReference> reference;
+      fem::UnilateralLoad load;
+    };
+
+    UnilateralPanel unilateral_panel(const Scene &s, const double k, const double nu)
+    {
+      UnilateralPanel p;
+      p.scene = s;
+      p.scene.material.k = k;
+      p.scene.material.nu = nu;
+      p.scene.map.parameter = MapParameters::Parameter::none;
+      p.scene.load.control = LoadParameters::Control::contact_radius;
+      p.scene.indenter.elasticity = IndenterParameters::Elasticity::rigid;
+      if (nu >= 0.5)
+        p.scene.discretization.formulation = DiscretizationParameters::Formulation::mixed;
+      p.model = fe_model(p.scene, finest_refinement(p.scene));
+      p.reference = std::make_unique<AnalyticReference>(p.scene, batch::Method::closed_form,
+                                                        AnalyticReference::Problem::normal);
+      p.load.indenter = fem::Indenter::of(p.model.load.profile, s.load.a);
+      p.load.depth = p.reference->get("depth");
+      return p;
+    }
+
     /// A homogeneous elastic indenter (E1 = ratio E0, Indenter/nu) on the power law at exponent k, at the rigid
     /// closed form's depth of Load/a: one two-body solver (fem::UnilateralContactSolver) for every ratio (the
     /// indenter's compliance rescaled, exact in linear elasticity) and the rigid limit (factor inf). Sharp checks
@@ -284,20 +323,15 @@ namespace gradcontact::cases
                              const bool verbose)
     {
       ExponentMap out;
-      Scene g = s;
-      g.material.k = k;
-      g.map.parameter = MapParameters::Parameter::none;
-      g.load.control = LoadParameters::Control::contact_radius;
-      g.indenter.elasticity = IndenterParameters::Elasticity::rigid;
-      const double a = g.load.a;
+      const double a = s.load.a;
       const std::string metric = "k = " + format(k) + ", ";
       try
         {
-          const FeModel model = fe_model(g, finest_refinement(g));
-          const AnalyticReference rigid(g, batch::Method::closed_form, AnalyticReference::Problem::normal);
-          fem::UnilateralLoad load;
-          load.indenter = fem::Indenter::of(model.load.profile, a);
-          load.depth = rigid.get("depth");
+          const UnilateralPanel panel = unilateral_panel(s, k, s.material.nu);
+          const Scene &g = panel.scene;
+          const FeModel &model = panel.model;
+          const AnalyticReference &rigid = *panel.reference;
+          fem::UnilateralLoad load = panel.load;
           // The contact grows toward the homogeneous pairing's radius at this depth as E1 / E0 falls.
           Scene homogeneous = g;
           homogeneous.material.k = 0.;
@@ -325,22 +359,17 @@ namespace gradcontact::cases
               }
             return p;
           };
-          const auto timed = [](const auto &work) {
-            const auto start = std::chrono::steady_clock::now();
-            work();
-            return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-          };
 
           // The map's solver: a homogeneous indenter E0, nu_i; the rigid limit first.
           std::unique_ptr<fem::UnilateralContactSolver> solver;
-          const double setup = timed([&] {
+          const double setup = seconds_of([&] {
             solver = std::make_unique<fem::UnilateralContactSolver>(
               model.material, model.settings.mesh, model.settings.discretization, 1.25 * widest, fem::SurfaceRefinement{},
               fem::Material{std::make_shared<fem::PowerLawModulus>(g.material.E0, g.material.c0, 0.), s.indenter.nu});
           });
           fem::UnilateralResult r;
           solver->set_indenter_modulus_factor(std::numeric_limits<double>::infinity());
-          double seconds = setup + timed([&] { r = solver->run(load, request); });
+          double seconds = setup + seconds_of([&] { r = solver->run(load, request); });
           const fem::UnilateralResult rigid_fe = r;
           const MapPoint rigid_check = point(r, rigid, 0., seconds, solver->n_dofs());
           add_check_rows(s, rigid_check, metric + "rigid indenter (E1/E0 -> inf)", result);
@@ -360,7 +389,7 @@ namespace gradcontact::cases
           for (const double ratio : ratios)
             {
               solver->set_indenter_modulus_factor(ratio);
-              seconds = timed([&] { r = solver->run(load, request); });
+              seconds = seconds_of([&] { r = solver->run(load, request); });
               out.points.push_back(relative(point(r, rigid, ratio, seconds, solver->n_dofs())));
             }
 
@@ -373,7 +402,7 @@ namespace gradcontact::cases
           pair.indenter.nu = g.material.nu < 0.4 ? 0.45 : 0.2;
           const AnalyticReference equivalent(pair, batch::Method::closed_form, AnalyticReference::Problem::normal);
           // The same solver with the graded indenter: the half-space and its compliance are kept.
-          seconds = timed([&] {
+          seconds = seconds_of([&] {
             solver->set_indenter_body(fe_indenter_body(pair));
             r = solver->run(load, request);
           });
@@ -419,32 +448,19 @@ namespace gradcontact::cases
                              SceneResult &result, const bool verbose)
     {
       ExponentMap out;
-      Scene g = s;
-      g.material.k = k;
-      g.material.nu = nu;
-      g.map.parameter = MapParameters::Parameter::none;
-      g.load.control = LoadParameters::Control::contact_radius;
-      if (nu >= 0.5)
-        g.discretization.formulation = DiscretizationParameters::Formulation::mixed;
-      const double a = g.load.a;
+      const double a = s.load.a;
       const bool holl = std::abs(nu - 1. / (2. + k)) <= 1e-12;
       const std::string metric = "k = " + format(k) + ", nu = " + (holl ? "1/(2 + k) = " : "") + format(nu) + ", ";
       try
         {
-          const FeModel model = fe_model(g, finest_refinement(g));
-          const AnalyticReference frictionless(g, batch::Method::closed_form, AnalyticReference::Problem::normal);
-          fem::UnilateralLoad load;
-          load.indenter = fem::Indenter::of(model.load.profile, a);
-          load.depth = frictionless.get("depth");
+          const UnilateralPanel panel = unilateral_panel(s, k, nu);
+          const FeModel &model = panel.model;
+          const AnalyticReference &frictionless = *panel.reference;
+          fem::UnilateralLoad load = panel.load;
           load.friction.load_steps = s.friction.load_steps;
           fem::OutputRequest request;
           for (const double x : friction_pressure_radii)
             request.pressure_radii.push_back(x * a);
-          const auto timed = [](const auto &work) {
-            const auto start = std::chrono::steady_clock::now();
-            work();
-            return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-          };
           std::unique_ptr<fem::UnilateralContactSolver> solver;
           fem::UnilateralResult r;
           // The change of p(r) from `reference` at the sampled radii in the area-weighted L2 norm (trapezoidal in
@@ -467,7 +483,7 @@ namespace gradcontact::cases
               }
             return sign * std::sqrt(change / norm);
           };
-          const double setup = timed([&] {
+          const double setup = seconds_of([&] {
             solver = std::make_unique<fem::UnilateralContactSolver>(model.material, model.settings.mesh,
                                                                     model.settings.discretization, 1.6 * a);
           });
@@ -496,7 +512,7 @@ namespace gradcontact::cases
             load.friction.coefficient = mu;
             try
               {
-                return std::make_pair(timed([&] { r = solver->run(load, request); }), std::string());
+                return std::make_pair(seconds_of([&] { r = solver->run(load, request); }), std::string());
               }
             catch (const std::exception &e)
               {

@@ -42,6 +42,16 @@ namespace
   /// its contact radius, dF/dd = 2 E* a kappa: Borodich and Keer, Proc. R. Soc. A 460 (2004) 507-514).
   double bonded_punch_factor(const double nu) { return (1 - nu) * std::log(3 - 4 * nu) / (1 - 2 * nu); }
 
+  /// The sphere of the loading tests: a paraboloid R = 50 a pressed frictionlessly to d = 2e-2 a (a contact
+  /// radius near a at k = 0).
+  UnilateralLoad sphere_load()
+  {
+    UnilateralLoad l;
+    l.indenter = Indenter::of(Profile::paraboloid(50 * a), a);
+    l.depth    = 2e-2 * a;
+    return l;
+  }
+
   Indenter flat_punch()
   {
     Indenter i;
@@ -80,9 +90,7 @@ TEST_CASE("At Holl's ratio nu = 1/(2 + k) friction shall change nothing", "[fem]
   CAPTURE(k);
   const Settings          s = small_settings(k);
   UnilateralContactSolver solver(material_of(k, nu), s.mesh, s.discretization, 1.6 * a);
-  UnilateralLoad          load;
-  load.indenter               = Indenter::of(Profile::paraboloid(50 * a), a);
-  load.depth                  = 2e-2 * a;
+  UnilateralLoad          load = sphere_load();
   OutputRequest out;
   out.pressure_radii = {0, 0.25 * a, 0.5 * a, 0.75 * a, 0.9 * a}; // q(r) at the same radii
   const UnilateralResult smooth = solver.run(load, out);
@@ -121,9 +129,7 @@ TEST_CASE("During loading with full stick a sphere's indentation stiffness shall
   const double            nu = 0.3;
   const Settings          s  = small_settings(0);
   UnilateralContactSolver solver(material_of(0, nu), s.mesh, s.discretization, 1.6 * a);
-  UnilateralLoad          load;
-  load.indenter             = Indenter::of(Profile::paraboloid(50 * a), a);
-  load.depth                = 2e-2 * a;
+  UnilateralLoad          load = sphere_load();
   load.friction.coefficient = inf;
   // The secant of the last step against 2 E* a kappa at the step's middle radius. A vertex that comes into
   // contact during a step carries no shear in it (header): the stiffness is low by about the share of the
@@ -161,9 +167,7 @@ TEST_CASE("At full stick a sphere's force at a depth shall be kappa(nu) times th
   CAPTURE(nu);
   const Settings          s = small_settings(0);
   UnilateralContactSolver solver(material_of(0, nu), s.mesh, s.discretization, 1.6 * a);
-  UnilateralLoad          load;
-  load.indenter                 = Indenter::of(Profile::paraboloid(50 * a), a);
-  load.depth                    = 2e-2 * a;
+  UnilateralLoad          load = sphere_load();
   const UnilateralResult smooth = solver.run(load);
   load.friction.coefficient     = inf;
   std::vector<double> force, radius;
@@ -197,9 +201,7 @@ TEST_CASE("A frictional paraboloid on a power-law medium shall load self-similar
   const double            k = 0.5, nu = 0.2, mu = 0.3;
   const Settings          s = small_settings(k);
   UnilateralContactSolver solver(material_of(k, nu), s.mesh, s.discretization, 1.6 * a);
-  UnilateralLoad          load;
-  load.indenter             = Indenter::of(Profile::paraboloid(50 * a), a);
-  load.depth                = 2e-2 * a;
+  UnilateralLoad          load = sphere_load();
   const double smooth_force  = solver.run(load).force;
   load.friction.coefficient = mu;
   std::vector<double> errors;
