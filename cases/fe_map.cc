@@ -284,6 +284,17 @@ namespace gradcontact::cases
       return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     }
 
+    /// Why a unilateral result cannot be a map point (its contact is not one disc, or the solve is flagged
+    /// unreliable); empty when it can.
+    std::string disc_contact_error(const fem::UnilateralResult &r)
+    {
+      if (r.zones.size() != 1 || r.zones.front().r_in > 0)
+        return "the contact is not one disc (" + std::to_string(r.zones.size()) + " zones)";
+      if (!r.reliable)
+        return "the FE solve is flagged unreliable: " + r.message;
+      return {};
+    }
+
     /// A panel of the two-solver maps (indenter modulus, friction): the scene at exponent k and Poisson ratio nu
     /// with a rigid indenter under contact-radius control at Load/a, its FE model, the closed forms there and the
     /// unilateral load at their depth.
@@ -347,11 +358,8 @@ namespace gradcontact::cases
             p.ratio = ratio;
             p.dofs = dofs;
             p.seconds = seconds;
-            if (r.zones.size() != 1 || r.zones.front().r_in > 0)
-              p.error = "the contact is not one disc (" + std::to_string(r.zones.size()) + " zones)";
-            else if (!r.reliable)
-              p.error = "the FE solve is flagged unreliable: " + r.message;
-            else
+            p.error = disc_contact_error(r);
+            if (p.error.empty())
               {
                 p.force = r.force / ref.get("force") - 1;
                 p.radius = r.outer_edge / ref.radius() - 1;
@@ -494,11 +502,8 @@ namespace gradcontact::cases
             p.ratio = mu;
             p.dofs = solver->n_dofs();
             p.seconds = seconds;
-            if (r.zones.size() != 1 || r.zones.front().r_in > 0)
-              p.error = "the contact is not one disc (" + std::to_string(r.zones.size()) + " zones)";
-            else if (!r.reliable)
-              p.error = "the FE solve is flagged unreliable: " + r.message;
-            else
+            p.error = disc_contact_error(r);
+            if (p.error.empty())
               {
                 p.force = r.force / force - 1;
                 p.radius = r.outer_edge / radius - 1;
