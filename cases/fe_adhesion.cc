@@ -90,13 +90,21 @@ namespace gradcontact::cases
     }
   } // namespace
 
-  FeAdhesiveCurve fe_adhesive_curve(const Scene &s, const std::vector<double> &a_over_ac, const bool force_control)
+  FeAdhesiveCurve fe_adhesive_curve(const Scene &s, const std::vector<double> &a_over_ac, const bool force_control,
+                                    const std::vector<double> &pressure_radii)
   {
     const LoadParameters &l = s.load;
     if (!(l.type == Type::paraboloid || l.type == Type::cone || l.type == Type::power_law) ||
         !(s.adhesion.work_of_adhesion > 0.))
       throw std::invalid_argument("scene " + s.file + ": an FE adhesive curve needs a curved profile (paraboloid, cone, "
                                   "power law) and Adhesion/work of adhesion > 0");
+    // Checked before the FE: the critical search alone costs several FE solves.
+    for (std::size_t j = 0; j < pressure_radii.size(); ++j)
+      if (!(pressure_radii[j] >= 0. && pressure_radii[j] < 1.))
+        throw std::invalid_argument("fe_adhesive_curve: pressure_radii[" + std::to_string(j) + "] = " +
+                                    format(pressure_radii[j]) +
+                                    " (r / a) is outside the valid range [0, 1): the adhesive pressure is singular at "
+                                    "the contact edge r = a and zero beyond it");
     const fem::Material material = fe_material(s);
     fem::AdhesiveContact model(material, fe_profile_of(l), settings_at(s, material, finest_refinement(s)),
                                fe_parameters(s.adhesion));
@@ -110,6 +118,16 @@ namespace gradcontact::cases
         curve.radius.push_back(st.radius);
         curve.depth.push_back(st.depth);
         curve.force.push_back(st.force);
+        if (pressure_radii.empty())
+          continue;
+        // p(r) of this state (9.53 for the paraboloid), from the FE alone: its own pull-back delta(a).
+        std::vector<double> r;
+        for (const double x : pressure_radii)
+          r.push_back(x * st.radius);
+        std::vector<double> p;
+        for (const fem::Sample &sample : model.profiles(st.radius, s.adhesion.work_of_adhesion, r, {}).pressure)
+          p.push_back(sample.value);
+        curve.pressure.push_back(p);
       }
     return curve;
   }

@@ -14,12 +14,18 @@
 namespace gradcontact::cases
 {
   /// FE adhesive states of the scene's curved profile at a = x a_c, a_c the FE critical radius (force or
-  /// displacement control), for figures.
+  /// displacement control), for figures. With `pressure_radii` (r / a, each in [0, 1)), also the pressure of
+  /// each state, p(r) = p_n(r) - delta p_1(r) (the JKR superposition of fem/adhesion.h; for the paraboloid the
+  /// closed form is 9.53 at that a): pressure[i][j] at r = pressure_radii[j] radius[i], one more FE solve per
+  /// state. p(r) is singular at the contact edge r = a (like (1 - r^2/a^2)^(-(1-k)/2)) and zero beyond it, so
+  /// r / a = 1 and beyond are refused, before any FE solve.
   struct FeAdhesiveCurve
   {
     std::vector<double> radius, depth, force;
+    std::vector<std::vector<double>> pressure; ///< empty without pressure radii
   };
-  FeAdhesiveCurve fe_adhesive_curve(const Scene &scene, const std::vector<double> &a_over_ac, bool force_control);
+  FeAdhesiveCurve fe_adhesive_curve(const Scene &scene, const std::vector<double> &a_over_ac, bool force_control,
+                                    const std::vector<double> &pressure_radii = {});
 
   /// Runs an adhesive scene (Scene::adhesion enabled) and writes its plots and tables into `folder`.
   SceneResult run_adhesion_scene(const Scene &scene, const std::filesystem::path &folder, bool verbose);

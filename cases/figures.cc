@@ -301,9 +301,26 @@ namespace gradcontact::cases
       if (c.contains("fe_adhesion"))
         {
           // FE adhesive states (fem/adhesion.h) of a .prm scene at a = x a_c (a_c: the FE critical radius
-          // under the given control); each coordinate is "radius", "depth", "force" or "k", times "scale",
-          // divided by the value of the request "divide_by" when given.
+          // under the given control); each coordinate is "radius", "depth", "force" or "k" of the state, or,
+          // with "pressure_radii" (r / a, each in [0, 1)), "r" and "pressure" of its pressure profile (9.53 for
+          // the paraboloid: one point per state and radius); times "scale", divided by the value of the
+          // request "divide_by" when given.
           const json &fe = c.at("fe_adhesion");
+          const auto is_profile = [](const std::string &q) { return q == "r" || q == "pressure"; };
+          const std::string qx = fe.at("x").at("quantity"), qy = fe.at("y").at("quantity");
+          const bool profile = is_profile(qx) || is_profile(qy);
+          const std::vector<double> pressure_radii = fe.value("pressure_radii", std::vector<double>{});
+          const std::string where = "figures: fe_adhesion point set '" + title + "'";
+          for (const std::string &q : {qx, qy})
+            if (!is_profile(q) && q != "radius" && q != "depth" && q != "force" && q != "k")
+              throw std::invalid_argument(where + ": quantity '" + q + "' is not radius, depth, force, k, r or pressure");
+          if (profile && !(is_profile(qx) && is_profile(qy)))
+            throw std::invalid_argument(where + ": x quantity '" + qx + "' and y quantity '" + qy +
+                                        "' mix a pressure profile (r, pressure) with a state (radius, depth, force, k)");
+          if (profile != !pressure_radii.empty())
+            throw std::invalid_argument(where + (profile ? ": the quantities r and pressure need \"pressure_radii\""
+                                                         : ": \"pressure_radii\" given but neither x nor y is r or "
+                                                           "pressure"));
           // "variants": one FE point set per list of extra overrides (e.g. one per k); otherwise one scene.
           std::vector<std::vector<std::string>> variants = {{}};
           if (fe.contains("variants"))
@@ -317,21 +334,29 @@ namespace gradcontact::cases
               request.erase("set");
               request.erase("variants");
               const Series s = cache.get("fe_adhesion\n" + request.dump() + "\n" + scene.resolved, [&] {
-                const FeAdhesiveCurve curve = fe_adhesive_curve(scene, fe.at("a_over_ac").get<std::vector<double>>(),
-                                                                fe.value("control", "force") == "force");
+                const FeAdhesiveCurve curve =
+                  fe_adhesive_curve(scene, fe.at("a_over_ac").get<std::vector<double>>(),
+                                    fe.value("control", "force") == "force", pressure_radii);
                 const auto axis = [&](const json &spec) {
                   const std::string q = spec.at("quantity");
-                  if (q != "radius" && q != "depth" && q != "force" && q != "k")
-                    throw std::invalid_argument("figures: fe_adhesion quantity '" + q + "' is not radius, depth, force or k");
                   double factor = spec.value("scale", 1.);
                   if (spec.contains("divide_by"))
                     factor /= batch::evaluate(batch::parse(spec.at("divide_by")));
                   std::vector<double> out;
                   for (std::size_t i = 0; i < curve.radius.size(); ++i)
-                    out.push_back(factor * (q == "radius" ? curve.radius[i]
-                                            : q == "depth" ? curve.depth[i]
-                                            : q == "force" ? curve.force[i]
-                                                           : scene.material.k));
+                    {
+                      if (profile)
+                        {
+                          for (std::size_t j = 0; j < pressure_radii.size(); ++j)
+                            out.push_back(factor * (q == "r" ? pressure_radii[j] * curve.radius[i]
+                                                             : curve.pressure[i][j]));
+                          continue;
+                        }
+                      out.push_back(factor * (q == "radius" ? curve.radius[i]
+                                              : q == "depth" ? curve.depth[i]
+                                              : q == "force" ? curve.force[i]
+                                                             : scene.material.k));
+                    }
                   return out;
                 };
                 return Series{title, axis(fe.at("x")), axis(fe.at("y")), true};

@@ -12,7 +12,12 @@
 //                                 "quantity": "pressure"|"displacement", "radii": [r/a, ...],
 //                                 "normaliser": eval quantity of the scene, "normaliser_r": r/a,
 //                                 "per_area": times pi a^2}, "check": {...}}
-//              | {"title", "fe_adhesion": {...}, "check": {...}} | {"title", "fe_tangential": {...}, "check": {...}}
+//              | {"title", "fe_adhesion": {"scene", "set", "variants": [[...], ...], "control": "force"|"displacement",
+//                                          "a_over_ac": [a/a_c, ...], "pressure_radii": [r/a, ...],
+//                                          "x": {"quantity": "radius"|"depth"|"force"|"k"|"r"|"pressure", "scale",
+//                                                "divide_by"}, "y": ...}, "check": {...}}
+//                (r and pressure: the FE pressure profile of each adhesive state at the pressure radii, r/a in [0, 1))
+//              | {"title", "fe_tangential": {...}, "check": {...}}
 //              | {"title", "points": {"x": [...], "y": [...]}, "check": {...}}]}
 // A point set may carry "scale_x", "scale_y" and "offset_y": x -> x scale_x, y -> y scale_y + offset_y.
 // {"title", "prescribed": {"x": [...], "y": [...]}} draws an input of the figure (a load history) as a line;
