@@ -246,3 +246,94 @@ TEST_CASE("gradcontact figures shall fail on a wrong FE point and on an FE point
     CHECK(rows[2][8].find("outside the drawn range") != std::string::npos);
   }
 }
+
+// The pressure profile of an fe_adhesion point set (Fig. 9.24: p(r) of the adhesive state, 9.53) is asked at
+// r / a in [0, 1): p(r) is singular at the contact edge r = a and zero beyond it, so a radius there is bad input,
+// refused with its name, value and valid range before any FE solve (the critical search alone costs several).
+// The quantities r and pressure belong to the profile and need "pressure_radii"; mixed with a state quantity
+// (radius, depth, force, k), or with radii but no profile quantity, the point set is refused too.
+namespace
+{
+  std::string adhesive_pressure_figure(const std::string &pressure_radii, const std::string &x_quantity,
+                                       const std::string &y_quantity)
+  {
+    std::ostringstream s;
+    // a cheap analytic curve (9.53 at k = 0, 10 samples) for the point set to be checked against
+    s << R"({"name": "jkr", "title": "jkr", "curves": [)"
+      << R"({"title": "k = 0", "sweep": {"key": "r", "from": 0, "to": 0.25, "points": 10}, "x": {"sweep": true},)"
+      << R"("y": {"request": {"case": "jkr_paraboloid", "quantity": "pressure", "material": {"E0": 1, "c0": 1,)"
+      << R"("k": 0, "nu": 0.3}, "geometry": {"R": 1}, "dgamma": 0.01, "a": 0.3}}},)"
+      << R"({"title": "FE", "fe_adhesion": {"scene": "cases/default/fe_jkr_paraboloid.prm", "set": ["Material/k=0"],)"
+      << R"("a_over_ac": [1.0], )" << pressure_radii << R"("x": {"quantity": ")" << x_quantity
+      << R"("}, "y": {"quantity": ")" << y_quantity
+      << R"("}}, "check": {"curves": ["k = 0"], "tolerance": 1e-3, "why": "test"}}]})";
+    return s.str();
+  }
+
+  /// The what() of the invalid_argument `figures` throws on `figure` ("" when it throws none).
+  std::string refusal(const TemporaryFolder &folder, const std::string &figure)
+  {
+    const fs::path file = folder.path() / "jkr.json";
+    std::ofstream(file) << figure;
+    try
+      {
+        figures({file.string(), "--reports", folder.path().string()});
+      }
+    catch (const std::invalid_argument &e)
+      {
+        return e.what();
+      }
+    return "";
+  }
+} // namespace
+
+// (No brackets in a test name: ctest's discovery reads them as a CMake bracket argument and merges the names.)
+TEST_CASE("gradcontact figures shall refuse an fe_adhesion pressure radius r/a outside 0 <= r/a < 1, naming the "
+          "parameter, its value and the valid range",
+          "[cases]")
+{
+  const TemporaryFolder folder("gradcontact-figure-adhesive-pressure");
+  // (the bad radius as written, its position in the list)
+  const auto bad_radius = GENERATE(std::make_pair(std::string("1"), 1), std::make_pair(std::string("1.5"), 1),
+                                   std::make_pair(std::string("-0.1"), 0));
+  const std::string bad = bad_radius.first;
+  const int index = bad_radius.second;
+  const std::string radii = index == 0 ? "[" + bad + ", 0.5]" : "[0.5, " + bad + "]";
+  const std::string what = refusal(folder, adhesive_pressure_figure(R"("pressure_radii": )" + radii + ", ", "r", "pressure"));
+  CAPTURE(bad, what);
+  CHECK(what.find("pressure_radii[" + std::to_string(index) + "] = " + bad) != std::string::npos);
+  CHECK(what.find("[0, 1)") != std::string::npos);
+  CHECK(what.find("contact edge") != std::string::npos);
+  CHECK_FALSE(fs::exists(folder.path() / "figures" / "jkr.csv")); // no table of a refused figure
+  CHECK_FALSE(fs::exists(folder.path() / "figures" / "cache")); // refused before the FE: nothing cached
+}
+
+TEST_CASE("gradcontact figures shall refuse an fe_adhesion pressure profile that is asked inconsistently",
+          "[cases]")
+{
+  const TemporaryFolder folder("gradcontact-figure-adhesive-profile");
+  SECTION("r and pressure without pressure_radii")
+  {
+    const std::string what = refusal(folder, adhesive_pressure_figure("", "r", "pressure"));
+    CAPTURE(what);
+    CHECK(what.find("need \"pressure_radii\"") != std::string::npos);
+  }
+  SECTION("pressure against a state quantity")
+  {
+    const std::string what = refusal(folder, adhesive_pressure_figure(R"("pressure_radii": [0.5], )", "k", "pressure"));
+    CAPTURE(what);
+    CHECK(what.find("x quantity 'k' and y quantity 'pressure'") != std::string::npos);
+  }
+  SECTION("pressure_radii without r or pressure")
+  {
+    const std::string what = refusal(folder, adhesive_pressure_figure(R"("pressure_radii": [0.5], )", "depth", "force"));
+    CAPTURE(what);
+    CHECK(what.find("\"pressure_radii\" given but neither x nor y is r or pressure") != std::string::npos);
+  }
+  SECTION("an unknown quantity")
+  {
+    const std::string what = refusal(folder, adhesive_pressure_figure("", "radius", "stress"));
+    CAPTURE(what);
+    CHECK(what.find("quantity 'stress' is not radius, depth, force, k, r or pressure") != std::string::npos);
+  }
+}
