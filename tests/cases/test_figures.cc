@@ -337,3 +337,84 @@ TEST_CASE("gradcontact figures shall refuse an fe_adhesion pressure profile that
     CHECK(what.find("quantity 'stress' is not radius, depth, force, k, r or pressure") != std::string::npos);
   }
 }
+
+// The FE pressure points of an adhesive state end to end, at k = 0 where the critical radius under force control
+// is Johnson-Kendall-Roberts' (1971), a_c = (9 pi dgamma R^2 / (8 E*))^(1/3), E* = E0 / (1 - nu^2), written out
+// here: the curve is 9.53 at k = 0 (JKR's p(r)) at that a_c, the points the FE model's own critical state (one
+// critical search, nu = 0.3, degree 2) at r = x a_c,FE. As they are, every point lies on the curve; made 1 % high
+// (scale_y, the points taken from the cache of the first run) every point fails; and each abscissa is
+// x a_c,FE, within the FE's error in a_c of x a_c.
+namespace
+{
+  constexpr double jkr_E0 = 1, jkr_nu = 0.3, jkr_R = 1, jkr_dgamma = 0.01;
+
+  double jkr_critical_radius()
+  {
+    const double E_star = jkr_E0 / (1 - jkr_nu * jkr_nu);
+    return std::cbrt(9 * M_PI * jkr_dgamma * jkr_R * jkr_R / (8 * E_star));
+  }
+
+  const std::vector<double> jkr_pressure_radii = {0, 0.75, 0.9};
+  // p(r) of the FE state within 2.5e-4 of max |y| (measured, on the axis); 1 % of |p| at these radii is 1.9e-3
+  // to 6e-3 of max |y|, so 1e-3 passes the FE as it is and fails it 1 % off.
+  constexpr double fe_jkr_tolerance = 1e-3;
+  // The FE critical radius within 6.3e-6 of JKR's (measured): the abscissae r = x a_c,FE within 1e-4 a_c.
+  constexpr double fe_jkr_radius_tolerance = 1e-4;
+
+  std::string fe_jkr_pressure_figure(const double scale_y)
+  {
+    std::ostringstream s;
+    s.precision(17);
+    const double ac = jkr_critical_radius();
+    const std::string material = R"({"E0": 1, "c0": 1, "k": 0, "nu": 0.3})";
+    s << R"({"name": "fe_jkr", "title": "fe jkr", "curves": [)"
+      << R"({"title": "k = 0", "sweep": {"key": "r", "from": 0, "to": )" << 0.95 * ac << R"(, "points": 40},)"
+      << R"("x": {"sweep": true}, "y": {"request": {"case": "jkr_paraboloid", "quantity": "pressure", "material": )"
+      << material << R"(, "geometry": {"R": 1}, "dgamma": 0.01, "a": )" << ac << R"(}}},)"
+      << R"({"title": "FE", "fe_adhesion": {"scene": "cases/default/fe_jkr_paraboloid.prm", "set": ["Material/E0=1", )"
+      << R"("Material/c0=1", "Material/k=0", "Material/nu=0.3", "Discretization/degree=2", "Load/R=1", "Load/a=0.3", )"
+      << R"("Adhesion/work of adhesion=0.01", "Adhesion/control=force", "Adhesion/curve points=", )"
+      << R"("Outputs/pressure radii=", "Outputs/displacement radii="], "control": "force", "a_over_ac": [1.0], )"
+      << R"("pressure_radii": [0, 0.75, 0.9], "x": {"quantity": "r"}, "y": {"quantity": "pressure"}}, )"
+      << R"("scale_y": )" << scale_y << R"(, "check": {"curves": ["k = 0"], "tolerance": )" << fe_jkr_tolerance
+      << R"(, "why": "test"}}]})";
+    return s.str();
+  }
+} // namespace
+
+TEST_CASE("gradcontact figures shall draw the FE pressure of the adhesive critical state on JKR's p(r) (9.53 at "
+          "k = 0) and fail it when it is 1 % off",
+          "[cases]")
+{
+  const TemporaryFolder folder("gradcontact-figure-fe-jkr");
+  const fs::path file = folder.path() / "fe_jkr.json";
+  const auto run = [&](const double scale_y) {
+    std::ofstream(file) << fe_jkr_pressure_figure(scale_y);
+    const int code = figures({file.string(), "--reports", folder.path().string()});
+    auto rows = testing::read_csv(folder.path() / "figures" / "fe_jkr.csv");
+    rows.erase(rows.begin());
+    return std::make_pair(code, rows);
+  };
+  {
+    const auto [code, rows] = run(1.0);
+    CHECK(code == 0);
+    REQUIRE(rows.size() == jkr_pressure_radii.size());
+    for (std::size_t j = 0; j < rows.size(); ++j)
+      {
+        const double x = std::stod(rows[j][1]), expected = jkr_pressure_radii[j] * jkr_critical_radius();
+        CAPTURE(rows[j], expected);
+        CHECK(rows[j][7] == "true");
+        CHECK(std::abs(x - expected) <= fe_jkr_radius_tolerance * jkr_critical_radius());
+      }
+  }
+  {
+    const auto [code, rows] = run(1.01);
+    CHECK(code != 0);
+    REQUIRE(rows.size() == jkr_pressure_radii.size());
+    for (const auto &row : rows)
+      {
+        CAPTURE(row);
+        CHECK(row[7] == "false");
+      }
+  }
+}
