@@ -41,10 +41,12 @@ namespace gradcontact::fem
 
   AxisymmetricSolver::AxisymmetricSolver(const Material &material_,
                                          const MeshParameters &mesh_,
-                                         const DiscretizationParameters &discretization_)
+                                         const DiscretizationParameters &discretization_,
+                                         const SurfaceRefinement        &refinement_)
     : material((checked_formulation(material_, discretization_), material_))
     , mesh_parameters((mesh_.validate(), mesh_))
     , discretization(discretization_)
+    , refinement(refinement_)
     , used_formulation(resolve_formulation(discretization_, material_.nu))
     , fe(axisymmetric_element(discretization_.degree, used_formulation))
     , dof_handler(triangulation)
@@ -65,6 +67,7 @@ namespace gradcontact::fem
   {
     const auto start = std::chrono::steady_clock::now();
     mesh_info        = make_mesh(mesh_parameters, triangulation);
+    refine_toward_surface_points(refinement, triangulation);
     setup_time.mesh  = seconds_since(start);
   }
 
@@ -158,6 +161,26 @@ namespace gradcontact::fem
         cell->get_dof_indices(local_dof_indices);
         constraints.distribute_local_to_global(cell_rhs, local_dof_indices, b);
       }
+    return b;
+  }
+
+
+
+  Vector<double> AxisymmetricSolver::cohesion_load(const Cohesion &cohesion) const
+  {
+    // b_i = -\int_{r <= c} sigma_0 phi_i r dr on the z-DoFs: the tension pulls the surface out (-z).
+    Vector<double> b(dof_handler.n_dofs());
+    if (!cohesion.active())
+      return b;
+    if (cohesion.radius >= surface_faces.back().r1)
+      fail("AxisymmetricSolver::run (cohesion)", "radius", cohesion.radius,
+           "(0, " + std::to_string(surface_faces.back().r1) + ") (inside the truncation radius)");
+    const double   stress    = cohesion.stress;
+    const auto     integrals = traction_integrals(surface_faces, [stress](double) { return -stress; }, cohesion.radius,
+                                                  {}, GradedRule{}, "LoadCase (cohesion)");
+    for (unsigned int k = 0; k < surface_faces.size(); ++k)
+      for (unsigned int i = 0; i < surface_faces[k].r.size(); ++i)
+        b[surface_faces[k].dofs[1][i]] += integrals[k][i];
     return b;
   }
 
@@ -440,13 +463,18 @@ namespace gradcontact::fem
         case LoadType::indenter:
           {
             // u = d u1 + u2 with u1: u_z = 1 on the contact, u2: u_z = -f(r) there; d from R_edge = 0.
+            // A cohesion loads u2 (its tension on the contact only shifts the reactions there).
+            if (load.cohesion.active() && load.cohesion.radius < a * (1 - node_tolerance))
+              fail("AxisymmetricSolver::run (cohesion)", "radius", load.cohesion.radius,
+                   "[a, L) with a = " + std::to_string(a) + " (the cohesive zone starts at the contact edge)");
             Vector<double>      reaction1, reaction2;
             std::vector<double> g1(m, 1.0), g2(m);
             for (unsigned int i = 0; i < m; ++i)
               g2[i] = -load.profile(contact_r[i], a);
             const Vector<double> u1 = system.solve(true, g1, no_load, reaction1, result.time.factorize);
             double               unused;
-            const Vector<double> u2   = system.solve(true, g2, no_load, reaction2, unused);
+            const Vector<double> b2   = cohesion_load(load.cohesion);
+            const Vector<double> u2   = system.solve(true, g2, b2, reaction2, unused);
             const auto           edge = contact_dofs.back();
             const double         d    = -reaction2[edge] / reaction1[edge];
             state.u = u2;
@@ -455,6 +483,7 @@ namespace gradcontact::fem
             state.reaction.add(d, reaction1);
             for (unsigned int i = 0; i < m; ++i)
               state.g[i] = d - load.profile(contact_r[i], a);
+            state.work   = b2 * state.u;
             result.depth = d;
             break;
           }
@@ -471,7 +500,8 @@ namespace gradcontact::fem
     State state;
     state.constrained        = false;
     state.contact_edge       = mesh_parameters.contact_radius;
-    const Vector<double> b   = pressure_load(load.pressure);
+    Vector<double> b = pressure_load(load.pressure);
+    b += cohesion_load(load.cohesion);
     state.u                  = system.solve(false, {}, b, state.reaction, result.time.factorize);
     result.depth             = state.u[contact_dofs.front()]; // w_c = u_z(0, 0)
     state.work               = b * state.u;
@@ -558,6 +588,8 @@ namespace gradcontact::fem
         }
     else
       force = load.pressure * a * a / 2; // \int_0^a p0 r dr
+    if (load.cohesion.active())
+      force -= load.cohesion.stress * load.cohesion.radius * load.cohesion.radius / 2;
     result.force = 2 * numbers::PI * force;
 
     result.record(check_energy(system.energy(state.u), work, mesh_info.min_surface_cell));
@@ -603,9 +635,13 @@ namespace gradcontact::fem
         if (state.constrained)
           p = recover_line_density(surface_faces, 1, state.reaction, state.contact_edge, discretization.degree + 2,
                                    dof_handler.n_dofs());
+        const auto tension = [&](const double r) {
+          return (load.cohesion.active() && r <= load.cohesion.radius) ? load.cohesion.stress : 0.0;
+        };
         for (const double r : outputs.pressure_radii)
-          result.pressure.push_back({r, state.constrained ? evaluate_on_surface(p, r, state.contact_edge) :
-                                                             (r <= a ? load.pressure : 0.0)});
+          result.pressure.push_back({r, (state.constrained ? evaluate_on_surface(p, r, state.contact_edge) :
+                                                              (r <= a ? load.pressure : 0.0)) -
+                                          tension(r)});
       }
     if (!outputs.displacement_radii.empty())
       {

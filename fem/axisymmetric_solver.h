@@ -43,6 +43,11 @@
 //   concave_punch      f = -h0 r^2 / a^2 pressed to centre displacement d0 (9.31-9.35); complete contact is
 //                      checked (p >= 0 everywhere in r <= a) and reported.
 //   constant_pressure  p = p0 on r <= a (9.37-9.40); the depth reported is the centre displacement w_c.
+//   A cohesion (LoadCase::cohesion, indenter and constant pressure) adds a uniform tension sigma_0 on
+//   r <= c, integrated exactly on the faces (split at c, which need not be a node): for the indenter the
+//   edge condition then says that the contact pressure p + sigma_0 vanishes at the edge node (the total
+//   traction is continuous at a, as in the Maugis-Dugdale model); F includes -pi c^2 sigma_0 and p(r) is
+//   the total traction.
 //
 // Force. From the reaction, F = 2 pi sum_{i in contact} (A u - b)_i = 2 pi [a(u, phi) - l(phi)] with phi
 // the sum of the contact z-basis functions (1 on the contact); measured 1000x more accurate than
@@ -103,8 +108,10 @@ namespace gradcontact::fem
   {
   public:
     /// Builds mesh, DoFs, constraints and the stiffness matrix. Throws std::invalid_argument on bad input.
+    /// `refinement`: extra surface refinement toward points that are no mesh nodes (e.g. the end c of a
+    /// cohesive zone, where the traction jumps).
     AxisymmetricSolver(const Material &material, const MeshParameters &mesh,
-                       const DiscretizationParameters &discretization);
+                       const DiscretizationParameters &discretization, const SurfaceRefinement &refinement = {});
     ~AxisymmetricSolver();
 
     /// Solves one load case, reusing everything load independent.
@@ -142,6 +149,8 @@ namespace gradcontact::fem
     void sample(const LoadCase &load, const State &state, const OutputRequest &outputs, Result &result) const;
 
     dealii::Vector<double> pressure_load(double p0) const;
+    /// The nodal forces of the cohesion's tension (zero vector when none).
+    dealii::Vector<double> cohesion_load(const Cohesion &cohesion) const;
     double evaluate_on_surface(const std::vector<double> &nodal, double r, double contact_edge = -1) const;
 
     /// Depth or force control on this mesh: the contact set {r <= r_j}, r_j a surface vertex, is found
@@ -168,6 +177,7 @@ namespace gradcontact::fem
     const Material                 material;
     const MeshParameters           mesh_parameters;
     const DiscretizationParameters discretization;
+    const SurfaceRefinement        refinement;
     const Formulation              used_formulation; ///< displacement or mixed
 
     dealii::Triangulation<2>  triangulation;

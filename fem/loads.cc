@@ -153,9 +153,19 @@ namespace gradcontact::fem
             fail("LoadCase (concave punch)", "depth (d0)", depth, "(0, inf)");
           break;
         case LoadType::constant_pressure:
-          if (!std::isfinite(pressure) || pressure == 0)
-            fail("LoadCase (constant pressure)", "pressure", pressure, "finite, non-zero");
+          if (!std::isfinite(pressure) || (pressure == 0 && !cohesion.active()))
+            fail("LoadCase (constant pressure)", "pressure", pressure, "finite, non-zero (0 only with a cohesion)");
           break;
+      }
+    if (!(cohesion.stress >= 0) || !std::isfinite(cohesion.stress))
+      fail("LoadCase (cohesion)", "stress", cohesion.stress, "[0, inf)");
+    if (cohesion.active())
+      {
+        if (type != LoadType::indenter && type != LoadType::constant_pressure)
+          throw std::invalid_argument("LoadCase (cohesion): a cohesive tension needs LoadType::indenter or "
+                                      "LoadType::constant_pressure");
+        if (!(cohesion.radius > 0) || !std::isfinite(cohesion.radius))
+          fail("LoadCase (cohesion)", "radius", cohesion.radius, "(0, inf)");
       }
   }
 } // namespace gradcontact::fem

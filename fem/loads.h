@@ -58,13 +58,25 @@ namespace gradcontact::fem
     constant_pressure ///< p0 on r <= a
   };
 
+  /// A uniform adhesive tension on the surface r <= radius (the cohesive zone of the Dugdale law,
+  /// fem/cohesive_zone.h), added to the load of LoadType::indenter (radius >= the contact radius a; on the
+  /// contact it only lowers the contact pressure, which then is p + stress) or LoadType::constant_pressure
+  /// (a separated surface: no contact). stress = 0: none.
+  struct Cohesion
+  {
+    double stress = 0.0; ///< sigma_0 >= 0, tensile
+    double radius = 0.0; ///< c > 0 when stress > 0
+    bool   active() const { return stress > 0; }
+  };
+
   struct LoadCase
   {
     LoadType type     = LoadType::flat_punch;
     double   depth    = 0.0; ///< d (flat punch, indenter_depth) or d0 (concave punch)
     double   force    = 0.0; ///< F_N (indenter_force)
     Profile  profile;        ///< indenter and concave punch
-    double   pressure = 0.0; ///< p0 (constant pressure)
+    double   pressure = 0.0; ///< p0 (constant pressure; may be 0 with a cohesion)
+    Cohesion cohesion;       ///< indenter and constant pressure only
 
     void validate() const;
   };

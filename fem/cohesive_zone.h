@@ -1,0 +1,118 @@
+// Adhesion with a finite range: the Dugdale cohesive zone on the graded half-space, without the JKR
+// assumption of the chapter (9.45-9.74). Nothing here comes from the MDR or a closed form.
+//
+// The law (Dugdale; Maugis, J. Colloid Interface Sci. 150 (1992) 243-269). Between the rigid axisymmetric
+// indenter z = d - f(r) and the surface z = w(r), the gap is h(r) = f(r) - d + w(r). Where 0 < h < h_0 the
+// surfaces attract with the constant tension sigma_0, beyond h_0 not at all; the work of adhesion is
+// dgamma = sigma_0 h_0. Where h = 0 they touch (r <= a). For a profile that opens monotonically the state
+// is a disc of contact r <= a and an annular cohesive zone a < r < c.
+//
+// The FE state of contact radius a (the mesh's contact radius, a node). With the tension sigma_0 on the
+// whole disc r <= c (on the contact it only lowers the contact pressure, which becomes p + sigma_0), the
+// radius-controlled state of AxisymmetricSolver (LoadType::indenter with LoadCase::cohesion) has the depth
+// at which the contact pressure p + sigma_0 vanishes at the edge node: the total traction is continuous at
+// a, the Maugis condition that the stress is finite there. The zone's end c is the root of
+//   g(c) = h(c) - h_0 = f(c) - d(c) + w(c; c) - h_0,
+// g(a) = -h_0 < 0; c is not a node: the tension is integrated exactly on the faces split at c
+// (fem/surface_trace.h), and the surface is refined toward c (SurfaceRefinement) on a second mesh built
+// for the c the first one found, repeated until c moves by less than `zone_tolerance` of c - a. Each
+// evaluation of g is two back-substitutions with the factorisation of the mesh. The force is that of the
+// contact pressure minus pi c^2 sigma_0.
+//
+// The path. The states are parametrised by a (Maugis' path following: F(a) and d(a) are single-valued along
+// it, through the force- and displacement-controlled instabilities, where F(d) is not). Pull-off under force
+// control is the minimum of F(a), under displacement control the minimum of d(a): a Brent search in ln a on a
+// bracket found by stepping from a0 (each point its own meshes). A walk that reaches a = a_min (the contact
+// vanishing, c / a > `max_zone_ratio`) stops: under force control the minimum is then at the vanishing contact
+// (DMT-like, small Tabor parameter), under displacement control there is no interior minimum (the contact
+// shrinks to nothing without a jump); the state says so (`at_vanishing_contact`).
+//
+// Checks of every state (`consistent`, `message`): the contact pressure is compressive (AxisymmetricSolver's
+// check), 0 <= h <= h_0 inside the zone and h >= h_0 beyond it at sample radii.
+#ifndef GRADCONTACT_FEM_COHESIVE_ZONE_H
+#define GRADCONTACT_FEM_COHESIVE_ZONE_H
+
+#include <fem/adhesion.h>
+#include <fem/axisymmetric_solver.h>
+
+#include <functional>
+#include <map>
+#include <string>
+
+namespace gradcontact::fem
+{
+  /// The Dugdale law: the tension `strength` (sigma_0) up to the separation work / strength (h_0).
+  struct DugdaleLaw
+  {
+    double strength = 0; ///< sigma_0 > 0
+    double work     = 0; ///< dgamma > 0
+    double range() const { return work / strength; }
+    void   validate() const;
+  };
+
+  struct CohesiveParameters
+  {
+    unsigned int zone_refinements = 8;    ///< SurfaceRefinement levels toward c
+    double       zone_tolerance   = 1e-3; ///< accepted move of c between two meshes, relative to c - a
+    double       near_field_margin = 2.0; ///< the near field reaches at least this times c
+    double       radius_tolerance = 1e-4; ///< relative accuracy of the critical radius (Brent in ln a)
+    double       stencil_ratio    = 1.25; ///< steps of the bracketing walk
+    double       max_zone_ratio   = 200;  ///< c / a beyond which the contact counts as vanished
+    unsigned int max_states       = 60;   ///< FE states per critical search
+    void         validate() const;
+  };
+
+  struct CohesiveState
+  {
+    double       radius = 0, zone_radius = 0, depth = 0, force = 0; ///< a, c, d, F (tensile negative)
+    unsigned int meshes = 0;        ///< meshes built for this state (the zone refinement passes)
+    unsigned int zone_solves = 0;   ///< evaluations of g(c), all meshes
+    unsigned int n_dofs = 0;        ///< of the last mesh
+    double       seconds = 0;
+    bool         consistent = true; ///< the checks of the header
+    std::string  message;
+  };
+
+  struct CohesiveCriticalState
+  {
+    CohesiveState state;
+    bool          at_vanishing_contact = false; ///< the walk reached a_min (header); `state` is the last one there
+    unsigned int  states_solved = 0; ///< FE states of this search
+    unsigned int  max_dofs = 0;
+    double        seconds = 0;
+  };
+
+  class CohesiveContact
+  {
+  public:
+    using SettingsFunction = AdhesiveContact::SettingsFunction;
+
+    /// `settings(a)`: the mesh and discretisation of contact radius a (its near field is widened to reach c).
+    CohesiveContact(const Material &material, const Profile &profile, const DugdaleLaw &law, SettingsFunction settings,
+                    const CohesiveParameters &parameters = {});
+
+    /// The state of contact radius a > 0 (solved on first use, cached). std::runtime_error when no zone end is
+    /// found inside a near field of max_zone_ratio a.
+    const CohesiveState &state(double a);
+
+    /// Pull-off: the minimum of F(a) (force) or d(a) (displacement), searched from a0.
+    CohesiveCriticalState critical_state(AdhesionControl control, double a0);
+
+    /// The states solved so far, by a.
+    const std::map<double, CohesiveState> &states() const { return solved; }
+
+  private:
+    /// The zone end on one mesh: run(a, c) is the radius-controlled state with the tension on r <= c.
+    CohesiveState solve_on_mesh(double a, double c_hint, bool refine, double &c_found);
+    double        predicted_zone_ratio(double a) const;
+
+    const Material                   material;
+    const Profile                    profile;
+    const DugdaleLaw                 law;
+    const SettingsFunction           settings;
+    const CohesiveParameters         parameters;
+    std::map<double, CohesiveState>  solved;
+  };
+} // namespace gradcontact::fem
+
+#endif
