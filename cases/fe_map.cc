@@ -1,6 +1,7 @@
 #include "fe_map.h"
 
 #include "analytic_reference.h"
+#include "fe_cohesive.h"
 #include "fe_model.h"
 #include "fe_scene.h"
 #include "map_published.h"
@@ -672,6 +673,8 @@ namespace gradcontact::cases
   SceneResult run_map_scene(const Scene &s, const fs::path &folder, const bool verbose)
   {
     require_kind(s, SceneKind::map, "run_map_scene");
+    if (s.map.parameter == MapParameters::Parameter::tabor_parameter)
+      return run_cohesive_map(s, folder, verbose);
     const auto start = std::chrono::steady_clock::now();
     SceneResult result = started(s, folder);
 

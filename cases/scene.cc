@@ -475,16 +475,20 @@ namespace gradcontact::cases
   {
     prm.enter_subsection("Map");
     prm.declare_entry("parameter", "none",
-                      Patterns::Selection("none|surface depth|coating thickness|erf width|indenter modulus|friction coefficient"),
+                      Patterns::Selection("none|surface depth|coating thickness|erf width|indenter modulus|friction coefficient|"
+                                         "Tabor parameter"),
                       "What the ratios set: none (no map), surface depth (Material/modulus = shifted power law, "
                       "z0 = a / ratio), coating thickness (Material/modulus = coating, H = a / ratio), erf width "
                       "(Material/modulus = error function with Material/surface modulus ratio, w = a / ratio; k = 0) "
                       "or indenter modulus (a homogeneous elastic indenter E1 = ratio E0 with Indenter/nu, against the "
                       "rigid indenter's closed forms), or friction coefficient (Coulomb friction mu = ratio between "
                       "a rigid indenter and the surface during loading, Friction/load steps, against the frictionless "
-                      "indenter, for every k and nu of the map).");
+                      "indenter, for every k and nu of the map), or Tabor parameter (a Dugdale cohesive zone of Tabor "
+                      "parameter lambda = ratio, cases/fe_cohesive.h, against the chapter's JKR pull-off; needs "
+                      "Adhesion/work of adhesion and a paraboloid or power law).");
     prm.declare_entry("ratios", "", Patterns::List(Patterns::Double(0.), 0, 100),
-                      "The ratios a/z0, a/H, a/w, E1/E0 or the friction coefficients mu of the map, > 0.");
+                      "The ratios a/z0, a/H, a/w, E1/E0, the friction coefficients mu or the Tabor parameters lambda of "
+                      "the map, > 0.");
     prm.declare_entry("k values", "", Patterns::List(Patterns::Double(-1., 1.), 0, 20),
                       "The exponents k of the map, -1 < k < 1; empty: Material/k.");
     prm.declare_entry("nu values", "", Patterns::List(Patterns::Double(0., 0.5), 0, 20),
@@ -507,6 +511,7 @@ namespace gradcontact::cases
                 : p == "erf width"         ? Parameter::erf_width
                 : p == "indenter modulus"  ? Parameter::indenter_modulus
                 : p == "friction coefficient" ? Parameter::friction_coefficient
+                : p == "Tabor parameter"      ? Parameter::tabor_parameter
                                            : Parameter::none;
     ratios = to_doubles(prm.get("ratios"));
     exponents = to_doubles(prm.get("k values"));
@@ -682,6 +687,30 @@ namespace gradcontact::cases
     if (!s.map.enabled() && !s.map.poisson_ratios.empty())
       throw std::invalid_argument(where + "Map/nu values is set without a map (Map/parameter = none): it belongs to a "
                                   "friction coefficient map");
+    if (s.map.parameter == MapParameters::Parameter::tabor_parameter)
+      {
+        using Type = LoadParameters::Type;
+        if (s.tangential.enabled() || s.candidate.enabled() || s.load.contact == LoadParameters::Contact::unilateral)
+          throw std::invalid_argument(where + "Map/parameter = Tabor parameter: an adhesive scene (no Tangential or "
+                                      "Candidate entries, Load/contact = disc)");
+        if (!(s.adhesion.work_of_adhesion > 0.))
+          throw std::invalid_argument(where + "Map/parameter = Tabor parameter with Adhesion/work of adhesion = " +
+                                      format(s.adhesion.work_of_adhesion) + ": it must be in (0, inf)");
+        if (s.load.type != Type::paraboloid && s.load.type != Type::power_law)
+          throw std::invalid_argument(where + "Map/parameter = Tabor parameter needs Load/type = paraboloid or power law "
+                                      "(a profile that opens monotonically, with the chapter's JKR pull-off)");
+        if (s.material.modulus != MaterialParameters::Modulus::power_law)
+          throw std::invalid_argument(where + "Map/parameter = Tabor parameter needs Material/modulus = power law (the "
+                                      "map isolates the range of adhesion)");
+        if (!s.references.fem)
+          throw std::invalid_argument(where + "Map/parameter is set with References/fem = false: a map is FE data");
+        if (s.map.ratios.empty())
+          throw std::invalid_argument(where + "Map/ratios is empty: give the Tabor parameters lambda of the map");
+        if (!s.map.poisson_ratios.empty())
+          throw std::invalid_argument(where + "Map/nu values is set for Map/parameter = Tabor parameter: the map runs at "
+                                      "Material/nu");
+        return SceneKind::map;
+      }
     if (s.map.enabled())
       {
         using Type = LoadParameters::Type;

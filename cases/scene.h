@@ -232,7 +232,8 @@ namespace gradcontact::cases
       coating_thickness, ///< Material/modulus = coating, H = a / ratio
       erf_width,         ///< Material/modulus = error function, w = a / ratio (k = 0)
       indenter_modulus,  ///< a homogeneous elastic indenter (Indenter/nu), E1 = ratio E0, against the rigid one
-      friction_coefficient ///< Coulomb friction mu = ratio (Friction/load steps) against the frictionless indenter
+      friction_coefficient, ///< Coulomb friction mu = ratio (Friction/load steps) against the frictionless indenter
+      tabor_parameter       ///< a Dugdale cohesive zone of Tabor parameter lambda = ratio against JKR (cases/fe_cohesive.h)
     };
     Parameter parameter = Parameter::none;
     std::vector<double> ratios;     ///< a/z0, a/H, a/w, E1/E0 or mu, > 0

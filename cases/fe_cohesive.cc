@@ -1,0 +1,339 @@
+#include "fe_cohesive.h"
+
+#include "fe_map.h"
+#include "fe_model.h"
+#include "fe_scene.h"
+
+#include <analytic/adhesion.h>
+#include <analytic/maugis_dugdale.h>
+#include <fem/cohesive_zone.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <fstream>
+#include <iostream>
+#include <map>
+#include <sstream>
+
+namespace gradcontact::cases
+{
+  namespace fs = std::filesystem;
+
+  namespace
+  {
+    constexpr double pi = 3.14159265358979323846;
+
+    gradcontact::jkr::CriticalState jkr_critical(const gradcontact::Medium &m, const JkrProfile &profile,
+                                                 const double dgamma, const gradcontact::Control control)
+    {
+      return std::visit([&](const auto &p) { return gradcontact::jkr::critical_state(m, p, dgamma, control); },
+                        profile);
+    }
+
+    /// One pull-off of the map.
+    struct Point
+    {
+      double       lambda = 0, strength = 0, range = 0;
+      bool         force_control = true;
+      double       force = 0, radius = 0, depth = 0, zone_ratio = 0; ///< FE
+      double       force_jkr = 0, radius_jkr = 0, force_rigid = 0;  ///< chapter JKR; rigid (DMT-like) limit
+      bool         vanishing = false;                               ///< no interior minimum (cohesive_zone.h)
+      unsigned int states = 0, dofs = 0;
+      double       seconds = 0;
+      std::string  error;
+      double force_deviation() const { return vanishing && !force_control ? 1.0 : force / force_jkr - 1; }
+      double radius_deviation() const { return vanishing ? std::nan("") : radius / radius_jkr - 1; }
+      double rigid_deviation() const { return force / force_rigid - 1; }
+    };
+
+    std::string control_name(const bool force_control)
+    {
+      return force_control ? "force control" : "displacement control";
+    }
+
+    std::string percent(const double t)
+    {
+      std::ostringstream s;
+      s << t * 100 << " %";
+      return s.str();
+    }
+  } // namespace
+
+
+
+  double tabor_constant()
+  {
+    return std::cbrt((9 / (2 * pi)) / (std::pow(2 * pi, 1.5) * std::sqrt(9 * pi / 8)));
+  }
+
+  double cohesive_strength(const double lambda, const gradcontact::Medium &medium, const JkrProfile &profile,
+                           const double dgamma)
+  {
+    if (!(lambda > 0) || !std::isfinite(lambda))
+      throw std::invalid_argument("cohesive_strength: Tabor parameter lambda = " + format(lambda) + " must be in (0, inf)");
+    const double a_c   = jkr_critical(medium, profile, dgamma, gradcontact::Control::force).radius;
+    const double range = tabor_constant() * gradcontact::jkr::delta_ell(medium, dgamma, a_c) / lambda; // h_0
+    return dgamma / range;
+  }
+
+
+
+  SceneResult run_cohesive_map(const Scene &s, const fs::path &folder, const bool verbose)
+  {
+    const auto  start  = std::chrono::steady_clock::now();
+    SceneResult result = started(s, folder);
+    using Type         = LoadParameters::Type;
+    const double dgamma = s.adhesion.work_of_adhesion;
+    const bool   paraboloid = s.load.type == Type::paraboloid;
+    const JkrProfile profile = paraboloid ? JkrProfile{gradcontact::Paraboloid{s.load.R}}
+                                          : JkrProfile{gradcontact::PowerLaw{s.load.n, s.load.A}};
+    const fem::Profile fe_profile =
+      paraboloid ? fem::Profile::paraboloid(s.load.R) : fem::Profile::power_law(s.load.n, s.load.A);
+    const std::vector<double> ks = s.map.exponents.empty() ? std::vector<double>{s.material.k} : s.map.exponents;
+    std::vector<double> lambdas = s.map.ratios;
+    std::sort(lambdas.begin(), lambdas.end());
+    std::vector<bool> controls;
+    if (s.adhesion.force_control)
+      controls.push_back(true);
+    if (s.adhesion.displacement_control)
+      controls.push_back(false);
+    const std::string profile_name =
+      paraboloid ? "paraboloid R = " + format(s.load.R) + " m" : "power law f = A r^n, n = " + format(s.load.n);
+
+    std::ofstream csv(folder / "map.csv");
+    csv.precision(10);
+    csv << "k,lambda,control,sigma0,h0,force,force_jkr,force_deviation,radius,radius_jkr,radius_deviation,zone_over_a,"
+           "force_rigid,rigid_deviation,vanishing_contact,states,dofs,seconds,error\n";
+    std::ostringstream md, thresholds_md;
+    md << "# " << s.info.name << ": where the chapter's JKR pull-off holds\n\n"
+       << (s.info.description.empty() ? "" : s.info.description + "\n\n")
+       << "The FE model of a rigid " << profile_name << " with a Dugdale cohesive zone (tension sigma_0 where the gap is "
+          "below h_0 = dgamma / sigma_0, fem/cohesive_zone.h) on E0 (z/c0)^k, dgamma = "
+       << format(dgamma) << " J/m^2, nu = " << format(s.material.nu)
+       << ": its pull-off (the minimum of F(a) under force control, of d(a) under displacement control, along the path "
+          "parametrised by the contact radius) against the chapter's JKR critical state (9.55-9.56 for the paraboloid, "
+          "9.60-9.61 for the power law). lambda is the Tabor parameter C Delta_l(a_c) / h_0 (cases/fe_cohesive.h; "
+          "Maugis' at k = 0). F_rigid = -pi sigma_0 c^2 with f(c) = h_0 is the pull-off of the rigid limit (DMT: "
+          "-2 pi dgamma R for the paraboloid, for every k). Where the contact shrinks to nothing without a jump "
+          "(no minimum of d(a), small lambda) the chapter's displacement-controlled instability does not exist: "
+          "\"none\", counted as a deviation of 100 %.\n\n";
+    thresholds_md << "## Where the chapter's JKR pull-off force holds\n\n| k | control |";
+    for (const double t : s.map.thresholds)
+      thresholds_md << " within " << percent(t) << " when lambda |";
+    thresholds_md << "\n|---|---|";
+    for (std::size_t i = 0; i < s.map.thresholds.size(); ++i)
+      thresholds_md << "---|";
+    thresholds_md << '\n';
+
+    std::map<std::string, std::vector<Series>> plots;
+    for (const double k : ks)
+      {
+        Scene sk        = s;
+        sk.material.k   = k;
+        const fem::Material material = fe_material(sk);
+        const gradcontact::Medium medium =
+          gradcontact::medium(gradcontact::GradedHalfSpace{s.material.E0, s.material.c0, k, s.material.nu});
+        const unsigned int level = finest_refinement(s);
+        const auto settings = [&sk, material, level](const double a) { return fe_settings(sk, material, a, level); };
+        md << "## k = " << format(k) << "\n\n| lambda | control | F_c / F_c,JKR | a_c / a_c,JKR | c / a | F_c / F_rigid | "
+              "states | DoFs | s |\n|---|---|---|---|---|---|---|---|---|\n";
+        std::map<bool, std::vector<Point>> by_control;
+        for (const double lambda : lambdas)
+          {
+            Point base;
+            base.lambda   = lambda;
+            base.strength = cohesive_strength(lambda, medium, profile, dgamma);
+            base.range    = dgamma / base.strength;
+            const double c_rigid = paraboloid ? std::sqrt(2 * s.load.R * base.range) : std::pow(base.range / s.load.A, 1 / s.load.n);
+            base.force_rigid     = -pi * base.strength * c_rigid * c_rigid;
+            fem::CohesiveContact contact(material, fe_profile, fem::DugdaleLaw{base.strength, dgamma}, settings);
+            for (const bool force_control : controls)
+              {
+                Point p         = base;
+                p.force_control = force_control;
+                const auto control = force_control ? gradcontact::Control::force : gradcontact::Control::displacement;
+                const auto jkr     = jkr_critical(medium, profile, dgamma, control);
+                p.force_jkr        = jkr.force;
+                p.radius_jkr       = jkr.radius;
+                try
+                  {
+                    const auto c = contact.critical_state(force_control ? fem::AdhesionControl::force :
+                                                                          fem::AdhesionControl::displacement,
+                                                          jkr.radius);
+                    p.force      = c.state.force;
+                    p.radius     = c.state.radius;
+                    p.depth      = c.state.depth;
+                    p.zone_ratio = c.state.zone_radius / c.state.radius;
+                    p.vanishing  = c.at_vanishing_contact;
+                    p.states     = c.states_solved;
+                    p.dofs       = c.max_dofs;
+                    p.seconds    = c.seconds;
+                    if (!c.state.consistent)
+                      p.error = "inconsistent state: " + c.state.message;
+                  }
+                catch (const std::exception &e)
+                  {
+                    p.error = concise(e);
+                  }
+                by_control[force_control].push_back(p);
+                csv << k << ',' << lambda << ',' << (force_control ? "force" : "displacement") << ',' << p.strength << ','
+                    << p.range << ',' << p.force << ',' << p.force_jkr << ',' << p.force_deviation() << ',' << p.radius
+                    << ',' << p.radius_jkr << ',' << p.radius_deviation() << ',' << p.zone_ratio << ',' << p.force_rigid
+                    << ',' << p.rigid_deviation() << ',' << (p.vanishing ? 1 : 0) << ',' << p.states << ',' << p.dofs
+                    << ',' << p.seconds << ',' << csv_quote(p.error) << '\n';
+                md << "| " << format(lambda) << " | " << control_name(force_control) << " | ";
+                if (!p.error.empty())
+                  md << "failed: " << p.error << " | - | - | - |";
+                else if (p.vanishing && !force_control)
+                  md << "none (no jump) | - | - | - |";
+                else
+                  md << format(p.force / p.force_jkr) << " | " << (p.vanishing ? "0 (contact vanished)" : format(p.radius / p.radius_jkr))
+                     << " | " << format(p.zone_ratio) << " | " << format(p.force / p.force_rigid) << " |";
+                md << " " << p.states << " | " << p.dofs << " | " << format(p.seconds) << " |\n";
+                if (verbose)
+                  std::cerr << "  k = " << k << ", lambda = " << lambda << ", " << control_name(force_control)
+                            << ": F/F_JKR = " << p.force / p.force_jkr << ", c/a = " << p.zone_ratio << ", "
+                            << p.states << " states, " << p.seconds << " s" << (p.error.empty() ? "" : " (" + p.error + ")")
+                            << "\n";
+                if (!p.error.empty())
+                  {
+                    result.rows.push_back(failed("pull-off force (" + control_name(force_control) + ")", "FE cohesive",
+                                                 "closed form (JKR idealisation)",
+                                                 "k = " + format(k) + ", lambda = " + format(lambda) + ": " + p.error));
+                    continue;
+                  }
+                // The sharp check at k = 0: Maugis-Dugdale.
+                if (k == 0 && paraboloid && lambda >= 1e-3 && lambda <= 1e3)
+                  {
+                    const double E_star = s.material.E0 / (1 - s.material.nu * s.material.nu);
+                    const auto   scales = gradcontact::maugis_dugdale::scales(dgamma, s.load.R, E_star);
+                    const auto   md_ref = gradcontact::maugis_dugdale::pull_off(lambda, control);
+                    const std::string quantity = "pull-off force (" + control_name(force_control) + ")";
+                    const std::string metric   = "k = 0, lambda = " + format(lambda) + ", relative";
+                    if (md_ref.exists != !(p.vanishing && !force_control))
+                      result.rows.push_back(failed(quantity, "FE cohesive", "Maugis-Dugdale",
+                                                   metric + ": " + (md_ref.exists ? "Maugis-Dugdale has a pull-off, the FE none"
+                                                                                  : "the FE has a pull-off, Maugis-Dugdale none")));
+                    else if (md_ref.exists)
+                      result.rows.push_back(compare(quantity, metric, "FE cohesive", "Maugis-Dugdale (Maugis 1992)",
+                                                    md_ref.state.P * scales.force, p.force, md_ref.state.P * scales.force,
+                                                    s.tolerances.force, p.dofs, p.seconds));
+                  }
+              }
+          }
+        // Trend checks and thresholds per control.
+        for (const bool force_control : controls)
+          {
+            const std::vector<Point> &points = by_control[force_control];
+            std::vector<double> r, d;
+            Series curve{"k = " + format(k) + ", " + control_name(force_control), {}, {}, false, true};
+            Series deviation = curve;
+            for (const Point &p : points)
+              if (p.error.empty())
+                {
+                  r.push_back(p.lambda);
+                  d.push_back(p.force_deviation());
+                  if (!(p.vanishing && !force_control))
+                    {
+                      curve.x.push_back(p.lambda);
+                      curve.y.push_back(p.force / p.force_jkr);
+                    }
+                  deviation.x.push_back(p.lambda);
+                  deviation.y.push_back(std::max(std::abs(p.force_deviation()), 1e-16));
+                }
+            plots["pull-off force"].push_back(curve);
+            plots["deviation"].push_back(deviation);
+            thresholds_md << "| " << format(k) << " | " << control_name(force_control) << " |";
+            for (const double t : s.map.thresholds)
+              thresholds_md << " " << (r.empty() ? std::string("no point") : threshold_cell(r, d, t, true)) << " |";
+            thresholds_md << '\n';
+            if (r.size() >= 2)
+              {
+                const double prev = std::abs(d[d.size() - 2]), last = std::abs(d.back());
+                Row row;
+                row.quantity        = "JKR limit (" + control_name(force_control) + ")";
+                row.metric          = "k = " + format(k) + ": |F_c / F_c,JKR - 1| at lambda = " + format(r.back()) +
+                             " over its value at lambda = " + format(r[r.size() - 2]) + " (must fall: < 1)";
+                row.method          = "FE cohesive";
+                row.reference       = "closed form (JKR idealisation)";
+                row.reference_value = prev;
+                row.value           = last;
+                row.abs_error       = std::abs(last - prev);
+                row.rel_error       = prev > 0 ? last / prev : std::numeric_limits<double>::infinity();
+                row.tolerance       = 1;
+                row.pass            = last < prev;
+                row.dofs            = points.back().dofs;
+                row.seconds         = points.back().seconds;
+                result.rows.push_back(row);
+              }
+            if (force_control && paraboloid && r.size() >= 2)
+              {
+                const Point &p0 = points[0], &p1 = points[1];
+                if (p0.error.empty() && p1.error.empty())
+                  {
+                    const double d0 = std::abs(p0.rigid_deviation()), d1 = std::abs(p1.rigid_deviation());
+                    Row row;
+                    row.quantity        = "DMT limit (force control)";
+                    row.metric          = "k = " + format(k) + ": |F_c / (-2 pi dgamma R) - 1| at lambda = " +
+                                 format(p0.lambda) + " over its value at lambda = " + format(p1.lambda) + " (must fall: < 1)";
+                    row.method          = "FE cohesive";
+                    row.reference       = "rigid sphere (DMT)";
+                    row.reference_value = d1;
+                    row.value           = d0;
+                    row.abs_error       = std::abs(d0 - d1);
+                    row.rel_error       = d1 > 0 ? d0 / d1 : std::numeric_limits<double>::infinity();
+                    row.tolerance       = 1;
+                    row.pass            = d0 < d1;
+                    row.dofs            = p0.dofs;
+                    row.seconds         = p0.seconds;
+                    result.rows.push_back(row);
+                  }
+              }
+          }
+        md << '\n';
+      }
+    // Maugis-Dugdale at k = 0 as a dense curve on the force plot (paraboloid).
+    if (paraboloid && std::find(ks.begin(), ks.end(), 0.0) != ks.end())
+      for (const bool force_control : controls)
+        {
+          Series curve{"Maugis-Dugdale (k = 0), " + control_name(force_control), {}, {}, false, false};
+          const double jkr = force_control ? -1.5 : -5.0 / 6;
+          for (int i = 0; i <= 60; ++i)
+            {
+              const double lambda = lambdas.front() * std::pow(lambdas.back() / lambdas.front(), i / 60.0);
+              if (lambda < 1e-3 || lambda > 1e3)
+                continue;
+              const auto p = gradcontact::maugis_dugdale::pull_off(
+                lambda, force_control ? gradcontact::Control::force : gradcontact::Control::displacement);
+              if (p.exists)
+                {
+                  curve.x.push_back(lambda);
+                  curve.y.push_back(p.state.P / jkr);
+                }
+            }
+          plots["pull-off force"].push_back(curve);
+        }
+
+    const std::string tmp = ".map.md.partial";
+    {
+      std::ofstream out(folder / tmp);
+      out << md.str() << thresholds_md.str()
+          << "\nThe thresholds interpolate log-log between the last lambda outside and the next one toward large lambda "
+             "(the JKR limit); every lambda of the map beyond it is within.\n";
+    }
+    fs::rename(folder / tmp, folder / "map.md");
+    if (s.outputs.plots)
+      {
+        auto &dev = plots["deviation"];
+        for (const double t : s.map.thresholds)
+          dev.push_back(Series{percent(t), {lambdas.front(), lambdas.back()}, {t, t}, false, false});
+        write_plot(folder, "map-pull_off_force", s.info.name + ": F_c / F_c,JKR", "Tabor parameter lambda", "F_c / F_c,JKR",
+                   plots["pull-off force"], true, false);
+        write_plot(folder, "map-deviation", s.info.name + ": |F_c / F_c,JKR - 1|", "Tabor parameter lambda",
+                   "|deviation|", dev, true, true);
+      }
+    result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    return result;
+  }
+} // namespace gradcontact::cases

@@ -1,0 +1,44 @@
+// gradcontact/cases: where the chapter's JKR adhesion holds (Map/parameter = Tabor parameter). JKR (9.45-9.74)
+// assumes adhesion of infinitely short range; the Dugdale cohesive zone of fem/cohesive_zone.h has the range
+// h_0 = dgamma / sigma_0. Its pull-off force against the chapter's, over the Tabor parameter lambda and k, with
+// the thresholds a user reads ("within 1 % when lambda >= ...").
+//
+// The Tabor parameter of a graded medium. Maugis' lambda = sigma_0 (9 R / (2 pi dgamma E*^2))^{1/3} (k = 0)
+// is the ratio of the elastic separation at the JKR contact edge to the range h_0. Written with the chapter's
+// flat-punch pull-back at the force-controlled JKR pull-off, Delta_l(a_c) (9.45), which at k = 0 is
+// sqrt(2 pi dgamma a_c / E*) with a_c = (9 pi dgamma R^2 / (8 E*))^{1/3}, it is
+//   lambda = C Delta_l(a_c) / h_0,   C^3 = (9 / (2 pi)) / ((2 pi)^{3/2} (9 pi / 8)^{1/2}),
+// and this defines lambda for every k and profile (C = 0.3644): the same physical ratio, Maugis' value at k = 0.
+//
+// Sharp checks (rows of errors.csv): at k = 0 (paraboloid) the FE pull-off against the Maugis-Dugdale solution
+// (analytic/maugis_dugdale.h) at every lambda, within Tolerances/force; for every k the deviation from JKR
+// falls between the two largest lambda, and, for the paraboloid, the deviation from the DMT pull-off
+// -2 pi dgamma R (rigid sphere, independent of the elasticity) falls between the two smallest.
+#ifndef GRADCONTACT_CASES_FE_COHESIVE_H
+#define GRADCONTACT_CASES_FE_COHESIVE_H
+
+#include "report.h"
+#include "scene.h"
+
+#include <analytic/material.h>
+#include <analytic/normal.h>
+
+#include <filesystem>
+#include <variant>
+
+namespace gradcontact::cases
+{
+  /// A profile of the chapter's JKR closed forms.
+  using JkrProfile = std::variant<gradcontact::Paraboloid, gradcontact::PowerLaw>;
+
+  /// C of the header.
+  double tabor_constant();
+
+  /// The Dugdale strength sigma_0 that gives the Tabor parameter `lambda` (header) for the medium, profile and
+  /// work of adhesion.
+  double cohesive_strength(double lambda, const gradcontact::Medium &medium, const JkrProfile &profile, double dgamma);
+
+  SceneResult run_cohesive_map(const Scene &scene, const std::filesystem::path &folder, bool verbose);
+} // namespace gradcontact::cases
+
+#endif
