@@ -21,6 +21,12 @@ namespace gradcontact::fem
     /// Slack of the gap checks, relative to h_0 (round-off of the root and of the back-substitutions).
     constexpr double gap_slack = 1e-6;
 
+    /// The zone does not end within max_zone_ratio a: the contact has all but vanished (critical_state reads it so).
+    struct ZoneBeyondReach : std::runtime_error
+    {
+      using std::runtime_error::runtime_error;
+    };
+
     /// The near-field sizes the meshes use: 4 * 1.25^j, so that neighbouring states share gmsh's cached mesh.
     double near_field_step(const double wanted)
     {
@@ -105,7 +111,7 @@ namespace gradcontact::fem
         // A wide zone (small Tabor parameter): the surface cells away from a and c grow with the near field
         // (the refinement toward c and the grading toward a keep both ends resolved).
         s.mesh.h_far *= wanted / base;
-        s.mesh.h_surface       = std::max(s.mesh.h_surface, std::min(1.0, wanted / 40));
+        s.mesh.h_surface_outer = std::clamp(wanted / 20, s.mesh.h_surface, s.mesh.h_far);
         s.mesh.near_field_size = wanted;
       }
     const double       reach = 0.9 * s.mesh.near_field_size * a; // the zone must end inside the near field
@@ -219,7 +225,7 @@ namespace gradcontact::fem
                 std::ostringstream msg;
                 msg << "CohesiveContact: no end of the cohesive zone within c <= " << parameters.max_zone_ratio
                     << " a at a = " << a;
-                throw std::runtime_error(msg.str());
+                throw ZoneBeyondReach(msg.str());
               }
             continue;
           }
@@ -258,38 +264,52 @@ namespace gradcontact::fem
       return control == AdhesionControl::force ? st.force : st.depth;
     };
     const auto vanished = [&](const double s) {
-      const CohesiveState &st = state(std::exp(s));
-      return st.zone_radius / st.radius > parameters.max_zone_ratio / 1.5;
+      try
+        {
+          const CohesiveState &st = state(std::exp(s));
+          return st.zone_radius / st.radius > parameters.max_zone_ratio / 1.5;
+        }
+      catch (const ZoneBeyondReach &)
+        {
+          return true;
+        }
     };
-    const double q = std::log(parameters.stencil_ratio);
-    double       s = std::log(a0);
-    double v_left = value(s - q), v_mid = value(s), v_right = value(s + q);
+    // Bracket by an expanding walk (steps growing by the golden ratio), then Brent inside it.
+    constexpr double growth = 1.618;
+    const double     q      = std::log(parameters.stencil_ratio);
+    double left = std::log(a0) - q, mid = std::log(a0), right = std::log(a0) + q;
+    double v_left = value(left), v_mid = value(mid), v_right = value(right);
     while (!(v_mid <= v_left && v_mid <= v_right))
       {
         if (v_left < v_mid)
           {
-            s -= q;
-            v_right = v_mid, v_mid = v_left;
-            if (vanished(s - q))
+            const double next = left - growth * (mid - left);
+            right = mid, v_right = v_mid;
+            mid = left, v_mid = v_left;
+            left = next;
+            if (vanished(left))
               {
+                // The last state on the path before the contact vanishes.
                 result.at_vanishing_contact = true;
-                result.state                = state(std::exp(s - q));
+                result.state                = state(std::exp(mid));
                 break;
               }
-            v_left = value(s - q);
+            v_left = value(left);
           }
         else
           {
-            s += q;
-            v_left = v_mid, v_mid = v_right;
-            v_right = value(s + q);
+            const double next = right + growth * (right - mid);
+            left = mid, v_left = v_mid;
+            mid = right, v_mid = v_right;
+            right = next;
+            v_right = value(right);
           }
       }
     if (!result.at_vanishing_contact)
       {
         const int      bits       = static_cast<int>(std::ceil(-std::log2(parameters.radius_tolerance))) + 1;
         std::uintmax_t iterations = parameters.max_states;
-        const auto     minimum    = boost::math::tools::brent_find_minima(value, s - q, s + q, bits, iterations);
+        const auto     minimum    = boost::math::tools::brent_find_minima(value, left, right, bits, iterations);
         result.state              = state(std::exp(minimum.first));
       }
     result.states_solved = solved.size() - before;

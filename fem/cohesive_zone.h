@@ -56,7 +56,7 @@ namespace gradcontact::fem
     double       zone_tolerance   = 1e-3; ///< accepted move of c between two meshes, relative to c - a
     double       near_field_margin = 2.0; ///< the near field reaches at least this times c
     double       radius_tolerance = 1e-4; ///< relative accuracy of the critical radius (Brent in ln a)
-    double       stencil_ratio    = 1.25; ///< steps of the bracketing walk
+    double       stencil_ratio    = 1.25; ///< first step of the bracketing walk (then growing by the golden ratio)
     double       max_zone_ratio   = 200;  ///< c / a beyond which the contact counts as vanished
     unsigned int max_states       = 60;   ///< FE states per critical search
     void         validate() const;
@@ -76,7 +76,8 @@ namespace gradcontact::fem
   struct CohesiveCriticalState
   {
     CohesiveState state;
-    bool          at_vanishing_contact = false; ///< the walk reached a_min (header); `state` is the last one there
+    /// The walk reached a_min (header); `state` is the smallest-radius state solved before it.
+    bool          at_vanishing_contact = false;
     unsigned int  states_solved = 0; ///< FE states of this search
     unsigned int  max_dofs = 0;
     double        seconds = 0;

@@ -77,6 +77,12 @@ namespace gradcontact::fem
       return steps;
     }
 
+    /// The gmsh cell size at (R1 a, 0) / a.
+    double outer_size(const MeshParameters &p)
+    {
+      return p.h_surface_outer > 0 ? p.h_surface_outer : p.h_surface;
+    }
+
     /// Step 1 with deal.II: tensor-product grid, r graded toward 1 from both sides, z toward 0.
     void deal_ii_near_field(const MeshParameters &p, Triangulation<2> &tria)
     {
@@ -156,7 +162,8 @@ namespace gradcontact::fem
       std::ostringstream key;
       key.precision(17);
       key << "geo=" << std::hash<std::string>{}(read_file(geo)) << " R1=" << p.near_field_size
-          << " h_edge=" << p.h_edge << " h_surface=" << p.h_surface << " h_far=" << p.h_far << '\n';
+          << " h_edge=" << p.h_edge << " h_surface=" << p.h_surface << " h_far=" << p.h_far
+          << " h_outer=" << outer_size(p) << '\n';
       std::ostringstream name;
       name << "near_field_" << std::hex << std::hash<std::string>{}(key.str());
       const fs::path msh     = fs::path(cache) / (name.str() + ".msh");
@@ -182,7 +189,8 @@ namespace gradcontact::fem
           cmd.precision(17);
           cmd << p.gmsh_executable << " -2 -v 2 -format msh22"
               << " -setnumber R1 " << p.near_field_size << " -setnumber h_edge " << p.h_edge
-              << " -setnumber h_surface " << p.h_surface << " -setnumber h_far " << p.h_far << " '"
+              << " -setnumber h_surface " << p.h_surface << " -setnumber h_far " << p.h_far
+              << " -setnumber h_outer " << outer_size(p) << " '"
               << geo << "' -o '" << tmp << "' > '" << log << "' 2>&1";
           const int rc = std::system(cmd.str().c_str());
           if (rc != 0 || !fs::exists(tmp))
@@ -365,6 +373,8 @@ namespace gradcontact::fem
       fail("h_surface", h_surface, "(0, 1]");
     if (!(h_far >= h_surface && h_far <= near_field_size))
       fail("h_far", h_far, "[h_surface, near_field_size]");
+    if (!(h_surface_outer == 0 || (h_surface_outer >= h_surface && h_surface_outer <= h_far)))
+      fail("h_surface_outer", h_surface_outer, "0 (= h_surface) or [h_surface, h_far]");
     if (!(far_field_size >= near_field_size && far_field_size <= 1e16))
       fail("far_field_size", far_field_size, "[near_field_size, 1e16] (L / a)");
     if (!(ring_growth > 1.05 && ring_growth <= 4.0))

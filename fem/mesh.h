@@ -39,6 +39,9 @@ namespace gradcontact::fem
     double          h_edge          = 1e-5; ///< cell size at (a, 0) / a (gmsh; deal.II: first step)
     double          h_surface       = 0.25; ///< cell size at (0, 0) and (R1 a, 0) / a
     double          h_far           = 3.0;  ///< cell size on the near field's outer boundary / a
+    /// Cell size at (R1 a, 0) / a when > 0 (else h_surface): a wide near field (a cohesive zone c >> a) with
+    /// cells that grow away from the contact (gmsh only).
+    double          h_surface_outer = 0.0;
     double          far_field_size  = 1e10; ///< L / a
     double          ring_growth     = 1.15; ///< target ratio g of consecutive far-field rings
     unsigned int    edge_refinements = 0;   ///< isotropic refinements at (a, 0)

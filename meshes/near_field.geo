@@ -10,7 +10,7 @@
 //
 // The mesh is unstructured, recombined into quadrilaterals and split so that every cell is a quad
 // (Mesh.SubdivisionAlgorithm = 1). Sizes: h_edge at the contact edge (r, z) = (1, 0), h_surface at
-// the other two surface corners, h_far on the far-field lines. deal.II refines further (isotropic
+// the axis, h_outer at (R1, 0), h_far on the far-field lines. deal.II refines further (isotropic
 // refinement at the contact edge, z-only halvings of the surface layer) and adds the far field:
 // gmsh's geometric tolerances are relative to the model size, so the 1e-9 a .. 1e12 a span is not
 // asked of gmsh.
@@ -20,10 +20,11 @@ DefineConstant[ R1 = 4.0 ];         // near-field size / a
 DefineConstant[ h_edge = 0.02 ];    // cell size at the contact edge / a
 DefineConstant[ h_surface = 0.15 ]; // cell size at r = 0 and r = R1 on the surface / a
 DefineConstant[ h_far = 1.0 ];      // cell size on the far-field lines / a
+DefineConstant[ h_outer = 0.15 ];   // cell size at r = R1 on the surface / a (the driver passes h_surface unless told)
 
 Point(1) = {0, 0, 0, h_surface};
 Point(2) = {1, 0, 0, h_edge};
-Point(3) = {R1, 0, 0, h_surface};
+Point(3) = {R1, 0, 0, h_outer};
 Point(4) = {R1, R1, 0, h_far};
 Point(5) = {0, R1, 0, h_far};
 

@@ -1,9 +1,12 @@
 // Applicability maps (cases/fe_map.h): the threshold read from a map, and a small map run end to end.
 #include "scene_files.h"
 
+#include <cases/fe_cohesive.h>
 #include <cases/fe_map.h>
 #include <cases/map_published.h>
 #include <cases/runner.h>
+
+#include <analytic/maugis_dugdale.h>
 
 #include <catch2/catch.hpp>
 
@@ -273,4 +276,50 @@ TEST_CASE("A friction map shall check the frictionless FE and Holl's ratio, and 
   CHECK(md.find("## k = 0.5, nu = 1/(2 + k) = 0.4") != std::string::npos);
   CHECK(md.find("within 1 % when mu |") != std::string::npos);
   CHECK(md.find("## The largest effect of friction") != std::string::npos);
+}
+
+TEST_CASE("The Tabor parameter of a graded medium shall be Maugis' at k = 0", "[cases]")
+{
+  // Maugis: lambda = sigma_0 (9 R / (2 pi dgamma E*^2))^{1/3}, from a path that knows nothing of the chapter's
+  // Delta_l or its critical radius.
+  const double E0 = 1e9, nu = 0.3, R = 5e-3, dgamma = 0.05;
+  const gradcontact::Medium m = gradcontact::medium(gradcontact::GradedHalfSpace{E0, 1e-3, 0, nu});
+  for (const double lambda : {0.05, 1.0, 10.0})
+    {
+      const double sigma0 = cohesive_strength(lambda, m, gradcontact::Paraboloid{R}, dgamma);
+      CHECK(gradcontact::maugis_dugdale::tabor_parameter(sigma0, dgamma, R, E0 / (1 - nu * nu)) ==
+            Approx(lambda).epsilon(1e-12));
+    }
+  CHECK_THROWS_WITH(cohesive_strength(-1, m, gradcontact::Paraboloid{R}, dgamma), Catch::Contains("lambda = -1"));
+}
+
+TEST_CASE("A Tabor-parameter map shall check Maugis-Dugdale at k = 0 and write the map", "[cases]")
+{
+  const TemporaryFolder folder("gradcontact-cohesive-map");
+  const fs::path scene = folder.path() / "cohesive_map.prm";
+  std::ofstream(scene) << "subsection Material\n  set k = 0\nend\n"
+                          "subsection Load\n  set type = paraboloid\n  set R = 5e-3\nend\n"
+                          "subsection Adhesion\n  set work of adhesion = 0.05\n  set control = force\nend\n"
+                          "subsection Discretization\n  set degree = 2\nend\n"
+                          "subsection Tolerances\n  set force = 1e-4\nend\n"
+                          "subsection Map\n  set parameter = Tabor parameter\n  set ratios = 1, 3\n"
+                          "  set thresholds = 0.1\nend\n";
+  const fs::path reports = folder.path() / "reports";
+  REQUIRE(run({scene.string(), "--reports", reports.string(), "--quiet"}) == 0);
+  const fs::path out = reports / "cohesive_map";
+  for (const char *file : {"errors.csv", "map.csv", "map.md"})
+    CHECK(fs::exists(out / file));
+  const auto csv = testing::read_csv(out / "map.csv");
+  REQUIRE(csv.size() == 3);
+  CHECK(csv[0][7] == "force_deviation");
+  // Maugis-Dugdale: F_c / F_c,JKR = 1.0672 at lambda = 1 and 1.0112 at 3 (Johnson & Greenwood.s
+  // equations, tests/analytic/test_maugis_dugdale.cc checks their limits): the deviation falls toward JKR.
+  CHECK(std::stod(csv[1][7]) == Approx(0.0672).margin(2e-3));
+  CHECK(std::stod(csv[2][7]) < std::stod(csv[1][7]));
+  const auto errors = testing::read_csv(out / "errors.csv");
+  REQUIRE(errors.size() == 5); // header, Maugis-Dugdale at 1 and 3, the JKR and DMT trends
+  for (std::size_t i = 1; i < errors.size(); ++i)
+    CHECK(errors[i][9] == "pass");
+  const std::string md = testing::read_text(out / "map.md");
+  CHECK(md.find("within 10 % when lambda |") != std::string::npos);
 }
