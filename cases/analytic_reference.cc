@@ -98,6 +98,7 @@ namespace gradcontact::cases
         indenter.E, m.c0, indenter.elasticity == IndenterParameters::Elasticity::graded ? m.k : 0., indenter.nu};
     idealised_indenter = !indenter.covered_by_9_4(m.k);
     idealised_surface  = s.friction.enabled();
+    idealised_adhesion = s.adhesion.dugdale;
     base.method = method;
     if (problem == Problem::tangential)
       {
@@ -150,6 +151,7 @@ namespace gradcontact::cases
     const std::string method = base.method == batch::Method::closed_form ? "closed form" : "numerical MDR";
     return method + (idealised_material ? " (power-law idealisation E0, c0, k)" : "") +
            (idealised_indenter ? " (rigid-indenter idealisation)" : "") +
-           (idealised_surface ? " (frictionless idealisation)" : "");
+           (idealised_surface ? " (frictionless idealisation)" : "") +
+           (idealised_adhesion ? " (JKR idealisation)" : "");
   }
 } // namespace gradcontact::cases

@@ -61,11 +61,11 @@ namespace gradcontact::cases
     /// " (frictionless idealisation)".
     std::string label() const;
     /// Whether the reference assumes another material, indenter or surface than the scene's.
-    bool idealised() const { return idealised_material || idealised_indenter || idealised_surface; }
+    bool idealised() const { return idealised_material || idealised_indenter || idealised_surface || idealised_adhesion; }
 
   private:
     batch::Request base;
-    bool idealised_material = false, idealised_indenter = false, idealised_surface = false;
+    bool idealised_material = false, idealised_indenter = false, idealised_surface = false, idealised_adhesion = false;
   };
 } // namespace gradcontact::cases
 

@@ -1,4 +1,5 @@
 #include "fe_adhesion.h"
+#include "fe_cohesive.h"
 
 #include "convergence_report.h"
 #include "fe_model.h"
@@ -7,7 +8,9 @@
 #include "fe_scene.h"
 
 #include <analytic/batch.h>
+#include <analytic/maugis_dugdale.h>
 #include <fem/adhesion.h>
+#include <fem/cohesive_zone.h>
 #include <fem/axisymmetric_solver.h>
 
 
@@ -170,6 +173,8 @@ namespace gradcontact::cases
                                    false, lr);
                     else if (l.type == Type::concave_punch)
                       concave_punch(model, lr);
+                    else if (ad.dugdale)
+                      cohesive_profile(material, settings, lr);
                     else
                       curved_profile(model, level == s.discretization.refinements.back(), lr);
                   }
@@ -379,6 +384,90 @@ namespace gradcontact::cases
             critical_profiles(model, *force_state);
             if (finest)
               force_depth_points(model, *force_state);
+          }
+      }
+
+      /// Adhesion/law = Dugdale: the pull-off of the cohesive-zone FE (fem/cohesive_zone.h) against the chapter's JKR
+      /// closed forms ("(JKR idealisation)": how far they are for this adhesive), and at k = 0 (paraboloid) against
+      /// Maugis-Dugdale, which holds for any Tabor parameter.
+      void cohesive_profile(const fem::Material &material, const fem::AdhesiveContact::SettingsFunction &settings,
+                            LevelResult &lr)
+      {
+        const double dgamma     = ad.work_of_adhesion;
+        const bool   paraboloid = l.type == Type::paraboloid;
+        double       sigma0     = ad.cohesive_strength;
+        if (ad.tabor_parameter > 0.)
+          {
+            const gradcontact::Medium medium = gradcontact::medium(
+              gradcontact::GradedHalfSpace{s.material.E0, s.material.c0, s.material.k, s.material.nu});
+            const JkrProfile profile = paraboloid ? JkrProfile{gradcontact::Paraboloid{l.R}}
+                                                  : JkrProfile{gradcontact::PowerLaw{l.n, l.A}};
+            sigma0 = cohesive_strength(ad.tabor_parameter, medium, profile, dgamma);
+          }
+        fem::CohesiveContact model(material, *fe_profile_of(l), fem::DugdaleLaw{sigma0, dgamma}, settings);
+        double start = ad.initial_radius > 0. ? ad.initial_radius : l.a;
+        for (const auto control : {fem::AdhesionControl::force, fem::AdhesionControl::displacement})
+          {
+            if ((control == fem::AdhesionControl::force && !ad.force_control) ||
+                (control == fem::AdhesionControl::displacement && !ad.displacement_control))
+              continue;
+            const Control analytic_control = control == fem::AdhesionControl::force ? Control::force : Control::displacement;
+            const Inputs  extra            = input::control(analytic_control);
+            const std::string name         = control_name(control) + ", Dugdale sigma_0 = " + format(sigma0) + " Pa";
+            try
+              {
+                const fem::CohesiveCriticalState c = model.critical_state(control, start);
+                start                              = c.state.radius;
+                const double t                     = seconds_since(level_start);
+                lr.dofs                            = std::max(lr.dofs, c.max_dofs);
+                if (verbose)
+                  std::cerr << "  " << name << ": a_c = " << c.state.radius << ", c/a = " << c.state.zone_radius / c.state.radius
+                            << ", F_c = " << c.state.force << " (" << c.states_solved << " FE states, " << format(c.seconds)
+                            << " s)" << (c.at_vanishing_contact ? ", the contact vanishes" : "") << "\n";
+                if (!c.state.consistent)
+                  result.rows.push_back(failed("cohesive state", "FE", "-", name + ": " + c.state.message));
+                if (c.at_vanishing_contact && control == fem::AdhesionControl::displacement)
+                  {
+                    for (const AnalyticReference &ref : references)
+                      result.rows.push_back(failed("critical state (" + control_name(control) + ")", "FE (Dugdale)",
+                                                   ref.label(), "no instability: the contact shrinks to nothing (small "
+                                                                "Tabor parameter)"));
+                    continue;
+                  }
+                lr.values["pull-off force, " + control_name(control)] = check(
+                  "pull-off force", name + level_tag, c.state.force, "critical_force", extra, s.tolerances.force, c.max_dofs, t);
+                check("critical radius", name + level_tag, c.state.radius, "critical_radius", extra,
+                      s.tolerances.contact_radius, c.max_dofs, t);
+                check("critical depth", name + level_tag, c.state.depth, "critical_depth", extra, s.tolerances.depth,
+                      c.max_dofs, t);
+                if (paraboloid && s.material.k == 0. && s.material.modulus == MaterialParameters::Modulus::power_law)
+                  {
+                    const double E_star = s.material.E0 / (1 - s.material.nu * s.material.nu);
+                    const double lambda = gradcontact::maugis_dugdale::tabor_parameter(sigma0, dgamma, l.R, E_star);
+                    if (lambda < 1e-3 || lambda > 1e3)
+                      continue;
+                    const auto md     = gradcontact::maugis_dugdale::pull_off(lambda, analytic_control);
+                    const auto scales = gradcontact::maugis_dugdale::scales(dgamma, l.R, E_star);
+                    if (!md.exists)
+                      result.rows.push_back(failed("pull-off force", "FE (Dugdale)", "Maugis-Dugdale",
+                                                   "the FE has an instability, Maugis-Dugdale none"));
+                    else if (control == fem::AdhesionControl::force)
+                      result.rows.push_back(compare("pull-off force", name + ", lambda = " + format(lambda) + level_tag,
+                                                    "FE", "Maugis-Dugdale (Maugis 1992)", md.state.P * scales.force,
+                                                    c.state.force, md.state.P * scales.force, std::min(s.tolerances.force, 1e-3),
+                                                    c.max_dofs, t));
+                    else
+                      result.rows.push_back(compare("critical depth", name + ", lambda = " + format(lambda) + level_tag,
+                                                    "FE", "Maugis-Dugdale (Maugis 1992)", md.state.Delta * scales.depth,
+                                                    c.state.depth, md.state.Delta * scales.depth, std::min(s.tolerances.depth, 1e-3),
+                                                    c.max_dofs, t));
+                  }
+              }
+            catch (const std::runtime_error &e)
+              {
+                result.rows.push_back(failed("critical state (" + control_name(control) + ")", "FE (Dugdale)", "-",
+                                             concise(e)));
+              }
           }
       }
 

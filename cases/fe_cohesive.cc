@@ -232,6 +232,33 @@ namespace gradcontact::cases
                                                     p.dofs, p.seconds));
                   }
               }
+            // The path F(d) of this lambda: the curve points (Adhesion/curve points, a / a_c,JKR under force control)
+            // and every state the searches solved, ascending in a.
+            const auto jkr_force = jkr_critical(medium, profile, dgamma, gradcontact::Control::force);
+            for (const double x : s.adhesion.curve_points)
+              try
+                {
+                  contact.state(x * jkr_force.radius);
+                }
+              catch (const std::exception &e)
+                {
+                  result.rows.push_back(failed("F(d) path", "FE cohesive", "-",
+                                               "k = " + format(k) + ", lambda = " + format(lambda) + ", a = " +
+                                                 format(x) + " a_c,JKR: " + concise(e)));
+                }
+            const std::string path_name = "path-k" + format(k) + "-lambda" + format(lambda);
+            std::ofstream     path(folder / (path_name + ".csv"));
+            path.precision(10);
+            path << "a,c,d,F,consistent\n";
+            Series curve{"lambda = " + format(lambda), {}, {}, false, true};
+            for (const auto &[a, st] : contact.states())
+              {
+                path << a << ',' << st.zone_radius << ',' << st.depth << ',' << st.force << ',' << (st.consistent ? 1 : 0)
+                     << '\n';
+                curve.x.push_back(st.depth / std::abs(jkr_force.depth));
+                curve.y.push_back(st.force / std::abs(jkr_force.force));
+              }
+            plots["path k = " + format(k)].push_back(curve);
           }
         // Trend checks and thresholds per control.
         for (const bool force_control : controls)
@@ -341,6 +368,10 @@ namespace gradcontact::cases
           dev.push_back(Series{percent(t), {lambdas.front(), lambdas.back()}, {t, t}, false, false});
         write_plot(folder, "map-pull_off_force", s.info.name + ": F_c / F_c,JKR", "Tabor parameter lambda", "F_c / F_c,JKR",
                    plots["pull-off force"], true, false);
+        for (const double k : ks)
+          write_plot(folder, "map-path-k" + format(k),
+                     s.info.name + ": F(d) along the path, k = " + format(k) + " (every FE state solved)",
+                     "d / |d_c,JKR|", "F / |F_c,JKR|", plots["path k = " + format(k)], false, false);
         write_plot(folder, "map-deviation", s.info.name + ": |F_c / F_c,JKR - 1|", "Tabor parameter lambda",
                    "|deviation|", dev, true, true);
       }

@@ -398,6 +398,15 @@ namespace gradcontact::cases
     prm.declare_entry("curve points", "", Patterns::List(Patterns::Double(0.), 0, 50),
                       "a / a_c (force control) of FE points on the adhesive force-depth curve (9.57, figures "
                       "9.22-9.23); empty: none.");
+    prm.declare_entry("law", "JKR", Patterns::Selection("JKR|Dugdale"),
+                      "JKR: the chapter's adhesion (infinitely short range; the FE from its energy release rate). "
+                      "Dugdale: a cohesive zone of finite range (tension sigma_0 where the gap is below dgamma / "
+                      "sigma_0, fem/cohesive_zone.h): the FE drops JKR's assumption and the closed-form rows say "
+                      "\"(JKR idealisation)\" (paraboloid or power law).");
+    prm.declare_entry("Tabor parameter", "0", Patterns::Double(0.),
+                      "Dugdale: lambda (cases/fe_cohesive.h; Maugis' at k = 0), which sets sigma_0; or give the "
+                      "cohesive strength.");
+    prm.declare_entry("cohesive strength", "0", Patterns::Double(0.), "Dugdale: sigma_0 [Pa]; or give the Tabor parameter.");
     prm.leave_subsection();
   }
   void AdhesionParameters::parse(ParameterHandler &prm)
@@ -414,6 +423,9 @@ namespace gradcontact::cases
     curve_points.clear();
     for (const std::string &x : dealii::Utilities::split_string_list(prm.get("curve points")))
       curve_points.push_back(dealii::Utilities::string_to_double(x));
+    dugdale = prm.get("law") == "Dugdale";
+    tabor_parameter = prm.get_double("Tabor parameter");
+    cohesive_strength = prm.get_double("cohesive strength");
     prm.leave_subsection();
   }
 
@@ -591,6 +603,23 @@ namespace gradcontact::cases
       if (optimal && !(ad.tensile_strength > 0.))
         throw std::invalid_argument(where + "Adhesion/tensile strength = " + format(ad.tensile_strength) +
                                     " must be in (0, inf) for the optimal profile");
+      if (!ad.dugdale && (ad.tabor_parameter > 0. || ad.cohesive_strength > 0.))
+        throw std::invalid_argument(where + "Adhesion/Tabor parameter or cohesive strength is set with Adhesion/law = "
+                                    "JKR: they belong to law = Dugdale");
+      if (ad.dugdale)
+        {
+          using Type = LoadParameters::Type;
+          if (s.load.type != Type::paraboloid && s.load.type != Type::power_law)
+            throw std::invalid_argument(where + "Adhesion/law = Dugdale needs Load/type = paraboloid or power law (a "
+                                        "profile that opens monotonically)");
+          if ((ad.tabor_parameter > 0.) == (ad.cohesive_strength > 0.))
+            throw std::invalid_argument(where + "Adhesion/law = Dugdale with Tabor parameter = " +
+                                        format(ad.tabor_parameter) + " and cohesive strength = " +
+                                        format(ad.cohesive_strength) + ": give exactly one of them, > 0");
+          if (ad.tabor_parameter > 0. && s.material.modulus != MaterialParameters::Modulus::power_law)
+            throw std::invalid_argument(where + "Adhesion/Tabor parameter needs Material/modulus = power law (it is "
+                                        "defined by the chapter's JKR state); give Adhesion/cohesive strength instead");
+        }
     }
 
     /// A candidate checks at least one formula at one point; a pressure needs f'' (see the message).

@@ -172,6 +172,11 @@ namespace gradcontact::cases
     double stencil_ratio = 1.05;
     bool local_stencil = true;
     std::vector<double> curve_points; ///< a / a_c of FE points on the force-depth curve (force control)
+    /// The adhesive law of the FE: JKR (the chapter's, energy release rate) or a Dugdale cohesive zone of strength
+    /// sigma_0 (given, or from the Tabor parameter lambda, cases/fe_cohesive.h), fem/cohesive_zone.h.
+    bool dugdale = false;
+    double tabor_parameter = 0.;    ///< lambda > 0 (Dugdale; or cohesive_strength)
+    double cohesive_strength = 0.;  ///< sigma_0 [Pa] > 0 (Dugdale; or tabor_parameter)
     bool enabled(const LoadParameters &load) const;
     static void declare(dealii::ParameterHandler &prm);
     void parse(dealii::ParameterHandler &prm);

@@ -283,17 +283,20 @@ namespace gradcontact::fem
       {
         if (v_left < v_mid)
           {
-            const double next = left - growth * (mid - left);
+            double next = left - growth * (mid - left);
             right = mid, v_right = v_mid;
             mid = left, v_mid = v_left;
-            left = next;
-            if (vanished(left))
+            // Where the contact has vanished, step back toward mid: the minimum may lie just before it.
+            for (unsigned int halving = 0; halving < 8 && vanished(next); ++halving)
+              next = mid - 0.5 * (mid - next);
+            if (vanished(next))
               {
                 // The last state on the path before the contact vanishes.
                 result.at_vanishing_contact = true;
                 result.state                = state(std::exp(mid));
                 break;
               }
+            left   = next;
             v_left = value(left);
           }
         else
