@@ -13,6 +13,7 @@
 #include <cmath>
 #include <fstream>
 #include <iostream>
+#include <limits>
 #include <map>
 #include <sstream>
 
@@ -46,6 +47,26 @@ namespace gradcontact::cases
       double radius_deviation() const { return vanishing ? std::nan("") : radius / radius_jkr - 1; }
       double rigid_deviation() const { return force / force_rigid - 1; }
     };
+
+    /// A trend check: a deviation must fall toward a limit, from `before` to `after` (rel_error = after / before < 1).
+    Row falling_row(const std::string &quantity, const std::string &metric, const std::string &reference,
+                    const double before, const double after, const Point &at)
+    {
+      Row row;
+      row.quantity        = quantity;
+      row.metric          = metric + " (must fall: < 1)";
+      row.method          = "FE cohesive";
+      row.reference       = reference;
+      row.reference_value = before;
+      row.value           = after;
+      row.abs_error       = std::abs(after - before);
+      row.rel_error       = before > 0 ? after / before : std::numeric_limits<double>::infinity();
+      row.tolerance       = 1;
+      row.pass            = after < before;
+      row.dofs            = at.dofs;
+      row.seconds         = at.seconds;
+      return row;
+    }
 
     std::string control_name(const bool force_control)
     {
@@ -289,43 +310,23 @@ namespace gradcontact::cases
             if (r.size() >= 2)
               {
                 const double prev = std::abs(d[d.size() - 2]), last = std::abs(d.back());
-                Row row;
-                row.quantity        = "JKR limit (" + control_name(force_control) + ")";
-                row.metric          = "k = " + format(k) + ": |F_c / F_c,JKR - 1| at lambda = " + format(r.back()) +
-                             " over its value at lambda = " + format(r[r.size() - 2]) + " (must fall: < 1)";
-                row.method          = "FE cohesive";
-                row.reference       = "closed form (JKR idealisation)";
-                row.reference_value = prev;
-                row.value           = last;
-                row.abs_error       = std::abs(last - prev);
-                row.rel_error       = prev > 0 ? last / prev : std::numeric_limits<double>::infinity();
-                row.tolerance       = 1;
-                row.pass            = last < prev;
-                row.dofs            = points.back().dofs;
-                row.seconds         = points.back().seconds;
-                result.rows.push_back(row);
+                result.rows.push_back(falling_row("JKR limit (" + control_name(force_control) + ")",
+                                                  "k = " + format(k) + ": |F_c / F_c,JKR - 1| at lambda = " +
+                                                    format(r.back()) + " over its value at lambda = " +
+                                                    format(r[r.size() - 2]),
+                                                  "closed form (JKR idealisation)", prev, last, points.back()));
               }
             if (force_control && paraboloid && r.size() >= 2)
               {
                 const Point &p0 = points[0], &p1 = points[1];
                 if (p0.error.empty() && p1.error.empty())
                   {
-                    const double d0 = std::abs(p0.rigid_deviation()), d1 = std::abs(p1.rigid_deviation());
-                    Row row;
-                    row.quantity        = "DMT limit (force control)";
-                    row.metric          = "k = " + format(k) + ": |F_c / (-2 pi dgamma R) - 1| at lambda = " +
-                                 format(p0.lambda) + " over its value at lambda = " + format(p1.lambda) + " (must fall: < 1)";
-                    row.method          = "FE cohesive";
-                    row.reference       = "rigid sphere (DMT)";
-                    row.reference_value = d1;
-                    row.value           = d0;
-                    row.abs_error       = std::abs(d0 - d1);
-                    row.rel_error       = d1 > 0 ? d0 / d1 : std::numeric_limits<double>::infinity();
-                    row.tolerance       = 1;
-                    row.pass            = d0 < d1;
-                    row.dofs            = p0.dofs;
-                    row.seconds         = p0.seconds;
-                    result.rows.push_back(row);
+                    result.rows.push_back(falling_row("DMT limit (force control)",
+                                                      "k = " + format(k) + ": |F_c / (-2 pi dgamma R) - 1| at lambda = " +
+                                                        format(p0.lambda) + " over its value at lambda = " +
+                                                        format(p1.lambda),
+                                                      "rigid sphere (DMT)", std::abs(p1.rigid_deviation()),
+                                                      std::abs(p0.rigid_deviation()), p0));
                   }
               }
           }

@@ -8,8 +8,6 @@
 #include <chrono>
 #include <cmath>
 #include <cstdint>
-#include <cstdlib>
-#include <iostream>
 #include <limits>
 #include <sstream>
 #include <stdexcept>
@@ -229,9 +227,6 @@ namespace gradcontact::fem
               }
             continue;
           }
-        if (std::getenv("GRADCONTACT_COHESIVE_TRACE"))
-          std::cerr << "a=" << a << " pass=" << pass << " hint=" << hint << " c=" << c << " refined=" << refined
-                    << " dofs=" << s.n_dofs << " solves=" << s.zone_solves << "\n";
         const bool settled = refined && std::abs(c - hint) <= parameters.zone_tolerance * (c - a);
         if (settled || parameters.zone_refinements == 0)
           return solved.emplace(a, total).first->second;
