@@ -273,6 +273,7 @@ namespace gradcontact::fem
     constexpr double growth = 1.618;
     const double     q      = std::log(parameters.stencil_ratio);
     double left = std::log(a0) - q, mid = std::log(a0), right = std::log(a0) + q;
+    double s_vanished = -std::numeric_limits<double>::infinity();
     double v_left = value(left), v_mid = value(mid), v_right = value(right);
     while (!(v_mid <= v_left && v_mid <= v_right))
       {
@@ -281,10 +282,22 @@ namespace gradcontact::fem
             double next = left - growth * (mid - left);
             right = mid, v_right = v_mid;
             mid = left, v_mid = v_left;
-            // Where the contact has vanished, step back toward mid: the minimum may lie just before it.
-            for (unsigned int halving = 0; halving < 8 && vanished(next); ++halving)
-              next = mid - 0.5 * (mid - next);
-            if (vanished(next))
+            // Never beyond a radius where the contact is known to have vanished: halve toward it instead, until
+            // the step is a quarter of the first one (then the minimum is the vanishing contact itself).
+            if (next <= s_vanished)
+              next = 0.5 * (mid + s_vanished);
+            bool gone = false;
+            while (vanished(next))
+              {
+                s_vanished = next;
+                if (mid - s_vanished < q / 4)
+                  {
+                    gone = true;
+                    break;
+                  }
+                next = 0.5 * (mid + s_vanished);
+              }
+            if (gone)
               {
                 // The last state on the path before the contact vanishes.
                 result.at_vanishing_contact = true;

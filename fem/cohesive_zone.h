@@ -58,7 +58,7 @@ namespace gradcontact::fem
     double       radius_tolerance = 1e-4; ///< relative accuracy of the critical radius (Brent in ln a)
     double       stencil_ratio    = 1.25; ///< first step of the bracketing walk (then growing by the golden ratio)
     double       max_zone_ratio   = 200;  ///< c / a beyond which the contact counts as vanished
-    unsigned int max_states       = 60;   ///< FE states per critical search
+    unsigned int max_states       = 80;   ///< FE states per critical search
     void         validate() const;
   };
 
