@@ -97,7 +97,8 @@ namespace gradcontact::fem
 
 
 
-  CohesiveState CohesiveContact::solve_on_mesh(const double a, const double c_hint, const bool refine, double &c_found)
+  CohesiveState CohesiveContact::solve_on_mesh(const double a, const double c_hint, const std::vector<double> &refine_at,
+                                               double &c_found)
   {
     const auto start = std::chrono::steady_clock::now();
     Settings   s     = settings(a);
@@ -114,8 +115,8 @@ namespace gradcontact::fem
       }
     const double       reach = 0.9 * s.mesh.near_field_size * a; // the zone must end inside the near field
     SurfaceRefinement  refinement;
-    if (refine && parameters.zone_refinements > 0)
-      refinement = {{c_hint}, parameters.zone_refinements};
+    if (!refine_at.empty() && parameters.zone_refinements > 0)
+      refinement = {refine_at, parameters.zone_refinements};
     AxisymmetricSolver solver(material, s.mesh, s.discretization, refinement);
 
     const double h0 = law.range();
@@ -208,9 +209,21 @@ namespace gradcontact::fem
     CohesiveState total;
     double        c = 0;
     bool          refined = std::isnan(ratio) ? false : true; // a first pass without refinement finds c
+    std::vector<double> found; // the zone ends of the meshes so far
     for (unsigned int pass = 0; pass < 12; ++pass)
       {
-        CohesiveState s = solve_on_mesh(a, hint, refined, c);
+        // Refined toward the hint and the zone ends of the last two meshes: a c that alternates between two places
+        // finds both resolved.
+        std::vector<double> refine_at;
+        if (refined)
+          {
+            refine_at.push_back(hint);
+            for (std::size_t j = found.size() >= 2 ? found.size() - 2 : 0; j < found.size(); ++j)
+              refine_at.push_back(found[j]);
+          }
+        CohesiveState s = solve_on_mesh(a, hint, refine_at, c);
+        if (std::isfinite(c))
+          found.push_back(c);
         s.meshes += total.meshes;
         s.zone_solves += total.zone_solves;
         s.seconds += total.seconds;
@@ -227,7 +240,10 @@ namespace gradcontact::fem
               }
             continue;
           }
-        const bool settled = refined && std::abs(c - hint) <= parameters.zone_tolerance * (c - a);
+        // A zone thinner than the mesh's own resolution of its width (c - a below about 1e-3 c) is settled when c
+        // moves by less than 1e-6 c.
+        const bool settled =
+          refined && std::abs(c - hint) <= std::max(parameters.zone_tolerance * (c - a), 1e-6 * c);
         if (settled || parameters.zone_refinements == 0)
           return solved.emplace(a, total).first->second;
         refined = true;

@@ -15,7 +15,7 @@
 //   g(c) = h(c) - h_0 = f(c) - d(c) + w(c; c) - h_0,
 // g(a) = -h_0 < 0; c is not a node: the tension is integrated exactly on the faces split at c
 // (fem/surface_trace.h), and the surface is refined toward c (SurfaceRefinement) on a second mesh built
-// for the c the first one found, repeated until c moves by less than `zone_tolerance` of c - a. Each
+// for the c the first one found, repeated until c moves by less than `zone_tolerance` of c - a (or 1e-6 c). Each
 // evaluation of g is two back-substitutions with the factorisation of the mesh. The force is that of the
 // contact pressure minus pi c^2 sigma_0.
 //
@@ -38,6 +38,7 @@
 #include <functional>
 #include <map>
 #include <string>
+#include <vector>
 
 namespace gradcontact::fem
 {
@@ -53,7 +54,7 @@ namespace gradcontact::fem
   struct CohesiveParameters
   {
     unsigned int zone_refinements = 8;    ///< SurfaceRefinement levels toward c
-    double       zone_tolerance   = 1e-3; ///< accepted move of c between two meshes, relative to c - a
+    double       zone_tolerance   = 1e-3; ///< accepted move of c between two meshes, relative to c - a (or 1e-6 c)
     double       near_field_margin = 2.0; ///< the near field reaches at least this times c
     double       radius_tolerance = 1e-4; ///< relative accuracy of the critical radius (Brent in ln a)
     double       stencil_ratio    = 1.25; ///< first step of the bracketing walk (then growing by the golden ratio)
@@ -103,8 +104,8 @@ namespace gradcontact::fem
     const std::map<double, CohesiveState> &states() const { return solved; }
 
   private:
-    /// The zone end on one mesh: run(a, c) is the radius-controlled state with the tension on r <= c.
-    CohesiveState solve_on_mesh(double a, double c_hint, bool refine, double &c_found);
+    /// The zone end on one mesh refined toward `refine_at` (none: not refined); the search starts at c_hint.
+    CohesiveState solve_on_mesh(double a, double c_hint, const std::vector<double> &refine_at, double &c_found);
     double        predicted_zone_ratio(double a) const;
 
     const Material                   material;
