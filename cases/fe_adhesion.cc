@@ -446,21 +446,11 @@ namespace gradcontact::cases
                     const double lambda = gradcontact::maugis_dugdale::tabor_parameter(sigma0, dgamma, l.R, E_star);
                     if (lambda < 1e-3 || lambda > 1e3)
                       continue;
-                    const auto md     = gradcontact::maugis_dugdale::pull_off(lambda, analytic_control);
-                    const auto scales = gradcontact::maugis_dugdale::scales(dgamma, l.R, E_star);
-                    if (!md.exists)
-                      result.rows.push_back(failed("pull-off force", "FE (Dugdale)", "Maugis-Dugdale",
-                                                   "the FE has an instability, Maugis-Dugdale none"));
-                    else if (control == fem::AdhesionControl::force)
-                      result.rows.push_back(compare("pull-off force", name + ", lambda = " + format(lambda) + level_tag,
-                                                    "FE", "Maugis-Dugdale (Maugis 1992)", md.state.P * scales.force,
-                                                    c.state.force, md.state.P * scales.force, std::min(s.tolerances.force, 1e-3),
-                                                    c.max_dofs, t));
-                    else
-                      result.rows.push_back(compare("critical depth", name + ", lambda = " + format(lambda) + level_tag,
-                                                    "FE", "Maugis-Dugdale (Maugis 1992)", md.state.Delta * scales.depth,
-                                                    c.state.depth, md.state.Delta * scales.depth, std::min(s.tolerances.depth, 1e-3),
-                                                    c.max_dofs, t));
+                    if (const auto row = maugis_dugdale_row(
+                          lambda, control == fem::AdhesionControl::force, true, c.state.force, c.state.depth, dgamma, l.R,
+                          E_star, name + ", lambda = " + format(lambda) + level_tag, "FE",
+                          std::min(s.tolerances.force, 1e-3), std::min(s.tolerances.depth, 1e-3), c.max_dofs, t))
+                      result.rows.push_back(*row);
                   }
               }
             catch (const std::runtime_error &e)

@@ -73,12 +73,6 @@ namespace gradcontact::cases
       return force_control ? "force control" : "displacement control";
     }
 
-    std::string percent(const double t)
-    {
-      std::ostringstream s;
-      s << t * 100 << " %";
-      return s.str();
-    }
   } // namespace
 
 
@@ -96,6 +90,32 @@ namespace gradcontact::cases
     const double a_c   = jkr_critical(medium, profile, dgamma, gradcontact::Control::force).radius;
     const double range = tabor_constant() * gradcontact::jkr::delta_ell(medium, dgamma, a_c) / lambda; // h_0
     return dgamma / range;
+  }
+
+
+
+  std::optional<Row> maugis_dugdale_row(const double lambda, const bool force_control, const bool fe_instability, const double force,
+                         const double depth, const double dgamma, const double R, const double E_star,
+                         const std::string &metric, const std::string &method, const double force_tolerance,
+                         const double depth_tolerance, const unsigned int dofs, const double seconds)
+  {
+    const auto md     = gradcontact::maugis_dugdale::pull_off(lambda, force_control ? gradcontact::Control::force
+                                                                                    : gradcontact::Control::displacement);
+    const auto scales = gradcontact::maugis_dugdale::scales(dgamma, R, E_star);
+    const std::string reference = "Maugis-Dugdale (Maugis 1992)";
+    if (md.exists != fe_instability)
+      return failed(force_control ? "pull-off force" : "critical depth", method, reference,
+                    metric + ": " + (md.exists ? "Maugis-Dugdale has a pull-off, the FE none"
+                                               : "the FE has a pull-off, Maugis-Dugdale none"));
+    if (!md.exists) // neither has one: the contact shrinks to nothing without a jump, nothing to compare
+      return std::nullopt;
+    // Under displacement control the search minimises d(a): d_c is what it finds accurately; the force there moves
+    // with the location of that flat minimum.
+    if (force_control)
+      return compare("pull-off force", metric, method, reference, md.state.P * scales.force, force,
+                     md.state.P * scales.force, force_tolerance, dofs, seconds);
+    return compare("critical depth", metric, method, reference, md.state.Delta * scales.depth, depth,
+                   md.state.Delta * scales.depth, depth_tolerance, dofs, seconds);
   }
 
 
@@ -236,25 +256,11 @@ namespace gradcontact::cases
                 if (k == 0 && paraboloid && lambda >= 1e-3 && lambda <= 1e3)
                   {
                     const double E_star = s.material.E0 / (1 - s.material.nu * s.material.nu);
-                    const auto   scales = gradcontact::maugis_dugdale::scales(dgamma, s.load.R, E_star);
-                    const auto   md_ref = gradcontact::maugis_dugdale::pull_off(lambda, control);
-                    const std::string quantity = "pull-off force (" + control_name(force_control) + ")";
-                    const std::string metric   = "k = 0, lambda = " + format(lambda) + ", relative";
-                    if (md_ref.exists != !(p.vanishing && !force_control))
-                      result.rows.push_back(failed(quantity, "FE cohesive", "Maugis-Dugdale",
-                                                   metric + ": " + (md_ref.exists ? "Maugis-Dugdale has a pull-off, the FE none"
-                                                                                  : "the FE has a pull-off, Maugis-Dugdale none")));
-                    else if (md_ref.exists && force_control)
-                      result.rows.push_back(compare(quantity, metric, "FE cohesive", "Maugis-Dugdale (Maugis 1992)",
-                                                    md_ref.state.P * scales.force, p.force, md_ref.state.P * scales.force,
-                                                    s.tolerances.force, p.dofs, p.seconds));
-                    else if (md_ref.exists)
-                      // Under displacement control the search minimises d(a): d_c is what it finds accurately; the
-                      // force there moves with the location of that flat minimum (map.md reports it).
-                      result.rows.push_back(compare("pull-off depth (displacement control)", metric, "FE cohesive",
-                                                    "Maugis-Dugdale (Maugis 1992)", md_ref.state.Delta * scales.depth,
-                                                    p.depth, md_ref.state.Delta * scales.depth, s.tolerances.depth,
-                                                    p.dofs, p.seconds));
+                    if (const auto row = maugis_dugdale_row(
+                          lambda, force_control, !(p.vanishing && !force_control), p.force, p.depth, dgamma, s.load.R,
+                          E_star, "k = 0, lambda = " + format(lambda) + ", " + control_name(force_control) + ", relative",
+                          "FE cohesive", s.tolerances.force, s.tolerances.depth, p.dofs, p.seconds))
+                      result.rows.push_back(*row);
                   }
               }
             // The path F(d) of this lambda: the curve points (Adhesion/curve points, a / a_c,JKR under force control)

@@ -24,6 +24,8 @@
 #include <analytic/normal.h>
 
 #include <filesystem>
+#include <optional>
+#include <string>
 #include <variant>
 
 namespace gradcontact::cases
@@ -37,6 +39,14 @@ namespace gradcontact::cases
   /// The Dugdale strength sigma_0 that gives the Tabor parameter `lambda` (header) for the medium, profile and
   /// work of adhesion.
   double cohesive_strength(double lambda, const gradcontact::Medium &medium, const JkrProfile &profile, double dgamma);
+
+  /// The sharp check of a Dugdale pull-off on the homogeneous half-space (paraboloid, k = 0): Maugis-Dugdale's
+  /// pull-off force (force control) or critical depth (displacement control, the quantity its search finds
+  /// accurately); a failed row when only one of the FE (`fe_instability`) and Maugis-Dugdale has an instability,
+  /// none when neither has. lambda in [1e-3, 1e3].
+  std::optional<Row> maugis_dugdale_row(double lambda, bool force_control, bool fe_instability, double force, double depth,
+                         double dgamma, double R, double E_star, const std::string &metric, const std::string &method,
+                         double force_tolerance, double depth_tolerance, unsigned int dofs, double seconds);
 
   SceneResult run_cohesive_map(const Scene &scene, const std::filesystem::path &folder, bool verbose);
 } // namespace gradcontact::cases

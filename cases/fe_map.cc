@@ -202,13 +202,6 @@ namespace gradcontact::cases
       return out;
     }
 
-    std::string percent(const double t)
-    {
-      std::ostringstream o;
-      o << t * 100 << " %";
-      return o.str();
-    }
-
     /// The points of one k, with what bounds their FE error.
     struct ExponentMap
     {
@@ -656,6 +649,13 @@ namespace gradcontact::cases
       return out;
     }
   } // namespace
+
+  std::string percent(const double t)
+  {
+    std::ostringstream o;
+    o << t * 100 << " %";
+    return o.str();
+  }
 
   std::string friction_threshold_cell(const std::vector<double> &mus, const std::vector<double> &deviations,
                                       const std::optional<double> full_stick, const double threshold)

@@ -42,6 +42,9 @@ namespace gradcontact::cases
   std::string friction_threshold_cell(const std::vector<double> &mus, const std::vector<double> &deviations,
                                       std::optional<double> full_stick, double threshold);
 
+  /// A threshold as map.md writes it: 0.01 -> "1 %".
+  std::string percent(double t);
+
   SceneResult run_map_scene(const Scene &scene, const std::filesystem::path &folder, bool verbose);
 } // namespace gradcontact::cases
 
