@@ -2,6 +2,7 @@
 #include <analytic/batch.h>
 #include <analytic/detail/roots.h>
 #include <analytic/errors.h>
+#include <analytic/maugis_dugdale.h>
 #include <analytic/mdr.h>
 #include <analytic/mdr_contact.h>
 #include <analytic/normal.h>
@@ -507,6 +508,54 @@ namespace gradcontact::batch
       return t;
     }
 
+    // The Maugis-Dugdale adhesion of a rigid paraboloid on a homogeneous half-space (Maugis, J. Colloid
+    // Interface Sci. 150 (1992) 243-269; analytic/maugis_dugdale.h): not the chapter's (JKR), the classical
+    // reference of the cohesive-zone FE; sigma_th is the Dugdale stress sigma_0, k must be 0.
+    CaseTable maugis_dugdale_table()
+    {
+      CaseTable t;
+      const auto E_star = [](const In &q) {
+        const GradedHalfSpace b = q.body();
+        validate("maugis_dugdale", b);
+        if (b.k != 0)
+          throw DomainError("maugis_dugdale: material.k = " + check::format(b.k) +
+                            "; valid: 0 (the Maugis-Dugdale solution is that of a homogeneous half-space)");
+        return b.E0 / (1 - b.nu * b.nu);
+      };
+      const auto lambda = [E_star](const In &q) {
+        check::positive("maugis_dugdale", "sigma_th", q.sigma_th());
+        check::positive("maugis_dugdale", "dgamma", q.dgamma());
+        check::positive("maugis_dugdale", "geometry.R", q.R());
+        return maugis_dugdale::tabor_parameter(q.sigma_th(), q.dgamma(), q.R(), E_star(q));
+      };
+      const auto critical = [lambda, E_star](const In &q) {
+        const double l = lambda(q);
+        if (!(l >= 1e-3 && l <= 1e3))
+          throw DomainError("maugis_dugdale: sigma_th = " + check::format(q.sigma_th()) + " gives the Tabor parameter " +
+                            check::format(l) + "; valid: a sigma_th with the Tabor parameter in [1e-3, 1e3]");
+        const maugis_dugdale::PullOff p = maugis_dugdale::pull_off(l, q.control());
+        if (!p.exists)
+          throw DomainError("maugis_dugdale: control = displacement has no jump at the Tabor parameter " +
+                            check::format(l) + " (sigma_th = " + check::format(q.sigma_th()) +
+                            "): the contact shrinks to nothing; valid: a larger sigma_th");
+        return std::make_pair(p.state, maugis_dugdale::scales(q.dgamma(), q.R(), E_star(q)));
+      };
+      t.closed_form["tabor_parameter"] = lambda;
+      t.closed_form["critical_force"] = [critical](const In &q) {
+        const auto [state, scale] = critical(q);
+        return state.P * scale.force;
+      };
+      t.closed_form["critical_radius"] = [critical](const In &q) {
+        const auto [state, scale] = critical(q);
+        return state.A * scale.length;
+      };
+      t.closed_form["critical_depth"] = [critical](const In &q) {
+        const auto [state, scale] = critical(q);
+        return state.Delta * scale.depth;
+      };
+      return t;
+    }
+
     // --- dispatch -------------------------------------------------------------------------------
 
     const std::map<std::string, CaseTable> &tables()
@@ -527,6 +576,7 @@ namespace gradcontact::batch
         t["tangential_sphere"] = tangential_sphere_table();
         t["oscillating_sphere"] = oscillating_sphere_table();
         t["coefficients"] = coefficients_table();
+        t["maugis_dugdale"] = maugis_dugdale_table();
         return t;
       }();
       return all;

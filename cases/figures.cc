@@ -4,6 +4,7 @@
 #include "fe_scene.h"
 #include "fe_tangential.h"
 #include "report.h"
+#include "runner.h"
 #include "scene.h"
 
 #include <analytic/batch.h>
@@ -61,10 +62,13 @@ namespace gradcontact::cases
     double coordinate(const json &spec, const std::string &key, const double t)
     {
       const double scale = spec.value("scale", 1.);
+      // "value": a constant, e.g. FE / closed form = 1 where the closed form holds exactly
+      if (spec.contains("value"))
+        return spec.at("value").get<double>() * scale;
       if (spec.value("sweep", false))
         return t * scale;
       if (!spec.contains("request"))
-        throw std::invalid_argument("figure: a coordinate needs \"sweep\": true or a \"request\"");
+        throw std::invalid_argument("figure: a coordinate needs \"sweep\": true, a \"value\" or a \"request\"");
       double value = request_value(spec["request"], key, t, true) * scale;
       // "minus": a request at fixed parameters subtracted before the division (e.g. the shift of 9.74)
       if (spec.contains("minus"))
@@ -92,6 +96,9 @@ namespace gradcontact::cases
       double x = 0, y = 0, reference = std::numeric_limits<double>::quiet_NaN();
       double error = std::numeric_limits<double>::infinity(), tolerance = 0;
       bool pass = false;
+      /// A measured deviation (a validation figure: how far the closed form is from a model that drops its
+      /// idealisation): tabulated, never failed on its size; it still fails when not finite or off the curve.
+      bool measured = false;
     };
 
     // The closed form's value at abscissa x on `curve`: every pair of drawn samples that brackets x is
@@ -156,9 +163,14 @@ namespace gradcontact::cases
       const std::string where = "figures: " + figure + ": point set '" + points.title + "'";
       if (!check.contains("curves") || !check.at("curves").is_array() || check.at("curves").empty())
         throw std::invalid_argument(where + ": \"check\" needs \"curves\", a non-empty list of analytic curve titles");
-      if (!check.contains("tolerance") || !check.at("tolerance").is_number())
-        throw std::invalid_argument(where + ": \"check\" needs a numeric \"tolerance\"");
-      const double tolerance = check.at("tolerance");
+      const bool measured = check.value("measured", false);
+      if (measured && check.contains("tolerance"))
+        throw std::invalid_argument(where + ": a \"measured\" check has no \"tolerance\" (its deviation is the result)");
+      if (!measured && (!check.contains("tolerance") || !check.at("tolerance").is_number()))
+        throw std::invalid_argument(where + ": \"check\" needs a numeric \"tolerance\" (or \"measured\": true)");
+      // A measured point may lie at most this far (relative to the curve's x-extent) beyond the drawn curve.
+      constexpr double measured_slack = 1e-3;
+      const double tolerance = measured ? measured_slack : check.at("tolerance").get<double>();
       if (!(tolerance > 0 && tolerance < 1))
         throw std::invalid_argument(where + ": check tolerance = " + format(tolerance) +
                                     " is outside the valid range (0, 1) (an error relative to the curve's largest |y|)");
@@ -178,7 +190,8 @@ namespace gradcontact::cases
           p.series = points.title;
           p.x = points.x[i];
           p.y = points.y[i];
-          p.tolerance = tolerance;
+          p.tolerance = measured ? std::numeric_limits<double>::quiet_NaN() : tolerance;
+          p.measured = measured;
           double best = std::numeric_limits<double>::infinity();
           for (const AnalyticCurve *c : references)
             {
@@ -199,7 +212,7 @@ namespace gradcontact::cases
             p.note = "the point is not a finite number";
           else if (p.reference_curve.empty())
             p.note = "abscissa " + format(p.x) + " outside the drawn range of the reference curve(s)";
-          p.pass = p.note.empty() && p.error <= tolerance;
+          p.pass = p.note.empty() && (measured || p.error <= tolerance);
           if (p.note.empty() && !p.pass)
             p.note = "error above tolerance";
           out.push_back(p);
@@ -258,6 +271,7 @@ namespace gradcontact::cases
         return s;
       }
       int hits = 0, misses = 0;
+      bool enabled() const { return enabled_; }
 
     private:
       static std::string build_id()
@@ -392,14 +406,203 @@ namespace gradcontact::cases
       });
     }
 
+    /// The rows of a CSV file with a header (fields split at commas outside double quotes, "" an escaped quote).
+    std::vector<std::map<std::string, std::string>> read_csv_table(const fs::path &file)
+    {
+      std::ifstream in(file);
+      if (!in)
+        throw std::runtime_error("figures: cannot open " + file.string());
+      const auto split = [](const std::string &line) {
+        std::vector<std::string> fields(1);
+        bool quoted = false;
+        for (std::size_t i = 0; i < line.size(); ++i)
+          {
+            const char ch = line[i];
+            if (ch == '"' && quoted && i + 1 < line.size() && line[i + 1] == '"')
+              fields.back() += '"', ++i;
+            else if (ch == '"')
+              quoted = !quoted;
+            else if (ch == ',' && !quoted)
+              fields.emplace_back();
+            else if (ch != '\r')
+              fields.back() += ch;
+          }
+        return fields;
+      };
+      std::string line;
+      std::getline(in, line);
+      const std::vector<std::string> header = split(line);
+      std::vector<std::map<std::string, std::string>> rows;
+      while (std::getline(in, line))
+        {
+          if (line.empty())
+            continue;
+          const std::vector<std::string> fields = split(line);
+          if (fields.size() != header.size())
+            throw std::runtime_error("figures: " + file.string() + ": a row has " + std::to_string(fields.size()) +
+                                     " fields, the header " + std::to_string(header.size()));
+          std::map<std::string, std::string> row;
+          for (std::size_t i = 0; i < header.size(); ++i)
+            row[header[i]] = fields[i];
+          rows.push_back(std::move(row));
+        }
+      return rows;
+    }
+
+    /// The map report of `scene` (Map section): the one a `gradcontact run` wrote to <reports>/<scene name>/ when
+    /// its parameters.prm is the scene's resolved parameters, else the figures' own under
+    /// <reports>/figures/maps/<scene name>-<hash of the parameters>/, run now when missing or different.
+    fs::path map_report(const Scene &scene, const fs::path &reports, PointCache &cache)
+    {
+      const auto matches = [&](const fs::path &folder) {
+        if (!fs::exists(folder / "map.csv") || !fs::exists(folder / "parameters.prm"))
+          return false;
+        std::ifstream in(folder / "parameters.prm");
+        std::ostringstream text;
+        text << in.rdbuf();
+        return text.str() == scene.resolved;
+      };
+      if (cache.enabled() && matches(reports / scene.info.name))
+        {
+          ++cache.hits;
+          return reports / scene.info.name;
+        }
+      Scene own = scene;
+      std::ostringstream suffix;
+      suffix << std::hex << std::setw(16) << std::setfill('0') << std::hash<std::string>{}(scene.resolved);
+      own.info.name += "-" + suffix.str();
+      const fs::path root = reports / "figures" / "maps", folder = root / own.info.name;
+      if (cache.enabled() && matches(folder))
+        {
+          ++cache.hits;
+          return folder;
+        }
+      std::cout << "figures: running the map " << scene.file << " (no report of its parameters in " << reports.string()
+                << "; it goes to " << folder.string() << ")" << std::endl;
+      fs::create_directories(root);
+      run_report(own, root, false);
+      ++cache.misses;
+      return folder;
+    }
+
+    /// The points of a map scene's map.csv (kind "fe_map"): the rows whose columns equal "where" (numbers to
+    /// 1e-9 relative, text exactly), x and y the named columns ("column" or {"column", "divide_by": column}). A row whose x is not finite (the full-stick
+    /// row of a friction map, mu = inf) is left out and said so.
+    Series map_points(const json &c, PointCache &cache, const fs::path &reports)
+    {
+      const std::string title = c.value("title", "FE map");
+      const json &fe = c.at("fe_map");
+      const std::string where = "figures: fe_map point set '" + title + "'";
+      const Scene scene = read_scene(fe.at("scene").get<std::string>(), overrides_of(fe));
+      if (scene.kind != SceneKind::map)
+        throw std::invalid_argument(where + ": scene " + scene.file + " has no Map section (kind " +
+                                    to_string(scene.kind) + "; valid: a map scene)");
+      // an axis: a column, or a column divided by another
+      const auto columns = [&](const json &axis) -> std::pair<std::string, std::string> {
+        if (axis.is_string())
+          return {axis.get<std::string>(), ""};
+        if (!axis.is_object() || !axis.contains("column"))
+          throw std::invalid_argument(where + ": an axis is a column name or {\"column\", \"divide_by\"}, not " +
+                                      axis.dump());
+        return {axis.at("column").get<std::string>(), axis.value("divide_by", "")};
+      };
+      const auto [qx, dx] = columns(fe.at("x"));
+      const auto [qy, dy] = columns(fe.at("y"));
+      const fs::path folder = map_report(scene, reports, cache);
+      const auto rows = read_csv_table(folder / "map.csv");
+      Series points{title, {}, {}, true};
+      if (rows.empty())
+        throw std::runtime_error(where + ": " + (folder / "map.csv").string() + " has no rows");
+      for (const std::string &column : {qx, dx, qy, dy})
+        if (!column.empty() && !rows.front().count(column))
+          throw std::invalid_argument(where + ": map.csv of " + scene.file + " has no column '" + column + "'");
+      const json condition = fe.value("where", json::object());
+      for (const auto &[column, value] : condition.items())
+        if (!rows.front().count(column))
+          throw std::invalid_argument(where + ": \"where\" names the column '" + column + "', not in map.csv of " +
+                                      scene.file);
+      std::size_t left_out = 0;
+      for (const auto &row : rows)
+        {
+          bool selected = true;
+          for (const auto &[column, value] : condition.items())
+            {
+              const std::string &field = row.at(column);
+              if (value.is_number())
+                {
+                  char *end = nullptr;
+                  const double v = std::strtod(field.c_str(), &end);
+                  selected = selected && end != field.c_str() &&
+                             std::abs(v - value.get<double>()) <= 1e-9 * std::max(1., std::abs(value.get<double>()));
+                }
+              else
+                selected = selected && field == value.get<std::string>();
+            }
+          if (!selected)
+            continue;
+          const auto number = [](const std::string &field) {
+            char *end = nullptr;
+            const double v = std::strtod(field.c_str(), &end);
+            return end == field.c_str() ? std::numeric_limits<double>::quiet_NaN() : v;
+          };
+          const auto value = [&](const std::string &column, const std::string &divisor) {
+            return number(row.at(column)) / (divisor.empty() ? 1. : number(row.at(divisor)));
+          };
+          const double x = value(qx, dx), y = value(qy, dy);
+          if (!std::isfinite(x))
+            {
+              ++left_out;
+              continue;
+            }
+          points.x.push_back(x);
+          points.y.push_back(y);
+        }
+      if (points.x.empty())
+        throw std::invalid_argument(where + ": no row of " + (folder / "map.csv").string() + " matches \"where\" " +
+                                    condition.dump());
+      if (left_out)
+        std::cout << "figures: " << title << ": " << left_out << " row(s) of " << (folder / "map.csv").string()
+                  << " with a non-finite " << qx << " are not drawn\n";
+      return points;
+    }
+
     /// What the index page says about one figure.
     struct FigureSummary
     {
       std::string name, figure, caption;
-      std::size_t points = 0, failed = 0;
+      std::size_t points = 0, failed = 0; ///< checked against a tolerance (failed: measured ones too)
       double worst = 0;
+      std::size_t measured = 0; ///< measured deviations (validation figures)
+      double largest_deviation = 0;
       bool drawn = false;
       double seconds = 0;
+
+      json to_json() const
+      {
+        return {{"name", name},         {"figure", figure},     {"caption", caption},
+                {"points", points},     {"failed", failed},     {"worst", worst},
+                {"measured", measured}, {"largest_deviation", largest_deviation}, {"drawn", drawn},
+                {"seconds", seconds}};
+      }
+      static FigureSummary from_json(const json &j)
+      {
+        FigureSummary f;
+        f.name = j.at("name");
+        f.figure = j.at("figure");
+        f.caption = j.at("caption");
+        f.points = j.at("points");
+        f.failed = j.at("failed");
+        // JSON has no infinity: an infinite error (a point off its curve) is written as null
+        const auto error = [&j](const char *key) {
+          return j.at(key).is_null() ? std::numeric_limits<double>::infinity() : j.at(key).get<double>();
+        };
+        f.worst = error("worst");
+        f.measured = j.at("measured");
+        f.largest_deviation = error("largest_deviation");
+        f.drawn = j.at("drawn");
+        f.seconds = j.at("seconds");
+        return f;
+      }
     };
 
     // Writes `text` to `target` through a temporary sibling.
@@ -422,8 +625,8 @@ namespace gradcontact::cases
           << "series,x,value,reference,reference_curve,error,tolerance,pass,note\n";
       for (const CheckedPoint &p : points)
         csv << csv_quote(p.series) << ',' << p.x << ',' << p.y << ',' << p.reference << ','
-            << csv_quote(p.reference_curve) << ',' << p.error << ',' << p.tolerance << ',' << (p.pass ? "true" : "false")
-            << ',' << csv_quote(p.note) << '\n';
+            << csv_quote(p.reference_curve) << ',' << p.error << ',' << p.tolerance << ','
+            << (!p.pass ? "false" : p.measured ? "measured" : "true") << ',' << csv_quote(p.note) << '\n';
       return csv.str();
     }
 
@@ -438,12 +641,14 @@ namespace gradcontact::cases
           return md.str();
         }
       md << "Each point against the closed form at the same abscissa; error = |value - reference| / max |y| of the "
-            "reference curve as drawn.\n\n| series | x | value | reference | reference curve | error | tolerance | "
-            "pass | note |\n|---|---|---|---|---|---|---|---|---|\n";
+            "reference curve as drawn. A point set with the tolerance \"-\" is measured, not checked: the deviation of "
+            "the closed form from a model that drops its idealisation is the result (it fails only when it is not "
+            "finite or lies off its curve).\n\n| series | x | value | reference | reference curve | error | "
+            "tolerance | pass | note |\n|---|---|---|---|---|---|---|---|---|\n";
       for (const CheckedPoint &p : points)
         md << "| " << p.series << " | " << format(p.x) << " | " << format(p.y) << " | " << format(p.reference) << " | "
-           << p.reference_curve << " | " << format(p.error) << " | " << format(p.tolerance) << " | "
-           << (p.pass ? "pass" : "**FAIL**") << " | " << p.note << " |\n";
+           << p.reference_curve << " | " << format(p.error) << " | " << (p.measured ? "-" : format(p.tolerance))
+           << " | " << (!p.pass ? "**FAIL**" : p.measured ? "measured" : "pass") << " | " << p.note << " |\n";
       md << "\nTolerances:\n\n";
       for (const auto &[series, reason] : why)
         md << "- " << series << ": " << reason << "\n";
@@ -540,9 +745,12 @@ namespace gradcontact::cases
                       c.at("points").at("y").get<std::vector<double>>(), true};
           else if (c.contains("fe") || c.contains("fe_adhesion") || c.contains("fe_tangential"))
             points = fe_points(c, cache);
+          else if (c.contains("fe_map"))
+            points = map_points(c, cache, reports);
           else
             throw std::invalid_argument("figures: " + file.string() + ": curve '" + c.value("title", "") +
-                                        "' has none of sweep, prescribed, points, fe, fe_adhesion, fe_tangential");
+                                        "' has none of sweep, prescribed, points, fe, fe_adhesion, fe_tangential, "
+                                        "fe_map");
           if (points.x.size() != points.y.size())
             throw std::invalid_argument("figures: " + file.string() + ": point set '" + points.title + "' has " +
                                         std::to_string(points.x.size()) + " abscissae and " +
@@ -568,13 +776,31 @@ namespace gradcontact::cases
       const fs::path tmp = temporary_sibling(folder / name);
       fs::remove_all(tmp);
       fs::create_directories(tmp);
+      for (const CheckedPoint &p : checked)
+        {
+          summary.failed += !p.pass;
+          if (p.measured)
+            {
+              ++summary.measured;
+              if (std::isfinite(p.error))
+                summary.largest_deviation = std::max(summary.largest_deviation, p.error);
+            }
+          else
+            {
+              ++summary.points;
+              summary.worst = std::max(summary.worst, p.error);
+            }
+        }
       bool ok = false;
       try
         {
           ok = write_plot(tmp, name, title, fig.value("xlabel", "x"), fig.value("ylabel", "y"), series,
                           fig.value("logx", false), fig.value("logy", false));
+          summary.drawn = ok;
+          summary.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
           write_atomically(tmp / (name + ".csv"), tables_csv(checked));
           write_atomically(tmp / (name + ".md"), tables_md(title, name, checked, why));
+          write_atomically(tmp / (name + ".summary.json"), summary.to_json().dump(1) + "\n");
           for (const auto &e : fs::directory_iterator(tmp))
             fs::rename(e.path(), folder / e.path().filename());
           fs::remove_all(tmp);
@@ -585,20 +811,16 @@ namespace gradcontact::cases
           throw;
         }
 
-      summary.drawn = ok;
-      summary.points = checked.size();
-      for (const CheckedPoint &p : checked)
-        {
-          summary.failed += !p.pass;
-          summary.worst = std::max(summary.worst, p.error);
-        }
-      summary.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
       std::cout << (ok ? "drew " : "wrote data and script (gnuplot failed) ") << (folder / (name + ".png")).string()
                 << " (" << series.size() << " curves"
                 << (skipped ? ", " + std::to_string(skipped) + " points outside the domain" : "");
-      if (!checked.empty())
-        std::cout << ", " << checked.size() << " checked points, worst error " << format(summary.worst)
-                  << (summary.failed ? ", " + std::to_string(summary.failed) + " FAILED" : "");
+      if (summary.points)
+        std::cout << ", " << summary.points << " checked points, worst error " << format(summary.worst);
+      if (summary.measured)
+        std::cout << ", " << summary.measured << " measured points, largest deviation "
+                  << format(summary.largest_deviation);
+      if (summary.failed)
+        std::cout << ", " << summary.failed << " FAILED";
       std::cout << ", " << format(summary.seconds) << " s)\n";
       for (const CheckedPoint &p : checked)
         if (!p.pass)
@@ -608,25 +830,67 @@ namespace gradcontact::cases
       return summary;
     }
 
-    std::string index_md(const std::vector<FigureSummary> &figures)
+    // The index of every figure drawn into `folder` so far (its <name>.summary.json): the chapter's (figure
+    // numbers 9.x), then the validation figures, which draw the maps of the models that drop an idealisation.
+    std::string index_md(const fs::path &folder)
     {
+      std::vector<FigureSummary> chapter, validation;
+      for (const auto &e : fs::directory_iterator(folder))
+        {
+          const std::string file = e.path().filename().string();
+          const std::string suffix = ".summary.json";
+          if (file.size() <= suffix.size() || file.compare(file.size() - suffix.size(), suffix.size(), suffix) != 0)
+            continue;
+          std::ifstream in(e.path());
+          FigureSummary f;
+          try
+            {
+              f = FigureSummary::from_json(json::parse(in));
+            }
+          catch (const json::exception &error)
+            {
+              throw std::runtime_error("figures: " + e.path().string() + " is not a figure summary (" + error.what() +
+                                       "); delete it and draw the figure again");
+            }
+          (f.figure.rfind("9.", 0) == 0 ? chapter : validation).push_back(f);
+        }
+      const auto by_name = [](const FigureSummary &a, const FigureSummary &b) { return a.name < b.name; };
+      std::sort(chapter.begin(), chapter.end(), by_name);
+      std::sort(validation.begin(), validation.end(), by_name);
+      const auto link = [](const FigureSummary &f) {
+        return "[" + f.name + "](" + f.name + ".svg) | " + f.caption + " | " + std::to_string(f.points) + " | " +
+               (f.points ? format(f.worst) : "-") + " | ";
+      };
       std::ostringstream md;
       md << "# The chapter's figures\n\nEach figure draws the closed forms of the chapter; its FE (or tabulated) "
             "points are each compared with the closed form at the same abscissa (error relative to the curve's "
             "largest |y|), in the table linked beside it.\n\n| figure | plot | caption | checked points | worst "
             "error | failed | table |\n|---|---|---|---|---|---|---|\n";
-      for (const FigureSummary &f : figures)
-        md << "| " << (f.figure.empty() ? "-" : f.figure) << " | [" << f.name << "](" << f.name << ".svg) | "
-           << f.caption << " | " << f.points << " | " << (f.points ? format(f.worst) : "-") << " | " << f.failed
-           << " | [" << f.name << ".md](" << f.name << ".md) |\n";
+      for (const FigureSummary &f : chapter)
+        md << "| " << f.figure << " | " << link(f) << f.failed << " | [" << f.name << ".md](" << f.name << ".md) |\n";
       std::vector<std::string> missing;
       for (const std::string &n : chapter_data_figures)
-        if (std::none_of(figures.begin(), figures.end(), [&](const FigureSummary &f) { return f.figure == n; }))
+        if (std::none_of(chapter.begin(), chapter.end(), [&](const FigureSummary &f) { return f.figure == n; }))
           missing.push_back(n);
       md << "\nChapter figures with data not drawn yet: ";
       for (std::size_t i = 0; i < missing.size(); ++i)
         md << (i ? ", " : "") << missing[i];
       md << (missing.empty() ? "none.\n" : ".\n");
+      md << "\n## Validation figures\n\nThe maps of the FE models that drop one of the chapter's idealisations "
+            "(`gradcontact figures cases/figures/validation`, reusing the map reports of `gradcontact run "
+            "cases/validation`): each point set is either checked against a closed form that is exact there (a sharp "
+            "check: a tolerance) or measured (its deviation from the chapter's closed form is the result).\n\n";
+      if (validation.empty())
+        md << "None drawn yet.\n";
+      else
+        {
+          md << "| figure | plot | caption | checked points | worst error | measured points | largest deviation | "
+                "failed | table |\n|---|---|---|---|---|---|---|---|---|\n";
+          for (const FigureSummary &f : validation)
+            md << "| " << (f.figure.empty() ? "-" : f.figure) << " | " << link(f) << f.measured << " | "
+               << (f.measured ? format(f.largest_deviation) : "-") << " | " << f.failed << " | [" << f.name << ".md]("
+               << f.name << ".md) |\n";
+        }
       return md.str();
     }
   } // namespace
@@ -664,7 +928,7 @@ namespace gradcontact::cases
     std::vector<FigureSummary> drawn;
     for (const fs::path &f : files)
       drawn.push_back(draw(f, reports, cache));
-    write_atomically(reports / "figures" / "index.md", index_md(drawn));
+    write_atomically(reports / "figures" / "index.md", index_md(reports / "figures"));
     std::size_t failed = 0;
     for (const FigureSummary &f : drawn)
       failed += f.failed;

@@ -18,12 +18,21 @@
 //                                                "divide_by"}, "y": ...}, "check": {...}}
 //                (r and pressure: the FE pressure profile of each adhesive state at the pressure radii, r/a in [0, 1))
 //              | {"title", "fe_tangential": {...}, "check": {...}}
+//              | {"title", "fe_map": {"scene": map scene (a Map section), "set", "where": {column: value, ...},
+//                                     "x": column, "y": column}, "check": {...}}
+//                (the rows of the map's map.csv whose columns equal "where"; the map report of a `gradcontact run`
+//                 in <reports>/<scene name>/ is reused when its parameters.prm is the scene's resolved one, else the
+//                 map runs into <reports>/figures/maps/)
 //              | {"title", "points": {"x": [...], "y": [...]}, "check": {...}}]}
+// A coordinate may also be {"value": v}, a constant (e.g. FE / closed form = 1 where the closed form holds).
 // A point set may carry "scale_x", "scale_y" and "offset_y": x -> x scale_x, y -> y scale_y + offset_y.
 // {"title", "prescribed": {"x": [...], "y": [...]}} draws an input of the figure (a load history) as a line;
 // it is not a result and carries no check.
 // Every point set (FE, or tabulated "points") carries
-//   "check": {"curves": [titles of analytic curves of the figure], "tolerance": t, "why": "reason for t"}:
+//   "check": {"curves": [titles of analytic curves of the figure], "tolerance": t, "why": "reason for t"}
+// or, in a validation figure, {"curves", "measured": true, "why"}: the deviation from the closed form is the
+// result (a map), tabulated and never failed on its size, only when not finite or off the drawn curve.
+// Checked points:
 // each point is compared with the closed form at the same abscissa: the analytic curve's parameter t is
 // solved for x(t) = x_point (bisection between the drawn samples that bracket it; exact when x is the swept
 // value), then y(t) is evaluated, not interpolated. Where several branches or listed curves bracket the
@@ -33,10 +42,11 @@
 // curve by more than t times the curve's x-extent (a truncated curve cannot hide a point; a point at the end
 // of a curve, e.g. the turning point of a loop, may carry an FE error in its abscissa).
 // Output: reports/figures/<name>.png/.svg with the data and the gnuplot script, <name>.csv/.md with one row
-// per checked point, and reports/figures/index.md listing every figure drawn; each written under a
+// per checked point, <name>.summary.json, and reports/figures/index.md listing every figure drawn into the
+// folder so far (the chapter's, numbered 9.x, then the validation figures); each written under a
 // temporary name and renamed when complete. FE point sets are cached in reports/figures/cache/ by the scene's
 // resolved parameters, the point set's request and the program's build, so an unchanged figure redraws without the
-// FE; the index lists the figures of one invocation (`./vv run` draws the whole folder).
+// FE.
 #ifndef GRADCONTACT_CASES_FIGURES_H
 #define GRADCONTACT_CASES_FIGURES_H
 

@@ -246,12 +246,7 @@ namespace gradcontact::cases
       scene.info.name += suffix;
       if (o.verbose)
         std::cout << "# " << file.string() << " resolved:\n" << scene.resolved;
-      SceneResult s;
-      atomic_folder(o.reports / scene.info.name, [&](const fs::path &tmp) {
-        s = run_scene(scene, tmp, o.verbose);
-        write_errors(s, tmp);
-      });
-      return s;
+      return run_report(scene, o.reports, o.verbose);
     }
 
     void print(const SceneResult &s, const Options &o)
@@ -294,6 +289,16 @@ namespace gradcontact::cases
       return all_pass ? 0 : 1;
     }
   } // namespace
+
+  SceneResult run_report(const Scene &scene, const fs::path &reports, const bool verbose)
+  {
+    SceneResult s;
+    atomic_folder(reports / scene.info.name, [&](const fs::path &tmp) {
+      s = run_scene(scene, tmp, verbose);
+      write_errors(s, tmp);
+    });
+    return s;
+  }
 
   int run(const std::vector<std::string> &args)
   {

@@ -12,6 +12,10 @@
 #ifndef GRADCONTACT_CASES_RUNNER_H
 #define GRADCONTACT_CASES_RUNNER_H
 
+#include "fe_scene.h"
+#include "scene.h"
+
+#include <filesystem>
 #include <string>
 #include <vector>
 
@@ -19,6 +23,10 @@ namespace gradcontact::cases
 {
   /// `gradcontact run` with its arguments; returns the exit code (non-zero when a comparison fails).
   int run(const std::vector<std::string> &args);
+
+  /// Runs `scene` by its kind and writes its report to <reports>/<scene name>/ atomically (as `run` does for
+  /// one scene, without the summary); used by `gradcontact figures` for the maps it draws.
+  SceneResult run_report(const Scene &scene, const std::filesystem::path &reports, bool verbose);
 
   /// `gradcontact sweep <scene.prm> --over Section/key=v1,v2,... [run options]`.
   int sweep(const std::vector<std::string> &args);

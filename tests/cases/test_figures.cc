@@ -96,15 +96,22 @@ namespace
     std::vector<std::vector<std::string>> rows; // punch.csv without its header
   };
 
-  Checked draw_punch(const TemporaryFolder &folder, const std::string &figure)
+  /// Draws `figure` (named `name`) from <folder>/<name>.json into `reports`.
+  Checked draw_figure(const TemporaryFolder &folder, const fs::path &reports, const std::string &name,
+                      const std::string &figure)
   {
-    const fs::path file = folder.path() / "punch.json";
+    const fs::path file = folder.path() / (name + ".json");
     std::ofstream(file) << figure;
     Checked c;
-    c.exit_code = figures({file.string(), "--reports", folder.path().string()});
-    c.rows = testing::read_csv(folder.path() / "figures" / "punch.csv");
+    c.exit_code = figures({file.string(), "--reports", reports.string()});
+    c.rows = testing::read_csv(reports / "figures" / (name + ".csv"));
     c.rows.erase(c.rows.begin());
     return c;
+  }
+
+  Checked draw_punch(const TemporaryFolder &folder, const std::string &figure)
+  {
+    return draw_figure(folder, folder.path(), "punch", figure);
   }
 
   const std::vector<double> radii = {0.1, 0.5, 0.8};
@@ -417,4 +424,111 @@ TEST_CASE("gradcontact figures shall draw the FE pressure of the adhesive critic
         CHECK(row[7] == "false");
       }
   }
+}
+
+namespace
+{
+  // A small coating map (as in test_map.cc) and a figure of its force over the power law's against a/H.
+  void write_small_map(const fs::path &scene)
+  {
+    std::ofstream(scene) << "subsection Material\n  set k = 0.5\nend\n"
+                            "subsection Load\n  set type = flat punch\n  set a = 1e-4\n  set depth = 1e-6\nend\n"
+                            "subsection Discretization\n  set degree = 1\n  set force tolerance = 1e-3\nend\n"
+                            "subsection Tolerances\n  set force = 1e-2\n  set pressure = 1e-1\nend\n"
+                            "subsection Map\n  set parameter = coating thickness\n  set ratios = 0.01, 1\nend\n";
+  }
+
+  std::string map_figure(const fs::path &scene, const std::string &check)
+  {
+    return R"({"name": "coating", "figure": "V.test", "caption": "test", "title": "coating", "logx": true, "curves": [)"
+           R"({"title": "power law", "sweep": {"key": "a_over_H", "from": 1e-3, "to": 10, "points": 2, "log": true},)"
+           R"("x": {"sweep": true}, "y": {"value": 1}},)"
+           R"({"title": "FE", "fe_map": {"scene": ")" +
+           scene.string() + R"(", "where": {"k": 0.5}, "x": "a_over_H", "y": "force_deviation"}, "offset_y": 1, )"
+           R"("check": )" + check + "}]}";
+  }
+
+  const std::string measured = R"({"curves": ["power law"], "measured": true, "why": "test"})";
+
+  Checked draw_map_figure(const TemporaryFolder &folder, const std::string &figure)
+  {
+    return draw_figure(folder, folder.path() / "reports", "coating", figure);
+  }
+} // namespace
+
+TEST_CASE("gradcontact figures shall draw a map's points, measured, from the map report of the same parameters",
+          "[cases]")
+{
+  const TemporaryFolder folder("gradcontact-figure-map");
+  const fs::path scene = folder.path() / "small_map.prm";
+  write_small_map(scene);
+  // No report yet: the figure runs the map into reports/figures/maps/.
+  const Checked first = draw_map_figure(folder, map_figure(scene, measured));
+  CHECK(first.exit_code == 0);
+  REQUIRE(first.rows.size() == 2);
+  fs::path own;
+  for (const auto &e : fs::directory_iterator(folder.path() / "reports" / "figures" / "maps"))
+    own = e.path();
+  REQUIRE(fs::exists(own / "map.csv"));
+  const auto map = testing::read_csv(own / "map.csv");
+  REQUIRE(map.size() == 3);
+  for (std::size_t i = 0; i < 2; ++i)
+    {
+      CAPTURE(first.rows[i]);
+      CHECK(first.rows[i][7] == "measured");
+      CHECK(first.rows[i][6] == "nan"); // no tolerance
+      CHECK(std::stod(first.rows[i][1]) == std::stod(map[i + 1][1]));
+      CHECK(std::stod(first.rows[i][2]) == Approx(1 + std::stod(map[i + 1][2])).epsilon(1e-10)); // 12 digits
+    }
+  // A report of `gradcontact run` with the same resolved parameters is read instead: planted values show it.
+  const fs::path run_report = folder.path() / "reports" / "small_map";
+  fs::create_directories(run_report);
+  fs::copy_file(own / "parameters.prm", run_report / "parameters.prm");
+  std::ofstream(run_report / "map.csv") << "k,a_over_H,force_deviation,contact_radius_deviation,pressure_deviation,"
+                                           "dofs,seconds,error\n0.5,0.01,0.5,nan,0,1,1,\n0.5,1,0.25,nan,0,1,1,\n"
+                                           "0.25,1,7,nan,0,1,1,\n";
+  const Checked planted = draw_map_figure(folder, map_figure(scene, measured));
+  CHECK(planted.exit_code == 0);
+  REQUIRE(planted.rows.size() == 2); // the k = 0.25 row is not selected
+  CHECK(std::stod(planted.rows[0][2]) == 1.5);
+  CHECK(std::stod(planted.rows[1][2]) == 1.25);
+  CHECK(std::stod(planted.rows[0][5]) == Approx(0.5).epsilon(1e-12)); // |1.5 - 1| / max |y| = 1
+  // The same points under a tolerance fail; a point beyond the drawn curve fails even when measured.
+  CHECK(draw_map_figure(folder, map_figure(scene, R"({"curves": ["power law"], "tolerance": 0.3, "why": "t"})"))
+          .exit_code != 0);
+  std::ofstream(run_report / "map.csv", std::ios::app) << "0.5,100,0,nan,0,1,1,\n";
+  const Checked beyond = draw_map_figure(folder, map_figure(scene, measured));
+  CHECK(beyond.exit_code != 0);
+  REQUIRE(beyond.rows.size() == 3);
+  CHECK(beyond.rows[2][7] == "false");
+  CHECK(beyond.rows[2][8].find("outside the drawn range") != std::string::npos);
+  // The index lists it among the validation figures.
+  const std::string index = testing::read_text(folder.path() / "reports" / "figures" / "index.md");
+  CHECK(index.find("## Validation figures") != std::string::npos);
+  CHECK(index.find("[coating.md](coating.md)") != std::string::npos);
+}
+
+TEST_CASE("gradcontact figures shall refuse a map point set that is asked wrongly, naming what", "[cases]")
+{
+  const TemporaryFolder folder("gradcontact-figure-map-bad");
+  const fs::path scene = folder.path() / "small_map.prm";
+  write_small_map(scene);
+  const fs::path file = folder.path() / "coating.json";
+  const auto refused = [&](const std::string &figure) {
+    std::ofstream(file) << figure;
+    try
+      {
+        figures({file.string(), "--reports", (folder.path() / "reports").string()});
+      }
+    catch (const std::exception &e)
+      {
+        return std::string(e.what());
+      }
+    return std::string("not refused");
+  };
+  CHECK_THAT(refused(map_figure(scene, R"({"curves": ["power law"], "measured": true, "tolerance": 0.1})")),
+             Catch::Contains("\"measured\" check has no \"tolerance\""));
+  const fs::path normal = folder.path() / "normal.prm";
+  std::ofstream(normal) << "subsection Load\n  set type = flat punch\n  set a = 1e-4\n  set depth = 1e-6\nend\n";
+  CHECK_THAT(refused(map_figure(normal, measured)), Catch::Contains("normal.prm") && Catch::Contains("no Map section"));
 }
