@@ -1,5 +1,6 @@
 #include "bench.h"
 #include "fe_bench.h"
+#include "fe_oracle.h"
 #include "report.h"
 
 #include <analytic/batch.h>
@@ -14,6 +15,7 @@
 #include <fstream>
 #include <iostream>
 #include <map>
+#include <random>
 #include <sstream>
 #include <stdexcept>
 #include <sys/utsname.h>
@@ -32,7 +34,7 @@ namespace gradcontact::cases
       fs::path references = fs::path(GRADCONTACT_SOURCE_DIR) / "tests/data/references.jsonl";
       int repeat = 5;
       std::size_t numerical_stride = 5; // numerical MDR on every 5th row of a family (ms per row)
-      std::string part = "all";         // analytic | fe | peer | all
+      std::string part = "all";         // analytic | fe | peer | oracle | all
       bool quick = false;
       int fe_repeat = 3;
       fs::path peer_scripts = fs::path(GRADCONTACT_SOURCE_DIR) / "cases/peers/freefem";
@@ -90,8 +92,9 @@ namespace gradcontact::cases
           else if (args[i] == "--part")
             {
               o.part = value("--part");
-              if (o.part != "analytic" && o.part != "fe" && o.part != "peer" && o.part != "all")
-                throw std::invalid_argument("bench: --part = '" + o.part + "' is not one of analytic, fe, peer, all");
+              if (o.part != "analytic" && o.part != "fe" && o.part != "peer" && o.part != "oracle" && o.part != "all")
+                throw std::invalid_argument("bench: --part = '" + o.part +
+                                            "' is not one of analytic, fe, peer, oracle, all");
             }
           else if (args[i] == "--quick")
             o.quick = true;
@@ -277,6 +280,108 @@ namespace gradcontact::cases
         }
       std::ofstream(tmp / "analytic.md") << md.str();
     }
+
+    /// oracle.{csv,md} into `tmp`: batches of random paraboloid requests answered by the FE oracle
+    /// (cases/fe_oracle.h), one batch per (k, nu), against the closed forms.
+    void oracle_part(const Options &o, const fs::path &tmp)
+    {
+      const std::size_t n = o.quick ? 100 : 1000;
+      const double tolerance = 1e-5;
+      std::mt19937_64 random(20261125);
+      const auto uniform = [&random](const double lo, const double hi) {
+        return std::uniform_real_distribution<double>(lo, hi)(random);
+      };
+      const auto log_uniform = [&](const double lo, const double hi) {
+        return std::exp(uniform(std::log(lo), std::log(hi)));
+      };
+      std::ofstream csv(tmp / "oracle.csv");
+      csv << "k,nu,requests,states,seconds,requests_per_second,worst_error_force_depth,worst_error_pressure_displacement,"
+             "median_error_over_estimate,p90_error_over_estimate,worst_error_over_estimate\n";
+      std::ostringstream md;
+      md << "# The FE as an eval oracle: requests per second and error\n\nMachine: " << machine() << ".  \n"
+         << "Per (k, nu), " << n << " paraboloid requests with \"method\": \"fe\", \"tolerance\": " << fmt(tolerance)
+         << " in one `gradcontact eval` batch (cases/fe_oracle.h): E0 in [1e6, 1e10] Pa, c0 in [1e-4, 0.1] m, a in "
+            "[1e-6, 1e-2] m, R/a in [10, 1000] (log-uniform), the quantity force, depth, pressure at r/a in [0, 0.95) "
+            "or displacement at r/a in [0, 5) (uniform). Time of the whole batch, one core (one FE state per (k, nu), "
+            "the rest by scaling). Errors relative to the closed form (|value| of the request; pressures and "
+            "displacements near 0 excluded below 1e-3 of the batch's scale) and against the oracle's own "
+            "error estimate (the change under one uniform refinement, continued for k > 0; an estimate, not a bound: "
+            "where the two meshes happen to agree it is far below the error).\n\n| k | nu | requests | FE states | s | "
+            "requests/s | worst error F, d | worst error p, w | error / estimate: median | 90 % | worst |\n"
+            "|---|---|---|---|---|---|---|---|---|---|---|\n";
+      for (const auto &[k, nu] : {std::pair{-0.5, 0.3}, std::pair{0., 0.3}, std::pair{0.5, 0.3}, std::pair{0., 0.49}})
+        {
+          std::ostringstream batch_in;
+          std::vector<json> requests;
+          for (std::size_t i = 0; i < n; ++i)
+            {
+              const double a = log_uniform(1e-6, 1e-2);
+              const int which = static_cast<int>(uniform(0, 4));
+              const std::string quantity = which == 0 ? "force" : which == 1 ? "depth" : which == 2 ? "pressure"
+                                                                                                   : "displacement";
+              json q = {{"id", i},
+                        {"case", "paraboloid"},
+                        {"quantity", quantity},
+                        {"material", {{"E0", log_uniform(1e6, 1e10)}, {"c0", log_uniform(1e-4, 0.1)}, {"k", k}, {"nu", nu}}},
+                        {"geometry", {{"R", a * log_uniform(10, 1000)}}},
+                        {"a", a}};
+              if (which == 2)
+                q["r"] = a * uniform(0, 0.95);
+              if (which == 3)
+                q["r"] = a * uniform(0, 5);
+              requests.push_back(q);
+              json fe = q;
+              fe["method"] = "fe";
+              fe["tolerance"] = tolerance;
+              batch_in << fe.dump() << '\n';
+            }
+          FeOracle oracle;
+          std::istringstream in(batch_in.str());
+          std::ostringstream out;
+          const auto start = std::chrono::steady_clock::now();
+          const int errors = evaluate_stream(in, out, oracle);
+          const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+          if (errors)
+            throw std::runtime_error("bench: the FE oracle refused " + std::to_string(errors) + " requests:\n" + out.str());
+          std::istringstream lines(out.str());
+          std::string line;
+          double worst_scalar = 0, worst_profile = 0;
+          std::vector<double> ratios;
+          for (std::size_t i = 0; std::getline(lines, line); ++i)
+            {
+              const json answer = json::parse(line);
+              const double exact = batch::evaluate(batch::parse(requests.at(i)));
+              // the scale of the quantity: the pressure at the centre, the displacement at the edge
+              json centre = requests[i];
+              if (centre.contains("r"))
+                centre["r"] = centre["quantity"] == "pressure" ? 0. : centre["a"].get<double>();
+              const double scale = std::abs(batch::evaluate(batch::parse(centre)));
+              if (std::abs(exact) < 1e-3 * scale)
+                continue;
+              const double error = std::abs(answer.at("value").get<double>() - exact) / std::abs(exact);
+              (centre.contains("r") ? worst_profile : worst_scalar) =
+                std::max(centre.contains("r") ? worst_profile : worst_scalar, error);
+              const double ratio = std::abs(answer.at("value").get<double>() - exact) /
+                                   std::max(answer.at("error_estimate").get<double>(), 1e-300);
+              ratios.push_back(ratio);
+            }
+          std::sort(ratios.begin(), ratios.end());
+          const auto quantile = [&ratios](const double f) {
+            return ratios.empty() ? 0. : ratios[static_cast<std::size_t>(f * (ratios.size() - 1))];
+          };
+          const double worst = std::max(worst_scalar, worst_profile);
+          std::cerr << "oracle k = " << k << ", nu = " << nu << ": " << n << " requests in " << fmt(seconds) << " s, "
+                    << oracle.states_solved() << " states, worst error " << fmt(worst) << "\n";
+          csv << k << ',' << nu << ',' << n << ',' << oracle.states_solved() << ',' << seconds << ',' << n / seconds << ','
+              << worst_scalar << ',' << worst_profile << ',' << quantile(0.5) << ',' << quantile(0.9) << ','
+              << quantile(1) << '\n';
+          md << "| " << k << " | " << nu << " | " << n << " | " << oracle.states_solved() << " | " << fmt(seconds, "%.1f")
+             << " | " << fmt(n / seconds, "%.0f") << " | " << fmt(worst_scalar, "%.1e") << " | "
+             << fmt(worst_profile, "%.1e") << " | " << fmt(quantile(0.5), "%.2f") << " | " << fmt(quantile(0.9), "%.2f")
+             << " | " << fmt(quantile(1), "%.0f") << " |\n";
+        }
+      std::ofstream(tmp / "oracle.md") << md.str();
+    }
   } // namespace
 
   int bench(const std::vector<std::string> &args)
@@ -294,7 +399,9 @@ namespace gradcontact::cases
       {
         if (o.part == "analytic" || o.part == "all")
           analytic_part(o, tmp);
-        if (o.part != "analytic")
+        if (o.part == "oracle" || o.part == "all")
+          oracle_part(o, tmp);
+        if (o.part == "fe" || o.part == "peer" || o.part == "all")
           {
             FeBenchOptions fe;
             fe.quick = o.quick;

@@ -16,8 +16,9 @@
 
 namespace gradcontact::cases
 {
-  /// `gradcontact bench [--part analytic|fe|peer|all] [--quick] [--reports DIR] [--references FILE]
-  /// [--repeat N] [--fe-repeat N] [--peer-scripts DIR] [--scene LIST]`; returns the exit code. `peer` runs
+  /// `gradcontact bench [--part analytic|fe|peer|oracle|all] [--quick] [--reports DIR] [--references FILE]
+  /// [--repeat N] [--fe-repeat N] [--peer-scripts DIR] [--scene LIST]`; returns the exit code. `oracle` times
+  /// batches of FE eval requests (cases/fe_oracle.h) against their error; `peer` runs
   /// the FE part too (the ratios need both); `--quick` is the small FE set (k = 0, degrees 1-2, two levels
   /// of the normal scenes, the coarsest of the adhesive and tangential ones, one repetition) for the smoke
   /// test; `--scene` (comma-separated) runs only those FE scenes, and their report replaces the FE report. Writes reports/benchmarks/ through a temporary folder.

@@ -1,6 +1,7 @@
 #include "command_line.h"
 
 #include "bench.h"
+#include "fe_oracle.h"
 #include "figures.h"
 #include "runner.h"
 #include "stress.h"
@@ -28,15 +29,16 @@ namespace gradcontact::cases
     {
       if (args.size() > 1)
         throw std::invalid_argument("eval: takes at most one file (got " + std::to_string(args.size()) + ")");
+      FeOracle oracle; // "method": "fe" (cases/fe_oracle.h)
       if (args.empty() || args[0] == "-")
         {
-          batch::evaluate_stream(std::cin, std::cout);
+          evaluate_stream(std::cin, std::cout, oracle);
           return 0;
         }
       std::ifstream in(args[0]);
       if (!in)
         throw std::invalid_argument("eval: cannot open file '" + args[0] + "'");
-      batch::evaluate_stream(in, std::cout);
+      evaluate_stream(in, std::cout, oracle);
       return 0;
     }
 
@@ -45,7 +47,8 @@ namespace gradcontact::cases
       static const std::vector<Command> list = {
         {"eval", "[file]",
          "evaluate JSON Lines requests from file (or stdin), one answer\n"
-         "line per request (vocabulary: analytic/README.md)",
+         "line per request (vocabulary: analytic/README.md; \"method\": \"fe\" answers\n"
+         "by the FE model with an error estimate, cases/fe_oracle.h)",
          eval},
         {"run", "<scene|folder> ... [--set Section/key=value] [--reports DIR] [--quiet]\n"
                 "    [--verbose] [--shard i/N] [--help-scene]",
@@ -59,12 +62,12 @@ namespace gradcontact::cases
          sweep},
         {"figures", "<file.json|folder> [--reports DIR] [--no-cache]",
          "draw the chapter's figures (cases/figures), check their FE points -> reports/figures/", figures},
-        {"bench", "[--part analytic|fe|peer|all] [--quick] [--reports DIR] [--repeat N]\n"
+        {"bench", "[--part analytic|fe|peer|oracle|all] [--quick] [--reports DIR] [--repeat N]\n"
                   "    [--fe-repeat N] [--references FILE] [--peer-scripts DIR]\n"
                   "    [--scene flat_punch,paraboloid,jkr_paraboloid,tangential_punch]",
          "work-precision benchmarks -> reports/benchmarks/ (analytic closed\n"
          "forms; FE degrees 1-4 against wall time and DoFs; the FreeFem++ peer when\n"
-         "FreeFem++ is installed)",
+         "FreeFem++ is installed; batches of FE eval requests)",
          bench},
         {"stress", "[--reports DIR] [--references FILE] [--mdr-stride N]",
          "numerical-stability tables of the analytic module by region and\n"

@@ -1,0 +1,351 @@
+#include "fe_oracle.h"
+
+#include <analytic/batch.h>
+#include <analytic/errors.h>
+#include <analytic/material.h>
+#include <fem/modulus.h>
+
+#include <nlohmann/json.hpp>
+
+#include <cmath>
+#include <cstdio>
+#include <memory>
+#include <set>
+#include <sstream>
+#include <stdexcept>
+#include <utility>
+#include <vector>
+
+namespace gradcontact::cases
+{
+  using json = nlohmann::json;
+
+  namespace
+  {
+    constexpr double default_tolerance = 1e-6;
+    constexpr double min_tolerance = 1e-8, max_tolerance = 1e-2;
+
+    std::string exact(const double x)
+    {
+      char buffer[40];
+      std::snprintf(buffer, sizeof buffer, "%.17g", x);
+      return buffer;
+    }
+
+    [[noreturn]] void refuse(const std::string &what) { throw std::invalid_argument("fe: " + what); }
+
+    double positive(const std::optional<double> &value, const std::string &name, const std::string &why)
+    {
+      if (!value)
+        refuse(name + ": missing (" + why + ")");
+      if (!(std::isfinite(*value) && *value > 0))
+        refuse(name + " = " + check::format(*value) + "; valid: (0, inf)");
+      return *value;
+    }
+  } // namespace
+
+  struct FeOracle::UnitState
+  {
+    fem::LoadCase load;
+    std::unique_ptr<fem::AxisymmetricSolver> coarse, fine;
+    fem::Result coarse_result, fine_result;
+    double far_field = 0; ///< L / a of the mesh
+    /// (pressure?, r/a) -> (coarse, fine) samples already solved
+    std::map<std::pair<bool, double>, std::pair<double, double>> samples;
+    /// radii announced by FeOracle::plan, solved together with the first one asked
+    std::map<bool, std::set<double>> planned;
+
+    static void check(const fem::Result &r, const char *mesh)
+    {
+      if (!r.reliable)
+        throw std::runtime_error(std::string("fe: the FE solution on the ") + mesh + " mesh is unreliable: " + r.message);
+      if (!r.consistent_contact)
+        throw std::runtime_error(std::string("fe: the FE contact state on the ") + mesh +
+                                 " mesh is inconsistent (a tensile contact node or a negative gap): " + r.message);
+    }
+
+    std::pair<double, double> sample(const bool pressure, const double r)
+    {
+      const auto key = std::make_pair(pressure, r);
+      const auto found = samples.find(key);
+      if (found != samples.end())
+        return found->second;
+      // One run per mesh samples r and every planned radius of the quantity not solved yet.
+      std::set<double> radii = planned[pressure];
+      radii.insert(r);
+      std::vector<double> wanted;
+      for (const double x : radii)
+        if (!samples.count({pressure, x}))
+          wanted.push_back(x);
+      fem::OutputRequest outputs;
+      (pressure ? outputs.pressure_radii : outputs.displacement_radii) = wanted;
+      const auto values = [&](fem::AxisymmetricSolver &solver) {
+        const fem::Result result = solver.run(load, outputs);
+        const auto &s = pressure ? result.pressure : result.displacement;
+        if (s.size() != wanted.size())
+          throw std::runtime_error("fe: " + std::to_string(s.size()) + " FE samples for " +
+                                   std::to_string(wanted.size()) + " radii (" + result.message + ")");
+        std::vector<double> v;
+        for (const fem::Sample &x : s)
+          v.push_back(x.value);
+        return v;
+      };
+      const std::vector<double> v0 = values(*coarse), v1 = values(*fine);
+      for (std::size_t i = 0; i < wanted.size(); ++i)
+        samples[{pressure, wanted[i]}] = {v0[i], v1[i]};
+      planned[pressure].clear();
+      return samples.at(key);
+    }
+  };
+
+  FeOracle::FeOracle() = default;
+  FeOracle::~FeOracle() = default;
+
+  FeOracle::UnitState &FeOracle::unit_state(const std::string &key, const double k, const double nu,
+                                           const double tolerance, const fem::LoadCase &load)
+  {
+    auto &slot = states[key];
+    if (slot)
+      return *slot;
+    auto state = std::make_unique<UnitState>();
+    state->load = load;
+    fem::Material material;
+    material.modulus = std::make_shared<fem::PowerLawModulus>(1.0, 1.0, k);
+    material.nu = nu;
+    fem::Settings settings = fem::recommended_settings(1.0, *material.modulus, tolerance);
+    settings.discretization.formulation = fem::Formulation::automatic;
+    state->far_field = settings.mesh.far_field_size;
+    settings.mesh.global_refinements = 0;
+    state->coarse = std::make_unique<fem::AxisymmetricSolver>(material, settings.mesh, settings.discretization);
+    state->coarse_result = state->coarse->run(load);
+    UnitState::check(state->coarse_result, "recommended");
+    settings.mesh.global_refinements = 1;
+    state->fine = std::make_unique<fem::AxisymmetricSolver>(material, settings.mesh, settings.discretization);
+    state->fine_result = state->fine->run(load);
+    UnitState::check(state->fine_result, "refined");
+    ++solved;
+    slot = std::move(state);
+    return *slot;
+  }
+
+  /// A request as the FE sees it: its unit state and how to scale that state's values.
+  struct FeOracle::Parsed
+  {
+    std::string key;           ///< of the unit state
+    double k = 0, nu = 0, tolerance = default_tolerance;
+    fem::LoadCase load;
+    std::string quantity;
+    double E_a = 0, a = 0, amplitude = 0;
+    double r = 0;               ///< r / a (pressure, displacement)
+    bool   outside = false;     ///< a pressure outside the contact: exactly 0
+  };
+
+  FeOracle::Parsed FeOracle::parse(const json &request) const
+  {
+    if (!request.is_object())
+      refuse("a request is a JSON object, not " + request.dump());
+    Parsed p;
+    json j = request;
+    if (j.contains("tolerance"))
+      {
+        if (!j.at("tolerance").is_number())
+          refuse("tolerance = " + j.at("tolerance").dump() + "; valid: a number in [1e-8, 1e-2]");
+        p.tolerance = j.at("tolerance").get<double>();
+        if (!(p.tolerance >= min_tolerance && p.tolerance <= max_tolerance))
+          refuse("tolerance = " + check::format(p.tolerance) + "; valid: [1e-8, 1e-2] (the relative force error asked)");
+      }
+    for (const char *key : {"tolerance", "method", "id"})
+      j.erase(key);
+    const batch::Request q = batch::parse(j);
+    if (!q.material)
+      refuse("material: missing (an object {E0, c0, k, nu})");
+    if (q.material2)
+      refuse("material2: the FE oracle answers a rigid indenter on one graded body only");
+    const GradedHalfSpace body = *q.material;
+    validate("fe", body);
+    p.k = body.k;
+    p.nu = body.nu;
+
+    const std::string &c = q.case_name;
+    double n = 0;
+    p.a = positive(q.a, "a", "the contact radius (flat punch: the punch radius)");
+    if (c == "flat_punch")
+      {
+        if (!q.d || !std::isfinite(*q.d) || *q.d == 0)
+          refuse("d: " + (q.d ? "= " + check::format(*q.d) + "; valid: finite and non-zero" : std::string("missing")) +
+                 " (the depth of the flat punch)");
+        p.load.type = fem::LoadType::flat_punch;
+        p.load.depth = 1;
+        p.amplitude = *q.d / p.a;
+      }
+    else if (c == "paraboloid" || c == "cone" || c == "power_law")
+      {
+        p.load.type = fem::LoadType::indenter;
+        if (c == "paraboloid")
+          {
+            p.load.profile = fem::Profile::paraboloid(1);
+            p.amplitude = p.a / positive(q.geometry.R, "geometry.R", "the radius of the paraboloid");
+          }
+        else if (c == "cone")
+          {
+            p.load.profile = fem::Profile::cone(1);
+            p.amplitude = positive(q.geometry.tan_theta, "geometry.tan_theta", "the slope of the cone");
+          }
+        else
+          {
+            n = positive(q.geometry.n, "geometry.n", "the exponent of f = A r^n");
+            p.load.profile = fem::Profile::power_law(n, 1);
+            p.amplitude = positive(q.geometry.A, "geometry.A", "the factor of f = A r^n") * std::pow(p.a, n - 1);
+          }
+      }
+    else
+      refuse("case = '" + c + "' has no FE answer (valid: flat_punch, paraboloid, cone, power_law)");
+
+    p.quantity = q.quantity;
+    if (p.quantity != "force" && p.quantity != "depth" && p.quantity != "pressure" && p.quantity != "displacement")
+      refuse("quantity = '" + p.quantity + "' has no FE answer (valid: force, depth, pressure, displacement)");
+    if (p.quantity == "depth" && c == "flat_punch")
+      refuse("quantity = 'depth' of the flat punch is its input d");
+    if (p.quantity == "pressure" || p.quantity == "displacement")
+      {
+        if (!q.r)
+          refuse("r: missing (the radius of the " + p.quantity + ")");
+        p.r = *q.r / p.a;
+        if (!(std::isfinite(p.r) && p.r >= 0))
+          refuse("r = " + check::format(*q.r) + "; valid: [0, inf)");
+        if (p.quantity == "pressure" && p.r >= 1)
+          {
+            if (c == "flat_punch" && p.r == 1)
+              refuse("r = a: the pressure of the flat punch is singular at its edge; valid: r != a");
+            p.outside = true;
+          }
+      }
+    p.key = exact(p.k) + " " + exact(p.nu) + " " + exact(p.tolerance) + " " + c + " " + exact(n);
+    p.E_a = body.E0 * std::pow(p.a / body.c0, body.k);
+    return p;
+  }
+
+  void FeOracle::plan(const json &request)
+  {
+    Parsed p;
+    try
+      {
+        p = parse(request);
+      }
+    catch (const std::exception &)
+      {
+        return; // evaluate() reports it
+      }
+    if (p.quantity != "pressure" && p.quantity != "displacement")
+      return;
+    if (p.outside)
+      return;
+    const auto found = states.find(p.key);
+    auto &radii = found != states.end() ? found->second->planned : plans[p.key];
+    radii[p.quantity == "pressure"].insert(p.r);
+  }
+
+  FeOracle::Answer FeOracle::evaluate(const json &request)
+  {
+    const Parsed p = parse(request);
+    const bool existed = states.count(p.key) > 0;
+    UnitState &state = unit_state(p.key, p.k, p.nu, p.tolerance, p.load);
+    if (!existed)
+      {
+        state.planned = std::move(plans[p.key]);
+        plans.erase(p.key);
+      }
+    Answer answer;
+    answer.dofs = state.fine_result.n_dofs;
+    ++answered;
+    if (p.outside)
+      return answer; // no pressure outside the contact: exactly 0
+    std::pair<double, double> v; // the unit problem on both meshes
+    double scale = 0;
+    if (p.quantity == "force")
+      {
+        v = {state.coarse_result.force, state.fine_result.force};
+        scale = p.E_a * p.a * p.a * p.amplitude;
+      }
+    else if (p.quantity == "depth")
+      {
+        v = {state.coarse_result.depth, state.fine_result.depth};
+        scale = p.a * p.amplitude;
+      }
+    else
+      {
+        const bool pressure = p.quantity == "pressure";
+        if (!pressure && p.r > state.far_field)
+          refuse("r / a = " + check::format(p.r) + " lies beyond the FE far field; valid: r / a <= " +
+                 check::format(state.far_field));
+        v = state.sample(pressure, p.r);
+        scale = pressure ? p.E_a * p.amplitude : p.a * p.amplitude;
+      }
+    answer.value = scale * v.second;
+    // The change under one uniform refinement, and for k > 0 its Richardson continuation: the surface layer
+    // u_z ~ z^(1-k) of a soft surface carries an energy error ~ T^(1-k) in the first cell row of thickness T,
+    // so each halving leaves the fraction rho = 2^-(1-k) of the error and the error of v_1 is
+    // |v_1 - v_0| rho / (1 - rho) (2.4 |v_1 - v_0| at k = 0.5).
+    const double rho = p.k > 0 ? std::pow(2.0, -(1 - p.k)) : 0.5;
+    answer.error_estimate = std::abs(scale * (v.second - v.first)) * rho / (1 - rho);
+    return answer;
+  }
+
+  int evaluate_stream(std::istream &in, std::ostream &out, FeOracle &oracle)
+  {
+    int errors = 0;
+    // All lines first: the FE's pressures and displacements of one unit state are sampled together.
+    std::vector<std::string> lines;
+    for (std::string line; std::getline(in, line);)
+      if (line.find_first_not_of(" \t\r") != std::string::npos)
+        lines.push_back(line);
+    for (const std::string &line : lines)
+      {
+        try
+          {
+            const json j = json::parse(line);
+            if (j.is_object() && j.contains("method") && j.at("method").is_string() && j.at("method") == "fe")
+              oracle.plan(j);
+          }
+        catch (const json::exception &)
+          {
+            // reported below
+          }
+      }
+    for (const std::string &line : lines)
+      {
+        json j;
+        bool fe = false;
+        try
+          {
+            j = json::parse(line);
+            fe = j.is_object() && j.contains("method") && j.at("method").is_string() && j.at("method") == "fe";
+          }
+        catch (const json::exception &)
+          {
+            fe = false; // batch::evaluate reports the invalid JSON
+          }
+        if (!fe)
+          {
+            const batch::Answer answer = batch::evaluate(line);
+            errors += answer.ok ? 0 : 1;
+            out << batch::to_json(answer) << '\n';
+            continue;
+          }
+        const std::string id = j.contains("id") ? j.at("id").dump() : "null";
+        try
+          {
+            const FeOracle::Answer a = oracle.evaluate(j);
+            out << "{\"id\":" << id << ",\"value\":" << exact(a.value) << ",\"error_estimate\":" << exact(a.error_estimate)
+                << ",\"dofs\":" << a.dofs << "}\n";
+          }
+        catch (const std::exception &e)
+          {
+            ++errors;
+            out << "{\"id\":" << id << ",\"error\":" << json(std::string(e.what())).dump() << "}\n";
+          }
+      }
+    out.flush();
+    return errors;
+  }
+} // namespace gradcontact::cases

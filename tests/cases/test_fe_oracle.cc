@@ -1,0 +1,145 @@
+// The FE model as an eval oracle (cases/fe_oracle.h): its answers against the closed forms of the chapter
+// (analytic/, an independent path), its reuse of one unit state across materials, radii and profiles by the
+// scaling of the header, and its refusals.
+#include <cases/fe_oracle.h>
+
+#include <analytic/batch.h>
+
+#include <catch2/catch.hpp>
+#include <nlohmann/json.hpp>
+
+#include <cmath>
+#include <sstream>
+#include <string>
+
+using namespace gradcontact;
+using namespace gradcontact::cases;
+using json = nlohmann::json;
+using Catch::Matchers::Contains;
+
+namespace
+{
+  json paraboloid(const std::string &quantity, const double E0, const double c0, const double k, const double a,
+                  const double R)
+  {
+    return {{"case", "paraboloid"},
+            {"quantity", quantity},
+            {"material", {{"E0", E0}, {"c0", c0}, {"k", k}, {"nu", 0.3}}},
+            {"geometry", {{"R", R}}},
+            {"a", a}};
+  }
+
+  double closed_form(const json &request) { return batch::evaluate(batch::parse(request)); }
+
+  json with_fe(json request, const double tolerance)
+  {
+    request["method"] = "fe";
+    request["tolerance"] = tolerance;
+    return request;
+  }
+} // namespace
+
+TEST_CASE("The FE oracle shall answer force, depth, pressure and displacement within its tolerance, one unit "
+          "state serving every material, radius and paraboloid",
+          "[cases]")
+{
+  const double k = GENERATE(-0.5, 0.5);
+  CAPTURE(k);
+  FeOracle oracle;
+  // Two materials, radii and profiles of the same (k, nu): one FE state (the scaling of the header).
+  for (const auto &[E0, c0, a, R] : {std::tuple{1e9, 1e-3, 1e-4, 1e-2}, std::tuple{3e7, 2e-2, 7e-3, 0.4}})
+    for (const auto &[quantity, r] : {std::pair{"force", 0.}, std::pair{"depth", 0.}, std::pair{"pressure", 0.5},
+                                      std::pair{"displacement", 2.}})
+      {
+        json request = paraboloid(quantity, E0, c0, k, a, R);
+        if (r > 0)
+          request["r"] = r * a;
+        CAPTURE(request.dump());
+        const FeOracle::Answer fe = oracle.evaluate(with_fe(request, 1e-5));
+        const double exact = closed_form(request);
+        const double error = std::abs(fe.value - exact) / std::abs(exact);
+        CHECK(error < 1e-5);
+        // the estimate has the size of the error (measured effectivity 0.47-1.5 where the error is above 1e-7)
+        CHECK(fe.error_estimate / std::abs(exact) > 0.3 * error);
+        CHECK(fe.error_estimate / std::abs(exact) < 1e-5);
+        CHECK(fe.dofs > 0);
+      }
+  CHECK(oracle.states_solved() == 1);
+  CHECK(oracle.requests() == 8);
+  // Outside the contact the pressure is exactly 0.
+  json outside = paraboloid("pressure", 1e9, 1e-3, k, 1e-4, 1e-2);
+  outside["r"] = 2e-4;
+  CHECK(oracle.evaluate(with_fe(outside, 1e-5)).value == 0);
+}
+
+TEST_CASE("The FE oracle shall refuse what it cannot answer, naming the entry, its value and the valid range",
+          "[cases]")
+{
+  FeOracle oracle;
+  const json good = paraboloid("force", 1e9, 1e-3, 0, 1e-4, 1e-2);
+  const auto refused = [&](json request) {
+    try
+      {
+        oracle.evaluate(with_fe(std::move(request), 1e-5));
+      }
+    catch (const std::exception &e)
+      {
+        return std::string(e.what());
+      }
+    return std::string("not refused");
+  };
+  json cone_without_slope = good;
+  cone_without_slope["case"] = "cone";
+  CHECK_THAT(refused(cone_without_slope), Contains("geometry.tan_theta: missing"));
+  json adhesive = good;
+  adhesive["case"] = "jkr_paraboloid";
+  CHECK_THAT(refused(adhesive), Contains("case = 'jkr_paraboloid'") && Contains("flat_punch, paraboloid, cone, power_law"));
+  json beta = good;
+  beta["quantity"] = "beta";
+  CHECK_THAT(refused(beta), Contains("quantity = 'beta'") && Contains("force, depth, pressure, displacement"));
+  json no_radius = good;
+  no_radius.erase("a");
+  CHECK_THAT(refused(no_radius), Contains("a: missing"));
+  json tight = with_fe(good, 1e-12);
+  CHECK_THROWS_WITH(oracle.evaluate(tight), Contains("tolerance = 1e-12") && Contains("[1e-8, 1e-2]"));
+  json two_bodies = good;
+  two_bodies["material2"] = good["material"];
+  CHECK_THAT(refused(two_bodies), Contains("material2"));
+  json bad_k = good;
+  bad_k["material"]["k"] = 1.5;
+  CHECK_THAT(refused(bad_k), Contains("k") && Contains("1.5"));
+  json punch_depth = good;
+  punch_depth["case"] = "flat_punch";
+  punch_depth["quantity"] = "depth";
+  punch_depth["d"] = 1e-6;
+  CHECK_THAT(refused(punch_depth), Contains("depth") && Contains("input d"));
+  CHECK(oracle.states_solved() == 0); // every refusal before any solve
+}
+
+TEST_CASE("gradcontact eval shall answer FE and closed-form requests in order, with ids and errors", "[cases]")
+{
+  json fe = with_fe(paraboloid("force", 1e9, 1e-3, 0, 1e-4, 1e-2), 1e-5);
+  fe["id"] = "fe";
+  json closed = paraboloid("force", 1e9, 1e-3, 0, 1e-4, 1e-2);
+  closed["id"] = 2;
+  json bad = with_fe(paraboloid("force", 1e9, 1e-3, 0, -1e-4, 1e-2), 1e-5);
+  bad["id"] = 3;
+  std::istringstream in(fe.dump() + "\n\n" + closed.dump() + "\n" + bad.dump() + "\nnot json\n");
+  std::ostringstream out;
+  FeOracle oracle;
+  CHECK(evaluate_stream(in, out, oracle) == 2);
+  std::istringstream lines(out.str());
+  std::string line;
+  std::vector<json> answers;
+  while (std::getline(lines, line))
+    answers.push_back(json::parse(line));
+  REQUIRE(answers.size() == 4);
+  CHECK(answers[0]["id"] == "fe");
+  CHECK(answers[0].contains("error_estimate"));
+  CHECK(std::abs(answers[0]["value"].get<double>() / answers[1]["value"].get<double>() - 1) < 1e-5);
+  CHECK(answers[1]["id"] == 2);
+  CHECK_FALSE(answers[1].contains("error_estimate"));
+  CHECK(answers[2]["id"] == 3);
+  CHECK_THAT(answers[2]["error"].get<std::string>(), Contains("a = -0.0001"));
+  CHECK(answers[3].contains("error"));
+}
