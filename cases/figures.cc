@@ -4,6 +4,7 @@
 #include "fe_scene.h"
 #include "fe_tangential.h"
 #include "report.h"
+#include "result_cache.h"
 #include "runner.h"
 #include "scene.h"
 
@@ -230,68 +231,36 @@ namespace gradcontact::cases
       return overrides;
     }
 
-    /// FE point sets cached by the scene's resolved parameters and the point set's request.
+    /// FE point sets cached by the scene's resolved parameters and the point set's request (ResultCache: with
+    /// the program's build, so a rebuilt FE model recomputes its points), with the counts of one invocation.
     class PointCache
     {
     public:
-      PointCache(fs::path folder, const bool enabled) : folder_(std::move(folder)), enabled_(enabled) {}
+      PointCache(fs::path folder, const bool enabled) : cache(std::move(folder), enabled) {}
 
-      /// The cached points of `key`, else compute() stored under it. The key also names this program's build
-      /// (its size and modification time): a rebuilt FE model recomputes its points.
+      /// The cached points of `key`, else compute() stored under it.
       Series get(const std::string &request_key, const std::function<Series()> &compute)
       {
-        const std::string key = build_id() + "\n" + request_key;
-        const fs::path file = folder_ / (hex(std::hash<std::string>{}(key)) + ".json");
-        if (enabled_ && fs::exists(file))
-          {
-            try
-              {
-                std::ifstream in(file);
-                const json j = json::parse(in);
-                if (j.at("key") == key) // the full key is stored: a hash collision recomputes
-                  {
-                    ++hits;
-                    return {j.at("title"), j.at("x").get<std::vector<double>>(), j.at("y").get<std::vector<double>>(), true};
-                  }
-              }
-            catch (const json::exception &)
-              {
-                // an unreadable cache entry is recomputed and replaced
-              }
-          }
+        if (const auto j = cache.get(request_key))
+          try
+            {
+              ++hits;
+              return {j->at("title"), j->at("x").get<std::vector<double>>(), j->at("y").get<std::vector<double>>(), true};
+            }
+          catch (const json::exception &)
+            {
+              --hits; // an entry of another shape is recomputed and replaced
+            }
         Series s = compute();
         ++misses;
-        fs::create_directories(folder_);
-        const fs::path tmp = temporary_sibling(file);
-        {
-          std::ofstream out(tmp);
-          out << std::setprecision(17) << json{{"key", key}, {"title", s.title}, {"x", s.x}, {"y", s.y}}.dump();
-        }
-        fs::rename(tmp, file);
+        cache.put(request_key, json{{"title", s.title}, {"x", s.x}, {"y", s.y}});
         return s;
       }
       int hits = 0, misses = 0;
-      bool enabled() const { return enabled_; }
+      bool enabled() const { return cache.enabled(); }
 
     private:
-      static std::string build_id()
-      {
-        std::error_code ec;
-        const fs::path exe = fs::read_symlink("/proc/self/exe", ec);
-        if (ec)
-          return "unknown build";
-        const auto size = fs::file_size(exe, ec);
-        const auto time = fs::last_write_time(exe, ec).time_since_epoch().count();
-        return exe.string() + " " + std::to_string(size) + " " + std::to_string(time);
-      }
-      static std::string hex(const std::size_t h)
-      {
-        std::ostringstream s;
-        s << std::hex << std::setw(16) << std::setfill('0') << h;
-        return s.str();
-      }
-      fs::path folder_;
-      bool enabled_;
+      ResultCache cache;
     };
 
     /// The FE point set of curve `c` (kinds "fe", "fe_adhesion", "fe_tangential"), through the cache.

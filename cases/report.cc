@@ -223,7 +223,7 @@ namespace gradcontact::cases
        << "\" noenhanced\nset grid\n"
        // the legend outside the plot area, right of it: it cannot cover data
        << "set key outside right top vertical Left reverse\n"
-       << (logx ? "set logscale x\n" : "") << (logy ? "set logscale y\nset format y \"%.0e\"\n" : "");
+       << (logx ? "set logscale x\nset format x \"%g\"\n" : "") << (logy ? "set logscale y\nset format y \"%.0e\"\n" : "");
     std::string plot = "plot ";
     for (std::size_t i = 0; i < series.size(); ++i)
       {
