@@ -51,10 +51,12 @@ namespace gradcontact::cases
          "by the FE model with an error estimate, cases/fe_oracle.h)",
          eval},
         {"run", "<scene|folder> ... [--set Section/key=value] [--reports DIR] [--quiet]\n"
-                "    [--verbose] [--shard i/N] [--help-scene]",
+                "    [--verbose] [--shard i/N] [--map-shard i/N] [--help-scene]",
          "run scenes (.prm, .json, .jsonl) and write reports/<scene>/ and\n"
          "reports/summary.md; --help-scene lists every scene entry; --shard i/N runs\n"
-         "only the scenes at positions j with j % N == i, 0-based",
+         "only the scenes at positions j with j % N == i, 0-based; --map-shard i/N\n"
+         "solves only those (k, lambda) points of a Tabor-parameter map into its point\n"
+         "cache (a run without it then writes the report)",
          run},
         {"sweep", "<scene.prm> --over Section/key=v1,v2,... [run options]",
          "run a scene once per value (same options as run; --shard i/N splits\n"

@@ -3,6 +3,7 @@
 #include "fe_map.h"
 #include "fe_model.h"
 #include "fe_scene.h"
+#include "result_cache.h"
 
 #include <analytic/adhesion.h>
 #include <analytic/maugis_dugdale.h>
@@ -20,6 +21,7 @@
 namespace gradcontact::cases
 {
   namespace fs = std::filesystem;
+  using json = nlohmann::json;
 
   namespace
   {
@@ -73,6 +75,146 @@ namespace gradcontact::cases
       return force_control ? "force control" : "displacement control";
     }
 
+    std::string exact(const double x)
+    {
+      std::ostringstream s;
+      s.precision(17);
+      s << x;
+      return s.str();
+    }
+
+    // JSON has no NaN: a non-finite number is stored as its text.
+    json number(const double x) { return std::isfinite(x) ? json(x) : json(exact(x)); }
+    double number(const json &j) { return j.is_number() ? j.get<double>() : std::stod(j.get<std::string>()); }
+
+    /// One lambda of one k: the pull-off of each control, the states of the path F(d) (every state the searches and
+    /// the curve points solved, ascending in a) and the curve points that failed. What the point cache stores.
+    struct LambdaSolution
+    {
+      std::vector<Point> points;
+      struct State
+      {
+        double a = 0, c = 0, d = 0, F = 0;
+        bool   consistent = true;
+      };
+      std::vector<State>                          path;
+      std::vector<std::pair<double, std::string>> path_errors; ///< (a / a_c,JKR, message)
+
+      json to_json() const
+      {
+        json j{{"points", json::array()}, {"path", json::array()}, {"path_errors", json::array()}};
+        for (const Point &p : points)
+          j["points"].push_back({{"lambda", number(p.lambda)},       {"strength", number(p.strength)},
+                                 {"range", number(p.range)},         {"force_control", p.force_control},
+                                 {"force", number(p.force)},         {"radius", number(p.radius)},
+                                 {"depth", number(p.depth)},         {"zone_ratio", number(p.zone_ratio)},
+                                 {"force_jkr", number(p.force_jkr)}, {"radius_jkr", number(p.radius_jkr)},
+                                 {"depth_jkr", number(p.depth_jkr)}, {"force_rigid", number(p.force_rigid)},
+                                 {"vanishing", p.vanishing},         {"states", p.states},
+                                 {"dofs", p.dofs},                   {"seconds", number(p.seconds)},
+                                 {"error", p.error},                 {"note", p.note}});
+        for (const State &st : path)
+          j["path"].push_back({number(st.a), number(st.c), number(st.d), number(st.F), st.consistent});
+        for (const auto &[x, e] : path_errors)
+          j["path_errors"].push_back({number(x), e});
+        return j;
+      }
+
+      static LambdaSolution from_json(const json &j)
+      {
+        LambdaSolution s;
+        for (const json &q : j.at("points"))
+          {
+            Point p;
+            p.lambda        = number(q.at("lambda"));
+            p.strength      = number(q.at("strength"));
+            p.range         = number(q.at("range"));
+            p.force_control = q.at("force_control");
+            p.force         = number(q.at("force"));
+            p.radius        = number(q.at("radius"));
+            p.depth         = number(q.at("depth"));
+            p.zone_ratio    = number(q.at("zone_ratio"));
+            p.force_jkr     = number(q.at("force_jkr"));
+            p.radius_jkr    = number(q.at("radius_jkr"));
+            p.depth_jkr     = number(q.at("depth_jkr"));
+            p.force_rigid   = number(q.at("force_rigid"));
+            p.vanishing     = q.at("vanishing");
+            p.states        = q.at("states");
+            p.dofs          = q.at("dofs");
+            p.seconds       = number(q.at("seconds"));
+            p.error         = q.at("error");
+            p.note          = q.at("note");
+            s.points.push_back(p);
+          }
+        for (const json &q : j.at("path"))
+          s.path.push_back({number(q.at(0)), number(q.at(1)), number(q.at(2)), number(q.at(3)), q.at(4).get<bool>()});
+        for (const json &q : j.at("path_errors"))
+          s.path_errors.emplace_back(number(q.at(0)), q.at(1).get<std::string>());
+        return s;
+      }
+    };
+
+    /// Solves one lambda of the map (`base`: its lambda, strength, range and rigid limit) under `controls`, then
+    /// the states of the curve points `curve_points` (a / a_c,JKR).
+    LambdaSolution solve_lambda(const fem::Material &material, const fem::Profile &fe_profile,
+                                const fem::CohesiveContact::SettingsFunction &settings, const gradcontact::Medium &medium,
+                                const JkrProfile &profile, const double dgamma, const Point &base,
+                                const std::vector<bool> &controls, const std::vector<double> &curve_points)
+    {
+      LambdaSolution solution;
+      fem::CohesiveContact contact(material, fe_profile, fem::DugdaleLaw{base.strength, dgamma}, settings);
+      for (const bool force_control : controls)
+        {
+          Point p            = base;
+          p.force_control    = force_control;
+          const auto control = force_control ? gradcontact::Control::force : gradcontact::Control::displacement;
+          const auto jkr     = jkr_critical(medium, profile, dgamma, control);
+          p.force_jkr        = jkr.force;
+          p.radius_jkr       = jkr.radius;
+          p.depth_jkr        = jkr.depth;
+          try
+            {
+              const auto c = contact.critical_state(force_control ? fem::AdhesionControl::force :
+                                                                    fem::AdhesionControl::displacement,
+                                                    jkr.radius);
+              p.force      = c.state.force;
+              p.radius     = c.state.radius;
+              p.depth      = c.state.depth;
+              p.zone_ratio = c.state.zone_radius / c.state.radius;
+              p.vanishing  = c.at_vanishing_contact;
+              p.states     = c.states_solved;
+              p.dofs       = c.max_dofs;
+              p.seconds    = c.seconds;
+              // Under displacement control a vanishing contact has no pull-off ("none"): the state where the
+              // walk stopped is not compared, so its checks are noted, not failed.
+              if (!c.state.consistent && !(p.vanishing && !force_control))
+                p.error = "inconsistent state: " + c.state.message;
+              else if (!c.state.consistent)
+                p.note = "the last state before the contact vanished: " + c.state.message;
+            }
+          catch (const std::exception &e)
+            {
+              p.error = concise(e);
+            }
+          solution.points.push_back(p);
+        }
+      // The path F(d) of this lambda: the curve points (a / a_c,JKR under force control) and every state the
+      // searches solved, ascending in a.
+      const auto jkr_force = jkr_critical(medium, profile, dgamma, gradcontact::Control::force);
+      for (const double x : curve_points)
+        try
+          {
+            contact.state(x * jkr_force.radius);
+          }
+        catch (const std::exception &e)
+          {
+            solution.path_errors.emplace_back(x, concise(e));
+          }
+      for (const auto &[a, st] : contact.states())
+        solution.path.push_back({a, st.zone_radius, st.depth, st.force, st.consistent});
+      return solution;
+    }
+
   } // namespace
 
 
@@ -120,8 +262,14 @@ namespace gradcontact::cases
 
 
 
-  SceneResult run_cohesive_map(const Scene &s, const fs::path &folder, const bool verbose)
+  SceneResult run_cohesive_map(const Scene &s, const fs::path &folder, const bool verbose, MapShard &shard)
   {
+    if (shard.count == 0 || shard.index >= shard.count)
+      throw std::invalid_argument("run_cohesive_map: shard " + std::to_string(shard.index) + "/" +
+                                  std::to_string(shard.count) + " is not i/N with 0 <= i < N");
+    const ResultCache cache(folder.parent_path() / ".map-points");
+    unsigned int &computed = shard.computed, &skipped = shard.skipped;
+    std::size_t index = 0; // of (k, lambda) in the order of the map
     const auto  start  = std::chrono::steady_clock::now();
     SceneResult result = started(s, folder);
     using Type         = LoadParameters::Type;
@@ -183,46 +331,38 @@ namespace gradcontact::cases
         std::map<bool, std::vector<Point>> by_control;
         for (const double lambda : lambdas)
           {
+            const std::size_t here = index++;
+            const auto mine = [&] { return here % shard.count == shard.index; };
             Point base;
             base.lambda   = lambda;
             base.strength = cohesive_strength(lambda, medium, profile, dgamma);
             base.range    = dgamma / base.strength;
             const double c_rigid = paraboloid ? std::sqrt(2 * s.load.R * base.range) : std::pow(base.range / s.load.A, 1 / s.load.n);
             base.force_rigid     = -pi * base.strength * c_rigid * c_rigid;
-            fem::CohesiveContact contact(material, fe_profile, fem::DugdaleLaw{base.strength, dgamma}, settings);
-            for (const bool force_control : controls)
+            // The pull-offs of every control and the states of the path: from the point cache (a --map-shard job's
+            // or an earlier run's) or solved here.
+            const std::string key = "cohesive map point\n" + s.resolved + "\nk = " + exact(k) + ", lambda = " + exact(lambda);
+            LambdaSolution solution;
+            if (const auto cached = cache.get(key))
               {
-                Point p         = base;
-                p.force_control = force_control;
-                const auto control = force_control ? gradcontact::Control::force : gradcontact::Control::displacement;
-                const auto jkr     = jkr_critical(medium, profile, dgamma, control);
-                p.force_jkr        = jkr.force;
-                p.radius_jkr       = jkr.radius;
-                p.depth_jkr        = jkr.depth;
-                try
+                solution = LambdaSolution::from_json(*cached);
+                ++shard.cached;
+              }
+            else
+              {
+                if (!mine())
                   {
-                    const auto c = contact.critical_state(force_control ? fem::AdhesionControl::force :
-                                                                          fem::AdhesionControl::displacement,
-                                                          jkr.radius);
-                    p.force      = c.state.force;
-                    p.radius     = c.state.radius;
-                    p.depth      = c.state.depth;
-                    p.zone_ratio = c.state.zone_radius / c.state.radius;
-                    p.vanishing  = c.at_vanishing_contact;
-                    p.states     = c.states_solved;
-                    p.dofs       = c.max_dofs;
-                    p.seconds    = c.seconds;
-                    // Under displacement control a vanishing contact has no pull-off ("none"): the state where the
-                    // walk stopped is not compared, so its checks are noted, not failed.
-                    if (!c.state.consistent && !(p.vanishing && !force_control))
-                      p.error = "inconsistent state: " + c.state.message;
-                    else if (!c.state.consistent)
-                      p.note = "the last state before the contact vanished: " + c.state.message;
+                    ++skipped;
+                    continue; // another shard's
                   }
-                catch (const std::exception &e)
-                  {
-                    p.error = concise(e);
-                  }
+                solution = solve_lambda(material, fe_profile, settings, medium, profile, dgamma, base, controls,
+                                        s.adhesion.curve_points);
+                ++computed;
+                cache.put(key, solution.to_json());
+              }
+            for (const Point &p : solution.points)
+              {
+                const bool force_control = p.force_control;
                 by_control[force_control].push_back(p);
                 csv << k << ',' << lambda << ',' << (force_control ? "force" : "displacement") << ',' << p.strength << ','
                     << p.range << ',' << p.force << ',' << p.force_jkr << ',' << p.force_deviation() << ',' << p.radius
@@ -263,31 +403,21 @@ namespace gradcontact::cases
                       result.rows.push_back(*row);
                   }
               }
-            // The path F(d) of this lambda: the curve points (Adhesion/curve points, a / a_c,JKR under force control)
-            // and every state the searches solved, ascending in a.
+            for (const auto &[x, error] : solution.path_errors)
+              result.rows.push_back(failed("F(d) path", "FE cohesive", "-",
+                                           "k = " + format(k) + ", lambda = " + format(lambda) + ", a = " + format(x) +
+                                             " a_c,JKR: " + error));
             const auto jkr_force = jkr_critical(medium, profile, dgamma, gradcontact::Control::force);
-            for (const double x : s.adhesion.curve_points)
-              try
-                {
-                  contact.state(x * jkr_force.radius);
-                }
-              catch (const std::exception &e)
-                {
-                  result.rows.push_back(failed("F(d) path", "FE cohesive", "-",
-                                               "k = " + format(k) + ", lambda = " + format(lambda) + ", a = " +
-                                                 format(x) + " a_c,JKR: " + concise(e)));
-                }
             const std::string path_name = "path-k" + format(k) + "-lambda" + format(lambda);
             std::ofstream     path(folder / (path_name + ".csv"));
             path.precision(10);
             path << "a,c,d,F,consistent\n";
             Series curve{"lambda = " + format(lambda), {}, {}, false, true};
-            for (const auto &[a, st] : contact.states())
+            for (const LambdaSolution::State &st : solution.path)
               {
-                path << a << ',' << st.zone_radius << ',' << st.depth << ',' << st.force << ',' << (st.consistent ? 1 : 0)
-                     << '\n';
-                curve.x.push_back(st.depth / std::abs(jkr_force.depth));
-                curve.y.push_back(st.force / std::abs(jkr_force.force));
+                path << st.a << ',' << st.c << ',' << st.d << ',' << st.F << ',' << (st.consistent ? 1 : 0) << '\n';
+                curve.x.push_back(st.d / std::abs(jkr_force.depth));
+                curve.y.push_back(st.F / std::abs(jkr_force.force));
               }
             plots["path k = " + format(k)].push_back(curve);
           }

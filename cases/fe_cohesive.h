@@ -48,7 +48,20 @@ namespace gradcontact::cases
                          double dgamma, double R, double E_star, const std::string &metric, const std::string &method,
                          double force_tolerance, double depth_tolerance, unsigned int dofs, double seconds);
 
-  SceneResult run_cohesive_map(const Scene &scene, const std::filesystem::path &folder, bool verbose);
+  /// The (k, lambda) points of a map that one job computes: those at positions j (k-major, lambdas ascending) with
+  /// j % count == index; the counts of the run.
+  struct MapShard
+  {
+    unsigned int index = 0, count = 1;
+    unsigned int computed = 0, cached = 0, skipped = 0; ///< solved here, read from the point cache, left to others
+  };
+
+  /// The Tabor-parameter map into `folder`. Every (k, lambda) point (both controls, the path's states) goes to a
+  /// point cache beside the report (<reports>/.map-points/, keyed by the scene's resolved parameters, the point and
+  /// the program's build) and is read from it when there: jobs of `gradcontact run --map-shard i/N` fill it in
+  /// parallel, and a run without it writes the report from their points. With `shard` of count > 1 the points of
+  /// other shards that are not cached are left out and the report is partial (the runner discards it).
+  SceneResult run_cohesive_map(const Scene &scene, const std::filesystem::path &folder, bool verbose, MapShard &shard);
 } // namespace gradcontact::cases
 
 #endif

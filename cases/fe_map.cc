@@ -674,7 +674,10 @@ namespace gradcontact::cases
   {
     require_kind(s, SceneKind::map, "run_map_scene");
     if (s.map.parameter == MapParameters::Parameter::tabor_parameter)
-      return run_cohesive_map(s, folder, verbose);
+      {
+        MapShard all;
+        return run_cohesive_map(s, folder, verbose, all);
+      }
     const auto start = std::chrono::steady_clock::now();
     SceneResult result = started(s, folder);
 

@@ -1,6 +1,7 @@
 #include "runner.h"
 
 #include "fe_adhesion.h"
+#include "fe_cohesive.h"
 #include "fe_map.h"
 #include "fe_scene.h"
 #include "fe_tangential.h"
@@ -41,11 +42,15 @@ namespace gradcontact::cases
       // share a sweep without any communication; each writes summary.shard-i-of-N.md.
       unsigned int shard = 0;
       unsigned int shards = 1;
+      // --map-shard i/N: the (k, lambda) points of a Tabor-parameter map at positions j % N == i go to the map's
+      // point cache, no report is written; a run without it assembles the report from the cache.
+      unsigned int map_shard = 0;
+      unsigned int map_shards = 1;
 
       bool mine(const std::size_t j) const { return j % shards == shard; }
     };
 
-    void parse_shard(Options &o, const std::string &text)
+    void parse_shard(unsigned int &index, unsigned int &count, const std::string &option, const std::string &text)
     {
       const auto slash = text.find('/');
       std::size_t used_i = 0, used_n = 0;
@@ -64,10 +69,10 @@ namespace gradcontact::cases
         }
       if (slash == std::string::npos || used_i != slash || used_n != text.size() - slash - 1 || n < 1 ||
           n > 100000 || i < 0 || i >= n)
-        throw std::invalid_argument("run: --shard '" + text +
+        throw std::invalid_argument("run: " + option + " '" + text +
                                     "' is not i/N with N in [1, 100000] and i in [0, N - 1] (0-based shard index)");
-      o.shard = static_cast<unsigned int>(i);
-      o.shards = static_cast<unsigned int>(n);
+      index = static_cast<unsigned int>(i);
+      count = static_cast<unsigned int>(n);
     }
 
     void add_scenes(Options &o, const std::string &a)
@@ -115,7 +120,9 @@ namespace gradcontact::cases
           else if (a == "--verbose")
             o.verbose = true;
           else if (a == "--shard")
-            parse_shard(o, value());
+            parse_shard(o.shard, o.shards, a, value());
+          else if (a == "--map-shard")
+            parse_shard(o.map_shard, o.map_shards, a, value());
           else if (a == "--help-scene")
             {
               std::cout << scene_documentation();
@@ -303,6 +310,38 @@ namespace gradcontact::cases
   int run(const std::vector<std::string> &args)
   {
     const Options o = parse(args);
+    if (o.map_shards > 1)
+      {
+        // Fill the point caches of the maps; their reports are written by a run without --map-shard.
+        fs::create_directories(o.reports);
+        remove_stale_temporaries(o.reports);
+        for (const fs::path &file : o.scenes)
+          {
+            const Scene scene = read_scene(file.string(), o.overrides);
+            if (scene.kind != SceneKind::map || scene.map.parameter != MapParameters::Parameter::tabor_parameter)
+              throw std::invalid_argument("run: --map-shard splits a Tabor-parameter map (Map/parameter = Tabor "
+                                          "parameter); " + file.string() + " is not one");
+            MapShard shard{o.map_shard, o.map_shards};
+            const fs::path tmp = temporary_sibling(o.reports / (scene.info.name + ".map-shard"));
+            fs::create_directories(tmp);
+            try
+              {
+                run_cohesive_map(scene, tmp, o.verbose, shard);
+              }
+            catch (...)
+              {
+                fs::remove_all(tmp);
+                throw;
+              }
+            fs::remove_all(tmp);
+            if (!o.quiet)
+              std::cout << "map shard " << o.map_shard << "/" << o.map_shards << " of " << scene.info.name << ": "
+                        << shard.computed << " points solved, " << shard.cached << " already cached, " << shard.skipped
+                        << " left to the other shards (" << (o.reports / ".map-points").string()
+                        << "); run without --map-shard to write the report\n";
+          }
+        return 0;
+      }
     const bool progress = !o.quiet && isatty(STDERR_FILENO);
     fs::create_directories(o.reports);
     remove_stale_temporaries(o.reports); // what a killed run left

@@ -10,6 +10,7 @@
 
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <iterator>
@@ -322,4 +323,26 @@ TEST_CASE("A Tabor-parameter map shall check Maugis-Dugdale at k = 0 and write t
     CHECK(errors[i][9] == "pass");
   const std::string md = testing::read_text(out / "map.md");
   CHECK(md.find("within 10 % when lambda |") != std::string::npos);
+
+  // Two --map-shard jobs fill the point cache of a fresh folder (one lambda each), no report; the run without it
+  // writes the same map from their points, solving nothing.
+  const fs::path sharded = folder.path() / "sharded";
+  for (const char *shard : {"0/2", "1/2"})
+    REQUIRE(run({scene.string(), "--reports", sharded.string(), "--quiet", "--map-shard", shard}) == 0);
+  CHECK_FALSE(fs::exists(sharded / "cohesive_map"));
+  CHECK(std::distance(fs::directory_iterator(sharded / ".map-points"), fs::directory_iterator{}) == 2);
+  REQUIRE(run({scene.string(), "--reports", sharded.string(), "--quiet"}) == 0);
+  // every column equal to the unsharded run's, except the solve times: those are the shards' (read, not solved again)
+  const auto assembled = testing::read_csv(sharded / "cohesive_map" / "map.csv");
+  REQUIRE(assembled.size() == csv.size());
+  const auto seconds = std::find(csv[0].begin(), csv[0].end(), "seconds") - csv[0].begin();
+  for (std::size_t i = 0; i < csv.size(); ++i)
+    for (std::size_t j = 0; j < csv[i].size(); ++j)
+      if (static_cast<long>(j) != seconds || i == 0)
+        CHECK(assembled[i][j] == csv[i][j]);
+  // a rerun of the unsharded folder reads its own points: the same table, times included
+  REQUIRE(run({scene.string(), "--reports", reports.string(), "--quiet"}) == 0);
+  CHECK(testing::read_csv(out / "map.csv") == csv);
+  CHECK_THROWS_WITH(run({scene.string(), "--reports", sharded.string(), "--map-shard", "2/2"}),
+                    Catch::Contains("--map-shard '2/2'"));
 }
