@@ -71,7 +71,7 @@ namespace gradcontact::mdr
         const double s = x * v;
         return std::pow(1. + v, b) * (n == 1. ? q(s) : q(s) * std::pow(s, 1. - n));
       };
-      return detail::jacobi_integral(h, n - 1., b);
+      return detail::jacobi_integral(h, n, (k + 1.) / 2.);
     }
 
     // The tanh-sinh forms of g and g' (the fallback of equivalent_profile and its slope).
@@ -109,39 +109,66 @@ namespace gradcontact::mdr
       return G1.resolved ? G1.value : equivalent_profile_slope_tanh_sinh(profile, k, x) / std::pow(x, n - 1.);
     }
 
+    /// int_0^1 v^k (1-v)^beta W(v, 1-v) w1D(x0 v) dv (beta1 = beta + 1) for w1D = d - x^n G(x): on [0, 1/2]
+    /// as its two terms with v^k and v^(k+n) in the weights, on [1/2, 1] as it is, where the two terms cancel
+    /// toward the edge (w1D(a) = 0 without adhesion; as k -> 1, g -> f and d - f(r) << d near r = a: the two
+    /// terms over all of [0, 1] lost 2.6e-10 at k = 0.999, r = (1 - 1e-5) a). W is analytic on [0, 1] but
+    /// for a singularity at the distance delta1 beyond v = 1 (the panels on [1/2, 1] are graded toward it).
+    template <class W>
+    detail::JacobiQuadrature split_foundation_integral(const Foundation &w1d, const double x0, const double k,
+                                                       const double beta1, const double delta1, const W &weight)
+    {
+      const double n = w1d.tip_exponent, beta = beta1 - 1.;
+      // [0, 1/2]: v = t/2
+      const auto flat = [&](const double t, double) {
+        const double v = t / 2.;
+        return std::pow(1. - v, beta) * weight(v, 1. - v);
+      };
+      const auto shape = [&](const double t, double) {
+        const double v = t / 2.;
+        return std::pow(1. - v, beta) * weight(v, 1. - v) * w1d.tip_free(x0 * v);
+      };
+      const detail::JacobiQuadrature A = detail::jacobi_integral(flat, k + 1., 1.);
+      const detail::JacobiQuadrature B = detail::jacobi_integral(shape, (k + 1.) + n, 1.);
+      // [1/2, 1]: 1 - v = (1 - t)/2
+      const auto whole = [&](double, const double tc) {
+        const double vc = tc / 2., v = 1. - vc;
+        return std::pow(v, k) * weight(v, vc) * w1d.w(x0 * v);
+      };
+      const detail::JacobiQuadrature C = detail::graded_jacobi_integral(whole, 1., beta1,
+                                                                        std::numeric_limits<double>::infinity(),
+                                                                        2. * delta1);
+      return {w1d.d * std::pow(0.5, k + 1.) * A.value - std::pow(x0 / 2., n) * std::pow(0.5, k + 1.) * B.value +
+                std::pow(0.5, beta1) * C.value,
+              A.resolved && B.resolved && C.resolved};
+    }
+
     /// w(r) pi / cos(k pi/2) (9.12) by Gauss-Jacobi, r > 0, with x = r v inside and x = a v outside:
     ///   r <= a:  int_0^1 2 v^k (1-v)^s (1+v)^s w1D(r v) dv,                                 s = -(1+k)/2
     ///   r > a:   a^(k+1) int_0^1 2 v^k w1D(a v) K(v) dv,  K = (r^2 - a^2 v^2)^s = (D + a^2 (1-v)(1+v))^s,
-    /// K singular at v = r/a (panels graded toward v = 1 for r close to a). w1D = d - x^n G(x) is split:
-    /// the d term inside is exactly d (c B((1+k)/2, (1-k)/2) = 1), and x^n joins the weight. A foundation
-    /// (a^2 - x^2)^e phi(x) gives (1-v)^e to the weight outside and at r = a, and a singularity at
-    /// v = a/r inside.
+    /// K singular at v = r/a (panels graded toward v = 1 for r close to a). w1D = d - x^n G(x) is split on
+    /// [0, 1/2] (split_foundation_integral). A foundation (a^2 - x^2)^e phi(x) gives (1-v)^e to the weight
+    /// outside and at r = a, and a singularity at v = a/r inside.
     detail::JacobiQuadrature displacement_gauss_jacobi(const Foundation &w1d, const double k, const double r)
     {
-      const double a = w1d.a, e = w1d.edge_exponent, s = -(1. + k) / 2.;
+      const double a = w1d.a, e = w1d.edge_exponent, s = -(1. + k) / 2., s1 = (1. - k) / 2.;
       constexpr double none = std::numeric_limits<double>::infinity();
       detail::JacobiQuadrature fast;
       if (r == a && e != 0.)
         {
           const double power = e + s;
           const auto h = [&](const double v, double) { return 2. * std::pow(1. + v, power) * w1d.edge_free(a * v); };
-          fast = detail::jacobi_integral(h, k, power);
+          fast = detail::jacobi_integral(h, k + 1., e + s1);
           fast.value *= std::pow(a, 2. * e);
           return fast;
         }
       if (r <= a)
         {
+          const auto W = [&](const double v, double) { return 2. * std::pow(1. + v, s); };
           if (w1d.tip_free && e == 0.)
-            {
-              const double n = w1d.tip_exponent;
-              const auto h = [&](const double v, double) { return 2. * std::pow(1. + v, s) * w1d.tip_free(r * v); };
-              fast = detail::jacobi_integral(h, k + n, s);
-              const double c = boost::math::cos_pi(k / 2.) / pi;
-              fast.value = w1d.d / c - std::pow(r, n) * fast.value;
-              return fast;
-            }
-          const auto h = [&](const double v, double) { return 2. * std::pow(1. + v, s) * w1d.w(r * v); };
-          return detail::graded_jacobi_integral(h, k, s, none, e != 0. ? (a - r) / r : none);
+            return split_foundation_integral(w1d, r, k, s1, none, W);
+          const auto h = [&](const double v, double) { return W(v, 1. - v) * w1d.w(r * v); };
+          return detail::graded_jacobi_integral(h, k + 1., s1, none, e != 0. ? (a - r) / r : none);
         }
       const double D = (r - a) * (r + a), gap = (r - a) / a;
       const auto K = [&](const double v, const double one_minus_v) {
@@ -152,23 +179,18 @@ namespace gradcontact::mdr
           const auto h = [&](const double v, const double vc) {
             return 2. * std::pow(1. + v, e) * w1d.edge_free(a * v) * K(v, vc);
           };
-          fast = detail::graded_jacobi_integral(h, k, e, none, gap);
+          fast = detail::graded_jacobi_integral(h, k + 1., e + 1., none, gap);
           fast.value *= std::pow(a, k + 1. + 2. * e);
           return fast;
         }
+      const auto W = [&](const double v, const double vc) { return 2. * K(v, vc); };
       if (w1d.tip_free)
+        fast = split_foundation_integral(w1d, a, k, 1., gap, W);
+      else
         {
-          const double n = w1d.tip_exponent;
-          const auto h0 = [&](const double v, const double vc) { return 2. * K(v, vc); };
-          const auto h1 = [&](const double v, const double vc) { return 2. * w1d.tip_free(a * v) * K(v, vc); };
-          const detail::JacobiQuadrature flat = detail::graded_jacobi_integral(h0, k, 0., none, gap);
-          const detail::JacobiQuadrature shape = detail::graded_jacobi_integral(h1, k + n, 0., none, gap);
-          fast.resolved = flat.resolved && shape.resolved;
-          fast.value = std::pow(a, k + 1.) * (w1d.d * flat.value - std::pow(a, n) * shape.value);
-          return fast;
+          const auto h = [&](const double v, const double vc) { return W(v, vc) * w1d.w(a * v); };
+          fast = detail::graded_jacobi_integral(h, k + 1., 1., none, gap);
         }
-      const auto h = [&](const double v, const double vc) { return 2. * w1d.w(a * v) * K(v, vc); };
-      fast = detail::graded_jacobi_integral(h, k, 0., none, gap);
       fast.value *= std::pow(a, k + 1.);
       return fast;
     }
@@ -284,7 +306,7 @@ namespace gradcontact::mdr
     w1d.edge_free = [p, k, a, factor](const double x) {
       const double D = (a - x) * (a + x);
       const auto h = [&](const double u, const double) { return p(std::sqrt(x * x + std::max(D, 0.) * u)); };
-      const detail::JacobiQuadrature fast = detail::jacobi_integral(h, -(1. + k) / 2., 0.);
+      const detail::JacobiQuadrature fast = detail::jacobi_integral(h, (1. - k) / 2., 1.);
       return factor * (fast.resolved ? fast.value : beta_weight_integral(h, -(1. + k) / 2., 0.));
     };
     const auto phi = w1d.edge_free;
@@ -313,7 +335,7 @@ namespace gradcontact::mdr
       const double r = a * v;
       return std::pow(1. + v, q) * (n == 1. ? w1d.profile_slope(r) : w1d.profile_slope(r) * std::pow(r, 1. - n));
     };
-    const detail::JacobiQuadrature fast = detail::jacobi_integral(hv, n - 1., q);
+    const detail::JacobiQuadrature fast = detail::jacobi_integral(hv, n, q + 1.);
     double shape;
     if (fast.resolved)
       shape = std::pow(a, k + n + 1.) / (k + 1.) * fast.value;
@@ -339,20 +361,20 @@ namespace gradcontact::mdr
       if (e != 0.)
         {
           const auto h = [&](const double v, double) { return 2. * std::pow(1. + v, e) * w1d.edge_free(a * v); };
-          fast = detail::jacobi_integral(h, k, e);
+          fast = detail::jacobi_integral(h, k + 1., e + 1.);
           fast.value *= std::pow(a, 2. * e);
         }
       else if (w1d.tip_free)
         {
           const double n = w1d.tip_exponent;
           const auto h = [&](const double v, double) { return 2. * w1d.tip_free(a * v); };
-          fast = detail::jacobi_integral(h, k + n, 0.);
+          fast = detail::jacobi_integral(h, (k + 1.) + n, 1.);
           fast.value = 2. * w1d.d / (k + 1.) - std::pow(a, n) * fast.value;
         }
       else
         {
           const auto h = [&](const double v, double) { return 2. * w1d.w(a * v); };
-          fast = detail::jacobi_integral(h, k, 0.);
+          fast = detail::jacobi_integral(h, k + 1., 1.);
         }
       if (fast.resolved)
         return prefactor * fast.value;
@@ -401,7 +423,7 @@ namespace gradcontact::mdr
           if ((n - 1.) + k > 0.)
             {
               const auto h = [&](const double t, double) { return w1d.tip_free_slope(a * t); };
-              fast = detail::jacobi_integral(h, (n - 2.) + k, 0.);
+              fast = detail::jacobi_integral(h, (n - 1.) + k, 1.);
               fast.value *= std::pow(a, (n - 1.) + k);
             }
         }
@@ -409,7 +431,7 @@ namespace gradcontact::mdr
         {
           // -int_0^a w1D'(x) x^(k-1) dx = -a^(k+1) int_0^1 t^k [w1D'(a t)/(a t)] dt
           const auto h = [&](const double t, double) { return -w1d.dw(a * t) / (a * t); };
-          fast = detail::jacobi_integral(h, k, 0.);
+          fast = detail::jacobi_integral(h, k + 1., 1.);
           fast.value *= std::pow(a, k + 1.);
         }
       else
@@ -419,7 +441,7 @@ namespace gradcontact::mdr
             const double slope = tip ? (n == 1. ? 1. : std::pow(x, n - 1.)) * w1d.tip_free_slope(x) : -w1d.dw(x);
             return std::pow(2. * r + L * t, b) * slope;
           };
-          fast = detail::graded_jacobi_integral(h, b, 0., r / L);
+          fast = detail::graded_jacobi_integral(h, (k + 1.) / 2., 1., r / L);
           fast.value *= std::pow(L, b + 1.);
         }
       if (fast.resolved)

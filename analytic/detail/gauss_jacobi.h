@@ -20,6 +20,10 @@
 //   b_1 = 4 (1 + a)(1 + b)/((2 + a + b)^2 (3 + a + b))
 //   b_j = 4 j (j + a)(j + b)(j + a + b)/((2j + a + b)^2 (2j + a + b + 1)(2j + a + b - 1))        (j >= 2)
 // mapped to [0, 1]: diagonal (1 + a_j)/2, off-diagonal sqrt(b_j)/2; mass mu_0 = B(alpha + 1, beta + 1).
+//
+// The rule takes the exponents plus one, alpha + 1 and beta + 1: near -1 an exponent rounded to double
+// (-(1+k)/2 at k = 0.999) has lost the relative accuracy of its distance to -1, and the mass ~ 1/(beta + 1)
+// with it (1e-13 at k = 0.999), while (1-k)/2 keeps it.
 #ifndef GRADCONTACT_ANALYTIC_DETAIL_GAUSS_JACOBI_H
 #define GRADCONTACT_ANALYTIC_DETAIL_GAUSS_JACOBI_H
 
@@ -35,7 +39,7 @@ namespace gradcontact::detail
   /// An n-point Gauss-Jacobi rule on [0, 1] for the weight u^alpha (1-u)^beta.
   struct GaussJacobiRule
   {
-    double alpha = 0., beta = 0.;
+    double alpha_plus_one = 1., beta_plus_one = 1.;
     double mass = 0.;                ///< int_0^1 u^alpha (1-u)^beta du = B(alpha + 1, beta + 1)
     std::vector<double> node;        ///< u_q, ascending
     std::vector<double> complement;  ///< 1 - u_q, exact to rounding (not formed as 1 - u_q above 1/2)
@@ -50,13 +54,13 @@ namespace gradcontact::detail
   namespace gauss_jacobi_detail
   {
     /// Diagonal d[j] (j < n) and off-diagonal e[j] = sqrt(b_(j+1))/2 (j < n, e[n-1] for p_n) of the
-    /// Jacobi matrix on [0, 1] for the weight u^alpha (1-u)^beta.
+    /// Jacobi matrix on [0, 1] for the weight u^alpha (1-u)^beta, from alpha + 1 and beta + 1.
     template <class Real>
-    void recurrence(const unsigned int n, const Real alpha, const Real beta, std::vector<Real> &d,
+    void recurrence(const unsigned int n, const Real alpha1, const Real beta1, std::vector<Real> &d,
                     std::vector<Real> &e)
     {
       using std::sqrt;
-      const Real a = beta, b = alpha, s = a + b;
+      const Real a1 = beta1, b1 = alpha1, a = a1 - 1, b = b1 - 1, s = a + b;
       d.assign(n, 0.);
       e.assign(n, 0.);
       for (unsigned int j = 0; j < n; ++j)
@@ -66,7 +70,7 @@ namespace gradcontact::detail
           d[j] = (1 + aj) / 2;
           const Real J = j + 1;
           const Real t = 2 * J + s;
-          const Real bj = j == 0 ? 4 * (1 + a) * (1 + b) / ((2 + s) * (2 + s) * (3 + s))
+          const Real bj = j == 0 ? 4 * a1 * b1 / ((2 + s) * (2 + s) * (3 + s))
                                  : 4 * J * (J + a) * (J + b) * (J + s) / (t * t * (t + 1) * (t - 1));
           e[j] = sqrt(bj) / 2;
         }
@@ -158,15 +162,15 @@ namespace gradcontact::detail
       dpn = dp;
     }
 
-    /// Nodes (ascending) and Christoffel weights of the rule for u^alpha (1-u)^beta.
+    /// Nodes (ascending) and Christoffel weights of the rule for u^alpha (1-u)^beta (alpha + 1, beta + 1 given).
     template <class Real>
-    void nodes_and_weights(const unsigned int n, const Real alpha, const Real beta, const Real mass,
+    void nodes_and_weights(const unsigned int n, const Real alpha1, const Real beta1, const Real mass,
                            std::vector<Real> &x, std::vector<Real> &w)
     {
       using std::abs;
       using std::sqrt;
       std::vector<Real> d, e;
-      recurrence(n, alpha, beta, d, e);
+      recurrence(n, alpha1, beta1, d, e);
       // the eigenvalues in double (eps absolute), then Newton in Real
       {
         std::vector<double> dd(d.begin(), d.end()), ee(e.begin(), e.end() - 1);
@@ -211,64 +215,76 @@ namespace gradcontact::detail
     return std::tgamma(x) * std::tgamma(y) / std::tgamma(x + y);
   }
 
-  /// The n-point Gauss-Jacobi rule on [0, 1] for the weight u^alpha (1-u)^beta. std::invalid_argument for
-  /// n = 0 or alpha, beta outside (-1, inf).
-  inline GaussJacobiRule gauss_jacobi_rule(const unsigned int n, const double alpha, const double beta)
+  /// The n-point Gauss-Jacobi rule on [0, 1] for the weight u^alpha (1-u)^beta, given alpha + 1 and
+  /// beta + 1. std::invalid_argument for n = 0 or alpha + 1, beta + 1 outside (0, inf).
+  inline GaussJacobiRule gauss_jacobi_rule(const unsigned int n, const double alpha_plus_one,
+                                           const double beta_plus_one)
   {
     if (n == 0)
       throw std::invalid_argument("gauss_jacobi_rule: n = 0, need n >= 1");
-    if (!(alpha > -1.) || !(beta > -1.))
-      throw std::invalid_argument("gauss_jacobi_rule: exponents alpha = " + std::to_string(alpha) +
-                                  ", beta = " + std::to_string(beta) + " must lie in (-1, inf)");
+    if (!(alpha_plus_one > 0.) || !(beta_plus_one > 0.) || !std::isfinite(alpha_plus_one) ||
+        !std::isfinite(beta_plus_one))
+      throw std::invalid_argument("gauss_jacobi_rule: exponents plus one alpha + 1 = " +
+                                  std::to_string(alpha_plus_one) + ", beta + 1 = " + std::to_string(beta_plus_one) +
+                                  " must lie in (0, inf)");
     // Built in long double: near u = 0 with alpha -> -1 the recurrence gives p_n to its epsilon absolute only,
     // which locates the first node to about eps/|p_n'| (2e-10 relative in double at alpha = -0.999, n = 96)
     // and its Christoffel number to about alpha + 1 times that; the extended precision's 11 more bits leave
     // double rounding.
     using Real = long double;
     GaussJacobiRule rule;
-    rule.alpha = alpha;
-    rule.beta = beta;
-    rule.mass = beta_function(alpha + 1., beta + 1.);
+    rule.alpha_plus_one = alpha_plus_one;
+    rule.beta_plus_one = beta_plus_one;
+    rule.mass = beta_function(alpha_plus_one, beta_plus_one);
     std::vector<Real> x, w, xm, wm;
-    gauss_jacobi_detail::nodes_and_weights<Real>(n, alpha, beta, rule.mass, x, w);
+    gauss_jacobi_detail::nodes_and_weights<Real>(n, alpha_plus_one, beta_plus_one, rule.mass, x, w);
     std::size_t lower = 0;
     while (lower < n && x[lower] <= 0.5L)
       ++lower;
     // Nodes above 1/2 as their distance to 1 from the mirrored rule where the weight (1-u)^beta is singular
     // (beta < 0); otherwise 1 - u_q is exact to the extended precision's rounding.
-    const bool mirrored = lower < n && beta < 0.;
+    const bool mirrored = lower < n && beta_plus_one < 1.;
     if (mirrored)
-      gauss_jacobi_detail::nodes_and_weights<Real>(n, beta, alpha, rule.mass, xm, wm);
+      gauss_jacobi_detail::nodes_and_weights<Real>(n, beta_plus_one, alpha_plus_one, rule.mass, xm, wm);
     rule.node.resize(n);
     rule.complement.resize(n);
     rule.weight.resize(n);
+    std::vector<Real> u(n); // the nodes in extended precision, for the polynomials below
     for (std::size_t q = 0; q < n; ++q)
       {
+        Real uq, cq, wq;
         if (q < lower || !mirrored)
           {
-            rule.node[q] = static_cast<double>(x[q]);
-            rule.complement[q] = static_cast<double>(1 - x[q]);
-            rule.weight[q] = static_cast<double>(w[q]);
+            uq = x[q];
+            cq = 1 - x[q];
+            wq = w[q];
           }
         else
           {
             const std::size_t m = n - 1 - q; // the mirrored rule's node nearest to 0 is this rule's last
-            rule.complement[q] = static_cast<double>(xm[m]);
-            rule.node[q] = static_cast<double>(1 - xm[m]);
-            rule.weight[q] = static_cast<double>(wm[m]);
+            cq = xm[m];
+            uq = 1 - xm[m];
+            wq = wm[m];
           }
+        u[q] = uq;
+        rule.node[q] = static_cast<double>(uq);
+        rule.complement[q] = static_cast<double>(cq);
+        rule.weight[q] = static_cast<double>(wq);
       }
-    // the orthonormal polynomials at the final nodes (double suffices: they only judge resolution)
-    std::vector<double> d, e;
-    gauss_jacobi_detail::recurrence<double>(n, alpha, beta, d, e);
+    // The orthonormal polynomials at the nodes, in extended precision too: near an end with a weight exponent
+    // -> -1 one node carries most of the mass, and p_j there in double (p_j' ~ j^2 p_j) would leave a noise
+    // of the coefficients above the resolution tolerance (2e-12 of the norm at beta = -0.9995, n = 48).
+    std::vector<Real> d, e;
+    gauss_jacobi_detail::recurrence<Real>(n, alpha_plus_one, beta_plus_one, d, e);
     rule.orthonormal.assign(std::size_t(n) * n, 0.);
-    std::vector<double> P(n);
+    std::vector<Real> P(n);
+    const Real p0 = 1 / std::sqrt(static_cast<Real>(rule.mass));
     for (std::size_t q = 0; q < n; ++q)
       {
-        double pn, dpn;
-        gauss_jacobi_detail::orthonormal_at<double>(rule.node[q], d, e, 1. / std::sqrt(rule.mass), P.data(), pn, dpn);
+        Real pn, dpn;
+        gauss_jacobi_detail::orthonormal_at<Real>(u[q], d, e, p0, P.data(), pn, dpn);
         for (std::size_t j = 0; j < n; ++j)
-          rule.orthonormal[j * n + q] = P[j];
+          rule.orthonormal[j * n + q] = static_cast<double>(P[j]);
       }
     return rule;
   }

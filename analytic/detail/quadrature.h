@@ -80,16 +80,16 @@ namespace gradcontact::detail
 
   /// A Gauss-Jacobi rule of the calling thread's cache (the rules of the last 64 (n, alpha, beta) asked for).
   /// Shared ownership: an outer quadrature keeps its rule while inner ones evict others.
-  inline std::shared_ptr<const GaussJacobiRule> cached_gauss_jacobi_rule(const unsigned int n, const double alpha,
-                                                                         const double beta)
+  inline std::shared_ptr<const GaussJacobiRule> cached_gauss_jacobi_rule(const unsigned int n, const double alpha1,
+                                                                         const double beta1)
   {
     thread_local std::vector<std::shared_ptr<const GaussJacobiRule>> cache;
     thread_local std::size_t next = 0;
     constexpr std::size_t capacity = 64;
     for (const auto &rule : cache)
-      if (rule->size() == n && rule->alpha == alpha && rule->beta == beta)
+      if (rule->size() == n && rule->alpha_plus_one == alpha1 && rule->beta_plus_one == beta1)
         return rule;
-    auto rule = std::make_shared<const GaussJacobiRule>(gauss_jacobi_rule(n, alpha, beta));
+    auto rule = std::make_shared<const GaussJacobiRule>(gauss_jacobi_rule(n, alpha1, beta1));
     if (cache.size() < capacity)
       cache.push_back(rule);
     else
@@ -148,34 +148,37 @@ namespace gradcontact::detail
   }
 
   /// int_0^1 u^alpha (1-u)^beta h(u, 1-u) du by the Gauss-Jacobi rules of jacobi_sizes, the first that
-  /// resolves h (resolved = false when none does).
+  /// resolves h (resolved = false when none does). The exponents come as alpha1 = alpha + 1 and
+  /// beta1 = beta + 1, formed where they keep their digits (gauss_jacobi.h).
   template <class H>
-  JacobiQuadrature jacobi_integral(const H &h, const double alpha, const double beta)
+  JacobiQuadrature jacobi_integral(const H &h, const double alpha1, const double beta1)
   {
     JacobiQuadrature result;
     for (const unsigned int n : jacobi_sizes)
       {
-        result = jacobi_sum(*cached_gauss_jacobi_rule(n, alpha, beta), h);
+        result = jacobi_sum(*cached_gauss_jacobi_rule(n, alpha1, beta1), h);
         if (result.resolved)
           break;
       }
     return result;
   }
 
-  /// int_0^1 u^alpha (1-u)^beta h(u, 1-u) du for h analytic on [0, 1] but with singularities at the
+  /// int_0^1 u^alpha (1-u)^beta h(u, 1-u) du (alpha1 = alpha + 1, beta1 = beta + 1) for h analytic on [0, 1]
+  /// but with singularities at the
   /// distances delta0 below 0 and delta1 above 1 (infinity: none). Where a delta is below 1/4, panels
   /// graded by halving toward that end, the last of a length below 2 delta: every panel's h is then analytic
   /// in the same ellipse. The end panels carry the end-point powers in their rule; the others
   /// evaluate them. Resolved when every panel is.
   template <class H>
-  JacobiQuadrature graded_jacobi_integral(const H &h, const double alpha, const double beta,
+  JacobiQuadrature graded_jacobi_integral(const H &h, const double alpha1, const double beta1,
                                           const double delta0 = std::numeric_limits<double>::infinity(),
                                           const double delta1 = std::numeric_limits<double>::infinity())
   {
     constexpr double grade_below = 0.25;
     const bool left = delta0 < grade_below, right = delta1 < grade_below;
     if (!left && !right)
-      return jacobi_integral(h, alpha, beta);
+      return jacobi_integral(h, alpha1, beta1);
+    const double alpha = alpha1 - 1., beta = beta1 - 1.; // evaluated away from their ends only
     // Break points as (u, 1 - u), each formed where it is small. Left: 1/2, 1/4, ... while above 2 delta0.
     struct Point
     {
@@ -217,8 +220,8 @@ namespace gradcontact::detail
               const double u = b * t, uc = 1. - u;
               return std::pow(uc, beta) * h(u, uc);
             };
-            panel = jacobi_integral(g, alpha, 0.);
-            panel.value *= std::pow(b, alpha + 1.);
+            panel = jacobi_integral(g, alpha1, 1.);
+            panel.value *= std::pow(b, alpha1);
           }
         else if (last)
           {
@@ -228,8 +231,8 @@ namespace gradcontact::detail
               const double uc = c * tc, u = 1. - uc;
               return std::pow(u, alpha) * h(u, uc);
             };
-            panel = jacobi_integral(g, 0., beta);
-            panel.value *= std::pow(c, beta + 1.);
+            panel = jacobi_integral(g, 1., beta1);
+            panel.value *= std::pow(c, beta1);
           }
         else
           {
@@ -249,7 +252,7 @@ namespace gradcontact::detail
                 }
               return std::pow(u, alpha) * std::pow(uc, beta) * h(u, uc);
             };
-            panel = jacobi_integral(g, 0., 0.);
+            panel = jacobi_integral(g, 1., 1.);
             panel.value *= length;
           }
         total.value += panel.value;
