@@ -557,14 +557,38 @@ namespace gradcontact::mdr
                         (control == Control::force ? "F_N(a)" : "d(a)") + " lies on the " +
                         (best == 0 ? "lower" : "upper") + " end of the bracket");
 
-    // 2. Brent's method in log a.
+    // 2. With f'' the exact slope of the objective brackets the minimum's radius between the scan's neighbours
+    //    of the best point, and TOMS 748 finds its root to rounding (9.10, 9.11 and 9.45 differentiated in a:
+    //    d'(a) = g'(a) - (1-k)/(2a) Delta_l(a), F'(a) = 2 cN0/c0^k a^k [a d'(a)/(k+1) - Delta_l(a)], as the
+    //    shape term int_0^a x^k g(x) dx has the slope a^k g(a)).
+    if (profile.d2f)
+      {
+        const auto slope = [&](const double a) {
+          const double dl = delta_ell(m, dgamma, a);
+          const double dd = equivalent_profile_slope(profile, m.k, a) - (1. - m.k) / (2. * a) * dl;
+          return control == Control::force ? a * dd / (m.k + 1.) - dl : dd; // F' without 2 cN0 a^k / c0^k
+        };
+        const double lo = a_lo * std::exp(ratio * (best - 1)), hi = a_lo * std::exp(ratio * (best + 1));
+        const double s_lo = slope(lo), s_hi = slope(hi);
+        if (s_lo < 0. && s_hi > 0.)
+          {
+            std::uintmax_t max_iter = 100;
+            const auto root = boost::math::tools::toms748_solve(slope, lo, hi, s_lo, s_hi,
+                                                                boost::math::tools::eps_tolerance<double>(52),
+                                                                max_iter);
+            const double ac = 0.5 * (root.first + root.second);
+            return {ac, depth_of(ac), force_of(ac)};
+          }
+      }
+
+    // 3. Otherwise Brent's method in log a.
     const auto in_log = [&](const double s) { return objective(a_lo * std::exp(s)); };
     std::uintmax_t iterations = 200;
     const auto brent = boost::math::tools::brent_find_minima(in_log, ratio * (best - 1), ratio * (best + 1),
                                                              40, iterations);
     double ac = a_lo * std::exp(brent.first);
 
-    // 3. A minimum is located only to sqrt(eps) by its value; the root of the derivative (fourth-order
+    // 4. A minimum is located only to sqrt(eps) by its value; the root of the derivative (fourth-order
     //    central differences of the quadrature values) is located to about 1e-11.
     const auto slope = [&](const double a) {
       const double h = 1e-3 * a;

@@ -114,8 +114,9 @@ namespace gradcontact::mdr
   };
 
   /// The critical (pull-off) state of an adhesive indentation, found by minimising F_N(a) (force
-  /// control) or d(a) (displacement control) over a in [a_lo, a_hi] (a log-spaced scan, Brent's
-  /// method, then the root of a central-difference derivative), not from 9.48. DomainError when the
+  /// control) or d(a) (displacement control) over a in [a_lo, a_hi] (a log-spaced scan, then the root of
+  /// the slope from g'(a) where the profile has f''; otherwise Brent's method and the root of a
+  /// central-difference derivative), not from 9.48. DomainError when the
   /// minimum lies on the end of the bracket (no critical state inside it). With bracket_shifts > 0 a
   /// minimum on an end first moves the bracket by nine decades toward that end (keeping one decade of
   /// overlap), at most bracket_shifts times.
