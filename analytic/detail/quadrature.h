@@ -100,11 +100,14 @@ namespace gradcontact::detail
     return rule;
   }
 
-  /// A Gauss-Jacobi quadrature's value and whether the rule resolved the integrand.
+  /// A Gauss-Jacobi quadrature's value, whether the rule resolved the integrand, and the two sizes that
+  /// decide it: error = sqrt(mass) |last coefficients| (the quadrature error is about its square for an
+  /// analytic integrand) and scale = sqrt(mass) sqrt(sum_q w_q h_q^2) (at least int w |h|, Cauchy-Schwarz).
   struct JacobiQuadrature
   {
     double value = 0.;
     bool resolved = false;
+    double error = 0., scale = 0.;
   };
 
   /// The relative size of the last coefficients (of the integrand's L2 norm in the weight) below which a
@@ -130,7 +133,7 @@ namespace gradcontact::detail
       }
     for (std::size_t q = 0; q < n; ++q)
       squares += v[q] * v[q] / rule.weight[q];
-    JacobiQuadrature result{sum, false};
+    JacobiQuadrature result{sum, false, std::numeric_limits<double>::infinity(), 0.};
     if (!std::isfinite(sum) || !std::isfinite(squares))
       return result;
     double tail = 0.;
@@ -143,19 +146,25 @@ namespace gradcontact::detail
           c += v[q] * p[q];
         tail += c * c;
       }
-    result.resolved = tail <= jacobi_tail_tolerance * jacobi_tail_tolerance * squares;
+    const double root_mass = std::sqrt(rule.mass);
+    result.error = root_mass * std::sqrt(tail);
+    result.scale = root_mass * std::sqrt(squares);
+    result.resolved = result.error <= jacobi_tail_tolerance * result.scale;
     return result;
   }
 
   /// int_0^1 u^alpha (1-u)^beta h(u, 1-u) du by the Gauss-Jacobi rules of jacobi_sizes, the first that
   /// resolves h (resolved = false when none does). The exponents come as alpha1 = alpha + 1 and
-  /// beta1 = beta + 1, formed where they keep their digits (gauss_jacobi.h).
+  /// beta1 = beta + 1, formed where they keep their digits (gauss_jacobi.h). first_size skips smaller rules.
   template <class H>
-  JacobiQuadrature jacobi_integral(const H &h, const double alpha1, const double beta1)
+  JacobiQuadrature jacobi_integral(const H &h, const double alpha1, const double beta1,
+                                   const unsigned int first_size = jacobi_sizes[0])
   {
     JacobiQuadrature result;
     for (const unsigned int n : jacobi_sizes)
       {
+        if (n < first_size)
+          continue;
         result = jacobi_sum(*cached_gauss_jacobi_rule(n, alpha1, beta1), h);
         if (result.resolved)
           break;
@@ -164,11 +173,13 @@ namespace gradcontact::detail
   }
 
   /// int_0^1 u^alpha (1-u)^beta h(u, 1-u) du (alpha1 = alpha + 1, beta1 = beta + 1) for h analytic on [0, 1]
-  /// but with singularities at the
-  /// distances delta0 below 0 and delta1 above 1 (infinity: none). Where a delta is below 1/4, panels
-  /// graded by halving toward that end, the last of a length below 2 delta: every panel's h is then analytic
-  /// in the same ellipse. The end panels carry the end-point powers in their rule; the others
-  /// evaluate them. Resolved when every panel is.
+  /// but with singularities at the distances delta0 below 0 and delta1 above 1 (infinity: none). Where a
+  /// delta is below 1/4, panels graded by halving toward that end, the last of a length below 2 delta:
+  /// every panel's h is then analytic in the same ellipse. The end panels carry the end-point powers in their
+  /// rule; the others evaluate them. Resolved when the panels' errors together are within the tolerance of
+  /// their scales together: a panel where h is small (w1D -> 0 at the contact edge, formed as d - g with an
+  /// error of eps d) need not resolve its own rounding noise. The panels with the largest errors get the
+  /// larger rules first.
   template <class H>
   JacobiQuadrature graded_jacobi_integral(const H &h, const double alpha1, const double beta1,
                                           const double delta0 = std::numeric_limits<double>::infinity(),
@@ -185,83 +196,153 @@ namespace gradcontact::detail
       double u, complement;
     };
     std::vector<Point> points;
+    points.push_back({0., 1.});
     if (left)
       {
-        double b = 0.5;
         std::vector<Point> descending;
-        for (; b > 2. * delta0 && descending.size() < 1100; b *= 0.5)
+        for (double b = 0.5; b > 2. * delta0 && descending.size() < 1100; b *= 0.5)
           descending.push_back({b, 1. - b});
-        points.push_back({0., 1.});
         points.insert(points.end(), descending.rbegin(), descending.rend());
       }
-    else
-      points.push_back({0., 1.});
     if (right)
       {
         if (!left)
           points.push_back({0.5, 0.5});
         for (double c = 0.25; c > 2. * delta1 && points.size() < 2200; c *= 0.5)
           points.push_back({1. - c, c});
-        points.push_back({1., 0.});
       }
-    else
-      points.push_back({1., 0.});
-    JacobiQuadrature total{0., true};
-    for (std::size_t i = 0; i + 1 < points.size(); ++i)
+    points.push_back({1., 0.});
+    const std::size_t n_panels = points.size() - 1;
+    const auto panel = [&](const std::size_t i, const unsigned int size) {
+      const Point lo = points[i], hi = points[i + 1];
+      JacobiQuadrature result;
+      double factor;
+      if (i == 0)
+        {
+          // [0, b]: u = b t, the power u^alpha in the rule
+          const double b = hi.u;
+          const auto g = [&](const double t, double) {
+            const double u = b * t, uc = 1. - u;
+            return std::pow(uc, beta) * h(u, uc);
+          };
+          result = jacobi_sum(*cached_gauss_jacobi_rule(size, alpha1, 1.), g);
+          factor = std::pow(b, alpha1);
+        }
+      else if (i + 1 == n_panels)
+        {
+          // [1 - c, 1]: 1 - u = c (1 - t), the power (1-u)^beta in the rule
+          const double c = lo.complement;
+          const auto g = [&](double, const double tc) {
+            const double uc = c * tc, u = 1. - uc;
+            return std::pow(u, alpha) * h(u, uc);
+          };
+          result = jacobi_sum(*cached_gauss_jacobi_rule(size, 1., beta1), g);
+          factor = std::pow(c, beta1);
+        }
+      else
+        {
+          const bool in_right_half = lo.u >= 0.5;
+          const double length = in_right_half ? lo.complement - hi.complement : hi.u - lo.u;
+          const auto g = [&](const double t, const double tc) {
+            double u, uc;
+            if (in_right_half)
+              {
+                uc = hi.complement + length * tc;
+                u = 1. - uc;
+              }
+            else
+              {
+                u = lo.u + length * t;
+                uc = 1. - u;
+              }
+            return std::pow(u, alpha) * std::pow(uc, beta) * h(u, uc);
+          };
+          result = jacobi_sum(*cached_gauss_jacobi_rule(size, 1., 1.), g);
+          factor = length;
+        }
+      result.value *= factor;
+      result.error *= factor;
+      result.scale *= factor;
+      return result;
+    };
+    std::vector<JacobiQuadrature> panels(n_panels);
+    std::vector<std::size_t> level(n_panels, 0);
+    for (std::size_t i = 0; i < n_panels; ++i)
+      panels[i] = panel(i, jacobi_sizes[0]);
+    constexpr std::size_t n_levels = sizeof(jacobi_sizes) / sizeof(jacobi_sizes[0]);
+    while (true)
       {
-        const Point lo = points[i], hi = points[i + 1];
-        const bool first = i == 0, last = i + 2 == points.size();
-        JacobiQuadrature panel;
-        if (first)
+        double error = 0., scale = 0.;
+        std::size_t worst = n_panels;
+        for (std::size_t i = 0; i < n_panels; ++i)
           {
-            // [0, b]: u = b t, the power u^alpha in the rule
-            const double b = hi.u;
-            const auto g = [&](const double t, double) {
-              const double u = b * t, uc = 1. - u;
-              return std::pow(uc, beta) * h(u, uc);
-            };
-            panel = jacobi_integral(g, alpha1, 1.);
-            panel.value *= std::pow(b, alpha1);
+            error += panels[i].error;
+            scale += panels[i].scale;
+            if (level[i] + 1 < n_levels && (worst == n_panels || panels[i].error > panels[worst].error))
+              worst = i;
           }
-        else if (last)
+        const bool resolved = std::isfinite(error) && error <= jacobi_tail_tolerance * scale;
+        if (resolved || worst == n_panels)
           {
-            // [1 - c, 1]: 1 - u = c (1 - t), the power (1-u)^beta in the rule
-            const double c = lo.complement;
-            const auto g = [&](double, const double tc) {
-              const double uc = c * tc, u = 1. - uc;
-              return std::pow(u, alpha) * h(u, uc);
-            };
-            panel = jacobi_integral(g, 1., beta1);
-            panel.value *= std::pow(c, beta1);
+            JacobiQuadrature total{0., resolved, error, scale};
+            for (const JacobiQuadrature &p : panels)
+              total.value += p.value;
+            return total;
           }
-        else
-          {
-            const bool in_right_half = lo.u >= 0.5;
-            const double length = in_right_half ? lo.complement - hi.complement : hi.u - lo.u;
-            const auto g = [&](const double t, const double tc) {
-              double u, uc;
-              if (in_right_half)
-                {
-                  uc = hi.complement + length * tc;
-                  u = 1. - uc;
-                }
-              else
-                {
-                  u = lo.u + length * t;
-                  uc = 1. - u;
-                }
-              return std::pow(u, alpha) * std::pow(uc, beta) * h(u, uc);
-            };
-            panel = jacobi_integral(g, 1., 1.);
-            panel.value *= length;
-          }
-        total.value += panel.value;
-        total.resolved = total.resolved && panel.resolved;
-        if (!total.resolved)
-          break;
+        panels[worst] = panel(worst, jacobi_sizes[++level[worst]]);
       }
-    return total;
   }
+
+  /// A function on [lo, hi] as its interpolant in the Chebyshev points of the first kind, for an inner
+  /// integral that a quadrature on many panels would otherwise evaluate at every node (Trefethen 2013, ch. 3
+  /// and 8). Resolved when the last three coefficients are within a few eps of the coefficients' sum: the
+  /// interpolant then agrees with the function to rounding of its largest value.
+  class ChebyshevInterpolant
+  {
+  public:
+    static constexpr int size = 32;
+
+    template <class F>
+    ChebyshevInterpolant(const F &f, const double lo, const double hi) : lo_(lo), hi_(hi)
+    {
+      constexpr double pi = 3.141592653589793238462643383279502884;
+      double values[size];
+      for (int j = 0; j < size; ++j)
+        values[j] = f(0.5 * (lo + hi) + 0.5 * (hi - lo) * std::cos(pi * (j + 0.5) / size));
+      double sum = 0., tail = 0.;
+      for (int m = 0; m < size; ++m)
+        {
+          double c = 0.;
+          for (int j = 0; j < size; ++j)
+            c += values[j] * std::cos(pi * m * (j + 0.5) / size);
+          c_[m] = (m == 0 ? 1. : 2.) / size * c;
+          sum += std::abs(c_[m]);
+          if (m >= size - 3)
+            tail = std::max(tail, std::abs(c_[m]));
+        }
+      resolved_ = std::isfinite(sum) && tail <= 8. * std::numeric_limits<double>::epsilon() * sum;
+    }
+
+    bool resolved() const { return resolved_; }
+
+    /// The interpolant at x in [lo, hi] (Clenshaw's recurrence).
+    double operator()(const double x) const
+    {
+      const double t = (2. * x - lo_ - hi_) / (hi_ - lo_);
+      double b1 = 0., b2 = 0.;
+      for (int m = size - 1; m >= 1; --m)
+        {
+          const double b0 = 2. * t * b1 - b2 + c_[m];
+          b2 = b1;
+          b1 = b0;
+        }
+      return t * b1 - b2 + c_[0];
+    }
+
+  private:
+    double lo_, hi_, c_[size] = {};
+    bool resolved_ = false;
+  };
 } // namespace gradcontact::detail
 
 #endif
