@@ -293,6 +293,22 @@ namespace gradcontact::detail
       }
   }
 
+  /// int_lo^hi f(x, x - lo, hi - x) dx (as integrate_with_distances) for an f analytic on [lo, hi]: by
+  /// Gauss-Legendre rules (jacobi_integral with both powers 0) where one resolves f, else by tanh-sinh.
+  template <class F>
+  double integrate_analytic_with_distances(const F &f, const double lo, const double hi)
+  {
+    if (!(hi > lo))
+      return 0.;
+    const double length = hi - lo;
+    const auto g = [&](const double t, const double tc) {
+      const double to_lo = length * t, to_hi = length * tc;
+      return f(t <= 0.5 ? lo + to_lo : hi - to_hi, to_lo, to_hi);
+    };
+    const JacobiQuadrature fast = jacobi_integral(g, 1., 1.);
+    return fast.resolved ? length * fast.value : integrate_with_distances(f, lo, hi);
+  }
+
   /// A function on [lo, hi] as its interpolant in the Chebyshev points of the first kind, for an inner
   /// integral that a quadrature on many panels would otherwise evaluate at every node (Trefethen 2013, ch. 3
   /// and 8). Resolved when the last three coefficients are within a few eps of the coefficients' sum: the
