@@ -12,7 +12,8 @@
 // keep their relative accuracy at the small weights near the ends where eigenvector components do not.
 // For beta < 0 the nodes above 1/2 come from the mirrored rule (alpha and beta exchanged) as their
 // distances 1 - u to the end 1, so that a weight (1-u)^beta with beta -> -1 meets nodes whose distance to
-// 1 is exact to rounding, not to eps absolute. The rule is built in long double and rounded.
+// 1 is exact to rounding, not to eps absolute. The eigenvalues are found in double; the Newton steps, the
+// weights and the polynomials at the nodes in long double, then rounded.
 //
 // Recurrence (monic Jacobi polynomials on [-1, 1] with weight (1-t)^a (1+t)^b, Gautschi 2004, Table 1.1;
 // here t = 2u - 1, a = beta, b = alpha):

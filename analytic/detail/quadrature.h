@@ -9,7 +9,9 @@
 //    error like rho^-2n). Rules of 24, 48 and 96 nodes are tried in turn. Where h has a singularity just
 //    outside [0, 1] (at the distance delta of an end), panels graded geometrically toward that end (ratio
 //    1/2, down to delta) keep every panel's integrand analytic in a fixed ellipse (hp quadrature: Schwab,
-//    p- and hp-Finite Element Methods, 1998, 4.4).
+//    p- and hp-Finite Element Methods, 1998, 4.4); the panels are judged together, so that a panel where
+//    h is small and only its rounding is left need not resolve that. An inner integral evaluated on many
+//    panels is replaced by its Chebyshev interpolant where that resolves it (ChebyshevInterpolant).
 // 2. tanh-sinh with end-point substitutions, the fallback where a Gauss-Jacobi rule does not resolve h
 //    (an unknown end-point power of a user's profile, a kink).
 //
