@@ -11,6 +11,7 @@
 #include <algorithm>
 #include <cstdint>
 #include <limits>
+#include <optional>
 #include <vector>
 
 namespace gradcontact::mdr
@@ -132,13 +133,16 @@ namespace gradcontact::mdr
       const detail::JacobiQuadrature B = detail::jacobi_integral(shape, (k + 1.) + n, 1.);
       // [1/2, 1]: 1 - v = (1 - t)/2. Where the panels are graded (delta1 < 1/8), w1D on [x0/2, x0] as its
       // Chebyshev interpolant (one inner quadrature a Chebyshev point, not a node of every panel).
-      const bool graded = 2. * delta1 < 0.25;
-      const detail::ChebyshevInterpolant interpolant(
-        [&](const double x) { return graded ? w1d.w(x) : 0.; }, x0 / 2., x0);
-      const bool interpolate = graded && interpolant.resolved();
+      std::optional<detail::ChebyshevInterpolant> interpolant;
+      if (2. * delta1 < 0.25)
+        {
+          interpolant.emplace([&](const double x) { return w1d.w(x); }, x0 / 2., x0);
+          if (!interpolant->resolved())
+            interpolant.reset();
+        }
       const auto whole = [&](double, const double tc) {
         const double vc = tc / 2., v = 1. - vc;
-        return std::pow(v, k) * weight(v, vc) * (interpolate ? interpolant(x0 * v) : w1d.w(x0 * v));
+        return std::pow(v, k) * weight(v, vc) * (interpolant ? (*interpolant)(x0 * v) : w1d.w(x0 * v));
       };
       const detail::JacobiQuadrature C = detail::graded_jacobi_integral(whole, 1., beta1,
                                                                         std::numeric_limits<double>::infinity(),

@@ -323,16 +323,16 @@ namespace gradcontact::detail
     template <class F>
     ChebyshevInterpolant(const F &f, const double lo, const double hi) : lo_(lo), hi_(hi)
     {
-      constexpr double pi = 3.141592653589793238462643383279502884;
+      const Table &T = table();
       double values[size];
       for (int j = 0; j < size; ++j)
-        values[j] = f(0.5 * (lo + hi) + 0.5 * (hi - lo) * std::cos(pi * (j + 0.5) / size));
+        values[j] = f(0.5 * (lo + hi) + 0.5 * (hi - lo) * T.cosine[1][j]);
       double sum = 0., tail = 0.;
       for (int m = 0; m < size; ++m)
         {
           double c = 0.;
           for (int j = 0; j < size; ++j)
-            c += values[j] * std::cos(pi * m * (j + 0.5) / size);
+            c += values[j] * T.cosine[m][j];
           c_[m] = (m == 0 ? 1. : 2.) / size * c;
           sum += std::abs(c_[m]);
           if (m >= size - 3)
@@ -358,6 +358,24 @@ namespace gradcontact::detail
     }
 
   private:
+    /// cos(pi m (j + 1/2) / size): T_m at the Chebyshev points (row 1: the points themselves).
+    struct Table
+    {
+      double cosine[size][size];
+      Table()
+      {
+        constexpr double pi = 3.141592653589793238462643383279502884;
+        for (int m = 0; m < size; ++m)
+          for (int j = 0; j < size; ++j)
+            cosine[m][j] = std::cos(pi * m * (j + 0.5) / size);
+      }
+    };
+    static const Table &table()
+    {
+      static const Table t;
+      return t;
+    }
+
     double lo_, hi_, c_[size] = {};
     bool resolved_ = false;
   };
