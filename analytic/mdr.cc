@@ -273,6 +273,18 @@ namespace gradcontact::mdr
     w1d.a = a;
     w1d.d = d;
     w1d.profile_slope = profile.df;
+    // A profile of unknown tip power whose f' the Gauss-Jacobi rules do not resolve at x = a is integrated by
+    // tanh-sinh throughout: the rules' attempts at every node of the outer integrals would only add to the cost.
+    if (std::isnan(profile.tip_exponent) && !tip_free_integral(profile.df, 1., k, a).resolved)
+      {
+        w1d.gauss_jacobi = false;
+        w1d.w = [profile, k, d](const double x) {
+          return x == 0. ? d : d - equivalent_profile_tanh_sinh(profile, k, x);
+        };
+        if (profile.d2f)
+          w1d.dw = [profile, k](const double x) { return -equivalent_profile_slope_tanh_sinh(profile, k, x); };
+        return w1d;
+      }
     w1d.w = [profile, k, d](const double x) { return d - equivalent_profile(profile, k, x); };
     if (profile.d2f)
       w1d.dw = [profile, k](const double x) { return -equivalent_profile_slope(profile, k, x); };
@@ -344,7 +356,9 @@ namespace gradcontact::mdr
       const double r = a * v;
       return std::pow(1. + v, q) * (n == 1. ? w1d.profile_slope(r) : w1d.profile_slope(r) * std::pow(r, 1. - n));
     };
-    const detail::JacobiQuadrature fast = detail::jacobi_integral(hv, n, q + 1.);
+    detail::JacobiQuadrature fast;
+    if (w1d.gauss_jacobi)
+      fast = detail::jacobi_integral(hv, n, q + 1.);
     double shape;
     if (fast.resolved)
       shape = std::pow(a, k + n + 1.) / (k + 1.) * fast.value;
@@ -362,6 +376,7 @@ namespace gradcontact::mdr
     const double k = m.k, a = w1d.a;
     // 9.11 with x = a sqrt(u): F = cN0 a^(k+1)/c0^k int_0^1 u^((k-1)/2) w1D(a sqrt(u)) du
     const double prefactor = m.cN0 * std::pow(a, k + 1.) / std::pow(m.c0, k);
+    if (w1d.gauss_jacobi)
     {
       // Gauss-Jacobi with x = a v: int_0^1 2 v^k w1D(a v) dv, w1D = (a^2 (1-v)(1+v))^e phi with the
       // factor (1-v)^e in the weight, w1D = d - (a v)^n G(a v) as its two terms
@@ -417,6 +432,7 @@ namespace gradcontact::mdr
     if (!w1d.dw)
       throw DomainError(std::string(fn) + ": the foundation has no slope w1D' (the profile needs f'')");
     const double edge_factor = m.cN0 / (pi * std::pow(m.c0, k));
+    if (w1d.gauss_jacobi || r > 0.) // for r > 0 the slope is analytic on [r, a] whatever the tip
     {
       // Gauss-Jacobi with x = r + L t, L = a - r, x^2 - r^2 = L t (2r + L t), b = (k-1)/2:
       //   -int_r^a w1D'(x) (x^2-r^2)^b dx = -L^(b+1) int_0^1 t^b (2r + L t)^b w1D'(x) dt,
@@ -481,6 +497,7 @@ namespace gradcontact::mdr
     if (r == 0.)
       return w1d.w(0.);
     const double e = w1d.edge_exponent;
+    if (w1d.gauss_jacobi)
     {
       const detail::JacobiQuadrature fast = displacement_gauss_jacobi(w1d, k, r);
       if (fast.resolved)

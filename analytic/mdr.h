@@ -72,6 +72,11 @@ namespace gradcontact::mdr
     /// integrate d and x^n G(x) separately, each with its power in the weight.
     double tip_exponent = std::numeric_limits<double>::quiet_NaN();
     std::function<double(double)> tip_free, tip_free_slope;
+    /// false: the quadratures of 9.11-9.13 on this foundation go straight to tanh-sinh, but for the pressure at
+    /// r > 0, whose integrand is analytic on [r, a] whatever the tip (set by
+    /// indentation_to_depth for a profile of unknown tip power whose f' no Gauss-Jacobi rule resolves: a
+    /// tip power other than an integer, a kink, a finite-difference slope).
+    bool gauss_jacobi = true;
   };
 
   /// g(x) (9.2)
