@@ -9,10 +9,16 @@
 //   w(r)   = 2 cos(k pi/2)/pi int_0^min(r,a) x^k w1D(x) (r^2 - x^2)^(-(1+k)/2) dx           (9.12)
 //   w1D(x) = 2 c0^k cos(k pi/2)/cN0 int_x^a r p(r) (r^2 - x^2)^(-(1+k)/2) dr                (9.13)
 //
-// Every integral is mapped onto int_0^1 u^alpha (1-u)^beta h(u) du and the end-point powers are
-// removed by u = v^(1/(alpha+1)) / 2 (and the mirror image at u = 1) before tanh-sinh: the mass of
-// x^k near 0 for k -> -1 lies at scales below any double, and a plain tanh-sinh loses digits there
-// (ERRATA.md, quadrature item).
+// Every integral is mapped onto int_0^1 u^alpha (1-u)^beta h(u) du with the end-point powers in
+// alpha and beta, and integrated by Gauss-Jacobi rules (detail/quadrature.h): the weight carries the
+// mass of x^k near 0 for k -> -1 exactly, however small its scale. The variables are chosen so that h is
+// analytic for the profiles whose tip power is known (Profile::tip_exponent): r = x v in 9.2 (h is then
+// phi(x v), with f'(r) = r^(n-1) phi(r)), x = r v and x = a v in 9.11-9.12 with w1D = d - x^n G(x) split
+// into its two terms, and x = r + (a - r) t in the pressure. Where h has a singularity just outside the
+// interval (the pressure at r << a: x = 0 at t = -r/(a - r); the displacement at r just above a) the
+// panels are graded toward it. Where a rule does not resolve h (its last coefficients, detail/quadrature.h),
+// the integral falls back to tanh-sinh, the end-point powers removed by u = v^(1/(alpha+1)) / 2 (and the
+// mirror image at u = 1): a plain tanh-sinh loses digits at k -> +-1 (ERRATA.md, quadrature item).
 #ifndef GRADCONTACT_ANALYTIC_MDR_H
 #define GRADCONTACT_ANALYTIC_MDR_H
 
@@ -31,9 +37,13 @@ namespace gradcontact::mdr
     std::function<double(double)> f;
     std::function<double(double)> df;
     std::function<double(double)> d2f;
+    /// n where f'(r) = r^(n-1) phi(r) with phi analytic at r = 0 (A r^n: n), so that the quadratures put
+    /// r^(n-1) into their weight; NaN when unknown (f' is then taken as analytic itself, and a tip that is
+    /// not ends in the tanh-sinh fallback).
+    double tip_exponent = std::numeric_limits<double>::quiet_NaN();
   };
 
-  /// f = A r^n with exact derivatives.
+  /// f = A r^n with exact derivatives and tip_exponent n.
   Profile power_law(double n, double A);
 
   /// The 1D displacement of the Winkler foundation on [0, a] (even in x) and its slope.
@@ -57,6 +67,16 @@ namespace gradcontact::mdr
     /// which no quadrature of w1D itself can reach.
     double edge_exponent = 0.;
     std::function<double(double)> edge_free;
+    /// Where w1D = d - x^n G(x) with G analytic (indentations of a profile with a known tip exponent n):
+    /// n, G and G1(x) = -w1D'(x) / x^(n-1) (the latter needs f''). The quadratures of 9.11 and 9.12 then
+    /// integrate d and x^n G(x) separately, each with its power in the weight.
+    double tip_exponent = std::numeric_limits<double>::quiet_NaN();
+    std::function<double(double)> tip_free, tip_free_slope;
+    /// false: the quadratures of 9.11-9.13 on this foundation go straight to tanh-sinh, but for the pressure at
+    /// r > 0, whose integrand is analytic on [r, a] whatever the tip (set by
+    /// indentation_to_depth for a profile of unknown tip power whose f' no Gauss-Jacobi rule resolves: a
+    /// tip power other than an integer, a kink, a finite-difference slope).
+    bool gauss_jacobi = true;
   };
 
   /// g(x) (9.2)
@@ -99,8 +119,9 @@ namespace gradcontact::mdr
   };
 
   /// The critical (pull-off) state of an adhesive indentation, found by minimising F_N(a) (force
-  /// control) or d(a) (displacement control) over a in [a_lo, a_hi] (a log-spaced scan, Brent's
-  /// method, then the root of a central-difference derivative), not from 9.48. DomainError when the
+  /// control) or d(a) (displacement control) over a in [a_lo, a_hi] (a log-spaced scan, then the root of
+  /// the slope from g'(a) where the profile has f''; otherwise Brent's method and the root of a
+  /// central-difference derivative), not from 9.48. DomainError when the
   /// minimum lies on the end of the bracket (no critical state inside it). With bracket_shifts > 0 a
   /// minimum on an end first moves the bracket by nine decades toward that end (keeping one decade of
   /// overlap), at most bracket_shifts times.

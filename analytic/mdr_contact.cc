@@ -259,7 +259,7 @@ namespace gradcontact::mdr
     if (!(b > 0.5 * a_) || !profile_.d2f)
       return force_a_ - normal_force(b);
     const auto integrand = [&](const double tau, double, double) { return force_drop_slope(tau); };
-    return detail::integrate_with_distances(integrand, 0., h);
+    return detail::integrate_analytic_with_distances(integrand, 0., h);
   }
 
   double PartialSlip::depth_drop(const double h) const
@@ -270,7 +270,7 @@ namespace gradcontact::mdr
     if (!(b > 0.5 * a_) || !profile_.d2f)
       return depth_a_ - depth(b);
     const auto integrand = [&](const double tau, double, double) { return slope_at_gap(tau); }; // 9.10: d = g(a)
-    return detail::integrate_with_distances(integrand, 0., h);
+    return detail::integrate_analytic_with_distances(integrand, 0., h);
   }
 
   double PartialSlip::pressure_drop(const double h, const double r) const
@@ -290,7 +290,7 @@ namespace gradcontact::mdr
           const double x = a_ - tau;
           return slope_at_gap(tau) * std::pow((b_minus_r + to_h) * (x + r), e);
         };
-        return factor * detail::integrate_with_distances(integrand, 0., h);
+        return factor * detail::integrate_analytic_with_distances(integrand, 0., h);
       }
     // r close below b: v = (x - r)^((1+k)/2) removes the near-singular factor (x - r)^e; the v-interval
     // (a - r)^q - (b - r)^q is formed as (b - r)^q expm1(q log1p(h / (b - r))).
@@ -302,7 +302,7 @@ namespace gradcontact::mdr
       const double tau = h - (x_minus_r - b_minus_r); // a - x
       return equivalent_profile_slope(profile_, k, a_ - tau) * std::pow(2. * r + x_minus_r, e);
     };
-    return factor / q * detail::integrate_with_distances(integrand, 0., span);
+    return factor / q * detail::integrate_analytic_with_distances(integrand, 0., span);
   }
 
   double PartialSlip::gap_for(const double dF) const

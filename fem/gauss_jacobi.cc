@@ -1,12 +1,8 @@
+#include <analytic/detail/gauss_jacobi.h>
 #include <fem/gauss_jacobi.h>
 
 #include <deal.II/base/quadrature_lib.h>
-#include <deal.II/lac/full_matrix.h>
-#include <deal.II/lac/lapack_full_matrix.h>
-#include <deal.II/lac/vector.h>
 
-#include <cmath>
-#include <limits>
 #include <sstream>
 #include <stdexcept>
 
@@ -25,49 +21,14 @@ namespace gradcontact::fem
         throw std::invalid_argument(msg.str());
       }
 
-    // Recurrence of the monic Jacobi polynomials P^{(alpha, beta)} on [-1, 1], weight
-    // (1 - t)^alpha (1 + t)^beta, here alpha = 0 and beta = s so that (1 + t)^s = (2x)^s:
-    //   a_0 = (beta - alpha) / (alpha + beta + 2),
-    //   a_j = (beta^2 - alpha^2) / ((2j + alpha + beta)(2j + alpha + beta + 2)),               j >= 1,
-    //   b_j^2 = 4 j (j + alpha)(j + beta)(j + alpha + beta)
-    //           / ((2j + alpha + beta)^2 (2j + alpha + beta + 1)(2j + alpha + beta - 1)),     j >= 1.
-    const double alpha = 0.0, beta = s;
-    LAPACKFullMatrix<double> J(n_points, n_points);
-    for (unsigned int j = 0; j < n_points; ++j)
-      {
-        const double sum = 2.0 * j + alpha + beta;
-        const double a   = (j == 0) ? (beta - alpha) / (alpha + beta + 2.0) :
-                                      (beta * beta - alpha * alpha) / (sum * (sum + 2.0));
-        J(j, j) = 0.5 * (1.0 + a); // mapped to x = (1 + t)/2: diagonal (1 + a)/2
-        if (j + 1 < n_points)
-          {
-            const double jj  = j + 1.0;
-            const double sj  = 2.0 * jj + alpha + beta;
-            const double b2  = 4.0 * jj * (jj + alpha) * (jj + beta) * (jj + alpha + beta) /
-                              (sj * sj * (sj + 1.0) * (sj - 1.0));
-            const double off = 0.5 * std::sqrt(b2); // off-diagonal scales with the map, too
-            J(j, j + 1)      = off;
-            J(j + 1, j)      = off;
-          }
-      }
-
-    Vector<double>     nodes;
-    FullMatrix<double> vectors;
-    // All eigenvalues lie in (0, 1); ask for a slightly larger interval.
-    J.compute_eigenvalues_symmetric(-0.5, 1.5, 2.0 * std::numeric_limits<double>::min(), nodes,
-                                    vectors);
-    AssertThrow(nodes.size() == n_points,
-                ExcMessage("gauss_jacobi: eigen solver returned " + std::to_string(nodes.size()) +
-                           " of " + std::to_string(n_points) + " nodes"));
-
+    // The shared rule on [0, 1] with weight x^s (1 - x)^0 (analytic/detail/gauss_jacobi.h: Golub-Welsch
+    // nodes polished by Newton's method, Christoffel weights, in long double; header only, no link to the
+    // analytic library).
+    const detail::GaussJacobiRule rule = detail::gauss_jacobi_rule(n_points, 1.0 + s, 1.0);
     std::vector<Point<1>> points(n_points);
-    std::vector<double>   weights(n_points);
-    const double          mu0 = 1.0 / (1.0 + s);
+    std::vector<double>   weights(rule.weight);
     for (unsigned int q = 0; q < n_points; ++q)
-      {
-        points[q][0] = nodes[q];
-        weights[q]   = mu0 * vectors(0, q) * vectors(0, q);
-      }
+      points[q][0] = rule.node[q];
     return Quadrature<1>(points, weights);
   }
 

@@ -2,10 +2,10 @@
 //
 // The n-point rule on [0, 1] with weight x^s, s > -1,
 //     \int_0^1 x^s g(x) dx = \sum_q w_q g(x_q)   exactly for polynomials g of degree <= 2n - 1,
-// built by the Golub-Welsch algorithm: the nodes are the eigenvalues of the symmetric tridiagonal
-// Jacobi matrix of the three-term recurrence of the Jacobi polynomials P^{(0, s)} (mapped from [-1, 1]
-// to [0, 1]), the weights are mu_0 v_{0,q}^2 with mu_0 = \int_0^1 x^s dx = 1 / (1 + s) and v_q the
-// normalised eigenvectors. s = 0 gives Gauss-Legendre.
+// the rule the numerical MDR uses too (analytic/detail/gauss_jacobi.h, header only and free of deal.II:
+// the Golub-Welsch algorithm, nodes polished by Newton's method, Christoffel weights, in long double).
+// Sharing a quadrature rule does not steer the FE model by the closed forms: gradcontact_fem still does
+// not link the analytic library. s = 0 gives Gauss-Legendre.
 //
 // deal.II 9.4 has no Gauss-Jacobi rule with a non-integer exponent (its jacobi_polynomial_roots takes
 // integer alpha, beta), hence this one.
