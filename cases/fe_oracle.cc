@@ -213,6 +213,11 @@ namespace gradcontact::cases
         p.r = *q.r / p.a;
         if (!(std::isfinite(p.r) && p.r >= 0))
           refuse("r = " + check::format(*q.r) + "; valid: [0, inf)");
+        // The tip f ~ r^n makes p(0) infinite unless n + k > 1 (9.30): the cone (n = 1) on k <= 0.
+        const double tip = c == "cone" ? 1. : c == "power_law" ? n : 2.;
+        if (p.quantity == "pressure" && p.r == 0 && c != "flat_punch" && !(tip - 1 + body.k > 0))
+          refuse("r = 0: the pressure of a tip f ~ r^n with n + k = " + check::format(tip + body.k) +
+                 " <= 1 is infinite at the axis; valid: r > 0");
         if (p.quantity == "pressure" && p.r >= 1)
           {
             if (c == "flat_punch" && p.r == 1)

@@ -113,6 +113,12 @@ TEST_CASE("The FE oracle shall refuse what it cannot answer, naming the entry, i
   punch_depth["quantity"] = "depth";
   punch_depth["d"] = 1e-6;
   CHECK_THAT(refused(punch_depth), Contains("depth") && Contains("input d"));
+  json cone_tip = good;
+  cone_tip["case"] = "cone";
+  cone_tip["geometry"] = {{"tan_theta", 0.1}};
+  cone_tip["quantity"] = "pressure";
+  cone_tip["r"] = 0.;
+  CHECK_THAT(refused(cone_tip), Contains("r = 0") && Contains("n + k = 1"));
   CHECK(oracle.states_solved() == 0); // every refusal before any solve
 }
 
