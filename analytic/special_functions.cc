@@ -248,19 +248,25 @@ namespace gradcontact
     throw std::runtime_error("beta_upper: series did not converge (internal error)");
   }
 
-  double incomplete_beta(const double z, const double x, const double y)
+  double incomplete_beta(const double z, const double x, const double y, const double one_minus_z)
   {
     const char *fn = "incomplete_beta";
     check::finite(fn, "x", x);
     check::positive(fn, "y", y);
     check::closed_interval(fn, "z", z, 0., 1.);
-    if (x > 0.)
-      return boost::math::beta(x, y, z);
     if (detail::is_nonpositive_integer(x))
       check::fail(fn, "x", x, "must not be 0, -1, -2, ... (B(z; x, y) has a pole; use beta_upper)");
     if (z == 0.)
-      check::fail(fn, "z", z, "must be > 0 when x < 0 (B(z; x, y) diverges at z = 0)");
-    // 9.21 written as sum_j (1-y)_j / j! t^(x+j) / (x+j) at t = min(z, 1/2), converging like 2^-j.
+      {
+        if (!(x > 0.))
+          check::fail(fn, "z", z, "must be > 0 when x < 0 (B(z; x, y) diverges at z = 0)");
+        return 0.;
+      }
+    // Two series, each converging like 2^-j, in double: Boost's incomplete beta in double loses up to
+    // 1e-13 near z = 1 (where 1 - z is rounded) and B(x, y) - B(1 - z; y, x) cancels log10(1/y) digits as
+    // y -> 0; in long double it costs 1-8 us.
+    // Below 1/2: 9.21 written as sum_j (1-y)_j / j! t^(x+j) / (x+j) at t = min(z, 1/2), positive terms for
+    // y <= 1.
     const double t = std::min(z, 0.5);
     double coefficient = 1., power = std::pow(t, x);
     double lower = power / x;
@@ -277,18 +283,22 @@ namespace gradcontact
       }
     if (z <= 0.5)
       return lower;
-    // int_(1/2)^z t^(x-1) (1-t)^(y-1) dt = sum_j (1-x)_j / j! int_w^(1/2) s^(y+j-1) ds, w = 1 - z,
-    // each power integral formed without cancellation as y -> 0 (power_integral). All terms are
+    // int_(1/2)^z t^(x-1) (1-t)^(y-1) dt = sum_j (1-x)_j / j! int_w^(1/2) s^(y+j-1) ds, w = 1 - z (as the
+    // caller formed it), each power integral (h^m - w^m)/m with the powers carried from term to term; only
+    // the first (m = y, which may be tiny) needs the form without 0/0 (power_integral). All terms are
     // positive for x < 1. (B(x, y) - beta_upper(z, x, y) would cancel ~log10(1/y) digits here.)
-    const double w = 1. - z, L = std::log(0.5 / w);
-    double upper = detail::power_integral(w, 0.5, y, L);
+    const double w = one_minus_z >= 0. ? one_minus_z : 1. - z, h = 0.5, L = std::log(h / w);
+    double upper = detail::power_integral(w, h, y, L);
+    double h_power = std::pow(h, y), w_power = std::pow(w, y);
     coefficient = 1.;
     for (int j = 1; j < detail::max_terms; ++j)
       {
         coefficient *= (j - x) / j;
-        const double term = coefficient * detail::power_integral(w, 0.5, y + j, L);
+        h_power *= h;
+        w_power *= w;
+        const double term = coefficient * (h_power - w_power) / (y + j);
         upper += term;
-        if (std::abs(term) <= detail::eps * std::abs(upper) * 0.5)
+        if (std::abs(term) <= detail::eps * (std::abs(lower) + std::abs(upper)) * 0.5)
           return lower + upper;
       }
     throw std::runtime_error("incomplete_beta: series did not converge (internal error)");
