@@ -1,6 +1,8 @@
-// gradcontact/analytic: the two root searches that the contact-radius and tangential problems share,
-// for the closed forms and the numerical MDR alike. Both use TOMS 748 (Alefeld, Potra and Shi, ACM
-// TOMS 21 (1995) 327-344) to 50 bits on a bracket they build first.
+// gradcontact/analytic: the root searches that the contact-radius and tangential problems share.
+// solve_increasing and stable_branch_root (the numerical MDR) use TOMS 748 (Alefeld, Potra and Shi, ACM
+// TOMS 21 (1995) 327-344) to 50 bits on a bracket they build first; the closed forms' adhesive radii, whose
+// depth and force are two power laws (9.49), take safeguarded Newton steps (stable_branch_root with
+// PowerLawParts), as does solve_from_zero.
 #ifndef GRADCONTACT_ANALYTIC_DETAIL_ROOTS_H
 #define GRADCONTACT_ANALYTIC_DETAIL_ROOTS_H
 
