@@ -340,12 +340,20 @@ namespace gradcontact::batch
         const double target = by_depth ? q.d() : q.F();
         check::finite("contact_radius", by_depth ? "d" : "F", target);
         const jkr::CriticalState c = critical(q, by_depth ? Control::displacement : Control::force);
-        const auto value = [&](const double a) {
+        // d(a) = g(a) - Delta_l(a) and F_N(a) = F(a) - F_punch(a, Delta_l(a)) (9.49): jkr::depth and jkr::force
+        // as their two power laws.
+        const Medium m = q.medium();
+        const double k = m.k, dgamma = q.dgamma();
+        const double n = q.is("paraboloid") || q.is("jkr_paraboloid") ? 2. : closed_power_law(q).n;
+        const auto parts = [&](const double a) {
           return with_shape(q, [&](auto shape) {
-            return by_depth ? jkr::depth(q.medium(), shape, q.dgamma(), a) : jkr::force(q.medium(), shape, q.dgamma(), a);
+            const double dl = jkr::delta_ell(m, dgamma, a);
+            return by_depth ? detail::PowerLawParts{depth(m, shape, a), dl}
+                            : detail::PowerLawParts{force(m, shape, a), force(m, FlatPunch{a}, dl)};
           });
         };
-        return detail::stable_branch_root(value, target, c.radius, by_depth ? c.depth : c.force, by_depth ? "d" : "F");
+        return detail::stable_branch_root(parts, by_depth ? n : n + k + 1., by_depth ? (1. - k) / 2. : (3. + k) / 2.,
+                                          target, c.radius, by_depth ? c.depth : c.force, by_depth ? "d" : "F");
       };
 
       t.numerical_mdr["depth"] = [](const In &q) { return mdr::depth(numeric_indentation(q, q.dgamma())); };

@@ -43,33 +43,48 @@ namespace gradcontact
            (pi * tgamma(2. + k));
   }
 
-  double h_N(const double k, const double nu)
+  namespace
   {
-    // 9.5. cos(k pi/2) and sin(beta pi/2) through cos_pi/sin_pi, which keep their relative
-    // accuracy where they vanish (k -> -1 makes both factors small, h_N ~ pi (1-nu) (1+k)^2).
-    const double b = beta(k, nu);
-    using boost::math::tgamma;
-    return 2. * (1. + k) * boost::math::cos_pi(k / 2.) * tgamma(1. + k / 2.) /
-           (root_pi * C(k, nu) * b * boost::math::sin_pi(b / 2.) * tgamma((1. + k) / 2.));
-  }
+    // The factors h_N (9.5) and h_T (9.79) share: beta, C, cos(k pi/2), sin(beta pi/2) and Gamma(1 + k/2),
+    // formed once when a medium needs both. cos(k pi/2) and sin(beta pi/2) through cos_pi/sin_pi, which
+    // keep their relative accuracy where they vanish (k -> -1 makes both factors small,
+    // h_N ~ pi (1-nu) (1+k)^2).
+    struct SharedFactors
+    {
+      double b, C, cos_k, sin_b, gamma_k;
+    };
 
-  double h_T(const double k, const double nu)
-  {
-    // 9.79
-    const double b = beta(k, nu);
-    using boost::math::tgamma;
-    const double g = tgamma(1. + k / 2.);
-    return 2. * b * boost::math::cos_pi(k / 2.) * g /
-           ((1. - nu * nu) * root_pi * C(k, nu) * boost::math::sin_pi(b / 2.) *
-              tgamma((3. + k) / 2.) +
-            b * (1. + nu) * g);
-  }
+    SharedFactors shared_factors(const double k, const double nu)
+    {
+      const double b = beta(k, nu);
+      return {b, C(k, nu), boost::math::cos_pi(k / 2.), boost::math::sin_pi(b / 2.),
+              boost::math::tgamma(1. + k / 2.)};
+    }
+
+    double h_N(const double k, const SharedFactors &f)
+    {
+      return 2. * (1. + k) * f.cos_k * f.gamma_k /
+             (root_pi * f.C * f.b * f.sin_b * boost::math::tgamma((1. + k) / 2.)); // 9.5
+    }
+
+    double h_T(const double k, const double nu, const SharedFactors &f)
+    {
+      return 2. * f.b * f.cos_k * f.gamma_k /
+             ((1. - nu * nu) * root_pi * f.C * f.sin_b * boost::math::tgamma((3. + k) / 2.) +
+              f.b * (1. + nu) * f.gamma_k); // 9.79
+    }
+  } // namespace
+
+  double h_N(const double k, const double nu) { return h_N(k, shared_factors(k, nu)); }
+
+  double h_T(const double k, const double nu) { return h_T(k, nu, shared_factors(k, nu)); }
 
   Medium medium(const GradedHalfSpace &body)
   {
     validate("medium", body);
-    const double nu = body.nu;
-    return {body.k, body.c0, h_N(body.k, nu) * body.E0 / (1. - nu * nu), h_T(body.k, nu) * body.E0};
+    const double k = body.k, nu = body.nu;
+    const SharedFactors f = shared_factors(k, nu);
+    return {k, body.c0, h_N(k, f) * body.E0 / (1. - nu * nu), h_T(k, nu, f) * body.E0};
   }
 
   Medium medium(const GradedHalfSpace &body1, const GradedHalfSpace &body2)
@@ -84,12 +99,15 @@ namespace gradcontact
       check::fail("medium", "c0 of body 2", body2.c0,
                   "must equal c0 of body 1 (" + check::format(body1.c0) + ")");
     const double k = body1.k;
-    const auto compliance_N = [k](const GradedHalfSpace &b) {
-      return (1. - b.nu * b.nu) / (h_N(k, b.nu) * b.E0);
+    const SharedFactors f1 = shared_factors(k, body1.nu), f2 = shared_factors(k, body2.nu);
+    const auto compliance_N = [k](const GradedHalfSpace &b, const SharedFactors &f) {
+      return (1. - b.nu * b.nu) / (h_N(k, f) * b.E0);
     };
-    const auto compliance_T = [k](const GradedHalfSpace &b) { return 1. / (h_T(k, b.nu) * b.E0); };
-    return {k, body1.c0, 1. / (compliance_N(body1) + compliance_N(body2)),
-            1. / (compliance_T(body1) + compliance_T(body2))};
+    const auto compliance_T = [k](const GradedHalfSpace &b, const SharedFactors &f) {
+      return 1. / (h_T(k, b.nu, f) * b.E0);
+    };
+    return {k, body1.c0, 1. / (compliance_N(body1, f1) + compliance_N(body2, f2)),
+            1. / (compliance_T(body1, f1) + compliance_T(body2, f2))};
   }
 
   void validate(const char *function, const Medium &m)

@@ -14,9 +14,9 @@ namespace gradcontact
   {
     constexpr double pi = boost::math::constants::pi<double>();
 
-    // The beta functions are evaluated in long double (Boost's promotion policy, off by default in this
-    // project): in double the incomplete beta near z -> 1 and kappa (whose difference from 1 the
-    // displacement near the edge takes) lose up to 1e-13 (measured on the references).
+    // kappa's beta function is evaluated in long double (Boost's promotion policy, off by default in this
+    // project): in double kappa, whose difference from 1 the displacement near the edge takes as k -> 1,
+    // loses up to 1e-13 (measured on the references).
     using promoted = boost::math::policies::policy<boost::math::policies::promote_double<true>>;
 
     // a^2 - r^2 without cancellation near the contact edge.
@@ -29,19 +29,11 @@ namespace gradcontact
     // cos(k pi/2) / pi, the prefactor of every surface displacement outside the contact (9.12).
     double outer_factor(const double k) { return boost::math::cos_pi(k / 2.) / pi; }
 
-    // B(a^2/r^2; x, y) for r > a, the incomplete beta of every displacement outside the contact.
-    // With z = a^2/r^2 and w = 1 - z = (r-a)(r+a)/r^2 (formed without cancellation), rounding z costs
-    // the absolute error z^x w^(y-1) eps in B(z; x, y) (the integrand at z times eps z), while the
-    // complement B(x, y) - B(w; y, x) costs B(x, y) eps: take the form with the smaller error
-    // (near the edge the complement, far out the direct form, whose value is then tiny).
+    // B(a^2/r^2; x, y) for r > a, the incomplete beta of every displacement outside the contact, with
+    // w = 1 - z = (r-a)(r+a)/r^2 formed without cancellation: near the edge (z > 1/2) only w enters.
     double outer_beta(const double x, const double y, const double a, const double r)
     {
-      const double z = (a / r) * (a / r);
-      const double w = (r - a) * (r + a) / (r * r);
-      const double complete = boost::math::beta(x, y, promoted());
-      if (std::pow(z, x) * std::pow(w, y - 1.) <= complete)
-        return boost::math::beta(x, y, z, promoted());
-      return complete - boost::math::beta(y, x, w, promoted());
+      return incomplete_beta((a / r) * (a / r), x, y, (r - a) * (r + a) / (r * r));
     }
 
     // B(a^2/r^2; (1+k)/2, (1-k)/2): w outside a flat punch of unit depth, times pi / cos(k pi/2).
@@ -63,7 +55,17 @@ namespace gradcontact
   {
     check::positive("kappa", "n", n);
     check::open_interval("kappa", "k", k, -1., 1.);
-    return n / 2. * boost::math::beta(n / 2., (1. + k) / 2., promoted());
+    // The long double beta costs about 1 us, and n and k stay the same over the calls of a prepared
+    // request or of a root search for the contact radius: the last value is kept, per thread.
+    struct Last
+    {
+      double n, k, kappa;
+    };
+    thread_local Last last{std::nan(""), std::nan(""), 0.};
+    if (n == last.n && k == last.k)
+      return last.kappa;
+    last = {n, k, n / 2. * boost::math::beta(n / 2., (1. + k) / 2., promoted())};
+    return last.kappa;
   }
 
   PowerLaw as_power_law(const Cone &cone)

@@ -15,7 +15,9 @@
 namespace gradcontact
 {
   /// B(z; x, y) for 0 <= z <= 1, y > 0, and x > 0 or x < 0 not an integer (9.17, 9.21).
-  double incomplete_beta(double z, double x, double y);
+  /// one_minus_z, when given (>= 0), is 1 - z formed by the caller without cancellation (e.g.
+  /// (r-a)(r+a)/r^2 for z = a^2/r^2): above z = 1/2 only it is used.
+  double incomplete_beta(double z, double x, double y, double one_minus_z = -1.);
 
   /// int_z^1 t^(x-1) (1-t)^(y-1) dt for 0 < z <= 1 (z = 0 allowed when x > 0), y > 0, any real x.
   /// one_minus_z, when given (>= 0), is 1 - z formed by the caller without cancellation (e.g.

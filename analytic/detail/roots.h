@@ -1,6 +1,8 @@
-// gradcontact/analytic: the two root searches that the contact-radius and tangential problems share,
-// for the closed forms and the numerical MDR alike. Both use TOMS 748 (Alefeld, Potra and Shi, ACM
-// TOMS 21 (1995) 327-344) to 50 bits on a bracket they build first.
+// gradcontact/analytic: the root searches that the contact-radius and tangential problems share.
+// solve_increasing and stable_branch_root (the numerical MDR) use TOMS 748 (Alefeld, Potra and Shi, ACM
+// TOMS 21 (1995) 327-344) to 50 bits on a bracket they build first; the closed forms' adhesive radii, whose
+// depth and force are two power laws (9.49), take safeguarded Newton steps (stable_branch_root with
+// PowerLawParts), as does solve_from_zero.
 #ifndef GRADCONTACT_ANALYTIC_DETAIL_ROOTS_H
 #define GRADCONTACT_ANALYTIC_DETAIL_ROOTS_H
 
@@ -61,6 +63,63 @@ namespace gradcontact::detail
                                                         value_c - target, value(hi) - target,
                                                         boost::math::tools::eps_tolerance<double>(50), iterations);
     return 0.5 * (root.first + root.second);
+  }
+
+  /// The two power laws of an adhesive depth or force (9.49): value(a) = P(a) - N(a), the non-adhesive part
+  /// P ~ a^p minus the flat-punch part N ~ a^q (p = n, q = (1-k)/2 for the depth; p = n + k + 1,
+  /// q = (3+k)/2 for the force), p > q > 0 where a critical state exists (2n + k - 1 > 0).
+  struct PowerLawParts
+  {
+    double P, N;
+  };
+
+  /// stable_branch_root for value = P - N of two power laws (parts(a) returns both): Newton's method on
+  /// the slope (p P - q N)/a (on log value against log a where the value is above half the target), kept inside a
+  /// bracket that bisection narrows whenever a step leaves it, to a step of 4 eps relative to a. It starts from a bound the power laws give: with the minimum at a_c,
+  /// value = 0 at a_0 = a_c (p/q)^(1/(p-q)), and for a target > 0 the root lies above the a where P alone
+  /// reaches it (N > 0). Some 5-8 evaluations where the bracketing search of stable_branch_root takes 15-25.
+  inline double stable_branch_root(const std::function<PowerLawParts(double)> &parts, const double p,
+                                   const double q, const double target, const double ac, const double value_c,
+                                   const char *name)
+  {
+    if (target < value_c)
+      check::fail("contact_radius", name, target,
+                  "is below its critical value " + check::format(value_c) + ": no adhesive equilibrium");
+    if (target == value_c)
+      return ac;
+    constexpr double eps = std::numeric_limits<double>::epsilon();
+    double lo = ac, hi = std::numeric_limits<double>::infinity();
+    const double a0 = ac * std::pow(p / q, 1. / (p - q));
+    double a = a0;
+    if (target > 0.)
+      {
+        // P(a) = target + N(a) > target + N(a_0) = target + P(a_0) at the root
+        const PowerLawParts at_zero = parts(a0);
+        lo = a0;
+        a = a0 * std::pow(1. + target / at_zero.P, 1. / p);
+      }
+    for (int i = 0; i < 200; ++i)
+      {
+        const PowerLawParts v = parts(a);
+        const double residual = (v.P - v.N) - target;
+        if (residual == 0.)
+          return a;
+        (residual < 0. ? lo : hi) = a;
+        // Newton's step on log(value) against log(a) where both are positive (exact for P alone, so
+        // that far above a_c one or two steps do), else on value against a; a dvalue/da = p P - q N.
+        const double value = v.P - v.N, slope = p * v.P - q * v.N;
+        double next = target > 0. && value > 0.5 * target ? a * std::exp(-std::log(value / target) * value / slope)
+                                                          : a - residual * a / slope;
+        // converged: tested before the bracket, which a step of a rounding error may leave
+        if (std::abs(next - a) <= 4. * eps * a)
+          return next;
+        if (!(next > lo && next < hi))
+          next = std::isinf(hi) ? 2. * a : 0.5 * (lo + hi);
+        if (!std::isinf(hi) && hi - lo <= 4. * eps * hi)
+          return next;
+        a = next;
+      }
+    return a;
   }
 
   /// The h in [0, upper] with increasing(h) = target, for a function that rises from increasing(0) = 0 with
