@@ -54,6 +54,7 @@ namespace gradcontact::cases
       double worst_error = 0.;
       std::size_t rows = 0;
       std::size_t refused = 0; // rows the method refuses with an explicit message
+      std::string first_refusal; // the message of the first row the method refused to parse
     };
 
     Options parse(const std::vector<std::string> &args)
@@ -126,8 +127,9 @@ namespace gradcontact::cases
           json row = json::parse(line);
           const std::string key = row["case"].get<std::string>() + "/" + row["quantity"].get<std::string>();
           const double reference = std::stod(row["reference"].get<std::string>());
-          row.erase("reference");
-          row.erase("group");
+          // the table's own columns, not inputs of the request
+          for (const char *column : {"reference", "group", "conditioning"})
+            row.erase(column);
           families[key].requests.push_back(row.dump());
           families[key].references.push_back(reference);
         }
@@ -152,9 +154,11 @@ namespace gradcontact::cases
               requests.push_back(batch::prepare(batch::parse(q)));
               references.push_back(f.references[i]);
             }
-          catch (const std::exception &)
+          catch (const std::exception &e)
             {
               ++not_available; // the method has no path for this quantity
+              if (t.first_refusal.empty())
+                t.first_refusal = e.what();
             }
         }
       if (requests.empty())
@@ -261,6 +265,10 @@ namespace gradcontact::cases
       for (const auto &entry : families)
         {
           const Timing closed = measure(entry.second, "closed_form", 1, o.repeat);
+          // Every row of the table has a closed form: a family that parses to nothing times nothing.
+          if (closed.rows == 0)
+            throw std::runtime_error("bench: no row of " + entry.first + " (" + std::to_string(entry.second.requests.size()) +
+                                     " in the table) was evaluated by its closed form: " + closed.first_refusal);
           Timing numeric = measure(entry.second, "numerical_mdr", o.numerical_stride, 1);
           const bool has_numeric = numeric.rows > 0;
           std::cerr << entry.first << ": closed " << fmt(closed.min * 1e9) << " ns, error " << fmt(closed.worst_error)
