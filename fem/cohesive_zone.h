@@ -25,7 +25,7 @@
 // across its window, then `zone_refinements` levels toward p) and g is taken at p, where it is accurate: the zone
 // end is the root of G(p) = g_{mesh(p)}(p), found from a first mesh without refinement by the root on the mesh
 // refined toward its c, then secants, until |G(p)| <= `zone_tolerance` h_0 (measured at k = 0.5, lambda = 10,
-// a = a_JKR: F within 4e-5 of JKR, the windows 3e-4..1e-2 (c - a) and 16..64 cells within 8e-5 of each other;
+// a = a_JKR: F within 7e-5 of JKR, the windows 3e-4..1e-2 (c - a) and 16..64 cells within 8e-5 of each other;
 // one mesh per p without the mean moved F by 5e-3).
 //
 // The path. The states are parametrised by a (Maugis' path following: F(a) and d(a) are single-valued along
