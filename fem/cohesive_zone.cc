@@ -19,6 +19,9 @@ namespace gradcontact::fem
     /// Slack of the gap checks, relative to h_0 (round-off of the root and of the back-substitutions).
     constexpr double gap_slack = 1e-6;
 
+    /// Points on each side of c in the mean of the gap over its window (CohesiveParameters::gap_window).
+    constexpr unsigned int gap_samples = 32;
+
     /// The zone does not end within max_zone_ratio a: the contact has all but vanished (critical_state reads it so).
     struct ZoneBeyondReach : std::runtime_error
     {
@@ -49,6 +52,10 @@ namespace gradcontact::fem
   {
     if (zone_refinements > 30)
       fail("CohesiveParameters", "zone_refinements", zone_refinements, "[0, 30]");
+    if (!(gap_window > 0 && gap_window <= 0.1))
+      fail("CohesiveParameters", "gap_window", gap_window, "(0, 0.1]");
+    if (zone_cells < 1 || zone_cells > 1024)
+      fail("CohesiveParameters", "zone_cells", zone_cells, "[1, 1024]");
     if (!(zone_tolerance > 0 && zone_tolerance < 1))
       fail("CohesiveParameters", "zone_tolerance", zone_tolerance, "(0, 1)");
     if (!(near_field_margin >= 1.2 && near_field_margin <= 100))
@@ -97,8 +104,8 @@ namespace gradcontact::fem
 
 
 
-  CohesiveState CohesiveContact::solve_on_mesh(const double a, const double c_hint, const std::vector<double> &refine_at,
-                                               double &c_found)
+  CohesiveState CohesiveContact::solve_on_mesh(const double a, const double c_hint, const bool refined, double &c_found,
+                                               double &g_hint)
   {
     const auto start = std::chrono::steady_clock::now();
     Settings   s     = settings(a);
@@ -115,8 +122,14 @@ namespace gradcontact::fem
       }
     const double       reach = 0.9 * s.mesh.near_field_size * a; // the zone must end inside the near field
     SurfaceRefinement  refinement;
-    if (!refine_at.empty() && parameters.zone_refinements > 0)
-      refinement = {refine_at, parameters.zone_refinements};
+    if (refined)
+      {
+        // Toward c (the traction jump), and its gap window resolved by zone_cells cells.
+        const double delta = parameters.gap_window * (c_hint - a);
+        refinement.radii   = {c_hint};
+        refinement.levels  = parameters.zone_refinements;
+        refinement.intervals.push_back({c_hint - delta, c_hint + delta, parameters.zone_cells});
+      }
     AxisymmetricSolver solver(material, s.mesh, s.discretization, refinement);
 
     const double h0 = law.range();
@@ -129,17 +142,41 @@ namespace gradcontact::fem
     state.meshes = 1;
     state.n_dofs = solver.n_dofs();
     Result last;
+    // The gap at c, h(c) = f(c) - d + w(c), as its mean over [c - delta, c + delta] (trapezoidal rule on
+    // 2 gap_samples + 1 points): near the traction jump at c the gap opens like sign(r - c) |r - c|^{1-k}
+    // (k = 0: (r - c) ln|r - c|), whose FE value at c itself converges only like (cell width)^{1-k}, a few 1e-3 h_0
+    // on the soft surface of k = 0.5 even with cells of 1e-10 c - a; the mean cancels the odd term, and what remains
+    // is the even part, O((delta / (c - a))^2) (measured at k = 0.5, lambda = 10: the mean moves by 6e-5 h_0 from
+    // delta = 1e-2 to 1e-3 (c - a), the point value by 1e-3 h_0 between two meshes).
+    const auto mean_gap = [&](const Result &r) {
+      // The first 2 gap_samples + 1 samples of r are the window's (window() below), in order.
+      const auto h   = [&](const unsigned int i) {
+        return profile(r.displacement[i].r, a) - r.depth + r.displacement[i].value;
+      };
+      double sum = 0.5 * (h(0) + h(2 * gap_samples));
+      for (unsigned int i = 1; i < 2 * gap_samples; ++i)
+        sum += h(i);
+      return sum / (2 * gap_samples);
+    };
+    const auto window = [&](const double c) {
+      OutputRequest out;
+      const double  delta = parameters.gap_window * (c - a);
+      for (unsigned int i = 0; i <= 2 * gap_samples; ++i)
+        out.displacement_radii.push_back(c - delta + i * delta / gap_samples);
+      return out;
+    };
     const auto g = [&](const double c) {
       load.cohesion.radius = c;
-      OutputRequest out;
-      out.displacement_radii = {c};
-      last                   = solver.run(load, out);
+      last                 = solver.run(load, window(c));
       ++state.zone_solves;
-      return profile(c, a) - last.depth + last.displacement.front().value - h0;
+      return mean_gap(last) - h0;
     };
 
     // Bracket: g(a) = -h_0; step c - a up from the hint until g > 0.
+    g_hint = std::numeric_limits<double>::quiet_NaN();
     double hi = std::max(c_hint, a * 1.01), g_hi = g(hi);
+    if (hi == c_hint)
+      g_hint = g_hi / h0;
     while (g_hi < 0)
       {
         if (hi >= reach)
@@ -154,38 +191,42 @@ namespace gradcontact::fem
     if (hi > c_hint * 1.0000001 && c_hint > a * (1 + 1e-9))
       {
         // The hint was too small: it is the better lower end.
-        const double g_hint = g(c_hint);
-        if (g_hint < 0)
-          lo = c_hint, g_lo = g_hint;
+        const double g_at_hint = g(c_hint);
+        g_hint                 = g_at_hint / h0;
+        if (g_at_hint < 0)
+          lo = c_hint, g_lo = g_at_hint;
       }
     std::uintmax_t iterations = 60;
     const auto     root       = boost::math::tools::toms748_solve(g, lo, hi, g_lo, g_hi,
                                                                   boost::math::tools::eps_tolerance<double>(40), iterations);
     c_found = 0.5 * (root.first + root.second);
 
-    // The state at c with its samples: the gap inside the zone and beyond it.
-    load.cohesion.radius = c_found;
-    OutputRequest out;
+    // The state at its zone end (on a refined mesh the point it is refined toward, where h(c) is accurate) with
+    // its samples: the gap inside the zone and beyond it.
+    const double c = refined ? c_hint : c_found;
+    load.cohesion.radius = c;
+    OutputRequest out = window(c);
     const std::vector<double> inside{0.25, 0.5, 0.75}, beyond{1.05, 1.3, 1.6};
     for (const double t : inside)
-      out.displacement_radii.push_back(a + t * (c_found - a));
+      out.displacement_radii.push_back(a + t * (c - a));
     for (const double t : beyond)
-      if (t * c_found < reach)
-        out.displacement_radii.push_back(t * c_found);
-    out.displacement_radii.push_back(c_found);
+      if (t * c < reach)
+        out.displacement_radii.push_back(t * c);
+    out.displacement_radii.push_back(c);
     last = solver.run(load, out);
     ++state.zone_solves;
-    state.zone_radius = c_found;
+    state.zone_radius = c;
     state.depth       = last.depth;
     state.force       = last.force;
     std::ostringstream msg;
     msg << last.message;
     for (const Sample &w : last.displacement)
+      if (std::abs(w.r - c) > parameters.gap_window * (c - a) * (1 + 1e-9)) // the window's gap is the mean
       {
         const double h = profile(w.r, a) - last.depth + w.value;
-        if (w.r < c_found && (h < -gap_slack * h0 || h > h0 * (1 + gap_slack)))
+        if (w.r < c && (h < -gap_slack * h0 || h > h0 * (1 + gap_slack)))
           msg << "gap " << h / h0 << " h_0 inside the cohesive zone at r = " << w.r << "; ";
-        if (w.r > c_found && h < h0 * (1 - gap_slack))
+        if (w.r > c && h < h0 * (1 - gap_slack))
           msg << "gap " << h / h0 << " h_0 < h_0 beyond the cohesive zone at r = " << w.r << "; ";
       }
     state.message    = msg.str();
@@ -204,26 +245,18 @@ namespace gradcontact::fem
       if (std::abs(r - a) <= 1e-12 * a)
         return s;
 
-    double ratio = predicted_zone_ratio(a);
-    double hint  = std::isnan(ratio) ? 2 * a : ratio * a;
+    const double  ratio   = predicted_zone_ratio(a);
+    double        hint    = std::isnan(ratio) ? 2 * a : ratio * a;
+    bool          refined = !std::isnan(ratio); // a first pass without refinement finds c
     CohesiveState total;
-    double        c = 0;
-    bool          refined = std::isnan(ratio) ? false : true; // a first pass without refinement finds c
-    std::vector<double> found; // the zone ends of the meshes so far
-    for (unsigned int pass = 0; pass < 12; ++pass)
+    double        c = 0, g = 0;
+    // The root of G(p) = g_{mesh(p)}(p) (header): the first step is the root of g on the mesh, then secants through
+    // the last two points (the mesh's own root is off by its resolution away from p).
+    double p_previous = std::numeric_limits<double>::quiet_NaN(), g_previous = 0;
+    CohesiveState previous; // the state at p_previous
+    for (unsigned int pass = 0; pass < 16; ++pass)
       {
-        // Refined toward the hint and the zone ends of the last two meshes: a c that alternates between two places
-        // finds both resolved.
-        std::vector<double> refine_at;
-        if (refined)
-          {
-            refine_at.push_back(hint);
-            for (std::size_t j = found.size() >= 2 ? found.size() - 2 : 0; j < found.size(); ++j)
-              refine_at.push_back(found[j]);
-          }
-        CohesiveState s = solve_on_mesh(a, hint, refine_at, c);
-        if (std::isfinite(c))
-          found.push_back(c);
+        CohesiveState s = solve_on_mesh(a, hint, refined, c, g);
         s.meshes += total.meshes;
         s.zone_solves += total.zone_solves;
         s.seconds += total.seconds;
@@ -240,18 +273,40 @@ namespace gradcontact::fem
               }
             continue;
           }
-        // A zone thinner than the mesh's own resolution of its width (c - a below about 1e-3 c) is settled when c
-        // moves by less than 1e-6 c.
-        const bool settled =
-          refined && std::abs(c - hint) <= std::max(parameters.zone_tolerance * (c - a), 1e-6 * c);
-        if (settled || parameters.zone_refinements == 0)
+        if (parameters.zone_refinements == 0)
           return solved.emplace(a, total).first->second;
+        // The root between the last two points: d, F and c interpolated linearly in G (their FE states are on two
+        // meshes), so that F(a) is smooth where its minimum is flat (k = 0, lambda = 0.5: a_c moved by 9e-3 with the
+        // state at p itself); a first refined mesh stands alone only within 1 % of the tolerance.
+        if (refined && std::abs(g) <= parameters.zone_tolerance &&
+            (!std::isnan(p_previous) || std::abs(g) <= 1e-2 * parameters.zone_tolerance))
+          {
+            const double t = std::isnan(p_previous) ? 0 : g / (g - g_previous);
+            if (std::isfinite(t) && std::abs(t) <= 1)
+              {
+                total.zone_radius += t * (previous.zone_radius - total.zone_radius);
+                total.depth += t * (previous.depth - total.depth);
+                total.force += t * (previous.force - total.force);
+              }
+            return solved.emplace(a, total).first->second;
+          }
+        double next = c;
+        if (refined && !std::isnan(p_previous) && g != g_previous)
+          {
+            const double secant = hint - g * (hint - p_previous) / (g - g_previous);
+            // Kept within the distance of the last two points and the mesh's root from the hint.
+            const double span = 2 * std::max(std::abs(hint - p_previous), std::abs(c - hint));
+            if (std::isfinite(secant) && secant > a && std::abs(secant - hint) <= span)
+              next = secant;
+          }
+        if (refined)
+          p_previous = hint, g_previous = g, previous = s;
         refined = true;
-        hint    = c;
+        hint    = next;
       }
     std::ostringstream msg;
     msg << "CohesiveContact: the end of the cohesive zone did not settle at a = " << a << " after " << total.meshes
-        << " meshes (last c = " << c << ")";
+        << " meshes (last c = " << c << ", h(c) / h_0 - 1 = " << g << ")";
     throw std::runtime_error(msg.str());
   }
 

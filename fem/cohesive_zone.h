@@ -14,10 +14,19 @@
 // a, the Maugis condition that the stress is finite there. The zone's end c is the root of
 //   g(c) = h(c) - h_0 = f(c) - d(c) + w(c; c) - h_0,
 // g(a) = -h_0 < 0; c is not a node: the tension is integrated exactly on the faces split at c
-// (fem/surface_trace.h), and the surface is refined toward c (SurfaceRefinement) on a second mesh built
-// for the c the first one found, repeated until c moves by less than `zone_tolerance` of c - a (or 1e-6 c). Each
-// evaluation of g is two back-substitutions with the factorisation of the mesh. The force is that of the
-// contact pressure minus pi c^2 sigma_0.
+// (fem/surface_trace.h). Each evaluation of g is two back-substitutions with the factorisation of the mesh. The
+// force is that of the contact pressure minus pi c^2 sigma_0.
+//
+// The zone end. At the traction jump the gap opens like sign(r - c) |r - c|^{1-k} (k = 0: (r - c) ln|r - c|): on
+// the soft surface of k > 0 the FE gap at the point c converges only like (cell width)^{1-k}, and a zone much
+// thinner than the cells at the contact edge (k = 0.5, lambda = 10: c - a = 2e-5 a against cells of 1e-5 a) turns
+// that into errors of several 1e-3 in F. So h(c) is the mean gap over the window c +- `gap_window` (c - a), where
+// the odd term cancels, and each refined mesh is refined toward one point p (SurfaceRefinement: `zone_cells` cells
+// across its window, then `zone_refinements` levels toward p) and g is taken at p, where it is accurate: the zone
+// end is the root of G(p) = g_{mesh(p)}(p), found from a first mesh without refinement by the root on the mesh
+// refined toward its c, then secants, until |G(p)| <= `zone_tolerance` h_0 (measured at k = 0.5, lambda = 10,
+// a = a_JKR: F within 7e-5 of JKR, the windows 3e-4..1e-2 (c - a) and 16..64 cells within 8e-5 of each other;
+// one mesh per p without the mean moved F by 5e-3).
 //
 // The path. The states are parametrised by a (Maugis' path following: F(a) and d(a) are single-valued along
 // it, through the force- and displacement-controlled instabilities, where F(d) is not). Pull-off under force
@@ -54,7 +63,9 @@ namespace gradcontact::fem
   struct CohesiveParameters
   {
     unsigned int zone_refinements = 8;    ///< SurfaceRefinement levels toward c
-    double       zone_tolerance   = 1e-3; ///< accepted move of c between two meshes, relative to c - a (or 1e-6 c)
+    double       gap_window       = 1e-3; ///< h(c) is the mean gap over c +- gap_window (c - a)
+    unsigned int zone_cells       = 32;   ///< surface cells across that window (at least)
+    double       zone_tolerance   = 1e-4; ///< accepted |h(c) / h_0 - 1| on the mesh refined toward c
     double       near_field_margin = 2.0; ///< the near field reaches at least this times c
     double       radius_tolerance = 1e-4; ///< relative accuracy of the critical radius (Brent in ln a)
     double       stencil_ratio    = 1.25; ///< first step of the bracketing walk (then growing by the golden ratio)
@@ -104,8 +115,9 @@ namespace gradcontact::fem
     const std::map<double, CohesiveState> &states() const { return solved; }
 
   private:
-    /// The zone end on one mesh refined toward `refine_at` (none: not refined); the search starts at c_hint.
-    CohesiveState solve_on_mesh(double a, double c_hint, const std::vector<double> &refine_at, double &c_found);
+    /// One mesh, refined toward c_hint when `refined`: the root c_found of g (searched from c_hint), g(c_hint) / h_0
+    /// (NaN when not evaluated), and the state at c_hint (refined) or at c_found (not refined).
+    CohesiveState solve_on_mesh(double a, double c_hint, bool refined, double &c_found, double &g_hint);
     double        predicted_zone_ratio(double a) const;
 
     const Material                   material;

@@ -558,6 +558,41 @@ namespace gradcontact::fem
   }
 
 
+  namespace
+  {
+    /// The bounding box of a cell in (r, z).
+    struct Box
+    {
+      double r0, r1, z0;
+      double width() const { return r1 - r0; }
+    };
+
+    Box bounding_box(const Triangulation<2>::active_cell_iterator &cell)
+    {
+      Box b{std::numeric_limits<double>::max(), -std::numeric_limits<double>::max(), std::numeric_limits<double>::max()};
+      for (const unsigned int v : cell->vertex_indices())
+        {
+          b.r0 = std::min(b.r0, cell->vertex(v)[0]);
+          b.r1 = std::max(b.r1, cell->vertex(v)[0]);
+          b.z0 = std::min(b.z0, cell->vertex(v)[1]);
+        }
+      return b;
+    }
+
+    /// A thin cell (the surface layer) is split along its long side only: isotropic splits would double the layers
+    /// of its column at every level. The refinement case is in the cell's own coordinates (gmsh cells are not
+    /// aligned with r, z).
+    void flag_for_surface_refinement(const Triangulation<2>::active_cell_iterator &cell)
+    {
+      const double e0 = cell->extent_in_direction(0), e1 = cell->extent_in_direction(1);
+      if (std::min(e0, e1) < 0.5 * std::max(e0, e1))
+        cell->set_refine_flag(e0 > e1 ? RefinementCase<2>::cut_x : RefinementCase<2>::cut_y);
+      else
+        cell->set_refine_flag(RefinementCase<2>::isotropic_refinement);
+    }
+  } // namespace
+
+
   void refine_toward_surface_points(const SurfaceRefinement &refinement, Triangulation<2> &tria)
   {
     if (refinement.levels > 30)
@@ -565,30 +600,46 @@ namespace gradcontact::fem
     for (const double c : refinement.radii)
       if (!(c > 0) || !std::isfinite(c))
         fail("SurfaceRefinement", "radius", c, "(0, inf)");
+    for (const SurfaceInterval &interval : refinement.intervals)
+      {
+        if (!(interval.r0 >= 0) || !std::isfinite(interval.r0))
+          fail("SurfaceRefinement", "interval start r0", interval.r0, "[0, inf)");
+        if (!(interval.r1 > interval.r0) || !std::isfinite(interval.r1))
+          fail("SurfaceRefinement", "interval end r1", interval.r1, "(r0, inf) with r0 = " + std::to_string(interval.r0));
+        if (interval.cells < 1 || interval.cells > 1024)
+          fail("SurfaceRefinement", "interval cells", interval.cells, "[1, 1024]");
+      }
+    // The intervals: every surface cell (and the cells of its column within one width of the surface) that overlaps
+    // one is split until it is at most (r1 - r0) / cells wide. Each round halves them; 40 rounds span 1e12.
+    for (unsigned int round = 0; round < 40 && !refinement.intervals.empty(); ++round)
+      {
+        bool flagged = false;
+        for (const auto &cell : tria.active_cell_iterators())
+          {
+            const Box b = bounding_box(cell);
+            for (const SurfaceInterval &interval : refinement.intervals)
+              if (b.r1 > interval.r0 && b.r0 < interval.r1 && b.z0 <= b.width() &&
+                  b.width() > (interval.r1 - interval.r0) / interval.cells)
+                {
+                  flag_for_surface_refinement(cell);
+                  flagged = true;
+                  break;
+                }
+          }
+        if (!flagged)
+          break;
+        tria.execute_coarsening_and_refinement();
+      }
+    // The points: each level splits the cells within one cell width of one.
     for (unsigned int level = 0; level < refinement.levels; ++level)
       {
         for (const auto &cell : tria.active_cell_iterators())
           {
-            double r0 = std::numeric_limits<double>::max(), r1 = -r0, z0 = r0, z1 = -r0;
-            for (const unsigned int v : cell->vertex_indices())
-              {
-                r0 = std::min(r0, cell->vertex(v)[0]);
-                r1 = std::max(r1, cell->vertex(v)[0]);
-                z0 = std::min(z0, cell->vertex(v)[1]);
-                z1 = std::max(z1, cell->vertex(v)[1]);
-              }
-            const double width = r1 - r0;
+            const Box b = bounding_box(cell);
             for (const double c : refinement.radii)
-              if (std::max({0.0, r0 - c, c - r1}) <= width && z0 <= width)
+              if (std::max({0.0, b.r0 - c, c - b.r1}) <= b.width() && b.z0 <= b.width())
                 {
-                  // A thin cell (the surface layer) is split along its long side only: isotropic
-                  // splits would double the layers of its column at every level. The refinement case
-                  // is in the cell's own coordinates (gmsh cells are not aligned with r, z).
-                  const double e0 = cell->extent_in_direction(0), e1 = cell->extent_in_direction(1);
-                  if (std::min(e0, e1) < 0.5 * std::max(e0, e1))
-                    cell->set_refine_flag(e0 > e1 ? RefinementCase<2>::cut_x : RefinementCase<2>::cut_y);
-                  else
-                    cell->set_refine_flag(RefinementCase<2>::isotropic_refinement);
+                  flag_for_surface_refinement(cell);
                   break;
                 }
           }

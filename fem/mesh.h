@@ -101,10 +101,21 @@ namespace gradcontact::fem
   /// radius c where the partial-slip traction has a kink like (c - r)^{(1+k)/2}. Each level splits the
   /// cells within one cell width of (r, 0): in r only when they are thin (the z-halved surface layer),
   /// isotropically otherwise.
+  ///
+  /// Intervals r0 < r < r1 of the surface (the window around the end c of a cohesive zone over which its gap is
+  /// averaged, fem/cohesive_zone.h) are resolved first: the surface cells that overlap one are split until they are
+  /// at most (r1 - r0) / cells wide; the levels toward the points then grade from that width.
+  struct SurfaceInterval
+  {
+    double       r0 = 0, r1 = 0; ///< physical units, 0 <= r0 < r1
+    unsigned int cells = 0;      ///< cells across [r0, r1], <= 1024
+  };
+
   struct SurfaceRefinement
   {
     std::vector<double> radii;      ///< physical units, > 0
     unsigned int        levels = 0; ///< <= 30
+    std::vector<SurfaceInterval> intervals = {};
   };
 
   /// Applies `refinement` to a meridian mesh (serial triangulation).
