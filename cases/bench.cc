@@ -4,6 +4,7 @@
 #include "report.h"
 
 #include <analytic/batch.h>
+#include <analytic/reference_rows.h>
 
 #include <nlohmann/json.hpp>
 
@@ -116,22 +117,13 @@ namespace gradcontact::cases
 
     std::map<std::string, Family> load(const fs::path &file)
     {
-      std::ifstream in(file);
-      if (!in)
-        throw std::runtime_error("bench: cannot open the reference table '" + file.string() + "'");
       std::map<std::string, Family> families;
-      for (std::string line; std::getline(in, line);)
+      for (const batch::ReferenceRow &row : batch::read_reference_rows(file.string()))
         {
-          if (line.empty())
-            continue;
-          json row = json::parse(line);
-          const std::string key = row["case"].get<std::string>() + "/" + row["quantity"].get<std::string>();
-          const double reference = std::stod(row["reference"].get<std::string>());
-          // the table's own columns, not inputs of the request
-          for (const char *column : {"reference", "group", "conditioning"})
-            row.erase(column);
-          families[key].requests.push_back(row.dump());
-          families[key].references.push_back(reference);
+          const std::string key =
+            row.request.at("case").get<std::string>() + "/" + row.request.at("quantity").get<std::string>();
+          families[key].requests.push_back(row.request.dump());
+          families[key].references.push_back(row.reference);
         }
       return families;
     }

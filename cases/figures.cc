@@ -490,6 +490,12 @@ namespace gradcontact::cases
         if (!rows.front().count(column))
           throw std::invalid_argument(where + ": \"where\" names the column '" + column + "', not in map.csv of " +
                                       scene.file);
+      // a field as a number, NaN when it is none (an empty or failed entry)
+      const auto number = [](const std::string &field) {
+        char *end = nullptr;
+        const double v = std::strtod(field.c_str(), &end);
+        return end == field.c_str() ? std::numeric_limits<double>::quiet_NaN() : v;
+      };
       std::size_t left_out = 0;
       for (const auto &row : rows)
         {
@@ -498,22 +504,13 @@ namespace gradcontact::cases
             {
               const std::string &field = row.at(column);
               if (value.is_number())
-                {
-                  char *end = nullptr;
-                  const double v = std::strtod(field.c_str(), &end);
-                  selected = selected && end != field.c_str() &&
-                             std::abs(v - value.get<double>()) <= 1e-9 * std::max(1., std::abs(value.get<double>()));
-                }
+                selected = selected && std::abs(number(field) - value.get<double>()) <=
+                                         1e-9 * std::max(1., std::abs(value.get<double>()));
               else
                 selected = selected && field == value.get<std::string>();
             }
           if (!selected)
             continue;
-          const auto number = [](const std::string &field) {
-            char *end = nullptr;
-            const double v = std::strtod(field.c_str(), &end);
-            return end == field.c_str() ? std::numeric_limits<double>::quiet_NaN() : v;
-          };
           const auto value = [&](const std::string &column, const std::string &divisor) {
             return number(row.at(column)) / (divisor.empty() ? 1. : number(row.at(divisor)));
           };

@@ -3,6 +3,7 @@
 #include "report.h"
 
 #include <analytic/batch.h>
+#include <analytic/reference_rows.h>
 
 #include <nlohmann/json.hpp>
 
@@ -270,8 +271,7 @@ namespace gradcontact::cases
   int stress(const std::vector<std::string> &args)
   {
     const Options o = parse(args);
-    std::ifstream in(o.references);
-    if (!in)
+    if (!fs::exists(o.references))
       throw std::invalid_argument("stress: cannot open the references '" + o.references.string() + "'");
     const auto start = std::chrono::steady_clock::now();
 
@@ -292,20 +292,15 @@ namespace gradcontact::cases
     // (method, region) -> tally; the scale variants are regions of their own.
     std::map<std::pair<std::string, std::string>, Tally> table;
     std::size_t line_no = 0, evaluated = 0;
-    std::string line;
-    while (std::getline(in, line))
+    for (const batch::ReferenceRow &row : batch::read_reference_rows(o.references.string()))
       {
-        if (line.empty())
-          continue;
         ++line_no;
-        json row = json::parse(line);
-        const double reference = std::stod(row.at("reference").get<std::string>());
-        const double conditioning = row.value("conditioning", 0.);
-        const std::string quantity = row.at("quantity");
+        const double reference = row.reference;
+        const double conditioning = row.conditioning;
+        const std::string quantity = row.request.at("quantity");
         const Dimension dim = quantity_dimension(quantity);
-        json request = row;
-        for (const char *key : {"reference", "group", "id", "conditioning"})
-          request.erase(key);
+        json request = row.request;
+        request.erase("id");
         const std::vector<std::string> where = regions(request);
         for (const Variant &v : variants)
           {
@@ -353,7 +348,7 @@ namespace gradcontact::cases
                     const double allowance =
                       conditioning + (method == "closed_form" ? closed_form_floor : numerical_mdr_floor);
                     std::ostringstream r;
-                    r << "id " << row.at("id") << " " << row.at("case").get<std::string>() << "." << quantity
+                    r << "id " << row.request.at("id") << " " << row.request.at("case").get<std::string>() << "." << quantity
                       << " k=" << request["material"]["k"] << " nu=" << request["material"]["nu"];
                     t.add(err, allowance, r.str());
                   }

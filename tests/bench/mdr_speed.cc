@@ -18,6 +18,7 @@
 // requirement it measures: at most 1 us per evaluation for every family, 5 us for adhesive contact radii.
 #include <analytic/adhesion.h>
 #include <analytic/batch.h>
+#include <analytic/reference_rows.h>
 #include <analytic/material.h>
 #include <analytic/mdr.h>
 #include <analytic/normal.h>
@@ -80,30 +81,27 @@ namespace
   /// The closed forms of every family of the reference table: time per evaluation and error.
   int closed_forms(const std::string &file, const double min_time)
   {
-    using json = nlohmann::json;
-    std::ifstream in(file);
-    if (!in)
+    std::vector<batch::ReferenceRow> rows;
+    try
       {
-        std::fprintf(stderr, "bench_mdr_speed: cannot open '%s'\n", file.c_str());
+        rows = batch::read_reference_rows(file);
+      }
+    catch (const std::exception &e)
+      {
+        std::fprintf(stderr, "bench_mdr_speed: %s\n", e.what());
         return 1;
       }
     std::map<std::string, Family> families;
-    for (std::string line; std::getline(in, line);)
+    for (batch::ReferenceRow &row : rows)
       {
-        if (line.empty())
-          continue;
-        json row = json::parse(line);
-        const std::string key = row["case"].get<std::string>() + "/" + row["quantity"].get<std::string>();
-        const double reference = std::stod(row["reference"].get<std::string>());
-        row.erase("reference");
-        row.erase("group");
+        const std::string key =
+          row.request.at("case").get<std::string>() + "/" + row.request.at("quantity").get<std::string>();
         // the allowance of tests/analytic/test_references.cc: the row's conditioning plus 1e-13
-        families[key].allowances.push_back(row.value("conditioning", 0.) + 1e-13);
-        row.erase("conditioning");
-        row["method"] = "closed_form";
-        families[key].ids.push_back(row.value("id", -1L));
-        families[key].requests.push_back(batch::prepare(batch::parse(row)));
-        families[key].references.push_back(reference);
+        families[key].allowances.push_back(row.conditioning + 1e-13);
+        row.request["method"] = "closed_form";
+        families[key].ids.push_back(row.request.value("id", -1L));
+        families[key].requests.push_back(batch::prepare(batch::parse(row.request)));
+        families[key].references.push_back(row.reference);
       }
     // A batch of calls per clock reading: the clock costs some 20-40 ns, as much as the fastest forms.
     constexpr int calls = 8;
