@@ -1,4 +1,4 @@
-// Boundary ids of the meridian-plane meshes. They are the physical-group tags of meshes/near_field.geo
+// Boundary ids of the meridian-plane meshes (and of the 3D half-space mesh, fem/mesh_3d.h). They are the physical-group tags of meshes/near_field.geo
 // (gmsh writes them into the .msh and GridIn turns them into boundary ids); the deal.II-built near field
 // and the far-field rings use the same constants. Id 0 is deliberately unused: deal.II gives it to every
 // boundary face it was not told about, so a face that still carries 0 after mesh generation is a bug.
@@ -19,6 +19,8 @@ namespace gradcontact::fem::boundary_id
   constexpr boundary_id far_field = 3;
   /// r = 0: symmetry axis, u_r = 0.
   constexpr boundary_id axis = 4;
+  /// y = 0 of the 3D half-space model (fem/half_space_3d.h): symmetry plane, u_y = 0.
+  constexpr boundary_id symmetry_plane = 5;
   /// What deal.II assigns to boundary faces nobody named.
   constexpr boundary_id unassigned = 0;
 

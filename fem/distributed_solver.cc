@@ -28,26 +28,7 @@ namespace gradcontact::fem
   {
     // The z-DoF at the centre (0, 0): its support point is exact, this only absorbs round-off.
     constexpr double centre_tolerance = 1e-12;
-
-    [[noreturn]] void fail(const std::string &what, const double value, const std::string &range)
-    {
-      fem::fail("DistributedSolverParameters", what, value, range);
-    }
   } // namespace
-
-
-
-  void DistributedSolverParameters::validate() const
-  {
-    if (!(relative_tolerance > 0 && relative_tolerance < 1))
-      fail("relative_tolerance", relative_tolerance, "(0, 1)");
-    if (max_iterations < 1)
-      fail("max_iterations", max_iterations, "[1, inf)");
-    if (!(aggregation_threshold >= 0 && aggregation_threshold < 1))
-      fail("aggregation_threshold", aggregation_threshold, "[0, 1)");
-    if (smoother_sweeps < 1 || smoother_sweeps > 20)
-      fail("smoother_sweeps", smoother_sweeps, "[1, 20]");
-  }
 
 
 
@@ -79,6 +60,8 @@ namespace gradcontact::fem
     , triangulation(communicator)
     , fe(FE_Q<2>(discretization_.degree), 2)
     , dof_handler(triangulation)
+    , punch_solver(solver_parameters, dof_handler, discretization_.degree)
+    , free_solver(solver_parameters, dof_handler, discretization_.degree)
   {
     make_grid();
     setup_system();
@@ -239,74 +222,12 @@ namespace gradcontact::fem
   void DistributedSolver::solve(const bool contact_constrained, const Vector &b, Vector &u,
                                 DistributedResult &result)
   {
-    const Matrix &A      = contact_constrained ? punch_matrix : stiffness;
-    LinearSolver &linear = contact_constrained ? punch_solver : free_solver;
-    const auto    start  = std::chrono::steady_clock::now();
-    bool          built  = false;
-    if (solver_parameters.method == DistributedSolverParameters::Method::direct)
-      {
-        result.solver = "Amesos_Mumps";
-        if (!linear.direct)
-          {
-            linear.control = std::make_unique<SolverControl>(1, 0);
-            linear.direct  = std::make_unique<TrilinosWrappers::SolverDirect>(
-              *linear.control, TrilinosWrappers::SolverDirect::AdditionalData(false, "Amesos_Mumps"));
-            linear.direct->initialize(A);
-            built = true;
-          }
-      }
-    else
-      {
-        result.solver = "CG + ML AMG";
-        if (!linear.amg)
-          {
-            // Near-null space: the constant mode of each component (the axisymmetric body has no
-            // rotation mode; u_r = const is excluded by the axis condition but still helps the
-            // coarse spaces away from the axis).
-            std::vector<std::vector<bool>> constant_modes;
-            DoFTools::extract_constant_modes(dof_handler, ComponentMask(), constant_modes);
-            TrilinosWrappers::PreconditionAMG::AdditionalData data;
-            data.elliptic              = true;
-            data.higher_order_elements = discretization.degree > 1;
-            data.aggregation_threshold = solver_parameters.aggregation_threshold;
-            data.smoother_sweeps       = solver_parameters.smoother_sweeps;
-            data.constant_modes        = constant_modes;
-            linear.amg                 = std::make_unique<TrilinosWrappers::PreconditionAMG>();
-            linear.amg->initialize(A, data);
-            built = true;
-          }
-      }
-    result.time.factorize = built ? elapsed_max(start) : 0.0;
-
-    u.reinit(owned, communicator);
-    if (linear.direct)
-      {
-        linear.direct->solve(u, b);
-        result.iterations = 0;
-      }
-    else
-      {
-        SolverControl control(solver_parameters.max_iterations,
-                              solver_parameters.relative_tolerance * b.l2_norm());
-        SolverCG<Vector> cg(control);
-        try
-          {
-            cg.solve(A, u, b, *linear.amg);
-          }
-        catch (const SolverControl::NoConvergence &e)
-          {
-            std::ostringstream msg;
-            msg << "DistributedSolver: CG + AMG did not converge in " << e.last_step
-                << " iterations (residual " << e.last_residual / b.l2_norm() << " of ||b||, wanted "
-                << solver_parameters.relative_tolerance << "); use Method::direct";
-            throw std::runtime_error(msg.str());
-          }
-        result.iterations = control.last_step();
-      }
-    Vector residual(owned, communicator);
-    A.vmult(residual, u);
-    residual.sadd(-1.0, 1.0, b);
-    result.residual = residual.l2_norm() / b.l2_norm();
+    const LinearSolveReport report =
+      (contact_constrained ? punch_solver : free_solver).solve(contact_constrained ? punch_matrix : stiffness, b, u);
+    result.solver         = report.solver;
+    result.iterations     = report.iterations;
+    result.residual       = report.residual;
+    result.time.factorize = report.factorize;
   }
 
 

@@ -18,13 +18,7 @@
 // with A assembled with the homogeneous constraints only (axis, far field, hanging nodes); the constant
 // pressure gives F = pi p0 a^2 and the depth w_c = u_z(0, 0).
 //
-// Linear solvers (DistributedSolverParameters::Method):
-//  - direct: MUMPS through Trilinos Amesos (Amesos_Mumps; Debian's Trilinos 13.2 has it), the default:
-//    it reproduces the serial UMFPACK answer to round-off on the ill-conditioned graded systems;
-//  - amg_cg: CG preconditioned by Trilinos ML (smoothed aggregation, Chebyshev smoother, the constant
-//    modes of u_r and u_z as near-null space), stopped at ||b - A u|| <= relative_tolerance ||b||.
-//    The graded E (10 orders of magnitude of cell size, E -> 0 or infinity at z = 0) degrades it:
-//    measured iteration counts are in fem/README.md ("Distributed runs").
+// Linear solvers: fem/distributed_linear_solver.h (MUMPS by default, or CG + ML AMG).
 //
 // Reliability as in the serial solver: |u.Au - work| / u.Au above 1e-6 marks the result unreliable.
 //
@@ -35,6 +29,7 @@
 #define GRADCONTACT_FEM_DISTRIBUTED_SOLVER_H
 
 #include <fem/discretization.h>
+#include <fem/distributed_linear_solver.h>
 #include <fem/loads.h>
 #include <fem/mesh.h>
 #include <fem/modulus.h>
@@ -57,23 +52,6 @@
 
 namespace gradcontact::fem
 {
-  struct DistributedSolverParameters
-  {
-    enum class Method
-    {
-      direct, ///< Amesos_Mumps (distributed sparse LU)
-      amg_cg  ///< CG + Trilinos ML AMG
-    };
-    Method       method                = Method::direct;
-    double       relative_tolerance    = 1e-12; ///< amg_cg: ||b - A u|| <= this ||b||, (0, 1)
-    unsigned int max_iterations        = 20000; ///< amg_cg: CG iterations, >= 1
-    double       aggregation_threshold = 1e-4;  ///< amg_cg: ML drop tolerance, [0, 1)
-    unsigned int smoother_sweeps       = 2;     ///< amg_cg: Chebyshev sweeps, [1, 20]
-
-    /// Throws std::invalid_argument naming the member, its value and the valid range.
-    void validate() const;
-  };
-
   struct DistributedResult : RunReport
   {
     double force = 0; ///< F_N, compressive positive
@@ -108,14 +86,6 @@ namespace gradcontact::fem
   private:
     using Vector = dealii::TrilinosWrappers::MPI::Vector;
     using Matrix = dealii::TrilinosWrappers::SparseMatrix;
-
-    /// The factorisation or the AMG preconditioner of one matrix, built on first use.
-    struct LinearSolver
-    {
-      std::unique_ptr<dealii::SolverControl>                 control;
-      std::unique_ptr<dealii::TrilinosWrappers::SolverDirect> direct;
-      std::unique_ptr<dealii::TrilinosWrappers::PreconditionAMG> amg;
-    };
 
     void make_grid();
     void setup_system();
@@ -153,7 +123,7 @@ namespace gradcontact::fem
     std::vector<double> owned_contact_r; ///< their radii
     dealii::types::global_dof_index edge_dof; ///< the contact z-DoF at r = a (owner only; else invalid)
     dealii::types::global_dof_index centre_dof; ///< the z-DoF at (0, 0)
-    LinearSolver punch_solver, free_solver;
+    DistributedLinearSolver<2> punch_solver, free_solver;
     Timings      setup_time;
   };
 } // namespace gradcontact::fem

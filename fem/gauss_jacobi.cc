@@ -2,6 +2,7 @@
 #include <fem/gauss_jacobi.h>
 
 #include <deal.II/base/quadrature_lib.h>
+#include <deal.II/base/utilities.h>
 
 #include <sstream>
 #include <stdexcept>
@@ -34,30 +35,44 @@ namespace gradcontact::fem
 
 
 
-  Quadrature<2> surface_cell_quadrature(const unsigned int n_points, const double s,
-                                        const unsigned int singular_face,
-                                        std::vector<double> &distance)
+  template <int dim>
+  Quadrature<dim> surface_cell_quadrature(const unsigned int n_points, const double s,
+                                          const unsigned int singular_face, std::vector<double> &distance)
   {
-    AssertThrow(singular_face < 4, ExcIndexRange(singular_face, 0, 4));
+    AssertThrow(singular_face < 2 * dim, ExcIndexRange(singular_face, 0, 2 * dim));
     const Quadrature<1> across = gauss_jacobi(n_points, s);
     const QGauss<1>     along(n_points);
-    // Across the face the distance is x for faces 0 and 2, 1 - x for faces 1 and 3.
-    const bool mirrored  = (singular_face % 2 == 1);
-    const bool across_is_x = (singular_face < 2);
+    // Across the face (reference axis singular_face / 2) the distance is x for even faces, 1 - x for odd.
+    const unsigned int axis     = singular_face / 2;
+    const bool         mirrored = (singular_face % 2 == 1);
 
-    std::vector<Point<2>> points;
-    std::vector<double>   weights;
+    std::vector<Point<dim>> points;
+    std::vector<double>     weights;
     distance.clear();
-    for (unsigned int i = 0; i < n_points; ++i)     // across
-      for (unsigned int j = 0; j < n_points; ++j)   // along
+    const unsigned int n_along = Utilities::pow(n_points, dim - 1);
+    for (unsigned int i = 0; i < n_points; ++i) // across
+      for (unsigned int j = 0; j < n_along; ++j) // along: the other axes, lexicographic
         {
           const double xi = across.point(i)[0];
-          const double t  = mirrored ? 1.0 - xi : xi;
-          points.push_back(across_is_x ? Point<2>(t, along.point(j)[0]) :
-                                         Point<2>(along.point(j)[0], t));
-          weights.push_back(across.weight(i) * along.weight(j));
+          Point<dim>   p;
+          double       w = across.weight(i);
+          unsigned int rest = j;
+          for (unsigned int d = 0; d < dim; ++d)
+            if (d == axis)
+              p[d] = mirrored ? 1.0 - xi : xi;
+            else
+              {
+                p[d] = along.point(rest % n_points)[0];
+                w *= along.weight(rest % n_points);
+                rest /= n_points;
+              }
+          points.push_back(p);
+          weights.push_back(w);
           distance.push_back(xi);
         }
-    return Quadrature<2>(points, weights);
+    return Quadrature<dim>(points, weights);
   }
+
+  template Quadrature<2> surface_cell_quadrature<2>(unsigned int, double, unsigned int, std::vector<double> &);
+  template Quadrature<3> surface_cell_quadrature<3>(unsigned int, double, unsigned int, std::vector<double> &);
 } // namespace gradcontact::fem

@@ -20,13 +20,13 @@ namespace gradcontact::fem
   /// Throws std::invalid_argument for n = 0 or s <= -1.
   dealii::Quadrature<1> gauss_jacobi(unsigned int n_points, double s);
 
-  /// The 2D rule for a cell whose face `singular_face` (deal.II numbering: 0 x=0, 1 x=1, 2 y=0, 3 y=1)
-  /// lies on the surface z = 0: Gauss-Jacobi with exponent s across that face, Gauss-Legendre along it.
-  /// `distance` receives, per point, the reference-coordinate distance xi_q from that face (the weights
-  /// contain xi_q^s, so the integrand must be divided by it).
-  dealii::Quadrature<2> surface_cell_quadrature(unsigned int n_points, double s,
-                                                unsigned int singular_face,
-                                                std::vector<double> &distance);
+  /// The rule for a cell whose face `singular_face` (deal.II numbering: 2 d for x_d = 0, 2 d + 1 for
+  /// x_d = 1) lies on the surface z = 0: Gauss-Jacobi with exponent s across that face, Gauss-Legendre
+  /// along it (a tensor product, dim = 2 or 3). `distance` receives, per point, the reference-coordinate
+  /// distance xi_q from that face (the weights contain xi_q^s, so the integrand must be divided by it).
+  template <int dim>
+  dealii::Quadrature<dim> surface_cell_quadrature(unsigned int n_points, double s, unsigned int singular_face,
+                                                  std::vector<double> &distance);
 } // namespace gradcontact::fem
 
 #endif

@@ -29,29 +29,33 @@ namespace gradcontact::fem
 
 
 
-  GradedCellRules::GradedCellRules(const Material &material, const FESystem<2> &fe, const Mapping<2> &mapping,
-                                   const DiscretizationParameters &discretization, const bool inverse_rules)
+  template <int dim>
+  GradedCellRules<dim>::GradedCellRules(const Material &material, const FESystem<dim> &fe,
+                                        const Mapping<dim> &mapping, const DiscretizationParameters &discretization,
+                                        const bool inverse_rules)
     : s(material.modulus->surface_exponent())
     , jumps(material.modulus->discontinuities())
   {
     const unsigned int n_q = n_points(discretization);
-    regular    = std::make_unique<FEValues<2>>(mapping, fe, QGauss<2>(n_q), cell_flags);
-    subdivided = std::make_unique<FEValues<2>>(
-      mapping, fe, QIterated<2>(QGauss<1>(n_q), discretization.discontinuity_subdivisions), cell_flags);
-    for (unsigned int f = 0; f < 4; ++f)
-      surface[f] = std::make_unique<FEValues<2>>(mapping, fe, surface_cell_quadrature(n_q, s, f, distance[f]),
-                                                 cell_flags);
+    regular    = std::make_unique<FEValues<dim>>(mapping, fe, QGauss<dim>(n_q), cell_flags);
+    subdivided = std::make_unique<FEValues<dim>>(
+      mapping, fe, QIterated<dim>(QGauss<1>(n_q), discretization.discontinuity_subdivisions), cell_flags);
+    for (unsigned int f = 0; f < 2 * dim; ++f)
+      surface[f] = std::make_unique<FEValues<dim>>(
+        mapping, fe, surface_cell_quadrature<dim>(n_q, s, f, distance[f]), cell_flags);
     // 1/E ~ z^{-s}: Gauss-Jacobi with exponent -s (needs s < 1; at s = 1, the Gibson medium, nu = 1/2
     // and no integrand carries 1/E).
     if (inverse_rules && s != 0.0)
-      for (unsigned int f = 0; f < 4; ++f)
-        surface_inverse[f] = std::make_unique<FEValues<2>>(
-          mapping, fe, surface_cell_quadrature(n_q, -s, f, distance_inverse[f]), cell_flags);
+      for (unsigned int f = 0; f < 2 * dim; ++f)
+        surface_inverse[f] = std::make_unique<FEValues<dim>>(
+          mapping, fe, surface_cell_quadrature<dim>(n_q, -s, f, distance_inverse[f]), cell_flags);
   }
 
 
 
-  GradedCellRules::Choice GradedCellRules::select(const DoFHandler<2>::active_cell_iterator &cell)
+  template <int dim>
+  typename GradedCellRules<dim>::Choice
+  GradedCellRules<dim>::select(const typename DoFHandler<dim>::active_cell_iterator &cell)
   {
     Choice choice{regular.get(), nullptr, false, numbers::invalid_unsigned_int};
     for (const unsigned int f : cell->face_indices())
@@ -60,8 +64,8 @@ namespace gradcontact::fem
     double z_min = std::numeric_limits<double>::max(), z_max = -z_min;
     for (const unsigned int v : cell->vertex_indices())
       {
-        z_min = std::min(z_min, cell->vertex(v)[1]);
-        z_max = std::max(z_max, cell->vertex(v)[1]);
+        z_min = std::min(z_min, cell->vertex(v)[dim - 1]);
+        z_max = std::max(z_max, cell->vertex(v)[dim - 1]);
       }
     choice.straddles =
       std::any_of(jumps.begin(), jumps.end(), [&](const double z) { return z > z_min && z < z_max; });
@@ -81,17 +85,20 @@ namespace gradcontact::fem
 
 
 
-  FEValues<2> &GradedCellRules::plain(const DoFHandler<2>::active_cell_iterator &cell, const bool straddles)
+  template <int dim>
+  FEValues<dim> &GradedCellRules<dim>::plain(const typename DoFHandler<dim>::active_cell_iterator &cell,
+                                             const bool straddles)
   {
-    FEValues<2> &values = straddles ? *subdivided : *regular;
+    FEValues<dim> &values = straddles ? *subdivided : *regular;
     values.reinit(cell);
     return values;
   }
 
 
 
-  FEValues<2> &GradedCellRules::inverse(const DoFHandler<2>::active_cell_iterator &cell, const unsigned int face,
-                                        const std::vector<double> *&xi)
+  template <int dim>
+  FEValues<dim> &GradedCellRules<dim>::inverse(const typename DoFHandler<dim>::active_cell_iterator &cell,
+                                               const unsigned int face, const std::vector<double> *&xi)
   {
     Assert(surface_inverse[face], ExcMessage("inverse rules were not built"));
     surface_inverse[face]->reinit(cell);
@@ -101,9 +108,14 @@ namespace gradcontact::fem
 
 
 
+  template class GradedCellRules<2>;
+  template class GradedCellRules<3>;
+
+
+
   template <class Strain>
-  GradedElasticityCell<Strain>::GradedElasticityCell(const Material &material_, const FESystem<2> &fe_,
-                                                     const Mapping<2> &mapping,
+  GradedElasticityCell<Strain>::GradedElasticityCell(const Material &material_, const FESystem<dim> &fe_,
+                                                     const Mapping<dim> &mapping,
                                                      const DiscretizationParameters &discretization)
     : material(material_)
     , fe(fe_)
@@ -119,7 +131,8 @@ namespace gradcontact::fem
 
 
   template <class Strain>
-  const FullMatrix<double> &GradedElasticityCell<Strain>::matrix(const DoFHandler<2>::active_cell_iterator &cell)
+  const FullMatrix<double> &
+  GradedElasticityCell<Strain>::matrix(const typename DoFHandler<dim>::active_cell_iterator &cell)
   {
     const ModulusField &E        = *material.modulus;
     const double        nu       = material.nu;
@@ -127,8 +140,8 @@ namespace gradcontact::fem
     const double        c_mu     = 1 / (2 * (1 + nu));
     const double        s        = rules.surface_exponent();
 
-    const GradedCellRules::Choice choice    = rules.select(cell);
-    FEValues<2>                  &fe_values = *choice.values;
+    const typename GradedCellRules<dim>::Choice choice    = rules.select(cell);
+    FEValues<dim>                              &fe_values = *choice.values;
     const std::vector<double>    *xi        = choice.xi;
 
     const unsigned int dofs_per_cell = fe.n_dofs_per_cell();
@@ -137,14 +150,15 @@ namespace gradcontact::fem
     // of add_mixed_blocks), and the rows of its q shape functions are zero here.
     for (const unsigned int q : fe_values.quadrature_point_indices())
       {
-        const Point<2> &x = fe_values.quadrature_point(q);
-        const double    r = x[0];
+        const Point<dim> &x = fe_values.quadrature_point(q);
+        const double      r = x[0];
         // With the Gauss-Jacobi rule JxW contains xi^s, so E is divided by it: E(z)/xi^s is the
         // regular factor (E0 (h(x)/c0)^k for the power law, h the local cell height).
-        const double modulus = (xi ? E.value(x[1]) / std::pow((*xi)[q], s) : E.value(x[1]));
+        const double z       = x[dim - 1];
+        const double modulus = (xi ? E.value(z) / std::pow((*xi)[q], s) : E.value(z));
         const double lambda  = mixed ? 0.0 : c_lambda * modulus;
         const double mu      = c_mu * modulus;
-        const double weight  = r * fe_values.JxW(q);
+        const double weight  = Strain::weight(x) * fe_values.JxW(q);
 
         for (unsigned int i = 0; i < dofs_per_cell; ++i)
           {
@@ -187,8 +201,8 @@ namespace gradcontact::fem
 
 
   template <class Strain>
-  void GradedElasticityCell<Strain>::add_mixed_blocks(const DoFHandler<2>::active_cell_iterator &cell,
-                                                      const GradedCellRules::Choice          &choice)
+  void GradedElasticityCell<Strain>::add_mixed_blocks(const typename DoFHandler<dim>::active_cell_iterator &cell,
+                                                      const typename GradedCellRules<dim>::Choice        &choice)
   {
     const ModulusField &E             = *material.modulus;
     const double        s             = rules.surface_exponent();
@@ -200,12 +214,12 @@ namespace gradcontact::fem
     const bool qq_here = inverse_lambda_factor != 0.0 && !singular_qq;
 
     // K_uq = \int tr B_i psi_j r and, where 1/E is regular, K_qq = -\int psi_i psi_j / lambda r.
-    FEValues<2> &plain = rules.plain(cell, choice.straddles);
+    FEValues<dim> &plain = rules.plain(cell, choice.straddles);
     for (const unsigned int q : plain.quadrature_point_indices())
       {
-        const Point<2> &x      = plain.quadrature_point(q);
-        const double    r      = x[0];
-        const double    weight = r * plain.JxW(q);
+        const Point<dim> &x      = plain.quadrature_point(q);
+        const double      r      = x[0];
+        const double      weight = Strain::weight(x) * plain.JxW(q);
         for (unsigned int i = 0; i < dofs_per_cell; ++i)
           {
             const unsigned int c   = fe.system_to_component_index(i).first;
@@ -219,7 +233,7 @@ namespace gradcontact::fem
               trace[i] = 0.0;
             psi[i] = (c == pressure) ? phi : 0.0;
           }
-        const double inverse_lambda = qq_here ? inverse_lambda_factor / E.value(x[1]) : 0.0;
+        const double inverse_lambda = qq_here ? inverse_lambda_factor / E.value(x[dim - 1]) : 0.0;
         for (unsigned int i = 0; i < dofs_per_cell; ++i)
           for (unsigned int j = 0; j <= i; ++j)
             cell_matrix(i, j) += (trace[i] * psi[j] + psi[i] * trace[j] - inverse_lambda * psi[i] * psi[j]) * weight;
@@ -230,12 +244,12 @@ namespace gradcontact::fem
     // K_qq in a surface cell: the weights contain xi^{-s}, so the integrand is multiplied by xi^s:
     // xi^s / E(z) = 1 / (E(z) / xi^s) is the regular factor.
     const std::vector<double> *xi      = nullptr;
-    FEValues<2>               &inverse = rules.inverse(cell, choice.surface_face, xi);
+    FEValues<dim>             &inverse = rules.inverse(cell, choice.surface_face, xi);
     for (const unsigned int q : inverse.quadrature_point_indices())
       {
-        const Point<2> &x = inverse.quadrature_point(q);
-        const double    factor =
-          inverse_lambda_factor * std::pow((*xi)[q], s) / E.value(x[1]) * x[0] * inverse.JxW(q);
+        const Point<dim> &x      = inverse.quadrature_point(q);
+        const double      factor = inverse_lambda_factor * std::pow((*xi)[q], s) / E.value(x[dim - 1]) *
+                              Strain::weight(x) * inverse.JxW(q);
         for (unsigned int i = 0; i < dofs_per_cell; ++i)
           psi[i] = (fe.system_to_component_index(i).first == pressure) ? inverse.shape_value(i, q) : 0.0;
         for (unsigned int i = 0; i < dofs_per_cell; ++i)
@@ -246,6 +260,7 @@ namespace gradcontact::fem
 
   template class GradedElasticityCell<AxisymmetricStrain>;
   template class GradedElasticityCell<Mode1Strain>;
+  template class GradedElasticityCell<CartesianStrain>;
 
 
 

@@ -13,8 +13,10 @@
 //   B = (eps_rr, eps_zz, eps_tt, gamma_rz, gamma_rt, gamma_tz) without the cos / sin factors,
 //   U: (U_r, 0, U/r, U_z, U/r, 0),  V: (0, 0, -V/r, 0, V_r - V/r, V_z),  W: (0, W_z, 0, W_r, 0, W/r);
 //   the integral over theta of cos^2 and sin^2 is pi, so the 3D energy is pi times the meridian form.
-// The 3D strain (Voigt order, m = 3) has the same form; only the weight r and dim = 2 are the meridian
-// plane's.
+// Cartesian 3D (u_x, u_y, u_z), m = 3 (the distributed 3D model, fem/half_space_3d.h):
+//   B = (eps_xx, eps_yy, eps_zz, gamma_xy, gamma_xz, gamma_yz), weight 1 instead of r, dim = 3.
+// Each strain operator names its dimension and its volume weight (r in the meridian plane, 1 in 3D); the
+// depth coordinate z is always the last one.
 //
 // Mixed formulation (a pressure component q = lambda div u in FE_Q(p-1) after the displacement
 // components; fem/axisymmetric_solver.h):
@@ -57,6 +59,7 @@ namespace gradcontact::fem
   /// Axisymmetric (Fourier mode 0) strains of (u_r, u_z): (eps_rr, eps_zz, eps_tt, gamma_rz).
   struct AxisymmetricStrain
   {
+    static constexpr int          dim                       = 2;
     static constexpr unsigned int n_displacement_components = 2;
     static constexpr unsigned int n_shear                   = 1;
     using Vector = std::array<double, 3 + n_shear>;
@@ -65,11 +68,14 @@ namespace gradcontact::fem
     {
       return (c == 0) ? Vector{{grad[0], 0.0, phi / r, grad[1]}} : Vector{{0.0, grad[1], 0.0, grad[0]}};
     }
+    /// The volume weight of the meridian plane: dV = 2 pi r dr dz (the 2 pi is applied to forces).
+    static double weight(const dealii::Point<2> &x) { return x[0]; }
   };
 
   /// Fourier mode-1 strains of (U, V, W) (header): (eps_rr, eps_zz, eps_tt, gamma_rz, gamma_rt, gamma_tz).
   struct Mode1Strain
   {
+    static constexpr int          dim                       = 2;
     static constexpr unsigned int n_displacement_components = 3;
     static constexpr unsigned int n_shear                   = 3;
     using Vector = std::array<double, 3 + n_shear>;
@@ -85,31 +91,56 @@ namespace gradcontact::fem
             return {{0.0, grad[1], 0.0, grad[0], 0.0, phi / r}};
         }
     }
+    static double weight(const dealii::Point<2> &x) { return x[0]; }
+  };
+
+  /// Cartesian 3D strains of (u_x, u_y, u_z): (eps_xx, eps_yy, eps_zz, gamma_xy, gamma_xz, gamma_yz).
+  struct CartesianStrain
+  {
+    static constexpr int          dim                       = 3;
+    static constexpr unsigned int n_displacement_components = 3;
+    static constexpr unsigned int n_shear                   = 3;
+    using Vector = std::array<double, 3 + n_shear>;
+    /// `r` is not used (the signature is the meridian operators').
+    static Vector of(unsigned int c, double /*phi*/, const dealii::Tensor<1, 3> &g, double /*r*/)
+    {
+      switch (c)
+        {
+          case 0:
+            return {{g[0], 0.0, 0.0, g[1], g[2], 0.0}};
+          case 1:
+            return {{0.0, g[1], 0.0, g[0], 0.0, g[2]}};
+          default:
+            return {{0.0, 0.0, g[2], 0.0, g[0], g[1]}};
+        }
+    }
+    static double weight(const dealii::Point<3> &) { return 1.0; }
   };
 
   /// The quadrature rules of a graded cell (header): the FEValues of the bulk rule, the QIterated rule
   /// of cells crossed by a jump of E, and the Gauss-Jacobi rules of the cells on z = 0 (per reference
   /// face, for the exponent s of E and, when asked, for -s of 1/E). One object per thread of assembly.
+  template <int dim>
   class GradedCellRules
   {
   public:
-    GradedCellRules(const Material &material, const dealii::FESystem<2> &fe, const dealii::Mapping<2> &mapping,
+    GradedCellRules(const Material &material, const dealii::FESystem<dim> &fe, const dealii::Mapping<dim> &mapping,
                     const DiscretizationParameters &discretization, bool inverse_rules);
 
     /// The rule chosen for one cell, reinit'ed on it.
     struct Choice
     {
-      dealii::FEValues<2>       *values;       ///< the rule for integrands carrying E
+      dealii::FEValues<dim>       *values;       ///< the rule for integrands carrying E
       const std::vector<double> *xi;           ///< Gauss-Jacobi: reference distance of each point, else null
       bool                       straddles;    ///< a jump of E crosses the cell
       unsigned int               surface_face; ///< face on z = 0, or numbers::invalid_unsigned_int
     };
-    Choice select(const dealii::DoFHandler<2>::active_cell_iterator &cell);
+    Choice select(const typename dealii::DoFHandler<dim>::active_cell_iterator &cell);
 
     /// Bulk or QIterated rule (polynomial integrands), reinit'ed on `cell`.
-    dealii::FEValues<2> &plain(const dealii::DoFHandler<2>::active_cell_iterator &cell, bool straddles);
+    dealii::FEValues<dim> &plain(const typename dealii::DoFHandler<dim>::active_cell_iterator &cell, bool straddles);
     /// Gauss-Jacobi of exponent -s across `face` (integrands carrying 1/E), reinit'ed; xi in `xi`.
-    dealii::FEValues<2> &inverse(const dealii::DoFHandler<2>::active_cell_iterator &cell, unsigned int face,
+    dealii::FEValues<dim> &inverse(const typename dealii::DoFHandler<dim>::active_cell_iterator &cell, unsigned int face,
                                  const std::vector<double> *&xi);
 
     double surface_exponent() const { return s; }
@@ -117,9 +148,9 @@ namespace gradcontact::fem
   private:
     const double                                       s;
     const std::vector<double>                          jumps;
-    std::unique_ptr<dealii::FEValues<2>>               regular, subdivided;
-    std::array<std::unique_ptr<dealii::FEValues<2>>, 4> surface, surface_inverse;
-    std::array<std::vector<double>, 4>                 distance, distance_inverse;
+    std::unique_ptr<dealii::FEValues<dim>>               regular, subdivided;
+    std::array<std::unique_ptr<dealii::FEValues<dim>>, 2 * dim> surface, surface_inverse;
+    std::array<std::vector<double>, 2 * dim>                 distance, distance_inverse;
   };
 
   /// K_cell of graded elasticity for the strain operator `Strain`; when `fe` has one component more
@@ -128,21 +159,23 @@ namespace gradcontact::fem
   class GradedElasticityCell
   {
   public:
-    GradedElasticityCell(const Material &material, const dealii::FESystem<2> &fe,
-                         const dealii::Mapping<2> &mapping, const DiscretizationParameters &discretization);
+    static constexpr int dim = Strain::dim;
+
+    GradedElasticityCell(const Material &material, const dealii::FESystem<dim> &fe,
+                         const dealii::Mapping<dim> &mapping, const DiscretizationParameters &discretization);
 
     /// The cell matrix (full, symmetric), valid until the next call.
-    const dealii::FullMatrix<double> &matrix(const dealii::DoFHandler<2>::active_cell_iterator &cell);
+    const dealii::FullMatrix<double> &matrix(const typename dealii::DoFHandler<dim>::active_cell_iterator &cell);
 
   private:
-    void add_mixed_blocks(const dealii::DoFHandler<2>::active_cell_iterator &cell,
-                          const GradedCellRules::Choice &choice);
+    void add_mixed_blocks(const typename dealii::DoFHandler<dim>::active_cell_iterator &cell,
+                          const typename GradedCellRules<dim>::Choice &choice);
 
     const Material                      material;
-    const dealii::FESystem<2>          &fe;
+    const dealii::FESystem<dim>          &fe;
     const bool                          mixed;
     const double                        inverse_lambda_factor; ///< 1/lambda = this / E (0 at nu = 1/2)
-    GradedCellRules                     rules;
+    GradedCellRules<dim>                rules;
     dealii::FullMatrix<double>          cell_matrix;
     std::vector<typename Strain::Vector> B;
     std::vector<double>                 trace, psi;
@@ -152,9 +185,14 @@ namespace gradcontact::fem
   using CellStiffness = GradedElasticityCell<AxisymmetricStrain>;
   /// The mode-1 cell stiffness.
   using Mode1CellStiffness = GradedElasticityCell<Mode1Strain>;
+  /// The 3D cell stiffness.
+  using CellStiffness3D = GradedElasticityCell<CartesianStrain>;
 
+  extern template class GradedCellRules<2>;
+  extern template class GradedCellRules<3>;
   extern template class GradedElasticityCell<AxisymmetricStrain>;
   extern template class GradedElasticityCell<Mode1Strain>;
+  extern template class GradedElasticityCell<CartesianStrain>;
 
   /// Validates the discretisation, then the material for the formulation it resolves to (which it returns).
   Formulation checked_formulation(const Material &material, const DiscretizationParameters &discretization);

@@ -1,0 +1,262 @@
+#include <fem/coulomb_contact_3d.h>
+#include <fem/errors.h>
+
+#include <deal.II/lac/lapack_full_matrix.h>
+#include <deal.II/lac/vector.h>
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+#include <stdexcept>
+
+namespace gradcontact::fem
+{
+  using namespace dealii;
+
+  void CoulombParameters::validate() const
+  {
+    if (!(mu >= 0)) // NaN fails too; infinity is full stick
+      fail("CoulombParameters", "mu", mu, "[0, inf]");
+    if (max_iterations < 1)
+      fail("CoulombParameters", "max_iterations", max_iterations, "[1, inf)");
+    if (!(direction_tolerance > 0 && direction_tolerance < 1))
+      fail("CoulombParameters", "direction_tolerance", direction_tolerance, "(0, 1)");
+  }
+
+
+
+  CoulombContact3D::CoulombContact3D(const SurfaceCompliance3D &surface, const Profile &profile_,
+                                     const CoulombParameters &parameters_)
+    : compliance(surface)
+    , profile((profile_.validate(), profile_))
+    , parameters((parameters_.validate(), parameters_))
+  {
+    const unsigned int n = compliance.nodes.size();
+    if (n == 0 || compliance.unknown.size() != n || compliance.C.m() != compliance.C.n())
+      throw std::invalid_argument("CoulombContact3D: the surface compliance is empty or inconsistent");
+    f.resize(n);
+    double diagonal = 0;
+    unsigned int count = 0;
+    for (unsigned int i = 0; i < n; ++i)
+      {
+        f[i] = profile(compliance.nodes[i].norm(), 0.0);
+        diagonal += compliance.C(compliance.unknown[i][2], compliance.unknown[i][2]);
+        ++count;
+      }
+    c = count / diagonal;
+    reset();
+  }
+
+
+
+  void CoulombContact3D::reset()
+  {
+    const unsigned int n = compliance.nodes.size();
+    last              = CoulombState3D();
+    last.converged    = true;
+    last.status.assign(n, NodeStatus::separated);
+    last.nodal_force.assign(n, {{0, 0, 0}});
+    last.displacement.assign(n, {{0, 0, 0}});
+    last.slip.assign(n, {{0, 0}});
+    direction.assign(n, {{1, 0}});
+  }
+
+
+
+  void CoulombContact3D::set_friction(const double mu)
+  {
+    CoulombParameters p = parameters;
+    p.mu                = mu;
+    p.validate();
+    parameters = p;
+  }
+
+
+
+  CoulombState3D CoulombContact3D::step_depth(const double depth, const double delta)
+  {
+    if (!std::isfinite(depth) || !std::isfinite(delta))
+      throw std::invalid_argument("CoulombContact3D::step_depth: depth = " + std::to_string(depth) +
+                                  ", delta = " + std::to_string(delta) + "; both must be finite");
+    return solve(false, depth, delta);
+  }
+
+
+
+  CoulombState3D CoulombContact3D::step_force(const double force_z, const double delta)
+  {
+    if (!(force_z > 0) || !std::isfinite(force_z) || !std::isfinite(delta))
+      throw std::invalid_argument("CoulombContact3D::step_force: force_z = " + std::to_string(force_z) +
+                                  " outside (0, inf) or delta = " + std::to_string(delta) + " not finite");
+    return solve(true, force_z, delta);
+  }
+
+
+
+  CoulombState3D CoulombContact3D::solve(const bool force_control, const double target, const double delta)
+  {
+    const unsigned int n = compliance.nodes.size(), m = compliance.C.m(), size = m + (force_control ? 1 : 0);
+    const double       mu = parameters.mu;
+    const bool         full_stick = std::isinf(mu);
+    const double       step = delta - last.delta;
+
+    CoulombState3D s;
+    s.delta  = delta;
+    s.depth  = force_control ? last.depth : target;
+    s.status = last.status;
+    if (!force_control)
+      for (unsigned int i = 0; i < n; ++i) // nodes the indenter would now penetrate start in contact
+        if (s.status[i] == NodeStatus::separated && f[i] - s.depth + last.displacement[i][2] < 0)
+          s.status[i] = NodeStatus::stick;
+    if (force_control && std::none_of(s.status.begin(), s.status.end(), [](NodeStatus t) { return t != NodeStatus::separated; }))
+      s.status[std::min_element(f.begin(), f.end()) - f.begin()] = NodeStatus::stick;
+    std::vector<std::array<double, 2>> t = direction;
+
+    Vector<double> F(size), u(m);
+    for (unsigned int it = 1; it <= parameters.max_iterations; ++it)
+      {
+        // The linear system of the current sets and directions.
+        LAPACKFullMatrix<double> A(size, size);
+        Vector<double>           rhs(size);
+        const auto copy_row = [&](const unsigned int row, const int k) {
+          for (unsigned int l = 0; l < m; ++l)
+            A(row, l) = compliance.C(k, l);
+        };
+        for (unsigned int i = 0; i < n; ++i)
+          {
+            const auto &k = compliance.unknown[i];
+            switch (s.status[i])
+              {
+                case NodeStatus::separated:
+                  for (const int kc : k)
+                    if (kc >= 0)
+                      A(kc, kc) = 1;
+                  break;
+                case NodeStatus::stick:
+                case NodeStatus::slip:
+                  // g = 0: u_z - d = -f (d an unknown under force control)
+                  copy_row(k[2], k[2]);
+                  if (force_control)
+                    {
+                      A(k[2], m) = -1;
+                      rhs(k[2])  = -f[i];
+                    }
+                  else
+                    rhs(k[2]) = s.depth - f[i];
+                  if (s.status[i] == NodeStatus::stick)
+                    {
+                      copy_row(k[0], k[0]);
+                      rhs(k[0]) = last.displacement[i][0] + step;
+                      if (k[1] >= 0)
+                        {
+                          copy_row(k[1], k[1]);
+                          rhs(k[1]) = last.displacement[i][1];
+                        }
+                    }
+                  else
+                    {
+                      A(k[0], k[0]) = 1;
+                      A(k[0], k[2]) = -mu * t[i][0];
+                      if (k[1] >= 0)
+                        {
+                          A(k[1], k[1]) = 1;
+                          A(k[1], k[2]) = -mu * t[i][1];
+                        }
+                    }
+                  break;
+              }
+          }
+        if (force_control)
+          {
+            for (unsigned int i = 0; i < n; ++i)
+              A(m, compliance.unknown[i][2]) = 1;
+            rhs(m) = target / 2; // the half body
+          }
+        A.compute_lu_factorization();
+        F = rhs;
+        A.solve(F);
+        if (force_control)
+          s.depth = F(m);
+        for (unsigned int k = 0; k < m; ++k)
+          {
+            double v = 0;
+            for (unsigned int l = 0; l < m; ++l)
+              v += compliance.C(k, l) * F(l);
+            u(k) = v;
+          }
+
+        // The new sets and directions.
+        bool   changed  = false;
+        double turn     = 0;
+        s.nodal_force.assign(n, {{0, 0, 0}});
+        s.displacement.assign(n, {{0, 0, 0}});
+        s.slip.assign(n, {{0, 0}});
+        std::vector<NodeStatus> next(n);
+        for (unsigned int i = 0; i < n; ++i)
+          {
+            const auto &k = compliance.unknown[i];
+            for (unsigned int d = 0; d < 3; ++d)
+              if (k[d] >= 0)
+                {
+                  s.nodal_force[i][d]  = F(k[d]);
+                  s.displacement[i][d] = u(k[d]);
+                }
+            const double P = s.nodal_force[i][2], g = f[i] - s.depth + s.displacement[i][2];
+            s.slip[i] = {{s.displacement[i][0] - last.displacement[i][0] - step,
+                          s.displacement[i][1] - last.displacement[i][1]}};
+            const double normal = P - c * g;
+            if (!(normal > 0))
+              next[i] = NodeStatus::separated;
+            else
+              {
+                std::array<double, 2> z = {{s.nodal_force[i][0] - c * s.slip[i][0],
+                                            k[1] >= 0 ? s.nodal_force[i][1] - c * s.slip[i][1] : 0.0}};
+                const double size_z = std::hypot(z[0], z[1]);
+                if (full_stick || size_z <= mu * normal)
+                  next[i] = NodeStatus::stick;
+                else
+                  {
+                    next[i] = NodeStatus::slip;
+                    const std::array<double, 2> direction_i = {{z[0] / size_z, z[1] / size_z}};
+                    if (s.status[i] == NodeStatus::slip)
+                      turn = std::max(turn, std::hypot(direction_i[0] - t[i][0], direction_i[1] - t[i][1]));
+                    t[i] = direction_i;
+                  }
+              }
+            changed = changed || next[i] != s.status[i];
+          }
+        if (force_control && std::none_of(next.begin(), next.end(), [](NodeStatus x) { return x != NodeStatus::separated; }))
+          next[std::min_element(f.begin(), f.end()) - f.begin()] = NodeStatus::stick;
+        s.iterations = it;
+        if (!changed && turn <= parameters.direction_tolerance)
+          {
+            s.converged = true;
+            break;
+          }
+        s.status = next;
+      }
+
+    s.force_x = s.force_z = 0;
+    for (unsigned int i = 0; i < n; ++i)
+      {
+        s.force_x += 2 * s.nodal_force[i][0];
+        s.force_z += 2 * s.nodal_force[i][2];
+        s.n_contact += s.status[i] != NodeStatus::separated;
+        s.n_stick += s.status[i] == NodeStatus::stick;
+        s.n_slip += s.status[i] == NodeStatus::slip;
+      }
+    if (s.converged)
+      {
+        last      = s;
+        direction = t;
+      }
+    else
+      {
+        std::ostringstream msg;
+        msg << "the active set did not converge in " << parameters.max_iterations << " iterations (d = " << s.depth
+            << ", delta = " << delta << ", " << s.n_stick << " stick and " << s.n_slip << " slip nodes at the end)";
+        s.message = msg.str();
+      }
+    return s;
+  }
+} // namespace gradcontact::fem

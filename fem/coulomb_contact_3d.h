@@ -1,0 +1,113 @@
+// Coulomb frictional contact of a rigid indenter on the 3D half-space model, solved exactly on the
+// surface: the normal contact (Signorini) and the friction law with a free slip direction, node by node,
+// no assumption about the stick zone's shape or the slip direction.
+//
+// Surface problem. The body is linear, so the displacements of the candidate surface nodes are
+// u = C F, C the surface compliance (HalfSpace3DSolver::surface_compliance: one solve per nodal force
+// component with the factorisation of the far-field-clamped body) and F the nodal forces the indenter
+// exerts on the half body: F_i = (Q_x, Q_y, P), P > 0 pressing into the material (+z). The unknowns of
+// the symmetry plane's u_y (zero) are left out. The rigid indenter, profile f(r), is at depth d (z into the
+// material) and tangential position delta e_x. With the previous converged step marked 0:
+//   gap        g_i = f(r_i) - d + u_z,i >= 0,  P_i >= 0,  P_i g_i = 0;
+//   slip       s_i = (u_t,i - u_t,i^0) - (delta - delta^0) e_x (the body's surface relative to the indenter);
+//   friction   |Q_i| <= mu P_i; |Q_i| < mu P_i => s_i = 0; else Q_i = -mu P_i s_i / |s_i| (Q_i opposes s_i).
+// Nodal forces and the nodal Coulomb law: the consistent nodal forces of a FE_Q(p) face are positive for a
+// positive traction for the Lagrange elements used, so P_i >= 0 and |Q_i| <= mu P_i are the discrete
+// Signorini and Coulomb conditions (the usual node-to-rigid-surface discretisation).
+//
+// Solver: the primal-dual active set method of Hueber, Stadler and Wohlmuth (SIAM J. Sci. Comput. 30 (2008)
+// 572-596) on the surface unknowns: with z_i = Q_i - c s_i and c the stiffness scale 1 / mean(C_zz),
+//   node i is in contact when P_i - c g_i > 0, sticks when |z_i| <= mu (P_i - c g_i), slips otherwise with
+//   direction t_i = z_i / |z_i| (Q_i = mu P_i t_i);
+// each iteration solves the dense linear system of the current sets and directions (LAPACK LU); it stops
+// when the sets do not change and the directions move by less than `direction_tolerance`. The iteration
+// counts are reported; a step that does not converge in `max_iterations` says so (converged = false) and
+// is not used as the start of the next step's increments.
+//
+// Control: depth (d given) or force (F_z of the whole body given, d an unknown). F_x, F_z are the whole body's
+// (twice the half's).
+#ifndef GRADCONTACT_FEM_COULOMB_CONTACT_3D_H
+#define GRADCONTACT_FEM_COULOMB_CONTACT_3D_H
+
+#include <fem/loads.h>
+
+#include <deal.II/base/point.h>
+#include <deal.II/lac/full_matrix.h>
+
+#include <array>
+#include <limits>
+#include <string>
+#include <vector>
+
+namespace gradcontact::fem
+{
+  /// The compliance of the candidate surface nodes of the half body (HalfSpace3DSolver::surface_compliance).
+  struct SurfaceCompliance3D
+  {
+    std::vector<dealii::Point<2>> nodes; ///< (x, y) on z = 0, y >= 0, physical units
+    /// index of component c of node i among the unknowns, or -1 (u_y on the symmetry plane)
+    std::vector<std::array<int, 3>> unknown;
+    dealii::FullMatrix<double>      C;    ///< u_k = sum_l C(k, l) F_l over the unknowns
+    std::vector<double>             area; ///< \int_{z=0} phi_i dA of each node's shape function (half body)
+  };
+
+  enum class NodeStatus
+  {
+    separated = 0,
+    stick     = 1,
+    slip      = 2
+  };
+
+  struct CoulombParameters
+  {
+    double       mu                  = 0.3;   ///< friction coefficient, >= 0 (infinity: full stick)
+    unsigned int max_iterations      = 200;   ///< active-set iterations per step, >= 1
+    double       direction_tolerance = 1e-10; ///< largest change of a slip direction at convergence, (0, 1)
+
+    void validate() const;
+  };
+
+  struct CoulombState3D
+  {
+    double depth = 0, delta = 0;         ///< d and the indenter's tangential position
+    double force_x = 0, force_z = 0;     ///< whole body
+    unsigned int n_contact = 0, n_stick = 0, n_slip = 0;
+    unsigned int iterations = 0;          ///< active-set iterations of this step
+    bool         converged  = false;
+    std::string  message;                 ///< why not converged
+    std::vector<NodeStatus>            status;       ///< per node
+    std::vector<std::array<double, 3>> nodal_force;  ///< (Q_x, Q_y, P) per node, half body
+    std::vector<std::array<double, 3>> displacement; ///< u per node
+    std::vector<std::array<double, 2>> slip;         ///< s per node (this step's increment)
+  };
+
+  class CoulombContact3D
+  {
+  public:
+    CoulombContact3D(const SurfaceCompliance3D &surface, const Profile &profile, const CoulombParameters &parameters);
+
+    /// One step from the last converged state to depth d and tangential position delta.
+    CoulombState3D step_depth(double depth, double delta);
+    /// One step to the whole body's normal force F_z (> 0) and tangential position delta.
+    CoulombState3D step_force(double force_z, double delta);
+    /// Forgets the loading history (the unloaded, unslipped state).
+    void reset();
+    /// Changes mu for the next steps (e.g. frictionless normal loading, then friction before shearing).
+    void set_friction(double mu);
+
+    const SurfaceCompliance3D &surface() const { return compliance; }
+
+  private:
+    CoulombState3D solve(bool force_control, double target, double delta);
+
+    const SurfaceCompliance3D compliance;
+    const Profile             profile;
+    CoulombParameters         parameters;
+    std::vector<double>       f;             ///< f(r_i)
+    double                    c = 1;         ///< the stiffness scale of the set updates
+    CoulombState3D            last;          ///< the last converged state
+    std::vector<std::array<double, 2>> direction; ///< slip directions of the last iterate
+  };
+} // namespace gradcontact::fem
+
+#endif
