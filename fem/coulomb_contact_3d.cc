@@ -21,6 +21,8 @@ namespace gradcontact::fem
       fail("CoulombParameters", "max_iterations", max_iterations, "[1, inf)");
     if (!(direction_tolerance > 0 && direction_tolerance < 1))
       fail("CoulombParameters", "direction_tolerance", direction_tolerance, "(0, 1)");
+    if (!(set_tolerance >= 0 && set_tolerance < 1e-3))
+      fail("CoulombParameters", "set_tolerance", set_tolerance, "[0, 1e-3)");
   }
 
 
@@ -103,7 +105,12 @@ namespace gradcontact::fem
     CoulombState3D s;
     s.delta  = delta;
     s.depth  = force_control ? last.depth : target;
+    // The trial state of every step: the nodes in contact stick (the elastic predictor of a return mapping;
+    // starting from the last step's slip directions cycles when the load reverses).
     s.status = last.status;
+    for (NodeStatus &status : s.status)
+      if (status == NodeStatus::slip)
+        status = NodeStatus::stick;
     if (!force_control)
       for (unsigned int i = 0; i < n; ++i) // nodes the indenter would now penetrate start in contact
         if (s.status[i] == NodeStatus::separated && f[i] - s.depth + last.displacement[i][2] < 0)
@@ -113,6 +120,12 @@ namespace gradcontact::fem
     std::vector<std::array<double, 2>> t = direction;
 
     Vector<double> F(size), u(m);
+    for (unsigned int i = 0; i < n; ++i) // the Newton steps of the slip law start from the last state
+      for (unsigned int d = 0; d < 3; ++d)
+        if (compliance.unknown[i][d] >= 0)
+          F(compliance.unknown[i][d]) = last.nodal_force[i][d];
+    if (force_control)
+      F(m) = last.depth;
     for (unsigned int it = 1; it <= parameters.max_iterations; ++it)
       {
         // The linear system of the current sets and directions.
@@ -153,14 +166,48 @@ namespace gradcontact::fem
                           rhs(k[1]) = last.displacement[i][1];
                         }
                     }
-                  else
+                  else if (k[1] < 0)
                     {
+                      // On the symmetry plane the slip is along x: Q_x = mu P t_x, t_x = +-1 (linear).
                       A(k[0], k[0]) = 1;
                       A(k[0], k[2]) = -mu * t[i][0];
-                      if (k[1] >= 0)
+                    }
+                  else
+                    {
+                      // Phi = Q - mu P t(z), t(z) = z / |z|, z = Q - c s(F): a Newton step of the slip law
+                      // linearised at the current iterate F (the direction's derivative (I - t t^T) / |z| included),
+                      //   dPhi = (I - M) dQ - mu t dP + c M C_t dF,   M = mu P (I - t t^T) / |z|,
+                      // written as the linear system J F_new = J F - Phi(F).
+                      const double P = F(k[2]);
+                      const std::array<double, 2> Q = {{F(k[0]), F(k[1])}};
+                      std::array<double, 2> z{}, s_now{};
+                      for (unsigned int j = 0; j < 2; ++j)
                         {
-                          A(k[1], k[1]) = 1;
-                          A(k[1], k[2]) = -mu * t[i][1];
+                          double u = 0;
+                          for (unsigned int l = 0; l < m; ++l)
+                            u += compliance.C(k[j], l) * F(l);
+                          s_now[j] = u - last.displacement[i][j] - (j == 0 ? step : 0.0);
+                          z[j]     = Q[j] - c * s_now[j];
+                        }
+                      const double size_z = std::hypot(z[0], z[1]);
+                      const std::array<double, 2> ti = size_z > 0 ? std::array<double, 2>{{z[0] / size_z, z[1] / size_z}} : t[i];
+                      double M[2][2];
+                      for (unsigned int a = 0; a < 2; ++a)
+                        for (unsigned int b = 0; b < 2; ++b)
+                          M[a][b] = size_z > 0 ? mu * std::max(P, 0.0) * ((a == b ? 1.0 : 0.0) - ti[a] * ti[b]) / size_z : 0.0;
+                      for (unsigned int a = 0; a < 2; ++a)
+                        {
+                          const unsigned int row = k[a];
+                          for (unsigned int l = 0; l < m; ++l)
+                            A(row, l) = c * (M[a][0] * compliance.C(k[0], l) + M[a][1] * compliance.C(k[1], l));
+                          for (unsigned int b = 0; b < 2; ++b)
+                            A(row, k[b]) += (a == b ? 1.0 : 0.0) - M[a][b];
+                          A(row, k[2]) += -mu * ti[a];
+                          // rhs = J F - Phi(F)
+                          double JF = 0;
+                          for (unsigned int l = 0; l < m; ++l)
+                            JF += A(row, l) * F(l);
+                          rhs(row) = JF - (Q[a] - mu * P * ti[a]);
                         }
                     }
                   break;
@@ -173,8 +220,9 @@ namespace gradcontact::fem
             rhs(m) = target / 2; // the half body
           }
         A.compute_lu_factorization();
-        F = rhs;
-        A.solve(F);
+        Vector<double> solution = rhs;
+        A.solve(solution);
+        F = solution;
         if (force_control)
           s.depth = F(m);
         for (unsigned int k = 0; k < m; ++k)
@@ -192,6 +240,10 @@ namespace gradcontact::fem
         s.displacement.assign(n, {{0, 0, 0}});
         s.slip.assign(n, {{0, 0}});
         std::vector<NodeStatus> next(n);
+        double                  largest = 0;
+        for (unsigned int i = 0; i < n; ++i)
+          largest = std::max(largest, std::abs(F(compliance.unknown[i][2])));
+        const double band = parameters.set_tolerance * largest;
         for (unsigned int i = 0; i < n; ++i)
           {
             const auto &k = compliance.unknown[i];
@@ -204,15 +256,20 @@ namespace gradcontact::fem
             const double P = s.nodal_force[i][2], g = f[i] - s.depth + s.displacement[i][2];
             s.slip[i] = {{s.displacement[i][0] - last.displacement[i][0] - step,
                           s.displacement[i][1] - last.displacement[i][1]}};
+            // A node changes its set only when its criterion is violated by more than `band` (a node at the
+            // edge of the contact or the stick zone with a criterion at round-off level would otherwise flip
+            // back and forth).
             const double normal = P - c * g;
-            if (!(normal > 0))
+            const bool   in_contact = s.status[i] != NodeStatus::separated;
+            if (in_contact ? normal < -band : !(normal > band))
               next[i] = NodeStatus::separated;
             else
               {
                 std::array<double, 2> z = {{s.nodal_force[i][0] - c * s.slip[i][0],
                                             k[1] >= 0 ? s.nodal_force[i][1] - c * s.slip[i][1] : 0.0}};
                 const double size_z = std::hypot(z[0], z[1]);
-                if (full_stick || size_z <= mu * normal)
+                const double limit  = mu * std::max(normal, 0.0);
+                if (full_stick || (s.status[i] == NodeStatus::slip ? size_z < limit - band : size_z <= limit + band))
                   next[i] = NodeStatus::stick;
                 else
                   {

@@ -19,8 +19,10 @@
 // 572-596) on the surface unknowns: with z_i = Q_i - c s_i and c the stiffness scale 1 / mean(C_zz),
 //   node i is in contact when P_i - c g_i > 0, sticks when |z_i| <= mu (P_i - c g_i), slips otherwise with
 //   direction t_i = z_i / |z_i| (Q_i = mu P_i t_i);
-// each iteration solves the dense linear system of the current sets and directions (LAPACK LU); it stops
-// when the sets do not change and the directions move by less than `direction_tolerance`. The iteration
+// each iteration solves the dense linear system of the current sets (LAPACK LU), with the slip law
+// Q = mu P t(z) linearised at the current iterate including the derivative of the direction (a
+// semi-smooth Newton step; on the symmetry plane the direction is +-x and the law linear); it stops when the
+// sets do not change and the directions move by less than `direction_tolerance`. The iteration
 // counts are reported; a step that does not converge in `max_iterations` says so (converged = false) and
 // is not used as the start of the next step's increments.
 //
@@ -63,6 +65,9 @@ namespace gradcontact::fem
     double       mu                  = 0.3;   ///< friction coefficient, >= 0 (infinity: full stick)
     unsigned int max_iterations      = 200;   ///< active-set iterations per step, >= 1
     double       direction_tolerance = 1e-10; ///< largest change of a slip direction at convergence, (0, 1)
+    /// A node changes its set only when its criterion is violated by more than this times the largest nodal
+    /// normal force, [0, 1e-3): the accuracy to which the contact and stick zones are found.
+    double       set_tolerance       = 1e-9;
 
     void validate() const;
   };
