@@ -132,8 +132,20 @@ int main(int argc, char **argv)
               failed = 1;
           };
           CoulombState3D state;
+          unsigned int   normal_slip = 0;
           for (unsigned int i = 1; i <= normal_steps; ++i)
-            print("normal", state = contact.step_depth(d_max * i / normal_steps, 0.0));
+            {
+              print("normal", state = contact.step_depth(d_max * i / normal_steps, 0.0));
+              normal_slip = std::max(normal_slip, state.n_slip);
+            }
+          // expect_stick=1: a decoupled pairing (k = 0 with nu = 1/2, nu = 1 / (2 + k)) loaded normally with
+          // friction has no tangential traction, so no node may slip.
+          if (num("expect_stick", 0) != 0 && mu_normal > 0 && normal_slip > 0)
+            {
+              if (root)
+                std::printf("FAILED: %u nodes slipped during the normal loading of a decoupled pairing\n", normal_slip);
+              failed = 1;
+            }
           if (compare)
             {
               const double difference = std::abs(state.force_z / reference_force - 1);
@@ -155,12 +167,26 @@ int main(int argc, char **argv)
             {
               for (unsigned int i = 1; i <= tangential_steps; ++i)
                 print("loading", state = contact.step_depth(d_max, delta_max * i / tangential_steps));
+              const double loaded = state.force_x;
               if (num("cycle", 0) != 0)
                 {
                   for (unsigned int i = 1; i <= 2 * tangential_steps; ++i)
                     print("unloading", state = contact.step_depth(d_max, delta_max * (1.0 - 2.0 * i / (2 * tangential_steps))));
                   for (unsigned int i = 1; i <= 2 * tangential_steps; ++i)
                     print("reloading", state = contact.step_depth(d_max, delta_max * (-1.0 + 2.0 * i / (2 * tangential_steps))));
+                  // The loop closes: back at delta_max after a full cycle, F_x is the loading curve's (Masing;
+                  // exact for the decoupled pairings, where the state at +-delta_max is the same slip pattern).
+                  const double closure = std::abs(state.force_x / loaded - 1);
+                  if (root)
+                    std::printf("cycle: F_x at delta_max on loading %.10e, after the cycle %.10e, relative difference %.3e\n",
+                                loaded, state.force_x, closure);
+                  const double expect_closure = num("expect_closure", 0);
+                  if (expect_closure > 0 && !(closure <= expect_closure))
+                    {
+                      if (root)
+                        std::printf("FAILED: the hysteresis loop does not close within %.1e\n", expect_closure);
+                      failed = 1;
+                    }
                 }
             }
           return dealii::Utilities::MPI::max(failed, world);
