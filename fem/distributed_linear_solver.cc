@@ -36,6 +36,16 @@ namespace gradcontact::fem
 
 
 
+  MPI_Comm require_mpi(const MPI_Comm communicator, const std::string &who)
+  {
+    if (!Utilities::MPI::job_supports_mpi())
+      throw std::runtime_error(who + ": MPI is not initialised; the program must create a "
+                                     "dealii::Utilities::MPI::MPI_InitFinalize object first");
+    return communicator;
+  }
+
+
+
   template <int dim>
   DistributedLinearSolver<dim>::DistributedLinearSolver(const DistributedSolverParameters &parameters_,
                                                         const DoFHandler<dim> &dof_handler_, const unsigned int degree_)

@@ -43,6 +43,10 @@ namespace gradcontact::fem
     void validate() const;
   };
 
+  /// `communicator`, after checking that MPI is up (p4est and Trilinos need it even on one process); throws
+  /// std::runtime_error naming `who` otherwise.
+  MPI_Comm require_mpi(MPI_Comm communicator, const std::string &who);
+
   /// What one solve did.
   struct LinearSolveReport
   {

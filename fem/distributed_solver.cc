@@ -32,17 +32,6 @@ namespace gradcontact::fem
 
 
 
-  namespace
-  {
-    /// The communicator, after checking that MPI is up (Trilinos and p4est need it even on one process).
-    MPI_Comm checked(const MPI_Comm communicator)
-    {
-      if (!Utilities::MPI::job_supports_mpi())
-        throw std::runtime_error("DistributedSolver: MPI is not initialised; the program must create a "
-                                 "dealii::Utilities::MPI::MPI_InitFinalize object first");
-      return communicator;
-    }
-  } // namespace
 
 
 
@@ -50,7 +39,7 @@ namespace gradcontact::fem
                                        const MeshParameters &mesh_,
                                        const DiscretizationParameters &discretization_,
                                        const DistributedSolverParameters &solver_)
-    : communicator(checked(communicator_))
+    : communicator(require_mpi(communicator_, "DistributedSolver"))
     , material((material_.validate(), material_))
     , mesh_parameters((mesh_.validate(), mesh_))
     , discretization((discretization_.validate(),

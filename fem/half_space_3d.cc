@@ -28,14 +28,6 @@ namespace gradcontact::fem
 
   namespace
   {
-    MPI_Comm checked(const MPI_Comm communicator)
-    {
-      if (!Utilities::MPI::job_supports_mpi())
-        throw std::runtime_error("HalfSpace3DSolver: MPI is not initialised; the program must create a "
-                                 "dealii::Utilities::MPI::MPI_InitFinalize object first");
-      return communicator;
-    }
-
     double elapsed_max(const std::chrono::steady_clock::time_point &start, const MPI_Comm communicator)
     {
       return Utilities::MPI::max(seconds_since(start), communicator);
@@ -66,7 +58,7 @@ namespace gradcontact::fem
                                        const HalfSpaceMesh3DParameters &mesh_,
                                        const DiscretizationParameters &discretization_,
                                        const DistributedSolverParameters &solver_)
-    : communicator(checked(communicator_))
+    : communicator(require_mpi(communicator_, "HalfSpace3DSolver"))
     , material((material_.validate(), material_))
     , mesh_parameters((mesh_.validate(), mesh_))
     , discretization((discretization_.validate(),

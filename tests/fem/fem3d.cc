@@ -34,6 +34,20 @@
 
 using namespace gradcontact::fem;
 
+namespace
+{
+  /// The meridian mesh of the same truncated body (the cylinder r <= L, z <= L) for the axisymmetric and
+  /// mode-1 references: the recommended mesh for k with the far field at L.
+  MeshParameters meridian_of(const HalfSpaceMesh3DParameters &mesh, const double k)
+  {
+    MeshParameters meridian  = recommended_mesh_parameters(mesh.contact_radius, k, 1e-8);
+    meridian.far_field_size  = mesh.far_field_size;
+    meridian.near_field_size = std::min(meridian.near_field_size, mesh.far_field_size);
+    meridian.h_far           = std::min(meridian.h_far, meridian.near_field_size);
+    return meridian;
+  }
+} // namespace
+
 int main(int argc, char **argv)
 {
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
@@ -87,10 +101,7 @@ int main(int argc, char **argv)
               double reference[2] = {0, 0};
               if (root)
                 {
-                  MeshParameters meridian  = recommended_mesh_parameters(a, k, 1e-8);
-                  meridian.far_field_size  = mesh.far_field_size;
-                  meridian.near_field_size = std::min(meridian.near_field_size, mesh.far_field_size);
-                  meridian.h_far           = std::min(meridian.h_far, meridian.near_field_size);
+                  const MeshParameters meridian = meridian_of(mesh, k);
                   DiscretizationParameters reference_disc;
                   reference_disc.degree = 3;
                   AxisymmetricSolver axisymmetric(material, meridian, reference_disc);
@@ -280,10 +291,7 @@ int main(int argc, char **argv)
           if (root)
             {
               // The meridian models of the same cylinder r <= L, z <= L.
-              MeshParameters meridian = recommended_mesh_parameters(a, k, 1e-8);
-              meridian.far_field_size = mesh.far_field_size;
-              meridian.near_field_size = std::min(meridian.near_field_size, mesh.far_field_size);
-              meridian.h_far           = std::min(meridian.h_far, meridian.near_field_size);
+              const MeshParameters meridian = meridian_of(mesh, k);
               DiscretizationParameters reference_disc;
               reference_disc.degree = 3;
               const double expect   = num("expect", 0);
