@@ -6,12 +6,17 @@
 // load = normal (u_z = d, u_x, u_y free), tangential (u_x = delta, u_y = 0, u_z free), bonded (u = (delta, 0, d)),
 // all (the three), or sphere: Coulomb frictional contact of a rigid sphere (fem/coulomb_contact_3d.h; keys mu,
 // mu_normal, depth, delta, normal_steps, tangential_steps, cycle, candidates; compare=1: F_z at the end of the
-// normal loading against the frictionless axisymmetric model, expect=X). serial=1 (with np > 1): process 0 also runs the 3D model on MPI_COMM_SELF, and the
+// normal loading against the frictionless axisymmetric model, expect=X; theory=1: F_z and the loading F_x(delta)
+// against the chapter's closed forms for the half-space (9.24, 9.80; a decoupled pairing at a large L),
+// expect_theory=X). serial=1 (with np > 1): process 0 also runs the 3D model on MPI_COMM_SELF, and the
 // program fails unless every force agrees within serial_tol relative. compare=1: process 0 runs the
 // axisymmetric model (normal punch: F_z) and the Fourier mode-1 model (tangential punch: F_x) on the
 // meridian mesh of the same body (the cylinder r <= L, z <= L; fem/mesh.h at L, otherwise the recommended
 // mesh) and prints the relative differences; with expect=X it fails when one exceeds X. Prints key=value
 // lines (process 0).
+#include <analytic/material.h>
+#include <analytic/normal.h>
+#include <analytic/tangential.h>
 #include <fem/axisymmetric_solver.h>
 #include <fem/coulomb_contact_3d.h>
 #include <fem/fourier_mode1_solver.h>
@@ -176,8 +181,52 @@ int main(int argc, char **argv)
           const double delta_max = num("delta", 1.0) * mu * d_max;
           if (mu > 0 && tangential_steps > 0)
             {
+              // theory=1: the chapter's closed forms for the half-space (meaningful at a large L and for a
+              // decoupled pairing): the contact radius at d (9.24 family), F_N(a), and on loading the Cattaneo-Mindlin
+              // law of the graded sphere (9.80): delta = mu alpha d [1 - (c/a)^2], F_x = mu F_N [1 - (c/a)^(k+3)].
+              const bool theory       = num("theory", 0) != 0;
+              double     theory_worst = 0; // the largest relative difference from the closed forms
+              gradcontact::Medium medium{};
+              double              a_theory = 0;
+              const gradcontact::Paraboloid sphere{R};
+              if (theory)
+                {
+                  medium   = gradcontact::medium(gradcontact::GradedHalfSpace{E0, c0, k, nu});
+                  a_theory = gradcontact::contact_radius_from_depth(medium, gradcontact::as_power_law(sphere), d_max);
+                  const double F_theory = gradcontact::force(medium, sphere, a_theory);
+                  theory_worst          = std::abs(state.force_z / F_theory - 1);
+                  if (root)
+                    std::printf("theory: a/a_mesh=%.6f F_N=%.10e 3D F_z=%.10e relative difference %.3e\n", a_theory / a,
+                                F_theory, state.force_z, std::abs(state.force_z / F_theory - 1));
+                }
               for (unsigned int i = 1; i <= tangential_steps; ++i)
-                print("loading", state = contact.step_depth(d_max, delta_max * i / tangential_steps));
+                {
+                  print("loading", state = contact.step_depth(d_max, delta_max * i / tangential_steps));
+                  if (theory)
+                    {
+                      const double full = mu * medium.alpha() * gradcontact::depth(medium, sphere, a_theory);
+                      const double u    = delta_max * i / tangential_steps;
+                      if (u < full)
+                        {
+                          const double c  = a_theory * std::sqrt(1 - u / full);
+                          const double Fx = gradcontact::tangential::tangential_force(
+                            medium, gradcontact::tangential::SphereSlip{R, mu}, a_theory, c);
+                          const double difference = std::abs(state.force_x / Fx - 1);
+                          if (root)
+                            std::printf("theory: delta=%.4e c/a=%.4f F_x(9.80)=%.10e 3D F_x=%.10e relative difference %.3e\n",
+                                        u, c / a_theory, Fx, state.force_x, difference);
+                          theory_worst = std::max(theory_worst, difference);
+                        }
+                    }
+                }
+              const double expect_theory = num("expect_theory", 0);
+              if (theory && expect_theory > 0 && !(theory_worst <= expect_theory))
+                {
+                  if (root)
+                    std::printf("FAILED: the 3D model is %.2e off the closed forms (9.24, 9.80), more than %.1e\n",
+                                theory_worst, expect_theory);
+                  failed = 1;
+                }
               const double loaded = state.force_x;
               if (num("cycle", 0) != 0)
                 {
