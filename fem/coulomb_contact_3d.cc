@@ -38,14 +38,12 @@ namespace gradcontact::fem
       throw std::invalid_argument("CoulombContact3D: the surface compliance is empty or inconsistent");
     f.resize(n);
     double diagonal = 0;
-    unsigned int count = 0;
     for (unsigned int i = 0; i < n; ++i)
       {
         f[i] = profile(compliance.nodes[i].norm(), 0.0);
         diagonal += compliance.C(compliance.unknown[i][2], compliance.unknown[i][2]);
-        ++count;
       }
-    c = count / diagonal;
+    c = n / diagonal;
     reset();
   }
 
@@ -126,6 +124,17 @@ namespace gradcontact::fem
           F(compliance.unknown[i][d]) = last.nodal_force[i][d];
     if (force_control)
       F(m) = last.depth;
+    // u = C F of the current iterate (the slip law's linearisation and the set updates use it)
+    const auto displacements = [&](const Vector<double> &forces) {
+      for (unsigned int k = 0; k < m; ++k)
+        {
+          double v = 0;
+          for (unsigned int l = 0; l < m; ++l)
+            v += compliance.C(k, l) * forces(l);
+          u(k) = v;
+        }
+    };
+    displacements(F);
     for (unsigned int it = 1; it <= parameters.max_iterations; ++it)
       {
         // The linear system of the current sets and directions.
@@ -180,15 +189,9 @@ namespace gradcontact::fem
                       // written as the linear system J F_new = J F - Phi(F).
                       const double P = F(k[2]);
                       const std::array<double, 2> Q = {{F(k[0]), F(k[1])}};
-                      std::array<double, 2> z{}, s_now{};
+                      std::array<double, 2> z{};
                       for (unsigned int j = 0; j < 2; ++j)
-                        {
-                          double u = 0;
-                          for (unsigned int l = 0; l < m; ++l)
-                            u += compliance.C(k[j], l) * F(l);
-                          s_now[j] = u - last.displacement[i][j] - (j == 0 ? step : 0.0);
-                          z[j]     = Q[j] - c * s_now[j];
-                        }
+                        z[j] = Q[j] - c * (u(k[j]) - last.displacement[i][j] - (j == 0 ? step : 0.0));
                       const double size_z = std::hypot(z[0], z[1]);
                       const std::array<double, 2> ti = size_z > 0 ? std::array<double, 2>{{z[0] / size_z, z[1] / size_z}} : t[i];
                       double M[2][2];
@@ -220,18 +223,11 @@ namespace gradcontact::fem
             rhs(m) = target / 2; // the half body
           }
         A.compute_lu_factorization();
-        Vector<double> solution = rhs;
-        A.solve(solution);
-        F = solution;
+        F = rhs;
+        A.solve(F);
         if (force_control)
           s.depth = F(m);
-        for (unsigned int k = 0; k < m; ++k)
-          {
-            double v = 0;
-            for (unsigned int l = 0; l < m; ++l)
-              v += compliance.C(k, l) * F(l);
-            u(k) = v;
-          }
+        displacements(F);
 
         // The new sets and directions.
         bool   changed  = false;

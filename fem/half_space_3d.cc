@@ -151,6 +151,12 @@ namespace gradcontact::fem
     std::unique_ptr<Constrained> &slot = by_mask[mask];
     slot = std::make_unique<Constrained>();
     Constrained &c = *slot;
+    c.solver = std::make_unique<DistributedLinearSolver<3>>(solver_parameters, dof_handler, discretization.degree);
+    if (mask == 0) // nothing prescribed: the free stiffness itself
+      {
+        c.matrix = &stiffness;
+        return c;
+      }
     c.constraints.clear();
     c.constraints.reinit(relevant);
     c.constraints.merge(constraints);
@@ -162,9 +168,9 @@ namespace gradcontact::fem
     DynamicSparsityPattern dsp(relevant);
     DoFTools::make_sparsity_pattern(dof_handler, dsp, c.constraints, false);
     SparsityTools::distribute_sparsity_pattern(dsp, owned, communicator, relevant);
-    c.matrix.reinit(owned, owned, dsp, communicator);
-    assemble(c.constraints, c.matrix);
-    c.solver = std::make_unique<DistributedLinearSolver<3>>(solver_parameters, dof_handler, discretization.degree);
+    c.own_matrix.reinit(owned, owned, dsp, communicator);
+    assemble(c.constraints, c.own_matrix);
+    c.matrix = &c.own_matrix;
     return c;
   }
 
@@ -201,7 +207,7 @@ namespace gradcontact::fem
           if (owned.is_element(i))
             b[i] = 0;
     b.compress(VectorOperation::insert);
-    result.linear         = c.solver->solve(c.matrix, b, w);
+    result.linear         = c.solver->solve(*c.matrix, b, w);
     result.time.factorize = result.linear.factorize;
     w += g;
 
@@ -324,7 +330,7 @@ namespace gradcontact::fem
         if (owned.is_element(dofs[l]))
           b[dofs[l]] = 1;
         b.compress(VectorOperation::insert);
-        free.solver->solve(free.matrix, b, w);
+        free.solver->solve(*free.matrix, b, w);
         std::vector<double> column(m, 0.0);
         for (unsigned int k = 0; k < m; ++k)
           if (owned.is_element(dofs[k]))

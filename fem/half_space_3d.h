@@ -109,7 +109,8 @@ namespace gradcontact::fem
     struct Constrained
     {
       dealii::AffineConstraints<double>              constraints; ///< free ones + the prescribed lines
-      Matrix                                         matrix;
+      Matrix                                         own_matrix; ///< assembled when something is prescribed
+      const Matrix                                  *matrix = nullptr; ///< own_matrix, or the free stiffness
       std::unique_ptr<DistributedLinearSolver<3>>    solver;
     };
 

@@ -83,12 +83,7 @@ int main(int argc, char **argv)
       disc.degree = 2;
       args.apply(disc);
       DistributedSolverParameters parameters;
-      const std::string solver_name = args.text("solver", "direct");
-      if (solver_name == "amg")
-        parameters.method = DistributedSolverParameters::Method::amg_cg;
-      else if (solver_name != "direct")
-        throw std::invalid_argument("fem3d: solver = " + solver_name + " outside {direct, amg}");
-      parameters.relative_tolerance = num("tol", parameters.relative_tolerance);
+      args.apply(parameters);
 
       if (args.text("load", "all") == "sphere")
         {

@@ -47,14 +47,7 @@ int main(int argc, char **argv)
       DiscretizationParameters disc;
       args.apply(disc);
       DistributedSolverParameters parameters;
-      const std::string solver_name = args.text("solver", "direct");
-      if (solver_name == "amg")
-        parameters.method = DistributedSolverParameters::Method::amg_cg;
-      else if (solver_name != "direct")
-        throw std::invalid_argument("fem_mpi: solver = " + solver_name + " outside {direct, amg}");
-      parameters.relative_tolerance    = num("tol", parameters.relative_tolerance);
-      parameters.aggregation_threshold = num("threshold", parameters.aggregation_threshold);
-      parameters.smoother_sweeps       = static_cast<unsigned>(num("sweeps", parameters.smoother_sweeps));
+      args.apply(parameters);
 
       LoadCase load;
       if (load_name == "punch")

@@ -4,10 +4,12 @@
 //   mesh:            h_edge h_surface h_far g (ring growth) L (far field / a) layer (surface layer / a)
 //                    R1 (near field / a) halving_radius axis_refinements edge_refinements global
 //   discretisation:  p (degree) extra_q subdiv formulation=displacement|mixed|automatic
+//   distributed:     solver=direct|amg tol threshold sweeps
 #ifndef GRADCONTACT_TESTS_FEM_STUDY_ARGUMENTS_H
 #define GRADCONTACT_TESTS_FEM_STUDY_ARGUMENTS_H
 
 #include <fem/discretization.h>
+#include <fem/distributed_linear_solver.h>
 #include <fem/mesh.h>
 
 #include <map>
@@ -90,6 +92,19 @@ namespace gradcontact::fem::testing
       else if (formulation != "displacement")
         throw std::invalid_argument(tool + ": formulation = '" + formulation +
                                     "' outside {displacement, mixed, automatic}");
+    }
+
+    /// solver=direct|amg tol threshold sweeps into `parameters` (fem_mpi, fem3d).
+    void apply(DistributedSolverParameters &parameters) const
+    {
+      const std::string solver = text("solver", "direct");
+      if (solver == "amg")
+        parameters.method = DistributedSolverParameters::Method::amg_cg;
+      else if (solver != "direct")
+        throw std::invalid_argument(tool + ": solver = " + solver + " outside {direct, amg}");
+      parameters.relative_tolerance    = num("tol", parameters.relative_tolerance);
+      parameters.aggregation_threshold = num("threshold", parameters.aggregation_threshold);
+      parameters.smoother_sweeps       = count("sweeps", parameters.smoother_sweeps);
     }
 
   private:
