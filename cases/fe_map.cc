@@ -2,6 +2,7 @@
 
 #include "analytic_reference.h"
 #include "fe_cohesive.h"
+#include "fe_coulomb_3d.h"
 #include "fe_model.h"
 #include "fe_scene.h"
 #include "map_published.h"
@@ -673,6 +674,8 @@ namespace gradcontact::cases
   SceneResult run_map_scene(const Scene &s, const fs::path &folder, const bool verbose)
   {
     require_kind(s, SceneKind::map, "run_map_scene");
+    if (s.map.parameter == MapParameters::Parameter::coulomb_3d)
+      return run_coulomb_map(s, folder, verbose);
     if (s.map.parameter == MapParameters::Parameter::tabor_parameter)
       {
         MapShard all;

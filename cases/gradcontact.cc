@@ -14,8 +14,11 @@
 //          "nu":0.3},"geometry":{"R":0.01},"a":1e-4}' | gradcontact eval
 //   gradcontact run cases/default
 //
-// Errors are reported here, at the boundary: what() on stderr and a non-zero exit code.
+// Errors are reported here, at the boundary: what() on stderr and a non-zero exit code. MPI is initialised
+// here (a singleton process without mpirun) for the scenes of the distributed 3D model (cases/fe_coulomb_3d.h).
 #include "command_line.h"
+
+#include <deal.II/base/mpi.h>
 
 #include <exception>
 #include <iostream>
@@ -24,6 +27,8 @@
 
 int main(int argc, char **argv)
 {
+  // as many threads as before: deal.II's default for one process
+  dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, dealii::numbers::invalid_unsigned_int);
   try
     {
       return gradcontact::cases::command_line(std::vector<std::string>(argv + 1, argv + argc), std::cout);

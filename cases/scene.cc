@@ -488,7 +488,7 @@ namespace gradcontact::cases
     prm.enter_subsection("Map");
     prm.declare_entry("parameter", "none",
                       Patterns::Selection("none|surface depth|coating thickness|erf width|indenter modulus|friction coefficient|"
-                                         "Tabor parameter"),
+                                         "Tabor parameter|Coulomb 3D"),
                       "What the ratios set: none (no map), surface depth (Material/modulus = shifted power law, "
                       "z0 = a / ratio), coating thickness (Material/modulus = coating, H = a / ratio), erf width "
                       "(Material/modulus = error function with Material/surface modulus ratio, w = a / ratio; k = 0) "
@@ -497,7 +497,9 @@ namespace gradcontact::cases
                       "a rigid indenter and the surface during loading, Friction/load steps, against the frictionless "
                       "indenter, for every k and nu of the map), or Tabor parameter (a Dugdale cohesive zone of Tabor "
                       "parameter lambda = ratio, cases/fe_cohesive.h, against the chapter's JKR pull-off; needs "
-                      "Adhesion/work of adhesion and a paraboloid or power law).");
+                      "Adhesion/work of adhesion and a paraboloid or power law), or Coulomb 3D (the 3D model of a rigid "
+                      "sphere with Coulomb friction, cases/fe_coulomb_3d.h: normal loading, Tangential/amplitude and one "
+                      "cycle, for every k and nu of the map, against 9.80-9.86; no ratios).");
     prm.declare_entry("ratios", "", Patterns::List(Patterns::Double(0.), 0, 100),
                       "The ratios a/z0, a/H, a/w, E1/E0, the friction coefficients mu or the Tabor parameters lambda of "
                       "the map, > 0.");
@@ -524,6 +526,7 @@ namespace gradcontact::cases
                 : p == "indenter modulus"  ? Parameter::indenter_modulus
                 : p == "friction coefficient" ? Parameter::friction_coefficient
                 : p == "Tabor parameter"      ? Parameter::tabor_parameter
+                : p == "Coulomb 3D"           ? Parameter::coulomb_3d
                                            : Parameter::none;
     ratios = to_doubles(prm.get("ratios"));
     exponents = to_doubles(prm.get("k values"));
@@ -716,6 +719,37 @@ namespace gradcontact::cases
     if (!s.map.enabled() && !s.map.poisson_ratios.empty())
       throw std::invalid_argument(where + "Map/nu values is set without a map (Map/parameter = none): it belongs to a "
                                   "friction coefficient map");
+    if (s.map.parameter == MapParameters::Parameter::coulomb_3d)
+      {
+        if (s.tangential.study != TangentialParameters::Study::oscillation)
+          throw std::invalid_argument(where + "Map/parameter = Coulomb 3D needs Tangential/study = oscillation (its "
+                                      "friction coefficient, amplitude and load steps set the path)");
+        if (s.adhesion.enabled(s.load) || s.candidate.enabled() || s.load.contact == LoadParameters::Contact::unilateral ||
+            s.friction.enabled())
+          throw std::invalid_argument(where + "Map/parameter = Coulomb 3D: no Adhesion, Candidate or Friction entries and "
+                                      "Load/contact = disc (the 3D model finds the contact and stick zones itself)");
+        if (s.load.type != LoadParameters::Type::paraboloid)
+          throw std::invalid_argument(where + "Map/parameter = Coulomb 3D needs Load/type = paraboloid (the sphere of "
+                                      "9.80-9.86)");
+        if (s.material.modulus != MaterialParameters::Modulus::power_law)
+          throw std::invalid_argument(where + "Map/parameter = Coulomb 3D needs Material/modulus = power law");
+        if (!s.references.fem)
+          throw std::invalid_argument(where + "Map/parameter is set with References/fem = false: a map is FE data");
+        if (!s.map.ratios.empty())
+          throw std::invalid_argument(where + "Map/parameter = Coulomb 3D takes no Map/ratios (the map is over Map/k "
+                                      "values and Map/nu values)");
+        if (s.tangential.holl_ratio)
+          throw std::invalid_argument(where + "Map/parameter = Coulomb 3D: use Map/Holl ratio, not Tangential/Holl "
+                                      "ratio (the map runs every nu of Map/nu values)");
+        for (const double nu : s.map.poisson_ratios)
+          if (!(nu < 0.5))
+            throw std::invalid_argument(where + "Map/nu values: " + format(nu) + " must be below 0.5 for Map/parameter = "
+                                        "Coulomb 3D (the 3D model is displacement-only)");
+        if (!(s.load.a > 0.) || !(s.load.R > s.load.a))
+          throw std::invalid_argument(where + "Map/parameter = Coulomb 3D needs 0 < Load/a < Load/R (Load/a = " +
+                                      format(s.load.a) + ", Load/R = " + format(s.load.R) + ")");
+        return SceneKind::map;
+      }
     if (s.map.parameter == MapParameters::Parameter::tabor_parameter)
       {
         using Type = LoadParameters::Type;

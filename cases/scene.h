@@ -238,13 +238,14 @@ namespace gradcontact::cases
       erf_width,         ///< Material/modulus = error function, w = a / ratio (k = 0)
       indenter_modulus,  ///< a homogeneous elastic indenter (Indenter/nu), E1 = ratio E0, against the rigid one
       friction_coefficient, ///< Coulomb friction mu = ratio (Friction/load steps) against the frictionless indenter
-      tabor_parameter       ///< a Dugdale cohesive zone of Tabor parameter lambda = ratio against JKR (cases/fe_cohesive.h)
+      tabor_parameter,      ///< a Dugdale cohesive zone of Tabor parameter lambda = ratio against JKR (cases/fe_cohesive.h)
+      coulomb_3d            ///< the 3D Coulomb sphere over k and nu against 9.80-9.86 (cases/fe_coulomb_3d.h; no ratios)
     };
     Parameter parameter = Parameter::none;
     std::vector<double> ratios;     ///< a/z0, a/H, a/w, E1/E0 or mu, > 0
     std::vector<double> exponents;  ///< k values; empty: Material/k
-    std::vector<double> poisson_ratios; ///< nu values of a friction map; empty: Material/nu
-    bool holl_ratio = true;         ///< friction map: also nu = 1/(2 + k) (decoupled: friction changes nothing)
+    std::vector<double> poisson_ratios; ///< nu values of a friction or Coulomb 3D map; empty: Material/nu
+    bool holl_ratio = true;         ///< friction and Coulomb 3D maps: also nu = 1/(2 + k) (the decoupled pairing)
     bool full_stick = true;         ///< friction map: also mu = inf
     std::vector<double> thresholds = {0.01, 0.001}; ///< deviations whose ratio the map reports
     bool enabled() const { return parameter != Parameter::none; }

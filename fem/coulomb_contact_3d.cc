@@ -312,4 +312,88 @@ namespace gradcontact::fem
       }
     return s;
   }
+
+
+
+  SurfaceCompliance3D without_coupling(const SurfaceCompliance3D &surface)
+  {
+    SurfaceCompliance3D decoupled = surface;
+    const unsigned int  n         = surface.nodes.size();
+    std::vector<bool>   normal(surface.C.m(), false);
+    for (unsigned int i = 0; i < n; ++i)
+      normal[surface.unknown[i][2]] = true;
+    for (unsigned int k = 0; k < surface.C.m(); ++k)
+      for (unsigned int l = 0; l < surface.C.n(); ++l)
+        if (normal[k] != normal[l])
+          decoupled.C(k, l) = 0;
+    return decoupled;
+  }
+
+
+
+  ZoneShape3D zone_shape(const SurfaceCompliance3D &surface, const CoulombState3D &state)
+  {
+    const unsigned int n = surface.nodes.size();
+    if (state.status.size() != n || state.nodal_force.size() != n)
+      throw std::invalid_argument("zone_shape: the state has " + std::to_string(state.status.size()) +
+                                  " nodes, the surface " + std::to_string(n));
+    ZoneShape3D shape;
+    double      largest = 0;
+    for (const Point<2> &x : surface.nodes)
+      largest = std::max(largest, x.norm());
+    const double on_line = 1e-9 * largest;
+    double       sum_y = 0, sum = 0; // slipping nodes' |Q_y| and |Q|
+
+    // The nodes of each ray, by r: (r, status).
+    std::array<std::vector<std::pair<double, NodeStatus>>, 3> rays;
+    for (unsigned int i = 0; i < n; ++i)
+      {
+        const Point<2> &x = surface.nodes[i];
+        const double    r = x.norm();
+        if (std::abs(x[1]) <= on_line)
+          rays[x[0] >= 0 ? ZoneShape3D::plus_x : ZoneShape3D::minus_x].emplace_back(r, state.status[i]);
+        if (std::abs(x[0]) <= on_line && x[1] > on_line)
+          rays[ZoneShape3D::plus_y].emplace_back(r, state.status[i]);
+        if (r <= on_line) // the axis lies on every ray
+          rays[ZoneShape3D::plus_y].emplace_back(r, state.status[i]);
+        if (state.status[i] == NodeStatus::stick)
+          shape.stick_outer = std::max(shape.stick_outer, r);
+        if (state.status[i] == NodeStatus::slip)
+          {
+            shape.slip_inner = std::min(shape.slip_inner, r);
+            const double qx = state.nodal_force[i][0], qy = state.nodal_force[i][1];
+            if (qx != 0 || qy != 0)
+              shape.slip_angle = std::max(shape.slip_angle, std::atan2(std::abs(qy), std::abs(qx)));
+            sum_y += std::abs(qy);
+            sum += std::hypot(qx, qy);
+          }
+      }
+    shape.slip_force_y = sum > 0 ? sum_y / sum : 0.0;
+    // The bracket of the zone `in` along one ray (sorted by r).
+    const auto bracket = [](const std::vector<std::pair<double, NodeStatus>> &ray, const auto &in) {
+      RayBracket b;
+      b.nodes = ray.size();
+      for (const auto &[r, status] : ray)
+        if (in(status))
+          b.inside = std::max(b.inside, r);
+      for (const auto &[r, status] : ray)
+        {
+          if (r > b.inside)
+            {
+              b.outside = std::min(b.outside, r);
+            }
+          else if (!in(status) && r < b.inside)
+            ++b.holes;
+        }
+      return b;
+    };
+    for (unsigned int ray = 0; ray < 3; ++ray)
+      {
+        std::sort(rays[ray].begin(), rays[ray].end());
+        shape.contact[ray] = bracket(rays[ray], [](const NodeStatus s) { return s != NodeStatus::separated; });
+        // The stick zone within the contact: a separated node beyond it bounds it as well as a slipping one.
+        shape.stick[ray] = bracket(rays[ray], [](const NodeStatus s) { return s == NodeStatus::stick; });
+      }
+    return shape;
+  }
 } // namespace gradcontact::fem

@@ -37,6 +37,7 @@
 #include <deal.II/lac/full_matrix.h>
 
 #include <array>
+#include <cmath>
 #include <limits>
 #include <string>
 #include <vector>
@@ -85,6 +86,54 @@ namespace gradcontact::fem
     std::vector<std::array<double, 3>> displacement; ///< u per node
     std::vector<std::array<double, 2>> slip;         ///< s per node (this step's increment)
   };
+
+  /// Where the boundary of a zone (contact or stick) crosses one ray of surface nodes from the axis: between
+  /// the outermost node of the ray in the zone and the next node of the ray beyond it.
+  struct RayBracket
+  {
+    unsigned int nodes   = 0; ///< nodes on the ray (0: the mesh has none there, nothing is measured)
+    double       inside  = 0; ///< r of the outermost node in the zone (0: none is)
+    double       outside = std::numeric_limits<double>::infinity(); ///< r of the next node of the ray (inf: none)
+    /// nodes of the ray inside `inside` that are not in the zone (0 for a disc on this ray)
+    unsigned int holes   = 0;
+    /// The boundary's estimate, the middle of the bracket (`inside` when no node lies beyond).
+    double radius() const { return std::isfinite(outside) ? 0.5 * (inside + outside) : inside; }
+    /// Half the bracket: the resolution of radius() (0 when no node lies beyond).
+    double half_width() const { return std::isfinite(outside) ? 0.5 * (outside - inside) : 0.0; }
+  };
+
+  /// The assumptions of the Ciavarella-Jaeger theory (a stick disc about the axis, slip parallel to the load)
+  /// measured on a state: the contact zone (in contact vs separated) and the stick zone (no slip increment in
+  /// the step vs slip) along the rays +x and -x (on the symmetry plane) and +y, and the slip directions.
+  struct ZoneShape3D
+  {
+    enum Ray
+    {
+      plus_x  = 0,
+      minus_x = 1,
+      plus_y  = 2
+    };
+    std::array<RayBracket, 3> contact, stick;
+    double stick_outer = 0; ///< the largest r of a sticking node (0: none sticks)
+    double slip_inner  = std::numeric_limits<double>::infinity(); ///< the smallest r of a slipping node
+    /// The largest angle between a slipping node's tangential force and the x axis, radians in [0, pi/2]
+    /// (0: every slipping node is loaded along +-x).
+    double slip_angle  = 0;
+    /// sum |Q_y| / sum |Q| over the slipping nodes: the force-weighted departure of the slip direction from x
+    /// (the largest angle is a node's, possibly one with a force at round-off level near the contact edge).
+    double slip_force_y = 0;
+  };
+
+  /// The shape of the contact and stick zones of `state` on the nodes of `surface`. A node lies on a ray when
+  /// its distance from the ray's line is below 1e-9 of the largest node radius.
+  ZoneShape3D zone_shape(const SurfaceCompliance3D &surface, const CoulombState3D &state);
+
+  /// The surface compliance without the normal-tangential coupling: the entries of C that give u_z from
+  /// tangential forces and u_x, u_y from normal forces set to zero. The contact problem with it is the
+  /// idealisation of the chapter's tangential theory (decoupled normal and tangential problems, 9.3.1) on the
+  /// same discrete, truncated body: a reference that shares the FE model's discretisation and truncation, so
+  /// that the difference from it is the coupling's effect alone.
+  SurfaceCompliance3D without_coupling(const SurfaceCompliance3D &surface);
 
   class CoulombContact3D
   {

@@ -346,3 +346,27 @@ TEST_CASE("A Tabor-parameter map shall check Maugis-Dugdale at k = 0 and write t
   CHECK_THROWS_WITH(run({scene.string(), "--reports", sharded.string(), "--map-shard", "2/2"}),
                     Catch::Contains("--map-shard '2/2'"));
 }
+
+TEST_CASE("A Coulomb 3D map shall read the shipped scene and name the entries it cannot take", "[cases]")
+{
+  const Scene shipped = read_scene("cases/validation/map_coulomb_3d_sphere.prm", {});
+  CHECK(shipped.kind == SceneKind::map);
+  CHECK(shipped.map.parameter == MapParameters::Parameter::coulomb_3d);
+  CHECK(shipped.tangential.study == TangentialParameters::Study::oscillation);
+
+  using testing::scene_with;
+  const std::vector<std::string> base{"Map/parameter=Coulomb 3D", "Tangential/study=oscillation", "Load/type=paraboloid",
+                                      "Load/R=5e-3"};
+  const auto with = [&](std::vector<std::string> extra) {
+    extra.insert(extra.begin(), base.begin(), base.end());
+    return scene_with(extra);
+  };
+  CHECK(with({}).kind == SceneKind::map);
+  CHECK_THROWS_WITH(scene_with({"Map/parameter=Coulomb 3D", "Load/type=paraboloid"}),
+                    Catch::Contains("Tangential/study = oscillation"));
+  CHECK_THROWS_WITH(with({"Map/ratios=0.3"}), Catch::Contains("takes no Map/ratios"));
+  CHECK_THROWS_WITH(with({"Load/type=flat punch"}), Catch::Contains("Load/type = paraboloid"));
+  CHECK_THROWS_WITH(with({"Map/nu values=0.3, 0.5"}), Catch::Contains("Map/nu values: 0.5 must be below 0.5"));
+  CHECK_THROWS_WITH(with({"Tangential/Holl ratio=true"}), Catch::Contains("use Map/Holl ratio"));
+  CHECK_THROWS_WITH(with({"Load/R=1e-5"}), Catch::Contains("Load/a < Load/R"));
+}

@@ -16,7 +16,6 @@
 // lines (process 0).
 #include <analytic/material.h>
 #include <analytic/normal.h>
-#include <analytic/tangential.h>
 #include <fem/axisymmetric_solver.h>
 #include <fem/coulomb_contact_3d.h>
 #include <fem/fourier_mode1_solver.h>
@@ -24,6 +23,8 @@
 #include <fem/modulus.h>
 
 #include "study_arguments.h"
+
+#include <cases/fe_coulomb_3d.h>
 
 #include <deal.II/base/mpi.h>
 
@@ -92,6 +93,10 @@ int main(int argc, char **argv)
           // `tangential_steps` steps, then back to -delta mu d and again to +delta mu d (one cycle) when cycle=1.
           const double R = 50 * a;
           double       d_max = num("depth", 1.0) * a * a / R;
+          // theory_depth=1: the chapter's depth at which the contact radius is the mesh's a (9.24 family)
+          if (num("theory_depth", 0) != 0)
+            d_max = gradcontact::depth(gradcontact::medium(gradcontact::GradedHalfSpace{E0, c0, k, nu}),
+                                       gradcontact::Paraboloid{R}, a);
           // compare=1: the depth at which the frictionless axisymmetric model of the same body has the contact
           // radius a (its mesh's), and its force there; the 3D normal loading goes to that depth.
           const bool compare         = num("compare", 0) != 0;
@@ -116,133 +121,135 @@ int main(int argc, char **argv)
               d_max           = reference[0];
               reference_force = reference[1];
             }
-          const double mu = num("mu", 0.3), mu_normal = num("mu_normal", mu);
-          const unsigned int normal_steps = args.count("normal_steps", 10), tangential_steps = args.count("tangential_steps", 10);
-          HalfSpace3DSolver solver(world, material, mesh, disc, parameters);
-          const auto        compliance_start = std::chrono::steady_clock::now();
-          const SurfaceCompliance3D surface  = solver.surface_compliance(num("candidates", 1.3) * a);
-          const double compliance_time = dealii::Utilities::MPI::max(
-            std::chrono::duration<double>(std::chrono::steady_clock::now() - compliance_start).count(), world);
-          CoulombParameters friction;
-          friction.mu = mu_normal;
-          CoulombContact3D contact(surface, Profile::paraboloid(R), friction);
-          if (root)
-            std::printf("sphere k=%g nu=%g p=%u np=%u dofs=%llu surface_nodes=%zu unknowns=%u compliance_time=%.2f\n", k,
-                        nu, disc.degree, dealii::Utilities::MPI::n_mpi_processes(world),
-                        static_cast<unsigned long long>(solver.n_dofs()), surface.nodes.size(), static_cast<unsigned int>(surface.C.m()),
-                        compliance_time);
-          int failed = 0;
-          const auto print = [&](const char *phase, const CoulombState3D &st) {
-            if (root)
-              std::printf("%s d/d_max=%.4f delta/(mu d)=%.4f Fz=%.10e Fx=%.10e contact=%u stick=%u slip=%u "
-                          "iterations=%u%s%s\n",
-                          phase, st.depth / d_max, st.delta / (std::max(mu, 1e-300) * d_max), st.force_z, st.force_x,
-                          st.n_contact, st.n_stick, st.n_slip, st.iterations, st.converged ? "" : " NOT CONVERGED: ",
-                          st.message.c_str());
-            if (!st.converged)
-              failed = 1;
-          };
-          CoulombState3D state;
-          unsigned int   normal_slip = 0;
-          for (unsigned int i = 1; i <= normal_steps; ++i)
+          gradcontact::cases::CoulombSphereCase study;
+          study.E0 = E0;
+          study.c0 = c0;
+          study.k  = k;
+          study.nu = nu;
+          study.R  = R;
+          study.mesh             = mesh;
+          study.discretization   = disc;
+          study.solver           = parameters;
+          study.candidates       = num("candidates", study.candidates);
+          study.depth            = d_max;
+          study.mu               = num("mu", 0.3);
+          study.mu_normal        = num("mu_normal", study.mu);
+          study.normal_steps     = args.count("normal_steps", 10);
+          study.tangential_steps = args.count("tangential_steps", 10);
+          study.cycle            = num("cycle", 0) != 0;
+          study.decoupled_reference = num("decoupled", 0) != 0;
+          const double mu        = study.mu;
+          // mu = 0: the frictionless normal loading only (the tangential loading needs mu > 0).
+          if (mu == 0)
             {
-              print("normal", state = contact.step_depth(d_max * i / normal_steps, 0.0));
-              normal_slip = std::max(normal_slip, state.n_slip);
+              study.mu        = 1;
+              study.mu_normal = 0;
+              study.delta     = 0;
             }
-          // expect_stick=1: a decoupled pairing (k = 0 with nu = 1/2, nu = 1 / (2 + k)) loaded normally with
-          // friction has no tangential traction, so no node may slip.
-          if (num("expect_stick", 0) != 0 && mu_normal > 0 && normal_slip > 0)
+          else
+            study.delta = num("delta", 1.0) * mu * d_max;
+          int failed = 0;
+          const auto print = [&](const gradcontact::cases::CoulombSphereStep &step) {
+            if (!root)
+              return;
+            const CoulombState3D &st = step.state;
+            std::printf("%s%s d/d_max=%.4f delta/(mu d)=%.4f Fz=%.10e Fx=%.10e contact=%u stick=%u slip=%u "
+                        "iterations=%u%s%s",
+                        step.decoupled ? "decoupled " : "", step.phase.c_str(), st.depth / d_max, st.delta / (std::max(mu, 1e-300) * d_max), st.force_z,
+                        st.force_x, st.n_contact, st.n_stick, st.n_slip, st.iterations,
+                        st.converged ? "" : " NOT CONVERGED: ", st.message.c_str());
+            const auto &x = step.shape.stick;
+            if (step.phase != "normal")
+              std::printf(" stick_radius/a(+x,-x,+y)=%.4f,%.4f,%.4f(+-%.4f)", x[0].radius() / a, x[1].radius() / a,
+                          x[2].radius() / a, std::max({x[0].half_width(), x[1].half_width(), x[2].half_width()}) / a);
+            if (std::isfinite(step.theory_force_x))
+              std::printf(" | chapter Fx=%.10e stick_radius/a=%.4f", step.theory_force_x, step.theory_stick / a);
+            std::printf("\n");
+          };
+          const gradcontact::cases::CoulombSphereResult r = gradcontact::cases::run_coulomb_sphere(world, study, print);
+          if (root)
+            std::printf("sphere k=%g nu=%g p=%u np=%u dofs=%llu surface_nodes=%u unknowns=%u compliance_time=%.2f "
+                        "time=%.2f peak_mb=%.0f largest_iterations=%u\n",
+                        k, nu, disc.degree, r.processes, r.dofs, r.surface_nodes, r.unknowns, r.compliance_seconds,
+                        r.seconds, r.memory_mb, r.fe.max_iterations);
+          if (!r.fe.converged)
             {
               if (root)
-                std::printf("FAILED: %u nodes slipped during the normal loading of a decoupled pairing\n", normal_slip);
+                std::printf("FAILED: %s\n", r.fe.message.c_str());
               failed = 1;
             }
+          const auto fails = [&](const char *key, const double value, const char *what) {
+            const double limit = num(key, 0);
+            if (limit > 0 && !(value <= limit))
+              {
+                if (root)
+                  std::printf("FAILED: %s %.3e exceeds %s=%.1e\n", what, value, key, limit);
+                failed = 1;
+              }
+          };
+          // expect_stick=1: a decoupled pairing (k = 0 with nu = 1/2, nu = 1 / (2 + k)) loaded normally with
+          // friction has no tangential traction, so no node may slip.
+          if (num("expect_stick", 0) != 0 && study.mu_normal > 0 && r.fe.normal_slip > 0)
+            {
+              if (root)
+                std::printf("FAILED: %u nodes slipped during the normal loading of a decoupled pairing\n", r.fe.normal_slip);
+              failed = 1;
+            }
+          const double force_z = r.fe.steps.size() < study.normal_steps ? 0.0 : r.fe.steps[study.normal_steps - 1].state.force_z;
           if (compare)
             {
-              const double difference = std::abs(state.force_z / reference_force - 1);
+              const double difference = std::abs(force_z / reference_force - 1);
               if (root)
                 std::printf("compare sphere F_z at d (frictionless meridian model at contact radius a): 3D %.10e "
                             "meridian %.10e relative difference %.3e\n",
-                            state.force_z, reference_force, difference);
-              const double expect = num("expect", 0);
-              if (expect > 0 && !(difference <= expect))
-                {
-                  if (root)
-                    std::printf("FAILED: F_z differs from the meridian model by more than %.1e\n", expect);
-                  failed = 1;
-                }
+                            force_z, reference_force, difference);
+              fails("expect", difference, "F_z against the meridian model");
             }
-          contact.set_friction(mu);
-          const double delta_max = num("delta", 1.0) * mu * d_max;
-          if (mu > 0 && tangential_steps > 0)
+          // theory=1: the chapter's closed forms for the half-space (cases/fe_coulomb_3d.h; meaningful at a large L
+          // and for a decoupled pairing).
+          if (num("theory", 0) != 0 && root)
             {
-              // theory=1: the chapter's closed forms for the half-space (meaningful at a large L and for a
-              // decoupled pairing): the contact radius at d (9.24 family), F_N(a), and on loading the Cattaneo-Mindlin
-              // law of the graded sphere (9.80): delta = mu alpha d [1 - (c/a)^2], F_x = mu F_N [1 - (c/a)^(k+3)].
-              const bool theory       = num("theory", 0) != 0;
-              double     theory_worst = 0; // the largest relative difference from the closed forms
-              gradcontact::Medium medium{};
-              double              a_theory = 0;
-              const gradcontact::Paraboloid sphere{R};
-              if (theory)
-                {
-                  medium   = gradcontact::medium(gradcontact::GradedHalfSpace{E0, c0, k, nu});
-                  a_theory = gradcontact::contact_radius_from_depth(medium, gradcontact::as_power_law(sphere), d_max);
-                  const double F_theory = gradcontact::force(medium, sphere, a_theory);
-                  theory_worst          = std::abs(state.force_z / F_theory - 1);
-                  if (root)
-                    std::printf("theory: a/a_mesh=%.6f F_N=%.10e 3D F_z=%.10e relative difference %.3e\n", a_theory / a,
-                                F_theory, state.force_z, std::abs(state.force_z / F_theory - 1));
-                }
-              for (unsigned int i = 1; i <= tangential_steps; ++i)
-                {
-                  print("loading", state = contact.step_depth(d_max, delta_max * i / tangential_steps));
-                  if (theory)
-                    {
-                      const double full = mu * medium.alpha() * gradcontact::depth(medium, sphere, a_theory);
-                      const double u    = delta_max * i / tangential_steps;
-                      if (u < full)
-                        {
-                          const double c  = a_theory * std::sqrt(1 - u / full);
-                          const double Fx = gradcontact::tangential::tangential_force(
-                            medium, gradcontact::tangential::SphereSlip{R, mu}, a_theory, c);
-                          const double difference = std::abs(state.force_x / Fx - 1);
-                          if (root)
-                            std::printf("theory: delta=%.4e c/a=%.4f F_x(9.80)=%.10e 3D F_x=%.10e relative difference %.3e\n",
-                                        u, c / a_theory, Fx, state.force_x, difference);
-                          theory_worst = std::max(theory_worst, difference);
-                        }
-                    }
-                }
-              const double expect_theory = num("expect_theory", 0);
-              if (theory && expect_theory > 0 && !(theory_worst <= expect_theory))
-                {
-                  if (root)
-                    std::printf("FAILED: the 3D model is %.2e off the closed forms (9.24, 9.80), more than %.1e\n",
-                                theory_worst, expect_theory);
-                  failed = 1;
-                }
-              const double loaded = state.force_x;
-              if (num("cycle", 0) != 0)
-                {
-                  for (unsigned int i = 1; i <= 2 * tangential_steps; ++i)
-                    print("unloading", state = contact.step_depth(d_max, delta_max * (1.0 - 2.0 * i / (2 * tangential_steps))));
-                  for (unsigned int i = 1; i <= 2 * tangential_steps; ++i)
-                    print("reloading", state = contact.step_depth(d_max, delta_max * (-1.0 + 2.0 * i / (2 * tangential_steps))));
-                  // The loop closes: back at delta_max after a full cycle, F_x is the loading curve's (Masing;
-                  // exact for the decoupled pairings, where the state at +-delta_max is the same slip pattern).
-                  const double closure = std::abs(state.force_x / loaded - 1);
-                  if (root)
-                    std::printf("cycle: F_x at delta_max on loading %.10e, after the cycle %.10e, relative difference %.3e\n",
-                                loaded, state.force_x, closure);
-                  const double expect_closure = num("expect_closure", 0);
-                  if (expect_closure > 0 && !(closure <= expect_closure))
-                    {
-                      if (root)
-                        std::printf("FAILED: the hysteresis loop does not close within %.1e\n", expect_closure);
-                      failed = 1;
-                    }
-                }
+              std::printf("theory: a/a_mesh=%.6f F_N(a)=%.10e F_z/F_N-1=%.3e loading F_x/F_x(9.80)-1 max %.3e\n",
+                          r.a_theory / a, r.force_n_theory, r.fe.force_z_deviation, r.fe.loading_deviation);
+              std::printf("theory: stick zone (rays +x, -x, +y) |c - c(9.80, 9.81)|/a max %.3e, bracket half-width %.3e, "
+                          "spread over the rays %.3e; slip direction to x max %.3e rad, sum |Q_y| / sum |Q| of the slipping nodes max %.3e\n",
+                          r.fe.stick_deviation, r.fe.stick_resolution, r.fe.out_of_round, r.fe.slip_angle, r.fe.slip_force_y);
+              if (study.cycle)
+                std::printf("theory: branches |F_x - F_x(9.84)|/F_A max %.3e; loop area %.10e, 9.86 %.10e, relative "
+                            "difference %.3e (Simpson's rule on the closed-form loop: %.3e); closure %.3e\n",
+                            r.fe.branch_deviation, r.fe.energy, r.energy_theory, r.fe.energy / r.energy_theory - 1,
+                            r.energy_rule, r.fe.closure);
+            }
+          if (num("theory", 0) != 0)
+            {
+              fails("expect_theory", std::max(std::abs(r.fe.force_z_deviation), r.fe.loading_deviation),
+                    "the largest difference from 9.24 (F_z) and 9.80 (F_x)");
+              fails("expect_branch", r.fe.branch_deviation, "|F_x - F_x(9.84)| / F_A on the branches");
+              fails("expect_energy", std::abs(r.fe.energy / r.energy_theory - 1), "the loop area against 9.86");
+              // the stick zone: the closed form's radius within the FE's bracket plus this
+              fails("expect_stick_zone", r.fe.stick_deviation - r.fe.stick_resolution,
+                    "the stick radius beyond the FE's bracket (/ a)");
+            }
+          // decoupled=1: the same path without the normal-tangential coupling (fem::without_coupling).
+          if (study.decoupled_reference && root)
+            std::printf("coupling (against the decoupled compliance, same mesh): F_z %.3e, loading F_x max %.3e, "
+                        "branches max %.3e (/ F_A), loop area %.3e, stick radius max %.3e (/ a); the decoupled path "
+                        "against the chapter: F_z %.3e, loading F_x %.3e, branches %.3e, loop area %.3e\n",
+                        r.coupling_force_z, r.coupling_loading, r.coupling_branch, r.coupling_energy, r.coupling_stick,
+                        r.decoupled.force_z_deviation, r.decoupled.loading_deviation, r.decoupled.branch_deviation,
+                        r.decoupled.energy / r.energy_theory - 1);
+          if (study.decoupled_reference && !r.decoupled.converged)
+            {
+              if (root)
+                std::printf("FAILED: decoupled path: %s\n", r.decoupled.message.c_str());
+              failed = 1;
+            }
+          if (study.cycle && r.fe.converged)
+            {
+              if (root)
+                std::printf("cycle: F_x at delta_max after the cycle against the loading value: relative difference %.3e\n",
+                            r.fe.closure);
+              fails("expect_closure", r.fe.closure, "the hysteresis loop's closure");
             }
           return dealii::Utilities::MPI::max(failed, world);
         }

@@ -1,0 +1,578 @@
+#include "fe_coulomb_3d.h"
+
+#include "fe_map.h"
+#include "fe_scene.h"
+
+#include <analytic/material.h>
+#include <analytic/normal.h>
+#include <analytic/tangential.h>
+#include <fem/errors.h>
+#include <fem/half_space_3d.h>
+#include <fem/modulus.h>
+
+#include <deal.II/base/mpi.h>
+#include <deal.II/base/utilities.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <fstream>
+#include <iostream>
+#include <map>
+#include <memory>
+#include <sstream>
+
+namespace gradcontact::cases
+{
+  void CoulombSphereCase::validate() const
+  {
+    const std::string where = "CoulombSphereCase";
+    if (!(R > 0) || !std::isfinite(R))
+      fem::fail(where, "R", R, "(0, inf)");
+    if (!(candidates > 1) || !std::isfinite(candidates))
+      fem::fail(where, "candidates", candidates, "(1, inf) (the contact must lie inside the candidate nodes)");
+    if (!(depth > 0) || !std::isfinite(depth))
+      fem::fail(where, "depth", depth, "(0, inf)");
+    if (!(mu_normal >= 0))
+      fem::fail(where, "mu_normal", mu_normal, "[0, inf]");
+    if (!(mu > 0))
+      fem::fail(where, "mu", mu, "(0, inf]");
+    if (!(delta >= 0) || !std::isfinite(delta))
+      fem::fail(where, "delta", delta, "[0, inf)");
+    if (normal_steps < 1)
+      fem::fail(where, "normal_steps", normal_steps, "[1, inf)");
+    if (tangential_steps < 1)
+      fem::fail(where, "tangential_steps", tangential_steps, "[1, inf)");
+    if (cycle && !(delta > 0))
+      fem::fail(where, "delta", delta, "(0, inf) (cycle = true)");
+  }
+
+  namespace
+  {
+    /// Simpson's rule over equally spaced samples (an even number of intervals).
+    double simpson(const std::vector<double> &y, const double h)
+    {
+      double sum = y.front() + y.back();
+      for (std::size_t i = 1; i + 1 < y.size(); ++i)
+        sum += (i % 2 ? 4 : 2) * y[i];
+      return sum * h / 3;
+    }
+  } // namespace
+
+  CoulombSphereResult run_coulomb_sphere(const MPI_Comm communicator, const CoulombSphereCase &c,
+                                         const std::function<void(const CoulombSphereStep &)> &on_step)
+  {
+    c.validate();
+    const auto         start = std::chrono::steady_clock::now();
+    CoulombSphereResult result;
+    const fem::Material material{std::make_shared<fem::PowerLawModulus>(c.E0, c.c0, c.k), c.nu};
+    fem::HalfSpace3DSolver solver(communicator, material, c.mesh, c.discretization, c.solver);
+    const double a_mesh = c.mesh.contact_radius;
+    const fem::SurfaceCompliance3D surface = solver.surface_compliance(c.candidates * a_mesh);
+    result.compliance_seconds = dealii::Utilities::MPI::max(
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), communicator);
+    result.dofs          = solver.n_dofs();
+    result.surface_nodes = surface.nodes.size();
+    result.unknowns      = surface.C.m();
+    result.processes     = dealii::Utilities::MPI::n_mpi_processes(communicator);
+
+    // The chapter's half-space (9.24 family, 9.80-9.86).
+    using namespace gradcontact::tangential;
+    const Medium       medium = gradcontact::medium(GradedHalfSpace{c.E0, c.c0, c.k, c.nu});
+    const Paraboloid   sphere{c.R};
+    const SphereSlip   slip{c.R, c.mu};
+    const double       a  = contact_radius_from_depth(medium, as_power_law(sphere), c.depth);
+    result.a_theory       = a;
+    result.force_n_theory = gradcontact::force(medium, sphere, a);
+    // full sliding at delta >= mu alpha d (9.80 at c = 0)
+    const double full_slip = std::isfinite(c.mu) ? c.mu * medium.alpha() * c.depth : std::numeric_limits<double>::infinity();
+    const bool   partial   = c.delta > 0 && c.delta < full_slip;
+    double u_A = 0; // delta_A as 9.85 returns it from F_A (the branches' domain; equal to delta_A up to round-off)
+    if (partial && std::isfinite(c.mu))
+      {
+        result.force_a_theory = tangential_force(medium, slip, a, a * std::sqrt(1 - c.delta / full_slip));
+        u_A                   = displacement_at_A(medium, slip, a, result.force_a_theory);
+      }
+    const auto on_branch = [&](const double u) { return std::clamp(u, -u_A, u_A); };
+
+    // One loading path on the compliance `C`.
+    const auto run_path = [&](const fem::SurfaceCompliance3D &C, const bool decoupled) {
+      CoulombPath            path;
+      fem::CoulombParameters friction;
+      friction.mu = c.mu_normal;
+      fem::CoulombContact3D contact(C, fem::Profile::paraboloid(c.R), friction);
+      double worst_c = 0, worst_half = 0, worst_round = 0;
+      bool   stick_measured = false;
+      // One step: solve, measure, compare; false when it did not converge (the path stops).
+      const auto step = [&](const std::string &phase, const double d, const double delta, const Branch branch) {
+        CoulombSphereStep s;
+        s.phase     = phase;
+        s.decoupled = decoupled;
+        s.state = contact.step_depth(d, delta);
+        s.shape = fem::zone_shape(C, s.state);
+        s.state.status.clear();
+        s.state.nodal_force.clear();
+        s.state.displacement.clear();
+        s.state.slip.clear();
+        path.max_iterations = std::max(path.max_iterations, s.state.iterations);
+        path.slip_angle     = std::max(path.slip_angle, s.shape.slip_angle);
+        path.slip_force_y   = std::max(path.slip_force_y, s.shape.slip_force_y);
+        if (phase == "normal")
+          path.normal_slip = std::max(path.normal_slip, s.state.n_slip);
+        else if (partial && std::isfinite(c.mu))
+          {
+            if (branch == Branch::loading)
+              {
+                s.theory_stick   = a * std::sqrt(1 - delta / full_slip);
+                s.theory_force_x = tangential_force(medium, slip, a, s.theory_stick);
+                path.loading_deviation = std::max(std::isnan(path.loading_deviation) ? 0. : path.loading_deviation,
+                                                  std::abs(s.state.force_x / s.theory_force_x - 1));
+              }
+            else
+              {
+                s.theory_force_x = hysteresis_force(medium, slip, a, result.force_a_theory, branch, on_branch(delta));
+                s.theory_stick   = reversal_radius(medium, slip, a, result.force_a_theory, branch, s.theory_force_x);
+                path.branch_deviation = std::max(std::isnan(path.branch_deviation) ? 0. : path.branch_deviation,
+                                                 std::abs(s.state.force_x - s.theory_force_x) / result.force_a_theory);
+              }
+            // The stick zone along the rays the mesh has nodes on.
+            double lo = std::numeric_limits<double>::infinity(), hi = 0;
+            for (const fem::RayBracket &ray : s.shape.stick)
+              if (ray.nodes > 0)
+                {
+                  worst_c        = std::max(worst_c, std::abs(ray.radius() - s.theory_stick) / a);
+                  worst_half     = std::max(worst_half, ray.half_width() / a);
+                  lo             = std::min(lo, ray.radius());
+                  hi             = std::max(hi, ray.radius());
+                  stick_measured = true;
+                }
+            if (hi >= lo)
+              worst_round = std::max(worst_round, (hi - lo) / a);
+          }
+        if (!s.state.converged && path.converged)
+          {
+            path.converged = false;
+            path.message   = phase + " step: " + s.state.message;
+          }
+        if (on_step)
+          on_step(s);
+        path.steps.push_back(std::move(s));
+        return path.steps.back().state.converged;
+      };
+
+      bool ok = true;
+      for (unsigned int i = 1; ok && i <= c.normal_steps; ++i)
+        ok = step("normal", c.depth * i / c.normal_steps, 0.0, Branch::loading);
+      if (ok)
+        path.force_z_deviation = path.steps.back().state.force_z / result.force_n_theory - 1;
+      if (ok && c.delta > 0)
+        {
+          contact.set_friction(c.mu);
+          const unsigned int m = c.tangential_steps;
+          for (unsigned int j = 1; ok && j <= m; ++j)
+            ok = step("loading", c.depth, c.delta * j / m, Branch::loading);
+          if (ok && c.cycle)
+            {
+              const double        loaded = path.steps.back().state.force_x;
+              std::vector<double> unloading{loaded}, reloading;
+              for (unsigned int j = 1; ok && j <= 2 * m; ++j)
+                {
+                  ok = step("unloading", c.depth, c.delta * (1.0 - 1.0 * j / m), Branch::unloading);
+                  unloading.push_back(path.steps.back().state.force_x);
+                }
+              if (ok)
+                reloading.push_back(unloading.back());
+              for (unsigned int j = 1; ok && j <= 2 * m; ++j)
+                {
+                  ok = step("reloading", c.depth, c.delta * (-1.0 + 1.0 * j / m), Branch::reloading);
+                  reloading.push_back(path.steps.back().state.force_x);
+                }
+              if (ok)
+                {
+                  path.closure = std::abs(reloading.back() / loaded - 1);
+                  // The loop area: the unloading branch runs from +delta_A down, the reloading one from -delta_A up;
+                  // at the same delta the reloading force is the larger (the loop is run counter-clockwise in the
+                  // (F_x, delta) plane).
+                  std::reverse(unloading.begin(), unloading.end());
+                  std::vector<double> gap(unloading.size());
+                  for (std::size_t i = 0; i < gap.size(); ++i)
+                    gap[i] = reloading[i] - unloading[i];
+                  path.energy = simpson(gap, c.delta / m);
+                }
+            }
+          if (stick_measured)
+            {
+              path.stick_deviation  = worst_c;
+              path.stick_resolution = worst_half;
+              path.out_of_round     = worst_round;
+            }
+        }
+      return path;
+    };
+
+    if (c.cycle && partial && std::isfinite(c.mu))
+      {
+        // 9.86, and Simpson's rule on the closed-form loop at the points of the FE's steps.
+        result.energy_theory  = dissipated_energy(medium, slip, a, result.force_a_theory);
+        const unsigned int  m = c.tangential_steps;
+        std::vector<double> closed(2 * m + 1);
+        for (std::size_t i = 0; i < closed.size(); ++i)
+          {
+            const double u = on_branch(-c.delta + i * c.delta / m);
+            closed[i]      = hysteresis_force(medium, slip, a, result.force_a_theory, Branch::reloading, u) -
+                        hysteresis_force(medium, slip, a, result.force_a_theory, Branch::unloading, u);
+          }
+        result.energy_rule = simpson(closed, c.delta / m) / result.energy_theory - 1;
+      }
+
+    result.fe = run_path(surface, false);
+    if (c.decoupled_reference)
+      {
+        result.decoupled = run_path(fem::without_coupling(surface), true);
+        const std::vector<CoulombSphereStep> &x = result.fe.steps, &y = result.decoupled.steps;
+        const auto worse = [](double &into, const double v) { into = std::isnan(into) ? v : std::max(into, v); };
+        if (x.size() >= c.normal_steps && y.size() >= c.normal_steps)
+          result.coupling_force_z =
+            x[c.normal_steps - 1].state.force_z / y[c.normal_steps - 1].state.force_z - 1;
+        const double scale = x.size() > c.normal_steps + c.tangential_steps - 1 && y.size() > c.normal_steps + c.tangential_steps - 1
+                               ? std::abs(y[c.normal_steps + c.tangential_steps - 1].state.force_x)
+                               : 0.;
+        for (std::size_t i = c.normal_steps; i < std::min(x.size(), y.size()); ++i)
+          {
+            if (x[i].phase == "loading")
+              worse(result.coupling_loading, std::abs(x[i].state.force_x / y[i].state.force_x - 1));
+            else if (scale > 0)
+              worse(result.coupling_branch, std::abs(x[i].state.force_x - y[i].state.force_x) / scale);
+            for (unsigned int ray = 0; ray < 3; ++ray)
+              if (x[i].shape.stick[ray].nodes > 0)
+                worse(result.coupling_stick,
+                      std::abs(x[i].shape.stick[ray].radius() - y[i].shape.stick[ray].radius()) / a);
+          }
+        result.coupling_energy = result.fe.energy / result.decoupled.energy - 1;
+      }
+    dealii::Utilities::System::MemoryStats memory;
+    dealii::Utilities::System::get_memory_stats(memory);
+    result.memory_mb = dealii::Utilities::MPI::max(static_cast<double>(memory.VmHWM) / 1024, communicator);
+    result.seconds   = dealii::Utilities::MPI::max(
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), communicator);
+    return result;
+  }
+
+  namespace
+  {
+    /// One panel of the Coulomb 3D map.
+    struct CoulombPanel
+    {
+      double k = 0, nu = 0;
+      bool   holl = false; ///< nu = 1/(2 + k): decoupled
+      CoulombSphereResult result;
+      std::string error; ///< why the panel has no result
+    };
+
+    /// A quantity of the map: its name, the coupling's effect, the FE floor (the decoupled path against the
+    /// chapter) and the FE model against the chapter, of a panel.
+    struct MapQuantity
+    {
+      std::string name, chapter;
+      double (*coupling)(const CoulombSphereResult &);
+      double (*floor)(const CoulombSphereResult &);
+      double (*direct)(const CoulombSphereResult &);
+    };
+
+    double energy_deviation(const CoulombPath &p, const CoulombSphereResult &r) { return p.energy / r.energy_theory - 1; }
+
+    const std::vector<MapQuantity> &map_quantities()
+    {
+      static const std::vector<MapQuantity> q{
+        {"normal force", "F_N(a) (9.24 family) at the depth d",
+         [](const CoulombSphereResult &r) { return r.coupling_force_z; },
+         [](const CoulombSphereResult &r) { return r.decoupled.force_z_deviation; },
+         [](const CoulombSphereResult &r) { return r.fe.force_z_deviation; }},
+        {"tangential force", "F_x(delta) on loading (9.80)", [](const CoulombSphereResult &r) { return r.coupling_loading; },
+         [](const CoulombSphereResult &r) { return r.decoupled.loading_deviation; },
+         [](const CoulombSphereResult &r) { return r.fe.loading_deviation; }},
+        {"hysteresis loop", "F_x(delta) on unloading and reloading (9.84), / F_A",
+         [](const CoulombSphereResult &r) { return r.coupling_branch; },
+         [](const CoulombSphereResult &r) { return r.decoupled.branch_deviation; },
+         [](const CoulombSphereResult &r) { return r.fe.branch_deviation; }},
+        {"dissipated energy", "the loop area (9.86)", [](const CoulombSphereResult &r) { return r.coupling_energy; },
+         [](const CoulombSphereResult &r) { return energy_deviation(r.decoupled, r); },
+         [](const CoulombSphereResult &r) { return energy_deviation(r.fe, r); }},
+        {"stick radius", "c (9.80) and b (9.81) along +x, -x, +y, / a",
+         [](const CoulombSphereResult &r) { return r.coupling_stick; },
+         [](const CoulombSphereResult &r) { return r.decoupled.stick_deviation; },
+         [](const CoulombSphereResult &r) { return r.fe.stick_deviation; }}};
+      return q;
+    }
+
+    std::string panel_name(const CoulombPanel &p)
+    {
+      return "k = " + format(p.k) + ", nu = " + (p.holl ? "1/(2 + k) = " : "") + format(p.nu);
+    }
+  } // namespace
+
+  SceneResult run_coulomb_map(const Scene &s, const std::filesystem::path &folder, const bool verbose)
+  {
+    require_kind(s, SceneKind::map, "run_coulomb_map");
+    if (s.map.parameter != MapParameters::Parameter::coulomb_3d)
+      throw std::invalid_argument("run_coulomb_map: scene " + s.file + " is not a Coulomb 3D map");
+    const auto  start  = std::chrono::steady_clock::now();
+    SceneResult result = started(s, folder);
+    const bool  root   = dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
+
+    // The panels: every k and nu, and Holl's ratio where it is a Poisson ratio below 1/2.
+    std::vector<CoulombPanel> panels;
+    const std::vector<double> ks  = s.map.exponents.empty() ? std::vector<double>{s.material.k} : s.map.exponents;
+    const std::vector<double> nus = s.map.poisson_ratios.empty() ? std::vector<double>{s.material.nu} : s.map.poisson_ratios;
+    for (const double k : ks)
+      {
+        for (const double nu : nus)
+          panels.push_back({k, nu, std::abs(nu - 1. / (2. + k)) <= 1e-12, {}, {}});
+        if (s.map.holl_ratio && k > 0 && std::none_of(nus.begin(), nus.end(), [k](const double nu) {
+              return std::abs(nu - 1. / (2. + k)) <= 1e-12;
+            }))
+          panels.push_back({k, 1. / (2. + k), true, {}, {}});
+      }
+
+    const double a = s.load.a, mu = s.tangential.friction_coefficient, amplitude = s.tangential.amplitude;
+    for (CoulombPanel &panel : panels)
+      {
+        CoulombSphereCase c;
+        c.E0 = s.material.E0;
+        c.c0 = s.material.c0;
+        c.k  = panel.k;
+        c.nu = panel.nu;
+        c.R  = s.load.R;
+        c.mesh.contact_radius          = a;
+        c.mesh.sectors                 = 4;
+        c.mesh.h_edge                  = 1e-2;
+        c.mesh.far_field_size          = s.discretization.far_field > 0 ? s.discretization.far_field
+                                                                         : (panel.k < 0 ? 1e5 : 1e3);
+        c.mesh.surface_layer_thickness = panel.k > 0 ? 1e-4 : 0.;
+        c.discretization.degree        = s.discretization.degree;
+        c.mu = c.mu_normal = mu;
+        c.normal_steps = c.tangential_steps = s.tangential.load_steps;
+        c.cycle               = true;
+        c.decoupled_reference = true;
+        try
+          {
+            // The chapter's depth of contact radius a and its delta_A of F_A = amplitude mu F_N(a) (9.80).
+            const Medium medium = gradcontact::medium(GradedHalfSpace{c.E0, c.c0, c.k, c.nu});
+            c.depth             = gradcontact::depth(medium, Paraboloid{c.R}, a);
+            c.delta             = tangential::tangential_displacement_at_force(
+              medium, tangential::SphereSlip{c.R, mu}, a, amplitude * mu * gradcontact::force(medium, Paraboloid{c.R}, a));
+            panel.result = run_coulomb_sphere(MPI_COMM_WORLD, c);
+            if (!panel.result.fe.converged || !panel.result.decoupled.converged)
+              panel.error = !panel.result.fe.converged ? panel.result.fe.message
+                                                       : "decoupled path: " + panel.result.decoupled.message;
+          }
+        catch (const std::exception &e)
+          {
+            panel.error = concise(e);
+          }
+        if (verbose && root)
+          std::cerr << "  " << panel_name(panel) << ": " << (panel.error.empty() ? "" : panel.error + "; ")
+                    << "F_x coupling " << panel.result.coupling_loading << ", floor " << panel.result.decoupled.loading_deviation
+                    << ", " << panel.result.dofs << " DoFs, " << panel.result.seconds << " s\n";
+      }
+
+    // errors.csv: the sharp checks of the decoupled pairing, and every path that failed.
+    const double tolerance = s.tolerances.force;
+    for (const CoulombPanel &p : panels)
+      {
+        const CoulombSphereResult &r = p.result;
+        const unsigned int dofs = static_cast<unsigned int>(r.dofs);
+        if (!p.error.empty())
+          {
+            result.rows.push_back(failed("Coulomb 3D path", "FE", "closed form", panel_name(p) + ": " + p.error));
+            continue;
+          }
+        if (!p.holl)
+          continue;
+        const std::string what = panel_name(p) + " (decoupled)";
+        const auto last_force = [](const CoulombPath &path, const std::string &phase) {
+          for (auto it = path.steps.rbegin(); it != path.steps.rend(); ++it)
+            if (it->phase == phase)
+              return it->state.force_x;
+          return 0.;
+        };
+        result.rows.push_back(compare("normal force", what + ", F_z at d", "FE", "closed form (9.24 family)", r.force_n_theory,
+                                      (1 + r.fe.force_z_deviation) * r.force_n_theory, r.force_n_theory, tolerance, dofs,
+                                      r.seconds));
+        result.rows.push_back(compare("tangential force", what + ", loading, largest relative difference (9.80)", "FE",
+                                      "closed form (9.80)", 0., r.fe.loading_deviation, 1., tolerance, dofs, r.seconds));
+        result.rows.push_back(compare("hysteresis loop", what + ", unloading and reloading, largest difference / F_A (9.84)",
+                                      "FE", "closed form (9.84)", 0., r.fe.branch_deviation, 1., tolerance, dofs, r.seconds));
+        result.rows.push_back(compare("dissipated energy", what + ", loop area (Simpson's rule over the steps)", "FE",
+                                      "closed form (9.86)", r.energy_theory, r.fe.energy, r.energy_theory, tolerance, dofs,
+                                      r.seconds));
+        result.rows.push_back(compare("tangential force", what + ", the coupling's effect: F_x at delta_A", "FE",
+                                      "FE decoupled", last_force(r.decoupled, "loading"), last_force(r.fe, "loading"),
+                                      last_force(r.decoupled, "loading"), tolerance, dofs, r.seconds));
+      }
+
+    // The resolution of the coupling measures: their value at Holl's ratio, where the coupling vanishes.
+    std::map<std::string, double> resolution;
+    for (const CoulombPanel &p : panels)
+      if (p.holl && p.error.empty())
+        for (const MapQuantity &q : map_quantities())
+          resolution[q.name] = std::max(resolution[q.name], std::abs(q.coupling(p.result)));
+
+    if (root)
+      {
+        std::ofstream csv(folder / "map.csv");
+        csv.precision(10);
+        csv << "k,nu,holl,mu,amplitude,far_field_over_a,dofs,surface_nodes,seconds,compliance_seconds,memory_mb,"
+               "largest_iterations,normal_slip_nodes";
+        for (const MapQuantity &q : map_quantities())
+          {
+            std::string n = q.name;
+            std::replace(n.begin(), n.end(), ' ', '_');
+            csv << ',' << n << "_coupling," << n << "_floor," << n << "_fe";
+          }
+        csv << ",stick_bracket_half_width,stick_spread,stick_spread_decoupled,slip_force_y,slip_force_y_decoupled,"
+               "closure,error\n";
+        std::ostringstream md;
+        md << "# " << s.info.name << ": where the chapter's tangential theory holds (3D Coulomb contact)\n\n"
+           << (s.info.description.empty() ? "" : s.info.description + "\n\n")
+           << "The 3D FE model of a rigid sphere R = " << format(s.load.R) << " m on E0 (z/c0)^k (E0 = "
+           << format(s.material.E0) << " Pa, c0 = " << format(s.material.c0)
+           << " m) with Coulomb friction mu = " << format(mu)
+           << " (fem/coulomb_contact_3d.h: the contact, stick zone and slip directions found node by node), loaded to "
+              "the chapter's depth of contact radius a = "
+           << format(a) << " m, sheared to the chapter's delta_A of F_A = " << format(amplitude)
+           << " mu F_N and cycled once to -delta_A and back, " << s.tangential.load_steps
+           << " steps per quarter cycle. The chapter's theory (9.80-9.86) assumes that the normal and tangential "
+              "problems decouple. The map is the coupling's effect: the FE model against the same FE model with the "
+              "coupling entries of its surface compliance removed (fem::without_coupling; the same mesh and truncation, "
+              "so the FE's own errors cancel). The FE floor is that decoupled model against the chapter (mesh, "
+              "truncation at L, and Cattaneo-Mindlin's slip parallel to x). At Holl's ratio nu = 1/(2 + k) the "
+              "coupling vanishes: the coupling measured there is the resolution of the map.\n\n";
+        md << "## The coupling's effect |FE / FE decoupled - 1|\n\n| k | nu |";
+        for (const MapQuantity &q : map_quantities())
+          md << " " << q.name << " |";
+        md << " FE floor (F_x, 9.80) | stick zone spread / a | slip direction sum|Q_y|/sum|Q| | DoFs | s | memory MiB |\n|---|---|";
+        for (std::size_t i = 0; i < map_quantities().size() + 6; ++i)
+          md << "---|";
+        md << '\n';
+        std::map<std::string, std::vector<Series>> plots;
+        std::map<double, std::map<std::string, Series>> by_k; // per k: curves over nu
+        for (const CoulombPanel &p : panels)
+          {
+            const CoulombSphereResult &r = p.result;
+            csv << p.k << ',' << p.nu << ',' << p.holl << ',' << mu << ',' << amplitude << ','
+                << (s.discretization.far_field > 0 ? s.discretization.far_field : (p.k < 0 ? 1e5 : 1e3)) << ',' << r.dofs
+                << ',' << r.surface_nodes << ',' << r.seconds << ',' << r.compliance_seconds << ',' << r.memory_mb << ','
+                << r.fe.max_iterations << ',' << r.fe.normal_slip;
+            for (const MapQuantity &q : map_quantities())
+              csv << ',' << q.coupling(r) << ',' << q.floor(r) << ',' << q.direct(r);
+            csv << ',' << r.fe.stick_resolution << ',' << r.fe.out_of_round << ',' << r.decoupled.out_of_round << ','
+                << r.fe.slip_force_y << ',' << r.decoupled.slip_force_y << ',' << r.fe.closure << ',' << csv_quote(p.error)
+                << '\n';
+            md << "| " << format(p.k) << " | " << (p.holl ? "1/(2 + k) = " : "") << format(p.nu) << " |";
+            if (!p.error.empty())
+              {
+                md << " failed: " << p.error << " |";
+                for (std::size_t i = 1; i < map_quantities().size() + 3; ++i)
+                  md << " - |";
+              }
+            else
+              {
+                for (const MapQuantity &q : map_quantities())
+                  md << " " << format(std::abs(q.coupling(r))) << " |";
+                md << " " << format(std::abs(r.decoupled.loading_deviation)) << " | " << format(r.fe.out_of_round) << " ("
+                   << format(r.decoupled.out_of_round) << " decoupled) | " << format(r.fe.slip_force_y) << " ("
+                   << format(r.decoupled.slip_force_y) << " decoupled) |";
+              }
+            md << " " << r.dofs << " | " << format(r.seconds) << " | " << format(r.memory_mb) << " |\n";
+            if (p.error.empty() && !p.holl)
+              for (const MapQuantity &q : map_quantities())
+                {
+                  Series &curve = by_k[p.k][q.name];
+                  curve.title       = "k = " + format(p.k);
+                  curve.linespoints = true;
+                  curve.x.push_back(p.nu);
+                  curve.y.push_back(std::max(std::abs(q.coupling(r)), 1e-16));
+                }
+          }
+        md << "\nA stick-zone spread is the largest difference of the stick radius between the rays +x, -x and +y "
+              "(a disc: 0, up to the node spacing there, "
+           << "the bracket half-width of the stick radius reaching "
+           << format(std::max_element(panels.begin(), panels.end(),
+                                      [](const CoulombPanel &x, const CoulombPanel &y) {
+                                        return x.result.fe.stick_resolution < y.result.fe.stick_resolution;
+                                      })
+                       ->result.fe.stick_resolution)
+           << " a). The slip direction's departure from x is the force-weighted sum |Q_y| / sum |Q| over the slipping "
+              "nodes, largest over the steps.\n\n";
+        md << "## Where the chapter's tangential theory holds\n\nThe (k, nu) of the map where the coupling's effect on a "
+              "quantity is within each threshold (the chapter's decoupled theory holds there up to the FE floor).\n\n| "
+              "quantity | chapter |";
+        for (const double t : s.map.thresholds)
+          md << " within " << percent(t) << " at |";
+        md << "\n|---|---|";
+        for (std::size_t i = 0; i < s.map.thresholds.size(); ++i)
+          md << "---|";
+        md << '\n';
+        for (const MapQuantity &q : map_quantities())
+          {
+            md << "| " << q.name << " | " << q.chapter << " |";
+            for (const double t : s.map.thresholds)
+              {
+                if (resolution.count(q.name) == 0)
+                  {
+                    md << " FE resolution not measured (no Holl's-ratio panel) |";
+                    continue;
+                  }
+                if (!(resolution[q.name] <= t / 3))
+                  {
+                    md << " below the FE resolution (" << format(resolution[q.name]) << ") |";
+                    continue;
+                  }
+                std::vector<std::string> within, outside;
+                for (const CoulombPanel &p : panels)
+                  if (p.error.empty() && !p.holl)
+                    (std::abs(q.coupling(p.result)) <= t ? within : outside)
+                      .push_back("(" + format(p.k) + ", " + format(p.nu) + ")");
+                const auto join = [](const std::vector<std::string> &v) {
+                  std::string out;
+                  for (const std::string &x : v)
+                    out += (out.empty() ? "" : ", ") + x;
+                  return out;
+                };
+                md << " " << (outside.empty() ? "every (k, nu) of the map"
+                              : within.empty() ? "none of the map (" + join(outside) + " outside)"
+                                               : join(within) + "; not " + join(outside))
+                   << " |";
+              }
+            md << '\n';
+          }
+        md << "\nThe resolution of each quantity is its coupling at Holl's ratio (";
+        bool first = true;
+        for (const auto &[name, value] : resolution)
+          {
+            md << (first ? "" : ", ") << name << " " << format(value);
+            first = false;
+          }
+        md << "); a threshold below three times it is not read.\n";
+        std::ofstream(folder / "map.md") << md.str();
+        if (s.outputs.plots)
+          {
+            for (const auto &[k, curves] : by_k)
+              for (const auto &[name, curve] : curves)
+                plots[name].push_back(curve);
+            for (auto &[name, series] : plots)
+              {
+                for (const double t : s.map.thresholds)
+                  series.push_back(Series{percent(t), {nus.front(), nus.back()}, {t, t}, false, false});
+                std::string stem = "map-" + name;
+                std::replace(stem.begin(), stem.end(), ' ', '_');
+                write_plot(folder, stem, s.info.name + ": the coupling's effect on the " + name, "nu",
+                           "|FE / FE decoupled - 1|", series, false, true);
+              }
+          }
+      }
+    result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    return result;
+  }
+} // namespace gradcontact::cases

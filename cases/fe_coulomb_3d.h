@@ -1,0 +1,129 @@
+// gradcontact/cases: the Coulomb sphere on the 3D graded half-space (fem/coulomb_contact_3d.h) against the
+// chapter's tangential theory, one loading path: normal loading to the depth d with friction mu_normal, then
+// friction mu and a tangential displacement to delta_A, and optionally one cycle to -delta_A and back (9.80-9.86).
+//
+// At every step the FE state is measured against the closed forms for the half-space (analytic/tangential.h):
+//  - the end of the normal loading: F_z against F_N(a), a the contact radius of d (9.24 family);
+//  - loading: F_x(delta) against Cattaneo-Mindlin for the graded sphere (9.80), relative to F_x;
+//  - unloading and reloading: F_x(delta) against the hysteresis loop (9.84, u_A from 9.85), relative to F_A;
+//  - the stick zone along the rays +x, -x, +y (fem::zone_shape) against the stick radius c of 9.80 on loading
+//    and the reversal radius b of 9.81 on the branches (inside b nothing slips in a step); its departure from
+//    a disc (the spread of the three rays) and the slip direction's largest angle to x;
+//  - the loop area (Simpson's rule over the branches' steps) against the dissipated energy (9.86, as
+//    tangential::dissipated_energy states it for a rigid sphere on one graded body), and the same rule on the
+//    closed-form loop, which measures the rule's own error.
+// The closed forms assume the decoupling of the normal and tangential problems (exact for k = 0 with nu = 1/2
+// and for Holl's ratio nu = 1/(2 + k)) and the half-space (the FE body is truncated at L): elsewhere the
+// differences are what friction's coupling does, the map's content (cases/validation/map_coulomb_3d_sphere.prm).
+#ifndef GRADCONTACT_CASES_FE_COULOMB_3D_H
+#define GRADCONTACT_CASES_FE_COULOMB_3D_H
+
+#include "report.h"
+#include "scene.h"
+
+#include <fem/coulomb_contact_3d.h>
+#include <fem/discretization.h>
+#include <fem/distributed_linear_solver.h>
+#include <fem/mesh_3d.h>
+
+#include <mpi.h>
+
+#include <filesystem>
+#include <functional>
+#include <limits>
+#include <string>
+#include <vector>
+
+namespace gradcontact::cases
+{
+  struct CoulombSphereCase
+  {
+    double E0 = 2e9, c0 = 3e-4, k = 0, nu = 0.3; ///< E(z) = E0 (z/c0)^k, Pa and m
+    double R  = 5e-3;                           ///< the sphere's radius, m
+    fem::HalfSpaceMesh3DParameters   mesh;      ///< mesh.contact_radius: the radius the rings are graded toward
+    fem::DiscretizationParameters    discretization;
+    fem::DistributedSolverParameters solver;
+    double       candidates       = 1.3;  ///< the candidate surface nodes lie within candidates * mesh.contact_radius
+    double       depth            = 0;    ///< d of the normal loading, m, > 0
+    double       mu_normal        = 0.3;  ///< friction during the normal loading, [0, inf]
+    double       mu               = 0.3;  ///< friction during the tangential loading, (0, inf)
+    double       delta            = 0;    ///< the tangential amplitude delta_A, m, > 0 (0: no tangential loading)
+    unsigned int normal_steps     = 10;   ///< >= 1
+    unsigned int tangential_steps = 10;   ///< of the loading to delta_A, >= 1; each branch of the cycle takes twice
+    bool         cycle            = false; ///< unloading to -delta_A and reloading to delta_A
+    /// Also run the path without the normal-tangential coupling (fem::without_coupling) and compare.
+    bool         decoupled_reference = false;
+
+    /// Throws std::invalid_argument naming the member, its value and the valid range.
+    void validate() const;
+  };
+
+  struct CoulombSphereStep
+  {
+    std::string         phase; ///< normal, loading, unloading, reloading
+    bool                decoupled = false; ///< a step of the path without the coupling
+    fem::CoulombState3D state; ///< without the per-node vectors
+    fem::ZoneShape3D    shape;
+    double theory_force_x = std::numeric_limits<double>::quiet_NaN(); ///< 9.80 or 9.84 at delta
+    double theory_stick   = std::numeric_limits<double>::quiet_NaN(); ///< c (9.80) or b (9.81) at delta
+  };
+
+  /// One loading path of the FE model and its measures against the chapter (NaN where not measured).
+  struct CoulombPath
+  {
+    static constexpr double nan = std::numeric_limits<double>::quiet_NaN();
+    std::vector<CoulombSphereStep> steps;
+    bool         converged      = true; ///< every step
+    std::string  message;               ///< of the first step that did not converge
+    unsigned int normal_slip    = 0;    ///< the most slipping nodes in a step of the normal loading
+    unsigned int max_iterations = 0;    ///< of one step
+    double force_z_deviation = nan; ///< F_z / F_N(a) - 1 after the normal loading
+    double loading_deviation = nan; ///< max |F_x / F_x(9.80) - 1| over the loading steps
+    double branch_deviation  = nan; ///< max |F_x - F_x(9.84)| / F_A over the unloading and reloading steps
+    double stick_deviation   = nan; ///< max over tangential steps and rays |c_ray - c| / a(d)
+    double stick_resolution  = nan; ///< the largest bracket half-width / a(d) among those
+    double out_of_round      = nan; ///< max over tangential steps of the spread of c over the rays / a(d)
+    double slip_angle        = 0;   ///< the largest angle of a slipping node's force to x, radians
+    double slip_force_y      = 0;   ///< max over steps of sum |Q_y| / sum |Q| over the slipping nodes
+    double energy            = nan; ///< the loop area (Simpson's rule over the branches' steps)
+    double closure           = nan; ///< |F_x at delta_A after the cycle / on loading - 1|
+  };
+
+  struct CoulombSphereResult
+  {
+    static constexpr double nan = std::numeric_limits<double>::quiet_NaN();
+    unsigned long long dofs = 0;
+    unsigned int       surface_nodes = 0, unknowns = 0, processes = 0;
+    double             compliance_seconds = 0, seconds = 0, memory_mb = 0; ///< memory: peak of the largest process
+    double a_theory = nan, force_n_theory = nan, force_a_theory = nan; ///< a(d), F_N(a), F_A = F_x(delta_A) (9.80)
+    double energy_theory = nan; ///< 9.86
+    double energy_rule   = nan; ///< Simpson's rule on the closed-form loop at the FE's points / 9.86 - 1
+    CoulombPath fe;             ///< the FE model
+    /// With decoupled_reference: the same path with fem::without_coupling(C), and the FE model against it:
+    /// the coupling's effect on the same discrete body (NaN where not measured).
+    CoulombPath decoupled;
+    double coupling_force_z = nan; ///< F_z / F_z(decoupled) - 1 after the normal loading
+    double coupling_loading = nan; ///< max |F_x / F_x(decoupled) - 1| over the loading steps
+    double coupling_branch  = nan; ///< max |F_x - F_x(decoupled)| / F_x(decoupled, delta_A) over the branches
+    double coupling_energy  = nan; ///< loop area / decoupled loop area - 1
+    double coupling_stick   = nan; ///< max over tangential steps and rays |c_ray - c_ray(decoupled)| / a(d)
+  };
+
+  /// Runs the case on `communicator` (collective; MPI must be initialised). `on_step` (every process) sees
+  /// each step as it is solved. A step that does not converge stops the path (converged = false, message).
+  CoulombSphereResult run_coulomb_sphere(MPI_Comm communicator, const CoulombSphereCase &c,
+                                         const std::function<void(const CoulombSphereStep &)> &on_step = {});
+
+  /// The map of Map/parameter = Coulomb 3D into `folder`: for every k of Map/k values and nu of Map/nu values (and
+  /// Holl's ratio nu = 1/(2 + k) for k > 0 with Map/Holl ratio), the case above with the sphere of Load/R, the mesh
+  /// graded toward Load/a (4 sectors, h_edge = a/100, L = Discretization/far field or 1000 a for k >= 0 and 1e5 a
+  /// for k < 0), loaded to the chapter's depth of contact radius a, then to the chapter's delta_A of F_A =
+  /// Tangential/amplitude mu F_N and one cycle, in Tangential/load steps, with the decoupled reference. The map
+  /// (map.md, map.csv, map-<quantity>.png) is the coupling's effect (the FE model against its decoupled self);
+  /// the decoupled path against the chapter is the FE's floor. errors.csv: the sharp checks at Holl's ratio
+  /// (decoupled: the coupling vanishes, and the FE meets 9.24, 9.80, 9.84, 9.86 within Tolerances/force), and
+  /// a failed row for every path that did not converge.
+  SceneResult run_coulomb_map(const Scene &scene, const std::filesystem::path &folder, bool verbose);
+} // namespace gradcontact::cases
+
+#endif
