@@ -83,9 +83,12 @@ namespace gradcontact::cases
     double stick_deviation   = nan; ///< max over tangential steps and rays |c_ray - c| / a(d)
     double stick_resolution  = nan; ///< the largest bracket half-width / a(d) among those
     double out_of_round      = nan; ///< max over tangential steps of the spread of c over the rays / a(d)
-    double slip_angle        = 0;   ///< the largest angle of a slipping node's force to x, radians
-    double slip_force_y      = 0;   ///< max over steps of sum |Q_y| / sum |Q| over the slipping nodes
+    double slip_angle        = 0;   ///< the largest angle of a slipping node's force to x, radians (tangential steps)
+    double slip_force_y      = 0;   ///< max over tangential steps of sum |Q_y| / sum |Q| over the slipping nodes
     double energy            = nan; ///< the loop area (Simpson's rule over the branches' steps)
+    /// The work of friction over the cycle, sum of mu P |s| over the steps' slip increments: the dissipated
+    /// energy without the quadrature of a loop whose branches have a kink wherever a node starts to slip.
+    double friction_work     = nan;
     double closure           = nan; ///< |F_x at delta_A after the cycle / on loading - 1|
   };
 

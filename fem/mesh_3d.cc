@@ -61,6 +61,8 @@ namespace gradcontact::fem
       fail("surface_layer_thickness", surface_layer_thickness, "0 or [1e-12, 0.25] (/ a)");
     if (!(edge_ratio >= 1.2 && edge_ratio <= 4))
       fail("edge_ratio", edge_ratio, "[1.2, 4]");
+    if (!(inner_ring_width == 0 || (inner_ring_width >= h_edge && inner_ring_width <= 0.25)))
+      fail("inner_ring_width", inner_ring_width, "0 or [h_edge, 0.25] (/ a)");
     if (edge_refinements > 12)
       fail("edge_refinements", edge_refinements, "[0, 12]");
     if (!(edge_grading >= 0 && edge_grading <= 4))
@@ -86,7 +88,11 @@ namespace gradcontact::fem
     // Radii of the rings in units of a: R0, the graded ones inside 1, 1, the graded ones outside, then
     // rings growing by g out to L. The depths of the slices: the graded ones from 0, then the same growth.
     std::vector<double> inside; // 1 - t_j > R0, from the core outward
-    for (double t = h, step = h; 1 - t > p.core_radius + 0.5 * step; step *= q, t += step)
+    // (with inner_ring_width: the steps stop growing at it, rings of that width down to the core)
+    const auto next_step = [&](const double step) {
+      return p.inner_ring_width > 0 ? std::min(step * q, std::max(p.inner_ring_width, h)) : step * q;
+    };
+    for (double t = h, step = h; 1 - t > p.core_radius + 0.5 * step; step = next_step(step), t += step)
       inside.push_back(1 - t);
     std::reverse(inside.begin(), inside.end());
     // origin + t_j, t_j = first (1 + q + ... + q^(j-1)), while the step is below (g - 1) of the distance from 0,

@@ -8,7 +8,8 @@
 //     (n/2) x (n/4) cells and n cells between it and the arc at the core radius R0) and rings of n sectors
 //     (n = `sectors`) at radii graded
 //     geometrically toward the contact circle r = 1 from both sides (distances h_edge, h_edge (1 + q),
-//     h_edge (1 + q + q^2), ...) and beyond that growing by the factor g out to L;
+//     h_edge (1 + q + q^2), ...; inside at most inner_ring_width apart when it is set) and beyond that growing
+//     by the factor g out to L;
 //  2. extrusion in z through slices graded the same way from z = 0, the first one surface_layer_thickness thin
 //     (GridGenerator::extrude_triangulation).
 //     The cells at the contact edge (r = a, z = 0), where the stresses are singular, are then h_edge thin
@@ -43,6 +44,9 @@ namespace gradcontact::fem
     double       ring_growth         = 1.6; ///< target ratio of consecutive rings beyond a, [1.1, 4]
     double       h_edge              = 1e-3; ///< smallest ring width and slice thickness at the edge / a, [1e-8, 0.25]
     double       edge_ratio          = 2.0;  ///< ratio q of consecutive graded steps, [1.2, 4]
+    /// The largest ring width inside the contact circle / a, 0 (none: the rings grow by q down to the core) or
+    /// [h_edge, 0.25]: rings of at most this width over R0 < r < a resolve a stick-slip boundary anywhere there.
+    double       inner_ring_width    = 0;
     /// Thickness of the first slice / a (0: h_edge), 0 or [1e-12, 0.25]: thinner for k > 0, where u_z ~ z^(1-k)
     /// under the load (the slices grow from it by q, so a thin layer costs log(h_edge / thickness) / log q slices).
     double       surface_layer_thickness = 0;

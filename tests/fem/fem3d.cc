@@ -1,14 +1,17 @@
 // fem3d: flat-punch runs of the 3D half-space model (fem/half_space_3d.h, p4est + Trilinos), checked
 // against the meridian models on the same truncated body and against itself on one process.
 //
-//   mpirun -np 2 fem3d load=all k=0 nu=0.3 p=2 L=8 g3=1.6 R0=0.5 h_edge=1e-3 q=2 edge=0 grading=1 contact_ref=0 global3=0
+//   mpirun -np 2 fem3d load=all k=0 nu=0.3 p=2 L=8 g3=1.6 R0=0.5 h_edge=1e-3 q=2 inner=0 edge=0 grading=1 contact_ref=0 global3=0
 //                      solver=direct|amg write=F against=F serial_tol=1e-10 compare=1 expect=1e-2
 // load = normal (u_z = d, u_x, u_y free), tangential (u_x = delta, u_y = 0, u_z free), bonded (u = (delta, 0, d)),
 // all (the three), or sphere: Coulomb frictional contact of a rigid sphere (fem/coulomb_contact_3d.h; keys mu,
 // mu_normal, depth, delta, normal_steps, tangential_steps, cycle, candidates; compare=1: F_z at the end of the
-// normal loading against the frictionless axisymmetric model, expect=X; theory=1: F_z and the loading F_x(delta)
-// against the chapter's closed forms for the half-space (9.24, 9.80; a decoupled pairing at a large L),
-// expect_theory=X). serial=1 (with np > 1): process 0 also runs the 3D model on MPI_COMM_SELF, and the
+// normal loading against the frictionless axisymmetric model, expect=X; theory_depth=1: the chapter's depth of
+// contact radius a; theory=1: the path against the chapter's closed forms for the half-space (cases/fe_coulomb_3d.h:
+// 9.24, 9.80, 9.81, 9.84, 9.86; a decoupled pairing at a large L), expect_theory=X (F_z and loading F_x),
+// expect_branch=X (/ F_A), expect_energy=X (loop area and friction work), expect_stick_zone=X (/ a, beyond the node
+// bracket), expect_round=X (the rays' spread beyond their brackets); decoupled=1: the same path without the
+// normal-tangential coupling, expect_coupling=X; cycle=1 with expect_closure=X). serial=1 (with np > 1): process 0 also runs the 3D model on MPI_COMM_SELF, and the
 // program fails unless every force agrees within serial_tol relative. compare=1: process 0 runs the
 // axisymmetric model (normal punch: F_z) and the Fourier mode-1 model (tangential punch: F_x) on the
 // meridian mesh of the same body (the cylinder r <= L, z <= L; fem/mesh.h at L, otherwise the recommended
@@ -75,6 +78,7 @@ int main(int argc, char **argv)
       mesh.ring_growth         = num("g3", mesh.ring_growth);
       mesh.h_edge              = num("h_edge", mesh.h_edge);
       mesh.edge_ratio          = num("q", mesh.edge_ratio);
+      mesh.inner_ring_width    = num("inner", mesh.inner_ring_width);
       mesh.surface_layer_thickness = num("layer", mesh.surface_layer_thickness);
       mesh.edge_refinements    = args.count("edge", mesh.edge_refinements);
       mesh.edge_grading        = num("grading", mesh.edge_grading);
@@ -216,16 +220,22 @@ int main(int argc, char **argv)
                           r.fe.stick_deviation, r.fe.stick_resolution, r.fe.out_of_round, r.fe.slip_angle, r.fe.slip_force_y);
               if (study.cycle)
                 std::printf("theory: branches |F_x - F_x(9.84)|/F_A max %.3e; loop area %.10e, 9.86 %.10e, relative "
-                            "difference %.3e (Simpson's rule on the closed-form loop: %.3e); closure %.3e\n",
+                            "difference %.3e (Simpson's rule on the closed-form loop: %.3e); friction work %.10e, "
+                            "relative difference %.3e; closure %.3e\n",
                             r.fe.branch_deviation, r.fe.energy, r.energy_theory, r.fe.energy / r.energy_theory - 1,
-                            r.energy_rule, r.fe.closure);
+                            r.energy_rule, r.fe.friction_work, r.fe.friction_work / r.energy_theory - 1, r.fe.closure);
             }
           if (num("theory", 0) != 0)
             {
               fails("expect_theory", std::max(std::abs(r.fe.force_z_deviation), r.fe.loading_deviation),
                     "the largest difference from 9.24 (F_z) and 9.80 (F_x)");
               fails("expect_branch", r.fe.branch_deviation, "|F_x - F_x(9.84)| / F_A on the branches");
-              fails("expect_energy", std::abs(r.fe.energy / r.energy_theory - 1), "the loop area against 9.86");
+              fails("expect_energy",
+                    std::max(std::abs(r.fe.energy / r.energy_theory - 1), std::abs(r.fe.friction_work / r.energy_theory - 1)),
+                    "the loop area and the friction work against 9.86");
+              // a disc: the stick radii of the three rays agree to their brackets
+              fails("expect_round", r.fe.out_of_round - 2 * r.fe.stick_resolution,
+                    "the stick zone's spread over the rays beyond its brackets (/ a)");
               // the stick zone: the closed form's radius within the FE's bracket plus this
               fails("expect_stick_zone", r.fe.stick_deviation - r.fe.stick_resolution,
                     "the stick radius beyond the FE's bracket (/ a)");
@@ -238,6 +248,12 @@ int main(int argc, char **argv)
                         r.coupling_force_z, r.coupling_loading, r.coupling_branch, r.coupling_energy, r.coupling_stick,
                         r.decoupled.force_z_deviation, r.decoupled.loading_deviation, r.decoupled.branch_deviation,
                         r.decoupled.energy / r.energy_theory - 1);
+          // expect_coupling=X (a decoupled pairing): the FE model equals its decoupled self within X.
+          if (study.decoupled_reference)
+            fails("expect_coupling",
+                  std::max({std::abs(r.coupling_force_z), r.coupling_loading, r.coupling_branch, std::abs(r.coupling_energy),
+                            r.coupling_stick}),
+                  "the coupling's largest effect");
           if (study.decoupled_reference && !r.decoupled.converged)
             {
               if (root)

@@ -24,6 +24,7 @@
 
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <memory>
 #include <stdexcept>
@@ -167,5 +168,37 @@ TEST_CASE("The 3D half-space mesh shall be the half cylinder with the contact di
     q                = p;
     q.core_radius    = 1.0;
     CHECK(refused(q, "core_radius"));
+    q                  = p;
+    q.inner_ring_width = 0.5;
+    CHECK(refused(q, "inner_ring_width"));
+  }
+
+  SECTION("inner_ring_width caps the ring widths inside the contact circle")
+  {
+    // The surface vertices on the positive x axis: the ring radii.
+    const auto ring_radii = [](const HalfSpaceMesh3DParameters &q) {
+      dealii::Triangulation<3> t;
+      make_coarse_mesh_3d(q, t);
+      std::vector<double> r;
+      for (const auto &v : t.get_vertices())
+        if (std::abs(v[1]) < 1e-12 * q.contact_radius && std::abs(v[2]) < 1e-12 * q.contact_radius && v[0] > 0)
+          r.push_back(v[0] / q.contact_radius);
+      std::sort(r.begin(), r.end());
+      return r;
+    };
+    HalfSpaceMesh3DParameters q = p;
+    q.inner_ring_width          = 0.05;
+    const std::vector<double> capped = ring_radii(q), graded = ring_radii(p);
+    double widest_capped = 0, widest_graded = 0;
+    for (std::size_t i = 1; i < capped.size(); ++i)
+      if (capped[i - 1] >= q.core_radius - 1e-12 && capped[i] <= 1 + 1e-12)
+        widest_capped = std::max(widest_capped, capped[i] - capped[i - 1]);
+    for (std::size_t i = 1; i < graded.size(); ++i)
+      if (graded[i - 1] >= p.core_radius - 1e-12 && graded[i] <= 1 + 1e-12)
+        widest_graded = std::max(widest_graded, graded[i] - graded[i - 1]);
+    // The last ring before the core takes what is left: at most 1.5 widths.
+    CHECK(widest_capped <= 1.5 * q.inner_ring_width);
+    CHECK(widest_graded > 2 * q.inner_ring_width); // without the cap the steps grow by q = 2
+    CHECK(std::count_if(capped.begin(), capped.end(), [](const double r) { return std::abs(r - 1) < 1e-12; }) == 1);
   }
 }
