@@ -41,8 +41,8 @@ namespace gradcontact::cases
       fem::fail(where, "delta", delta, "[0, inf)");
     if (normal_steps < 1)
       fem::fail(where, "normal_steps", normal_steps, "[1, inf)");
-    if (tangential_steps < 1)
-      fem::fail(where, "tangential_steps", tangential_steps, "[1, inf)");
+    if (delta > 0 && tangential_steps < 1)
+      fem::fail(where, "tangential_steps", tangential_steps, "[1, inf) (delta > 0)");
     if (cycle && !(delta > 0))
       fem::fail(where, "delta", delta, "(0, inf) (cycle = true)");
   }

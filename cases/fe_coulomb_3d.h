@@ -49,7 +49,7 @@ namespace gradcontact::cases
     double       mu               = 0.3;  ///< friction during the tangential loading, (0, inf)
     double       delta            = 0;    ///< the tangential amplitude delta_A, m, > 0 (0: no tangential loading)
     unsigned int normal_steps     = 10;   ///< >= 1
-    unsigned int tangential_steps = 10;   ///< of the loading to delta_A, >= 1; each branch of the cycle takes twice
+    unsigned int tangential_steps = 10;   ///< of the loading to delta_A, >= 1 when delta > 0; each branch of the cycle takes twice
     bool         cycle            = false; ///< unloading to -delta_A and reloading to delta_A
     /// Also run the path without the normal-tangential coupling (fem::without_coupling) and compare.
     bool         decoupled_reference = false;

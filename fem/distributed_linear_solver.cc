@@ -2,7 +2,15 @@
 #include <fem/errors.h>
 
 #include <deal.II/dofs/dof_tools.h>
+#include <deal.II/lac/lapack_full_matrix.h>
 #include <deal.II/lac/solver_cg.h>
+
+#include <Epetra_CrsMatrix.h>
+#include <dmumps_c.h>
+
+#include <algorithm>
+#include <cstdint>
+#include <limits>
 
 #include <chrono>
 #include <sstream>
@@ -130,6 +138,128 @@ namespace gradcontact::fem
     report.residual   = norm > 0 ? residual.l2_norm() / norm : residual.l2_norm();
     return report;
   }
+
+  FullMatrix<double> inverse_on_rows(const TrilinosWrappers::SparseMatrix &A, const std::vector<types::global_dof_index> &rows)
+  {
+    const MPI_Comm     communicator = A.get_mpi_communicator();
+    const bool         root         = Utilities::MPI::this_mpi_process(communicator) == 0;
+    const unsigned int m            = rows.size();
+    if (m == 0)
+      throw std::invalid_argument("inverse_on_rows: no rows");
+    {
+      std::vector<types::global_dof_index> sorted = rows;
+      std::sort(sorted.begin(), sorted.end());
+      if (std::adjacent_find(sorted.begin(), sorted.end()) != sorted.end())
+        throw std::invalid_argument("inverse_on_rows: a row is listed twice");
+      if (sorted.back() >= A.m())
+        throw std::invalid_argument("inverse_on_rows: row " + std::to_string(sorted.back()) + " outside the matrix of " +
+                                    std::to_string(A.m()) + " rows");
+    }
+    if (A.m() > static_cast<types::global_dof_index>(std::numeric_limits<MUMPS_INT>::max()))
+      throw std::invalid_argument("inverse_on_rows: " + std::to_string(A.m()) + " rows exceed MUMPS' 32-bit indices");
+
+    // The locally owned rows' entries (1-based, MUMPS' convention), gathered on process 0.
+    std::vector<MUMPS_INT> irn, jcn;
+    std::vector<double>    values;
+    // (Epetra's row views: deal.II's row iterator clears a cache of the matrix's width for every row.)
+    const Epetra_CrsMatrix &epetra = A.trilinos_matrix();
+    for (int local = 0; local < epetra.NumMyRows(); ++local)
+      {
+        int     n       = 0;
+        double *entries = nullptr;
+        int    *columns = nullptr;
+        if (epetra.ExtractMyRowView(local, n, entries, columns) != 0)
+          throw std::runtime_error("inverse_on_rows: cannot read row " + std::to_string(local) + " of the matrix");
+        const long long row = epetra.RowMap().GID64(local);
+        for (int j = 0; j < n; ++j)
+          if (entries[j] != 0)
+            {
+              irn.push_back(static_cast<MUMPS_INT>(row + 1));
+              jcn.push_back(static_cast<MUMPS_INT>(epetra.ColMap().GID64(columns[j]) + 1));
+              values.push_back(entries[j]);
+            }
+      }
+    const std::vector<std::vector<MUMPS_INT>> all_irn = Utilities::MPI::gather(communicator, irn, 0),
+                                              all_jcn = Utilities::MPI::gather(communicator, jcn, 0);
+    const std::vector<std::vector<double>>    all_values = Utilities::MPI::gather(communicator, values, 0);
+    irn.clear();
+    jcn.clear();
+    values.clear();
+    if (root)
+      for (unsigned int p = 0; p < all_irn.size(); ++p)
+        {
+          irn.insert(irn.end(), all_irn[p].begin(), all_irn[p].end());
+          jcn.insert(jcn.end(), all_jcn[p].begin(), all_jcn[p].end());
+          values.insert(values.end(), all_values[p].begin(), all_values[p].end());
+        }
+
+    std::vector<MUMPS_INT> schur_rows(m);
+    for (unsigned int k = 0; k < m; ++k)
+      schur_rows[k] = static_cast<MUMPS_INT>(rows[k] + 1);
+    std::vector<double> schur(root ? static_cast<std::size_t>(m) * m : 0);
+
+    DMUMPS_STRUC_C id{};
+    id.comm_fortran = static_cast<MUMPS_INT>(MPI_Comm_c2f(communicator));
+    id.par          = 1; // the host works too
+    id.sym          = 0; // general LU: the Schur complement comes back complete
+    id.job          = -1;
+    dmumps_c(&id);
+    const auto check = [&](const char *phase) {
+      if (id.infog[0] < 0)
+        {
+          const int code = id.infog[0], detail = id.infog[1];
+          id.job = -2;
+          dmumps_c(&id);
+          throw std::runtime_error(std::string("inverse_on_rows: MUMPS ") + phase + " failed with INFOG(1) = " +
+                                   std::to_string(code) + ", INFOG(2) = " + std::to_string(detail) +
+                                   " (MUMPS users' guide, section 8)");
+        }
+    };
+    check("initialisation");
+    id.icntl[0]  = -1; // no error, diagnostic, global or printing output
+    id.icntl[1]  = -1;
+    id.icntl[2]  = -1;
+    id.icntl[3]  = 0;
+    id.icntl[4]  = 0;  // assembled matrix
+    id.icntl[17] = 0;  // ICNTL(18): centralised on the host
+    id.icntl[18] = 1;  // ICNTL(19): the Schur complement, centralised on the host
+    if (root)
+      {
+        id.n             = static_cast<MUMPS_INT>(A.m());
+        id.nnz           = static_cast<MUMPS_INT8>(values.size());
+        id.irn           = irn.data();
+        id.jcn           = jcn.data();
+        id.a             = values.data();
+        id.size_schur    = static_cast<MUMPS_INT>(m);
+        id.listvar_schur = schur_rows.data();
+        id.schur         = schur.data();
+      }
+    id.job = 4; // analysis and factorisation
+    dmumps_c(&id);
+    check("factorisation");
+    id.job = -2;
+    dmumps_c(&id);
+
+    // C = S^{-1} (S by rows; symmetric for a symmetric A).
+    FullMatrix<double> result(m, m);
+    if (root)
+      {
+        LAPACKFullMatrix<double> S(m, m);
+        for (unsigned int k = 0; k < m; ++k)
+          for (unsigned int l = 0; l < m; ++l)
+            S(k, l) = schur[static_cast<std::size_t>(k) * m + l];
+        S.set_property(LAPACKSupport::symmetric);
+        S.compute_cholesky_factorization();
+        S.invert();
+        for (unsigned int k = 0; k < m; ++k)
+          for (unsigned int l = 0; l < m; ++l)
+            result(k, l) = S(k, l);
+      }
+    MPI_Bcast(&result(0, 0), static_cast<int>(m * m), MPI_DOUBLE, 0, communicator);
+    return result;
+  }
+
+
 
   template class DistributedLinearSolver<2>;
   template class DistributedLinearSolver<3>;

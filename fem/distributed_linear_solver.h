@@ -21,8 +21,11 @@
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/trilinos_vector.h>
 
+#include <deal.II/lac/full_matrix.h>
+
 #include <memory>
 #include <string>
+#include <vector>
 
 namespace gradcontact::fem
 {
@@ -80,6 +83,16 @@ namespace gradcontact::fem
     std::unique_ptr<dealii::TrilinosWrappers::SolverDirect>        direct;
     std::unique_ptr<dealii::TrilinosWrappers::PreconditionAMG>     amg;
   };
+
+  /// The block of A^{-1} on the unknowns `rows` (global indices, the same list on every process), on every process:
+  /// result(k, l) = (A^{-1})_{rows[k], rows[l]}. A^{-1} restricted to them is the inverse of the Schur complement
+  /// S = A_rr - A_ro A_oo^{-1} A_or, which MUMPS forms while it factorises A_oo (ICNTL(19), MUMPS users' guide
+  /// 5.5, section 5.14), so the block costs one factorisation instead of a solve per row. The matrix is gathered
+  /// on process 0 (MUMPS' centralised input); every process of A's communicator takes part in the factorisation.
+  /// Throws std::runtime_error with MUMPS' error code when it fails, std::invalid_argument for an empty or repeated
+  /// row. A must be symmetric positive definite on `rows` (S is inverted by Cholesky).
+  dealii::FullMatrix<double> inverse_on_rows(const dealii::TrilinosWrappers::SparseMatrix &A,
+                                             const std::vector<dealii::types::global_dof_index> &rows);
 
   extern template class DistributedLinearSolver<2>;
   extern template class DistributedLinearSolver<3>;

@@ -318,27 +318,10 @@ namespace gradcontact::fem
         surface.nodes.emplace_back(std::get<0>(all[k]), std::get<1>(all[k]));
         surface.unknown.push_back(unknown);
       }
-    const unsigned int m = dofs.size();
 
-    // Columns of C: the displacements of the unknowns under a unit nodal force on each.
-    Constrained &free = constrained({{false, false, false}});
-    surface.C.reinit(m, m);
-    Vector b(owned, communicator), w;
-    for (unsigned int l = 0; l < m; ++l)
-      {
-        b = 0;
-        if (owned.is_element(dofs[l]))
-          b[dofs[l]] = 1;
-        b.compress(VectorOperation::insert);
-        free.solver->solve(*free.matrix, b, w);
-        std::vector<double> column(m, 0.0);
-        for (unsigned int k = 0; k < m; ++k)
-          if (owned.is_element(dofs[k]))
-            column[k] = w[dofs[k]];
-        MPI_Allreduce(MPI_IN_PLACE, column.data(), static_cast<int>(m), MPI_DOUBLE, MPI_SUM, communicator);
-        for (unsigned int k = 0; k < m; ++k)
-          surface.C(k, l) = column[k];
-      }
+    // C: the block of the free body's A^{-1} on the unknowns (the displacements of the unknowns under a unit
+    // nodal force on each), from the Schur complement of the assembled free stiffness.
+    surface.C = inverse_on_rows(stiffness, dofs);
 
     // Areas: \int_{z=0} phi_i dA of the z shape functions.
     Vector                  area(owned, communicator);

@@ -143,12 +143,12 @@ int main(int argc, char **argv)
           study.cycle            = num("cycle", 0) != 0;
           study.decoupled_reference = num("decoupled", 0) != 0;
           const double mu        = study.mu;
-          // mu = 0: the frictionless normal loading only (the tangential loading needs mu > 0).
-          if (mu == 0)
+          // mu = 0 or tangential_steps = 0: the normal loading only (frictionless with mu = 0; the tangential loading
+          // needs mu > 0).
+          if (mu == 0 || study.tangential_steps == 0)
             {
-              study.mu        = 1;
-              study.mu_normal = 0;
-              study.delta     = 0;
+              study.mu    = mu == 0 ? 1 : mu; // unused without a tangential loading
+              study.delta = 0;
             }
           else
             study.delta = num("delta", 1.0) * mu * d_max;
