@@ -350,11 +350,12 @@ namespace gradcontact::fem
       {
         const Point<2> &x = surface.nodes[i];
         const double    r = x.norm();
-        if (std::abs(x[1]) <= on_line)
-          rays[x[0] >= 0 ? ZoneShape3D::plus_x : ZoneShape3D::minus_x].emplace_back(r, state.status[i]);
-        if (std::abs(x[0]) <= on_line && x[1] > on_line)
-          rays[ZoneShape3D::plus_y].emplace_back(r, state.status[i]);
         if (r <= on_line) // the axis lies on every ray
+          for (auto &ray : rays)
+            ray.emplace_back(r, state.status[i]);
+        else if (std::abs(x[1]) <= on_line)
+          rays[x[0] > 0 ? ZoneShape3D::plus_x : ZoneShape3D::minus_x].emplace_back(r, state.status[i]);
+        else if (std::abs(x[0]) <= on_line)
           rays[ZoneShape3D::plus_y].emplace_back(r, state.status[i]);
         if (state.status[i] == NodeStatus::stick)
           shape.stick_outer = std::max(shape.stick_outer, r);
