@@ -60,7 +60,7 @@ namespace gradcontact::cases
   } // namespace
 
   CoulombSphereResult run_coulomb_sphere(const MPI_Comm communicator, const CoulombSphereCase &c,
-                                         const std::function<void(const CoulombSphereStep &)> &on_step)
+                                         const std::function<void(const CoulombSphereStep &, const fem::SurfaceCompliance3D &)> &on_step)
   {
     c.validate();
     const auto         start = std::chrono::steady_clock::now();
@@ -118,10 +118,6 @@ namespace gradcontact::cases
             if (s.state.status[i] == fem::NodeStatus::slip)
               cycle_work += 2 * std::hypot(s.state.nodal_force[i][0], s.state.nodal_force[i][1]) *
                             std::hypot(s.state.slip[i][0], s.state.slip[i][1]);
-        s.state.status.clear();
-        s.state.nodal_force.clear();
-        s.state.displacement.clear();
-        s.state.slip.clear();
         path.max_iterations = std::max(path.max_iterations, s.state.iterations);
         if (phase != "normal") // the slip of the normal loading is radial
           {
@@ -142,7 +138,9 @@ namespace gradcontact::cases
             else
               {
                 s.theory_force_x = hysteresis_force(medium, slip, a, result.force_a_theory, branch, on_branch(delta));
-                s.theory_stick   = reversal_radius(medium, slip, a, result.force_a_theory, branch, s.theory_force_x);
+                // (the force at +-u_A is +-F_A up to round-off, which may put it a few ulps outside)
+                s.theory_stick = reversal_radius(medium, slip, a, result.force_a_theory, branch,
+                                                 std::clamp(s.theory_force_x, -result.force_a_theory, result.force_a_theory));
                 path.branch_deviation = std::max(std::isnan(path.branch_deviation) ? 0. : path.branch_deviation,
                                                  std::abs(s.state.force_x - s.theory_force_x) / result.force_a_theory);
               }
@@ -166,7 +164,11 @@ namespace gradcontact::cases
             path.message   = phase + " step: " + s.state.message;
           }
         if (on_step)
-          on_step(s);
+          on_step(s, C);
+        s.state.status.clear(); // the per-node vectors are the callback's only
+        s.state.nodal_force.clear();
+        s.state.displacement.clear();
+        s.state.slip.clear();
         path.steps.push_back(std::move(s));
         return path.steps.back().state.converged;
       };
@@ -361,6 +363,8 @@ namespace gradcontact::cases
         c.mesh.far_field_size          = s.discretization.far_field > 0 ? s.discretization.far_field
                                                                          : (panel.k < 0 ? 1e5 : 1e3);
         c.mesh.surface_layer_thickness = panel.k > 0 ? 1e-4 : 0.;
+        c.mesh.inner_ring_width        = 0.025; // the stick-slip boundary resolved anywhere in the contact
+        c.candidates                   = 1.15;
         c.discretization.degree        = s.discretization.degree;
         c.mu = c.mu_normal = mu;
         c.normal_steps = c.tangential_steps = s.tangential.load_steps;
@@ -466,7 +470,7 @@ namespace gradcontact::cases
         md << "## The coupling's effect |FE / FE decoupled - 1|\n\n| k | nu |";
         for (const MapQuantity &q : map_quantities())
           md << " " << q.name << " |";
-        md << " FE floor (F_x, 9.80) | stick zone spread / a | slip direction sum|Q_y|/sum|Q| | DoFs | s | memory MiB |\n|---|---|";
+        md << " FE floor: F_x (9.80), loop area (9.86) | stick zone spread / a | slip direction sum|Q_y|/sum|Q| | DoFs | s | memory MiB |\n|---|---|";
         for (std::size_t i = 0; i < map_quantities().size() + 6; ++i)
           md << "---|";
         md << '\n';
@@ -495,7 +499,8 @@ namespace gradcontact::cases
               {
                 for (const MapQuantity &q : map_quantities())
                   md << " " << format(std::abs(q.coupling(r))) << " |";
-                md << " " << format(std::abs(r.decoupled.loading_deviation)) << " | " << format(r.fe.out_of_round) << " ("
+                md << " " << format(std::abs(r.decoupled.loading_deviation)) << ", "
+                   << format(std::abs(energy_deviation(r.decoupled, r))) << " | " << format(r.fe.out_of_round) << " ("
                    << format(r.decoupled.out_of_round) << " decoupled) | " << format(r.fe.slip_force_y) << " ("
                    << format(r.decoupled.slip_force_y) << " decoupled) |";
               }

@@ -62,7 +62,7 @@ namespace gradcontact::cases
   {
     std::string         phase; ///< normal, loading, unloading, reloading
     bool                decoupled = false; ///< a step of the path without the coupling
-    fem::CoulombState3D state; ///< without the per-node vectors
+    fem::CoulombState3D state; ///< stored without the per-node vectors
     fem::ZoneShape3D    shape;
     double theory_force_x = std::numeric_limits<double>::quiet_NaN(); ///< 9.80 or 9.84 at delta
     double theory_stick   = std::numeric_limits<double>::quiet_NaN(); ///< c (9.80) or b (9.81) at delta
@@ -113,14 +113,17 @@ namespace gradcontact::cases
   };
 
   /// Runs the case on `communicator` (collective; MPI must be initialised). `on_step` (every process) sees
-  /// each step as it is solved. A step that does not converge stops the path (converged = false, message).
-  CoulombSphereResult run_coulomb_sphere(MPI_Comm communicator, const CoulombSphereCase &c,
-                                         const std::function<void(const CoulombSphereStep &)> &on_step = {});
+  /// each step as it is solved, with its per-node vectors (fem::write_surface_vtu) and the compliance it was
+  /// solved on; the stored steps keep none. A step that does not converge stops the path (converged = false,
+  /// message).
+  CoulombSphereResult
+  run_coulomb_sphere(MPI_Comm communicator, const CoulombSphereCase &c,
+                     const std::function<void(const CoulombSphereStep &, const fem::SurfaceCompliance3D &)> &on_step = {});
 
   /// The map of Map/parameter = Coulomb 3D into `folder`: for every k of Map/k values and nu of Map/nu values (and
   /// Holl's ratio nu = 1/(2 + k) for k > 0 with Map/Holl ratio), the case above with the sphere of Load/R, the mesh
-  /// graded toward Load/a (4 sectors, h_edge = a/100, L = Discretization/far field or 1000 a for k >= 0 and 1e5 a
-  /// for k < 0), loaded to the chapter's depth of contact radius a, then to the chapter's delta_A of F_A =
+  /// graded toward Load/a (4 sectors, h_edge = a/100, rings of at most a/40 inside the contact, candidate nodes
+  /// within 1.15 a, L = Discretization/far field or 1000 a for k >= 0 and 1e5 a for k < 0), loaded to the chapter's depth of contact radius a, then to the chapter's delta_A of F_A =
   /// Tangential/amplitude mu F_N and one cycle, in Tangential/load steps, with the decoupled reference. The map
   /// (map.md, map.csv, map-<quantity>.png) is the coupling's effect (the FE model against its decoupled self);
   /// the decoupled path against the chapter is the FE's floor. errors.csv: the sharp checks at Holl's ratio

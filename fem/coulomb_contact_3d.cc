@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <fstream>
 #include <sstream>
 #include <stdexcept>
 
@@ -396,5 +397,67 @@ namespace gradcontact::fem
         shape.stick[ray] = bracket(rays[ray], [](const NodeStatus s) { return s == NodeStatus::stick; });
       }
     return shape;
+  }
+
+
+
+  void write_surface_vtu(const SurfaceCompliance3D &surface, const CoulombState3D &state, const std::string &filename)
+  {
+    const unsigned int n = surface.nodes.size();
+    if (state.status.size() != n || state.nodal_force.size() != n || state.displacement.size() != n ||
+        state.slip.size() != n || surface.area.size() != n)
+      throw std::invalid_argument("write_surface_vtu: the state has " + std::to_string(state.status.size()) +
+                                  " nodes, the surface " + std::to_string(n));
+    // The half body and its mirror image (the nodes on y = 0 once).
+    std::vector<std::pair<unsigned int, double>> points; // (node, sign of y)
+    for (unsigned int i = 0; i < n; ++i)
+      {
+        points.emplace_back(i, 1.0);
+        if (surface.nodes[i][1] != 0)
+          points.emplace_back(i, -1.0);
+      }
+    std::ofstream out(filename);
+    out.precision(12);
+    out << "<?xml version=\"1.0\"?>\n<VTKFile type=\"UnstructuredGrid\" version=\"0.1\" byte_order=\"LittleEndian\">\n"
+        << "<UnstructuredGrid>\n<Piece NumberOfPoints=\"" << points.size() << "\" NumberOfCells=\"" << points.size()
+        << "\">\n<Points>\n<DataArray type=\"Float64\" NumberOfComponents=\"3\" format=\"ascii\">\n";
+    for (const auto &[i, sy] : points)
+      out << surface.nodes[i][0] << ' ' << sy * surface.nodes[i][1] << " 0\n";
+    out << "</DataArray>\n</Points>\n<Cells>\n<DataArray type=\"Int64\" Name=\"connectivity\" format=\"ascii\">\n";
+    for (std::size_t p = 0; p < points.size(); ++p)
+      out << p << '\n';
+    out << "</DataArray>\n<DataArray type=\"Int64\" Name=\"offsets\" format=\"ascii\">\n";
+    for (std::size_t p = 0; p < points.size(); ++p)
+      out << p + 1 << '\n';
+    out << "</DataArray>\n<DataArray type=\"UInt8\" Name=\"types\" format=\"ascii\">\n";
+    for (std::size_t p = 0; p < points.size(); ++p)
+      out << "1\n"; // VTK_VERTEX
+    out << "</DataArray>\n</Cells>\n<PointData Scalars=\"status\">\n";
+    const auto vector = [&](const char *name, const auto &value) {
+      out << "<DataArray type=\"Float64\" Name=\"" << name << "\" NumberOfComponents=\"3\" format=\"ascii\">\n";
+      for (const auto &[i, sy] : points)
+        {
+          const std::array<double, 3> v = value(i);
+          out << v[0] << ' ' << sy * v[1] << ' ' << v[2] << '\n';
+        }
+      out << "</DataArray>\n";
+    };
+    const auto scalar = [&](const char *name, const auto &value) {
+      out << "<DataArray type=\"Float64\" Name=\"" << name << "\" format=\"ascii\">\n";
+      for (const auto &pair : points)
+        out << value(pair.first) << '\n';
+      out << "</DataArray>\n";
+    };
+    scalar("status", [&](const unsigned int i) { return static_cast<double>(state.status[i]); });
+    vector("nodal_force", [&](const unsigned int i) { return state.nodal_force[i]; });
+    scalar("pressure", [&](const unsigned int i) { return state.nodal_force[i][2] / surface.area[i]; });
+    vector("shear", [&](const unsigned int i) {
+      return std::array<double, 3>{{state.nodal_force[i][0] / surface.area[i], state.nodal_force[i][1] / surface.area[i], 0}};
+    });
+    vector("displacement", [&](const unsigned int i) { return state.displacement[i]; });
+    vector("slip", [&](const unsigned int i) { return std::array<double, 3>{{state.slip[i][0], state.slip[i][1], 0}}; });
+    out << "</PointData>\n</Piece>\n</UnstructuredGrid>\n</VTKFile>\n";
+    if (!out)
+      throw std::runtime_error("write_surface_vtu: cannot write " + filename);
   }
 } // namespace gradcontact::fem

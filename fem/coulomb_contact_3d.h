@@ -135,6 +135,13 @@ namespace gradcontact::fem
   /// that the difference from it is the coupling's effect alone.
   SurfaceCompliance3D without_coupling(const SurfaceCompliance3D &surface);
 
+  /// Writes the surface state to `filename` (VTK XML unstructured grid, one vertex per node, the half body
+  /// mirrored to the whole disc by y -> -y) for ParaView: point data status (0 separated, 1 stick, 2 slip), the
+  /// nodal forces Q (Q_x, Q_y, P), the mean tractions Q / area (shear) and P / area (pressure), u and this step's
+  /// slip. Throws std::runtime_error naming the file when it cannot be written, std::invalid_argument for a state
+  /// of another surface.
+  void write_surface_vtu(const SurfaceCompliance3D &surface, const CoulombState3D &state, const std::string &filename);
+
   class CoulombContact3D
   {
   public:

@@ -11,7 +11,8 @@
 // 9.24, 9.80, 9.81, 9.84, 9.86; a decoupled pairing at a large L), expect_theory=X (F_z and loading F_x),
 // expect_branch=X (/ F_A), expect_energy=X (loop area and friction work), expect_stick_zone=X (/ a, beyond the node
 // bracket), expect_round=X (the rays' spread beyond their brackets); decoupled=1: the same path without the
-// normal-tangential coupling, expect_coupling=X; cycle=1 with expect_closure=X). serial=1 (with np > 1): process 0 also runs the 3D model on MPI_COMM_SELF, and the
+// normal-tangential coupling, expect_coupling=X; cycle=1 with expect_closure=X; vtu=PREFIX: the surface state of every
+// step for ParaView, PREFIX-<i>.vtu and PREFIX.pvd). serial=1 (with np > 1): process 0 also runs the 3D model on MPI_COMM_SELF, and the
 // program fails unless every force agrees within serial_tol relative. compare=1: process 0 runs the
 // axisymmetric model (normal punch: F_z) and the Fourier mode-1 model (tangential punch: F_x) on the
 // meridian mesh of the same body (the cylinder r <= L, z <= L; fem/mesh.h at L, otherwise the recommended
@@ -32,6 +33,7 @@
 #include <deal.II/base/mpi.h>
 
 #include <chrono>
+#include <filesystem>
 #include <cmath>
 #include <cstdio>
 #include <fstream>
@@ -153,9 +155,17 @@ int main(int argc, char **argv)
           else
             study.delta = num("delta", 1.0) * mu * d_max;
           int failed = 0;
-          const auto print = [&](const gradcontact::cases::CoulombSphereStep &step) {
+          // vtu=PREFIX: the surface state of every step of the FE path, PREFIX-<step>.vtu, and PREFIX.pvd (process 0).
+          const std::string vtu = args.text("vtu", "");
+          std::vector<std::string> vtu_files;
+          const auto print = [&](const gradcontact::cases::CoulombSphereStep &step, const SurfaceCompliance3D &C) {
             if (!root)
               return;
+            if (!vtu.empty() && !step.decoupled)
+              {
+                vtu_files.push_back(vtu + "-" + std::to_string(vtu_files.size()) + ".vtu");
+                write_surface_vtu(C, step.state, vtu_files.back());
+              }
             const CoulombState3D &st = step.state;
             std::printf("%s%s d/d_max=%.4f delta/(mu d)=%.4f Fz=%.10e Fx=%.10e contact=%u stick=%u slip=%u "
                         "iterations=%u%s%s",
@@ -171,6 +181,17 @@ int main(int argc, char **argv)
             std::printf("\n");
           };
           const gradcontact::cases::CoulombSphereResult r = gradcontact::cases::run_coulomb_sphere(world, study, print);
+          if (!vtu_files.empty())
+            {
+              std::ofstream pvd(vtu + ".pvd");
+              pvd << "<?xml version=\"1.0\"?>\n<VTKFile type=\"Collection\" version=\"0.1\">\n<Collection>\n";
+              for (std::size_t i = 0; i < vtu_files.size(); ++i)
+                pvd << "<DataSet timestep=\"" << i << "\" file=\"" << std::filesystem::path(vtu_files[i]).filename().string()
+                    << "\"/>\n";
+              pvd << "</Collection>\n</VTKFile>\n";
+              if (!pvd)
+                throw std::runtime_error("fem3d: cannot write " + vtu + ".pvd");
+            }
           if (root)
             std::printf("sphere k=%g nu=%g p=%u np=%u dofs=%llu surface_nodes=%u unknowns=%u compliance_time=%.2f "
                         "time=%.2f peak_mb=%.0f largest_iterations=%u\n",
