@@ -272,8 +272,11 @@ namespace gradcontact::fem
                   {
                     next[i] = NodeStatus::slip;
                     const std::array<double, 2> direction_i = {{z[0] / size_z, z[1] / size_z}};
+                    // the direction's change weighted by the node's share of the largest normal force: what it
+                    // changes in the forces (a node with a force near round-off has a direction near round-off)
                     if (s.status[i] == NodeStatus::slip)
-                      turn = std::max(turn, std::hypot(direction_i[0] - t[i][0], direction_i[1] - t[i][1]));
+                      turn = std::max(turn, std::hypot(direction_i[0] - t[i][0], direction_i[1] - t[i][1]) *
+                                              std::max(P, 0.0) / largest);
                     t[i] = direction_i;
                   }
               }

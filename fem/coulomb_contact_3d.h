@@ -22,7 +22,8 @@
 // each iteration solves the dense linear system of the current sets (LAPACK LU), with the slip law
 // Q = mu P t(z) linearised at the current iterate including the derivative of the direction (a
 // semi-smooth Newton step; on the symmetry plane the direction is +-x and the law linear); it stops when the
-// sets do not change and the directions move by less than `direction_tolerance`. The iteration
+// sets do not change and the directions move by less than `direction_tolerance`, each weighted by its node's
+// normal force over the largest (a node with a force near round-off has a direction near round-off). The iteration
 // counts are reported; a step that does not converge in `max_iterations` says so (converged = false) and
 // is not used as the start of the next step's increments.
 //
@@ -65,7 +66,9 @@ namespace gradcontact::fem
   {
     double       mu                  = 0.3;   ///< friction coefficient, >= 0 (infinity: full stick)
     unsigned int max_iterations      = 200;   ///< active-set iterations per step, >= 1
-    double       direction_tolerance = 1e-10; ///< largest change of a slip direction at convergence, (0, 1)
+    /// Largest change of a slip direction at convergence, weighted by the node's normal force over the largest
+    /// one (the change of the nodal forces it makes, relative), (0, 1).
+    double       direction_tolerance = 1e-10;
     /// A node changes its set only when its criterion is violated by more than this times the largest nodal
     /// normal force, [0, 1e-3): the accuracy to which the contact and stick zones are found.
     double       set_tolerance       = 1e-9;

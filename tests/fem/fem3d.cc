@@ -12,7 +12,8 @@
 // expect_branch=X (/ F_A), expect_energy=X (loop area and friction work), expect_stick_zone=X (/ a, beyond the node
 // bracket), expect_round=X (the rays' spread beyond their brackets); decoupled=1: the same path without the
 // normal-tangential coupling, expect_coupling=X; cycle=1 with expect_closure=X; vtu=PREFIX: the surface state of every
-// step for ParaView, PREFIX-<i>.vtu and PREFIX.pvd). serial=1 (with np > 1): process 0 also runs the 3D model on MPI_COMM_SELF, and the
+// step for ParaView, PREFIX-<i>.vtu and PREFIX.pvd; compare_friction=1: the normal loading with friction against the
+// axisymmetric frictional model, expect_friction=X). serial=1 (with np > 1): process 0 also runs the 3D model on MPI_COMM_SELF, and the
 // program fails unless every force agrees within serial_tol relative. compare=1: process 0 runs the
 // axisymmetric model (normal punch: F_z) and the Fourier mode-1 model (tangential punch: F_x) on the
 // meridian mesh of the same body (the cylinder r <= L, z <= L; fem/mesh.h at L, otherwise the recommended
@@ -25,6 +26,7 @@
 #include <fem/fourier_mode1_solver.h>
 #include <fem/half_space_3d.h>
 #include <fem/modulus.h>
+#include <fem/unilateral_contact.h>
 
 #include "study_arguments.h"
 
@@ -229,6 +231,40 @@ int main(int argc, char **argv)
                             "meridian %.10e relative difference %.3e\n",
                             force_z, reference_force, difference);
               fails("expect", difference, "F_z against the meridian model");
+            }
+          // compare_friction=1: the normal loading with friction mu_normal against the axisymmetric frictional model
+          // of the same body (fem::UnilateralContactSolver with Friction, the meridian mesh of L, the same number of
+          // equal depth steps): the 3D normal loading is axisymmetric, so the two differ by discretisation only, and
+          // the coupling of the normal loading (the Spence effect) is checked by an independent model. expect_friction=X
+          // bounds the relative difference of F_z.
+          if (num("compare_friction", 0) != 0 && r.fe.steps.size() >= study.normal_steps)
+            {
+              double reference[2] = {0, 0};
+              if (root)
+                {
+                  DiscretizationParameters reference_disc;
+                  reference_disc.degree = 3;
+                  UnilateralContactSolver axisymmetric(material, meridian_of(mesh, k), reference_disc, 1.3 * a);
+                  UnilateralLoad load;
+                  load.indenter            = Indenter::of(Profile::paraboloid(R), a);
+                  load.friction.coefficient = study.mu_normal;
+                  load.friction.load_steps  = study.normal_steps;
+                  load.depth               = d_max;
+                  const UnilateralResult u = axisymmetric.run(load);
+                  reference[0]             = u.force;
+                  reference[1]             = u.stick_radius;
+                }
+              MPI_Bcast(reference, 2, MPI_DOUBLE, 0, world);
+              const gradcontact::cases::CoulombSphereStep &last = r.fe.steps[study.normal_steps - 1];
+              const double difference      = std::abs(last.state.force_z / reference[0] - 1);
+              if (root)
+                std::printf("compare_friction: F_z after the normal loading with mu = %g: 3D %.10e axisymmetric %.10e "
+                            "relative difference %.3e; stick radius / a: 3D (+x, -x, +y) %.4f, %.4f, %.4f (+-%.4f), "
+                            "axisymmetric %.4f\n",
+                            study.mu_normal, last.state.force_z, reference[0], difference,
+                            last.shape.stick[0].radius() / a, last.shape.stick[1].radius() / a,
+                            last.shape.stick[2].radius() / a, last.shape.stick[0].half_width() / a, reference[1] / a);
+              fails("expect_friction", difference, "F_z with friction against the axisymmetric frictional model");
             }
           // theory=1: the chapter's closed forms for the half-space (cases/fe_coulomb_3d.h; meaningful at a large L
           // and for a decoupled pairing).
