@@ -13,7 +13,8 @@
 // bracket), expect_round=X (the rays' spread beyond their brackets); decoupled=1: the same path without the
 // normal-tangential coupling, expect_coupling=X; cycle=1 with expect_closure=X; vtu=PREFIX: the surface state of every
 // step for ParaView, PREFIX-<i>.vtu and PREFIX.pvd; compare_friction=1: the normal loading with friction against the
-// axisymmetric frictional model, expect_friction=X). serial=1 (with np > 1): process 0 also runs the 3D model on MPI_COMM_SELF, and the
+// axisymmetric frictional model, expect_friction=X). Punches: mossakovskii=1 (k = 0, load=all): the bonded punch's F_z
+// over the frictionless one against Mossakovskii's ratio, expect_bonded=X. serial=1 (with np > 1): process 0 also runs the 3D model on MPI_COMM_SELF, and the
 // program fails unless every force agrees within serial_tol relative. compare=1: process 0 runs the
 // axisymmetric model (normal punch: F_z) and the Fourier mode-1 model (tangential punch: F_x) on the
 // meridian mesh of the same body (the cylinder r <= L, z <= L; fem/mesh.h at L, otherwise the recommended
@@ -417,6 +418,27 @@ int main(int argc, char **argv)
             }
         }
 
+      // mossakovskii=1 (k = 0, loads normal and bonded): the bonded punch, u = (delta, 0, d) on the disc, against the
+      // frictionless one. Its F_z does not depend on delta (antisymmetric in x), and for the homogeneous half-space
+      // the ratio is (1 - nu) ln(3 - 4 nu) / (1 - 2 nu) (Mossakovskii, Prikl. Mat. Mekh. 18 (1954) 187-196; Spence,
+      // J. Elasticity 5 (1975)): a classical solution of the coupled problem, the normal traction and the radial
+      // shear of a rigid disc that does not slip. The ratio cancels the truncation to first order. expect_bonded=X.
+      if (num("mossakovskii", 0) != 0 && root)
+        {
+          if (k != 0 || !results.count("normal") || !results.count("bonded"))
+            throw std::invalid_argument("fem3d: mossakovskii=1 needs k = 0 and load = all (normal and bonded)");
+          const double ratio = results["bonded"].force[2] / results["normal"].force[2];
+          const double exact = (1 - nu) * std::log(3 - 4 * nu) / (1 - 2 * nu);
+          std::printf("mossakovskii: F_z bonded / frictionless %.10f, (1 - nu) ln(3 - 4 nu) / (1 - 2 nu) = %.10f, "
+                      "relative difference %.3e\n",
+                      ratio, exact, std::abs(ratio / exact - 1));
+          const double expect = num("expect_bonded", 0);
+          if (expect > 0 && !(std::abs(ratio / exact - 1) <= expect))
+            {
+              std::printf("FAILED: the bonded punch is more than %.1e off Mossakovskii's ratio\n", expect);
+              failed = 1;
+            }
+        }
       if (num("compare", 0) != 0)
         {
           if (root)
