@@ -14,7 +14,8 @@
 // normal-tangential coupling, expect_coupling=X; cycle=1 with expect_closure=X; vtu=PREFIX: the surface state of every
 // step for ParaView, PREFIX-<i>.vtu and PREFIX.pvd; compare_friction=1: the normal loading with friction against the
 // axisymmetric frictional model, expect_friction=X). Punches: mossakovskii=1 (k = 0, load=all): the bonded punch's F_z
-// over the frictionless one against Mossakovskii's ratio, expect_bonded=X. serial=1 (with np > 1): process 0 also runs the 3D model on MPI_COMM_SELF, and the
+// over the frictionless one against Mossakovskii's ratio, expect_bonded=X; coulomb_punch=1 (load=all): the same
+// punches through the Coulomb solver (mu = inf and 0), expect_coulomb_punch=X. serial=1 (with np > 1): process 0 also runs the 3D model on MPI_COMM_SELF, and the
 // program fails unless every force agrees within serial_tol relative. compare=1: process 0 runs the
 // axisymmetric model (normal punch: F_z) and the Fourier mode-1 model (tangential punch: F_x) on the
 // meridian mesh of the same body (the cylinder r <= L, z <= L; fem/mesh.h at L, otherwise the recommended
@@ -41,6 +42,7 @@
 #include <cstdio>
 #include <fstream>
 #include <iostream>
+#include <limits>
 #include <map>
 #include <memory>
 #include <string>
@@ -436,6 +438,40 @@ int main(int argc, char **argv)
           if (expect > 0 && !(std::abs(ratio / exact - 1) <= expect))
             {
               std::printf("FAILED: the bonded punch is more than %.1e off Mossakovskii's ratio\n", expect);
+              failed = 1;
+            }
+        }
+      // coulomb_punch=1 (load = all): the same punches through the Coulomb contact solver (fem/coulomb_contact_3d.h): a
+      // flat punch as the convex profile f = 1e3 max(0, r - a), pressed to d in one step with mu = inf (full stick:
+      // the bonded punch) and mu = 0 (the frictionless one). On the same discrete body the contact solver must give
+      // the prescribed-displacement solves' F_z (every disc node in contact, none beyond), up to the dense solve's
+      // round-off; expect_coulomb_punch=X bounds the relative difference. Collective.
+      if (num("coulomb_punch", 0) != 0)
+        {
+          if (!results.count("normal") || !results.count("bonded"))
+            throw std::invalid_argument("fem3d: coulomb_punch=1 needs load = all (normal and bonded)");
+          const SurfaceCompliance3D surface = solver.surface_compliance(1.3 * a);
+          const Profile punch = Profile::custom([a](const double r) { return 1e3 * std::max(0.0, r - a); }, 1.0);
+          CoulombParameters stick;
+          stick.mu = std::numeric_limits<double>::infinity();
+          CoulombContact3D contact(surface, punch, stick);
+          const CoulombState3D bonded = contact.step_depth(d, 0.0);
+          contact.reset();
+          contact.set_friction(0.0);
+          const CoulombState3D frictionless = contact.step_depth(d, 0.0);
+          const double worst = std::max(std::abs(bonded.force_z / results["bonded"].force[2] - 1),
+                                        std::abs(frictionless.force_z / results["normal"].force[2] - 1));
+          if (root)
+            std::printf("coulomb_punch: F_z full stick %.12e (prescribed %.12e, %u of %zu nodes in contact), frictionless "
+                        "%.12e (prescribed %.12e), largest relative difference %.3e\n",
+                        bonded.force_z, results["bonded"].force[2], bonded.n_contact, surface.nodes.size(),
+                        frictionless.force_z, results["normal"].force[2], worst);
+          const double expect = num("expect_coulomb_punch", 0);
+          if (!bonded.converged || !frictionless.converged || (expect > 0 && !(worst <= expect)))
+            {
+              if (root)
+                std::printf("FAILED: the Coulomb solver's punches differ from the prescribed ones by more than %.1e%s\n",
+                            expect, bonded.converged && frictionless.converged ? "" : " (not converged)");
               failed = 1;
             }
         }
