@@ -19,6 +19,7 @@
 #include <fstream>
 #include <iostream>
 #include <map>
+#include <optional>
 #include <memory>
 #include <sstream>
 
@@ -59,19 +60,42 @@ namespace gradcontact::cases
     }
   } // namespace
 
+  CoulombSphereSurface prepare_coulomb_sphere(const MPI_Comm communicator, const CoulombSphereCase &c)
+  {
+    c.validate();
+    const auto           start = std::chrono::steady_clock::now();
+    CoulombSphereSurface out;
+    const fem::Material  material{std::make_shared<fem::PowerLawModulus>(c.E0, c.c0, c.k), c.nu};
+    fem::HalfSpace3DSolver solver(communicator, material, c.mesh, c.discretization, c.solver);
+    out.compliance = solver.surface_compliance(c.candidates * c.mesh.contact_radius);
+    out.seconds    = dealii::Utilities::MPI::max(
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), communicator);
+    out.dofs       = solver.n_dofs();
+    out.k = c.k;
+    out.nu = c.nu;
+    return out;
+  }
+
   CoulombSphereResult run_coulomb_sphere(const MPI_Comm communicator, const CoulombSphereCase &c,
                                          const std::function<void(const CoulombSphereStep &, const fem::SurfaceCompliance3D &)> &on_step)
   {
+    return run_coulomb_sphere(communicator, c, prepare_coulomb_sphere(communicator, c), on_step);
+  }
+
+  CoulombSphereResult run_coulomb_sphere(const MPI_Comm communicator, const CoulombSphereCase &c,
+                                         const CoulombSphereSurface &prepared,
+                                         const std::function<void(const CoulombSphereStep &, const fem::SurfaceCompliance3D &)> &on_step)
+  {
     c.validate();
-    const auto         start = std::chrono::steady_clock::now();
+    if (prepared.k != c.k || prepared.nu != c.nu)
+      throw std::invalid_argument("run_coulomb_sphere: the prepared surface is of k = " + std::to_string(prepared.k) +
+                                  ", nu = " + std::to_string(prepared.nu) + ", the case of k = " + std::to_string(c.k) +
+                                  ", nu = " + std::to_string(c.nu));
+    const auto          start = std::chrono::steady_clock::now();
     CoulombSphereResult result;
-    const fem::Material material{std::make_shared<fem::PowerLawModulus>(c.E0, c.c0, c.k), c.nu};
-    fem::HalfSpace3DSolver solver(communicator, material, c.mesh, c.discretization, c.solver);
-    const double a_mesh = c.mesh.contact_radius;
-    const fem::SurfaceCompliance3D surface = solver.surface_compliance(c.candidates * a_mesh);
-    result.compliance_seconds = dealii::Utilities::MPI::max(
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), communicator);
-    result.dofs          = solver.n_dofs();
+    const fem::SurfaceCompliance3D &surface = prepared.compliance;
+    result.compliance_seconds = prepared.seconds;
+    result.dofs          = prepared.dofs;
     result.surface_nodes = surface.nodes.size();
     result.unknowns      = surface.C.m();
     result.processes     = dealii::Utilities::MPI::n_mpi_processes(communicator);
@@ -267,7 +291,7 @@ namespace gradcontact::cases
     dealii::Utilities::System::MemoryStats memory;
     dealii::Utilities::System::get_memory_stats(memory);
     result.memory_mb = dealii::Utilities::MPI::max(static_cast<double>(memory.VmHWM) / 1024, communicator);
-    result.seconds   = dealii::Utilities::MPI::max(
+    result.seconds   = prepared.seconds + dealii::Utilities::MPI::max(
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), communicator);
     return result;
   }
@@ -279,6 +303,8 @@ namespace gradcontact::cases
     {
       double k = 0, nu = 0;
       bool   holl = false; ///< nu = 1/(2 + k): decoupled
+      double mu = 0;
+      bool   show_mu = false; ///< the map has several mu: names and lists show it
       CoulombSphereResult result;
       std::string error; ///< why the panel has no result
     };
@@ -321,7 +347,8 @@ namespace gradcontact::cases
 
     std::string panel_name(const CoulombPanel &p)
     {
-      return "k = " + format(p.k) + ", nu = " + (p.holl ? "1/(2 + k) = " : "") + format(p.nu);
+      return "k = " + format(p.k) + ", nu = " + (p.holl ? "1/(2 + k) = " : "") + format(p.nu) +
+             (p.show_mu ? ", mu = " + format(p.mu) : "");
     }
   } // namespace
 
@@ -334,62 +361,81 @@ namespace gradcontact::cases
     SceneResult result = started(s, folder);
     const bool  root   = dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
 
-    // The panels: every k and nu, and Holl's ratio where it is a Poisson ratio below 1/2.
+    // The panels: every k and nu, and Holl's ratio where it is a Poisson ratio below 1/2, each at every mu of
+    // Map/ratios (Tangential/friction coefficient when empty); the mu of one body share its surface compliance.
     std::vector<CoulombPanel> panels;
     const std::vector<double> ks  = s.map.exponents.empty() ? std::vector<double>{s.material.k} : s.map.exponents;
     const std::vector<double> nus = s.map.poisson_ratios.empty() ? std::vector<double>{s.material.nu} : s.map.poisson_ratios;
+    std::vector<double>       mus = s.map.ratios.empty() ? std::vector<double>{s.tangential.friction_coefficient} : s.map.ratios;
+    std::sort(mus.begin(), mus.end());
+    std::vector<std::pair<double, double>> bodies; // (k, nu)
     for (const double k : ks)
       {
         for (const double nu : nus)
-          panels.push_back({k, nu, std::abs(nu - 1. / (2. + k)) <= 1e-12, {}, {}});
+          bodies.emplace_back(k, nu);
         if (s.map.holl_ratio && k > 0 && std::none_of(nus.begin(), nus.end(), [k](const double nu) {
               return std::abs(nu - 1. / (2. + k)) <= 1e-12;
             }))
-          panels.push_back({k, 1. / (2. + k), true, {}, {}});
+          bodies.emplace_back(k, 1. / (2. + k));
       }
+    const bool multiple_mu = mus.size() > 1;
+    const std::string tuple = multiple_mu ? "(k, nu, mu)" : "(k, nu)";
 
-    const double a = s.load.a, mu = s.tangential.friction_coefficient, amplitude = s.tangential.amplitude;
-    for (CoulombPanel &panel : panels)
+    const double a = s.load.a, amplitude = s.tangential.amplitude;
+    for (const auto &[k, nu] : bodies)
       {
         CoulombSphereCase c;
         c.E0 = s.material.E0;
         c.c0 = s.material.c0;
-        c.k  = panel.k;
-        c.nu = panel.nu;
+        c.k  = k;
+        c.nu = nu;
         c.R  = s.load.R;
         c.mesh.contact_radius          = a;
         c.mesh.sectors                 = 4;
         c.mesh.h_edge                  = 1e-2;
-        c.mesh.far_field_size          = s.discretization.far_field > 0 ? s.discretization.far_field
-                                                                         : (panel.k < 0 ? 1e5 : 1e3);
-        c.mesh.surface_layer_thickness = panel.k > 0 ? 1e-4 : 0.;
+        c.mesh.far_field_size          = s.discretization.far_field > 0 ? s.discretization.far_field : (k < 0 ? 1e5 : 1e3);
+        c.mesh.surface_layer_thickness = k > 0 ? 1e-4 : 0.;
         c.mesh.inner_ring_width        = 0.025; // the stick-slip boundary resolved anywhere in the contact
         c.candidates                   = 1.15;
         c.discretization.degree        = s.discretization.degree;
-        c.mu = c.mu_normal = mu;
         c.normal_steps = c.tangential_steps = s.tangential.load_steps;
         c.cycle               = true;
         c.decoupled_reference = true;
-        try
+        std::optional<CoulombSphereSurface> surface;
+        std::string                         body_error;
+        for (const double mu : mus)
           {
-            // The chapter's depth of contact radius a and its delta_A of F_A = amplitude mu F_N(a) (9.80).
-            const Medium medium = gradcontact::medium(GradedHalfSpace{c.E0, c.c0, c.k, c.nu});
-            c.depth             = gradcontact::depth(medium, Paraboloid{c.R}, a);
-            c.delta             = tangential::tangential_displacement_at_force(
-              medium, tangential::SphereSlip{c.R, mu}, a, amplitude * mu * gradcontact::force(medium, Paraboloid{c.R}, a));
-            panel.result = run_coulomb_sphere(MPI_COMM_WORLD, c);
-            if (!panel.result.fe.converged || !panel.result.decoupled.converged)
-              panel.error = !panel.result.fe.converged ? panel.result.fe.message
-                                                       : "decoupled path: " + panel.result.decoupled.message;
+            CoulombPanel panel{k, nu, std::abs(nu - 1. / (2. + k)) <= 1e-12, mu, multiple_mu, {}, body_error};
+            c.mu = c.mu_normal = mu;
+            if (body_error.empty())
+              try
+                {
+                  // The chapter's depth of contact radius a and its delta_A of F_A = amplitude mu F_N(a) (9.80).
+                  const Medium medium = gradcontact::medium(GradedHalfSpace{c.E0, c.c0, c.k, c.nu});
+                  c.depth             = gradcontact::depth(medium, Paraboloid{c.R}, a);
+                  c.delta             = tangential::tangential_displacement_at_force(
+                    medium, tangential::SphereSlip{c.R, mu}, a,
+                    amplitude * mu * gradcontact::force(medium, Paraboloid{c.R}, a));
+                  if (!surface)
+                    surface = prepare_coulomb_sphere(MPI_COMM_WORLD, c);
+                  panel.result = run_coulomb_sphere(MPI_COMM_WORLD, c, *surface);
+                  if (!panel.result.fe.converged || !panel.result.decoupled.converged)
+                    panel.error = !panel.result.fe.converged ? panel.result.fe.message
+                                                             : "decoupled path: " + panel.result.decoupled.message;
+                }
+              catch (const std::exception &e)
+                {
+                  panel.error = concise(e);
+                  if (!surface)
+                    body_error = panel.error; // the body could not be built: no mu can run on it
+                }
+            if (verbose && root)
+              std::cerr << "  " << panel_name(panel) << ": " << (panel.error.empty() ? "" : panel.error + "; ")
+                        << "F_x coupling " << panel.result.coupling_loading << ", floor "
+                        << panel.result.decoupled.loading_deviation << ", " << panel.result.dofs << " DoFs, "
+                        << panel.result.seconds << " s\n";
+            panels.push_back(std::move(panel));
           }
-        catch (const std::exception &e)
-          {
-            panel.error = concise(e);
-          }
-        if (verbose && root)
-          std::cerr << "  " << panel_name(panel) << ": " << (panel.error.empty() ? "" : panel.error + "; ")
-                    << "F_x coupling " << panel.result.coupling_loading << ", floor " << panel.result.decoupled.loading_deviation
-                    << ", " << panel.result.dofs << " DoFs, " << panel.result.seconds << " s\n";
       }
 
     // errors.csv: the sharp checks of the decoupled pairing, and every path that failed.
@@ -456,7 +502,12 @@ namespace gradcontact::cases
            << (s.info.description.empty() ? "" : s.info.description + "\n\n")
            << "The 3D FE model of a rigid sphere R = " << format(s.load.R) << " m on E0 (z/c0)^k (E0 = "
            << format(s.material.E0) << " Pa, c0 = " << format(s.material.c0)
-           << " m) with Coulomb friction mu = " << format(mu)
+           << " m) with Coulomb friction mu = " << [&] {
+                std::string list;
+                for (const double mu : mus)
+                  list += (list.empty() ? "" : ", ") + format(mu);
+                return list;
+              }()
            << " (fem/coulomb_contact_3d.h: the contact, stick zone and slip directions found node by node), loaded to "
               "the chapter's depth of contact radius a = "
            << format(a) << " m, sheared to the chapter's delta_A of F_A = " << format(amplitude)
@@ -467,19 +518,19 @@ namespace gradcontact::cases
               "so the FE's own errors cancel). The FE floor is that decoupled model against the chapter (mesh, "
               "truncation at L, and Cattaneo-Mindlin's slip parallel to x). At Holl's ratio nu = 1/(2 + k) the "
               "coupling vanishes: the coupling measured there is the resolution of the map.\n\n";
-        md << "## The coupling's effect |FE / FE decoupled - 1|\n\n| k | nu |";
+        md << "## The coupling's effect |FE / FE decoupled - 1|\n\n| k | nu | mu |";
         for (const MapQuantity &q : map_quantities())
           md << " " << q.name << " |";
-        md << " FE floor: F_x (9.80), loop area (9.86) | stick zone spread / a | slip direction sum|Q_y|/sum|Q| | DoFs | s | memory MiB |\n|---|---|";
+        md << " FE floor: F_x (9.80), loop area (9.86) | stick zone spread / a | slip direction sum|Q_y|/sum|Q| | DoFs | s | memory MiB |\n|---|---|---|";
         for (std::size_t i = 0; i < map_quantities().size() + 6; ++i)
           md << "---|";
         md << '\n';
         std::map<std::string, std::vector<Series>> plots;
-        std::map<double, std::map<std::string, Series>> by_k; // per k: curves over nu
+        std::map<std::pair<double, double>, std::map<std::string, Series>> by_k; // per (k, mu): curves over nu
         for (const CoulombPanel &p : panels)
           {
             const CoulombSphereResult &r = p.result;
-            csv << p.k << ',' << p.nu << ',' << p.holl << ',' << mu << ',' << amplitude << ','
+            csv << p.k << ',' << p.nu << ',' << p.holl << ',' << p.mu << ',' << amplitude << ','
                 << (s.discretization.far_field > 0 ? s.discretization.far_field : (p.k < 0 ? 1e5 : 1e3)) << ',' << r.dofs
                 << ',' << r.surface_nodes << ',' << r.seconds << ',' << r.compliance_seconds << ',' << r.memory_mb << ','
                 << r.fe.max_iterations << ',' << r.fe.normal_slip;
@@ -488,7 +539,8 @@ namespace gradcontact::cases
             csv << ',' << r.fe.stick_resolution << ',' << r.fe.out_of_round << ',' << r.decoupled.out_of_round << ','
                 << r.fe.slip_force_y << ',' << r.decoupled.slip_force_y << ',' << r.fe.closure << ',' << csv_quote(p.error)
                 << '\n';
-            md << "| " << format(p.k) << " | " << (p.holl ? "1/(2 + k) = " : "") << format(p.nu) << " |";
+            md << "| " << format(p.k) << " | " << (p.holl ? "1/(2 + k) = " : "") << format(p.nu) << " | " << format(p.mu)
+               << " |";
             if (!p.error.empty())
               {
                 md << " failed: " << p.error << " |";
@@ -508,8 +560,8 @@ namespace gradcontact::cases
             if (p.error.empty() && !p.holl)
               for (const MapQuantity &q : map_quantities())
                 {
-                  Series &curve = by_k[p.k][q.name];
-                  curve.title       = "k = " + format(p.k);
+                  Series &curve = by_k[{p.k, p.mu}][q.name];
+                  curve.title       = "k = " + format(p.k) + (multiple_mu ? ", mu = " + format(p.mu) : "");
                   curve.linespoints = true;
                   curve.x.push_back(p.nu);
                   curve.y.push_back(std::max(std::abs(q.coupling(r)), 1e-16));
@@ -525,7 +577,7 @@ namespace gradcontact::cases
                        ->result.fe.stick_resolution)
            << " a). The slip direction's departure from x is the force-weighted sum |Q_y| / sum |Q| over the slipping "
               "nodes, largest over the steps.\n\n";
-        md << "## Where the chapter's tangential theory holds\n\nThe (k, nu) of the map where the coupling's effect on a "
+        md << "## Where the chapter's tangential theory holds\n\nThe " << tuple << " of the map where the coupling's effect on a "
               "quantity is within each threshold (the chapter's decoupled theory holds there up to the FE floor).\n\n| "
               "quantity | chapter |";
         for (const double t : s.map.thresholds)
@@ -553,14 +605,14 @@ namespace gradcontact::cases
                 for (const CoulombPanel &p : panels)
                   if (p.error.empty() && !p.holl)
                     (std::abs(q.coupling(p.result)) <= t ? within : outside)
-                      .push_back("(" + format(p.k) + ", " + format(p.nu) + ")");
+                      .push_back("(" + format(p.k) + ", " + format(p.nu) + (multiple_mu ? ", " + format(p.mu) : "") + ")");
                 const auto join = [](const std::vector<std::string> &v) {
                   std::string out;
                   for (const std::string &x : v)
                     out += (out.empty() ? "" : ", ") + x;
                   return out;
                 };
-                md << " " << (outside.empty() ? "every (k, nu) of the map"
+                md << " " << (outside.empty() ? "every " + tuple + " of the map"
                               : within.empty() ? "none of the map (" + join(outside) + " outside)"
                                                : join(within) + "; not " + join(outside))
                    << " |";

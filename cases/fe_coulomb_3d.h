@@ -112,6 +112,24 @@ namespace gradcontact::cases
     double coupling_stick   = nan; ///< max over tangential steps and rays |c_ray - c_ray(decoupled)| / a(d)
   };
 
+  /// The surface compliance of a case's body (k, nu, mesh, candidates): what the paths of every friction
+  /// coefficient, amplitude and step count on that body share.
+  struct CoulombSphereSurface
+  {
+    fem::SurfaceCompliance3D compliance;
+    unsigned long long       dofs    = 0;
+    double                   seconds = 0; ///< mesh, assembly and compliance
+    double                   k = 0, nu = 0; ///< of the body, checked against the case that uses it
+  };
+
+  /// Builds the 3D model of the case's body and its surface compliance (collective).
+  CoulombSphereSurface prepare_coulomb_sphere(MPI_Comm communicator, const CoulombSphereCase &c);
+
+  /// Runs the case's paths on a prepared surface (collective); std::invalid_argument when it is of another k or nu.
+  CoulombSphereResult
+  run_coulomb_sphere(MPI_Comm communicator, const CoulombSphereCase &c, const CoulombSphereSurface &prepared,
+                     const std::function<void(const CoulombSphereStep &, const fem::SurfaceCompliance3D &)> &on_step = {});
+
   /// Runs the case on `communicator` (collective; MPI must be initialised). `on_step` (every process) sees
   /// each step as it is solved, with its per-node vectors (fem::write_surface_vtu) and the compliance it was
   /// solved on; the stored steps keep none. A step that does not converge stops the path (converged = false,
@@ -121,7 +139,8 @@ namespace gradcontact::cases
                      const std::function<void(const CoulombSphereStep &, const fem::SurfaceCompliance3D &)> &on_step = {});
 
   /// The map of Map/parameter = Coulomb 3D into `folder`: for every k of Map/k values and nu of Map/nu values (and
-  /// Holl's ratio nu = 1/(2 + k) for k > 0 with Map/Holl ratio), the case above with the sphere of Load/R, the mesh
+  /// Holl's ratio nu = 1/(2 + k) for k > 0 with Map/Holl ratio) and every mu of Map/ratios (Tangential/friction
+  /// coefficient when empty; the mu of one body share its surface compliance), the case above with the sphere of Load/R, the mesh
   /// graded toward Load/a (4 sectors, h_edge = a/100, rings of at most a/40 inside the contact, candidate nodes
   /// within 1.15 a, L = Discretization/far field or 1000 a for k >= 0 and 1e5 a for k < 0), loaded to the chapter's depth of contact radius a, then to the chapter's delta_A of F_A =
   /// Tangential/amplitude mu F_N and one cycle, in Tangential/load steps, with the decoupled reference. The map

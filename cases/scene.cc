@@ -499,7 +499,8 @@ namespace gradcontact::cases
                       "parameter lambda = ratio, cases/fe_cohesive.h, against the chapter's JKR pull-off; needs "
                       "Adhesion/work of adhesion and a paraboloid or power law), or Coulomb 3D (the 3D model of a rigid "
                       "sphere with Coulomb friction, cases/fe_coulomb_3d.h: normal loading, Tangential/amplitude and one "
-                      "cycle, for every k and nu of the map, against 9.80-9.86; no ratios).");
+                      "cycle, for every k and nu of the map, against 9.80-9.86; ratios: the friction coefficients mu, empty: "
+                      "Tangential/friction coefficient).");
     prm.declare_entry("ratios", "", Patterns::List(Patterns::Double(0.), 0, 100),
                       "The ratios a/z0, a/H, a/w, E1/E0, the friction coefficients mu or the Tabor parameters lambda of "
                       "the map, > 0.");
@@ -735,9 +736,7 @@ namespace gradcontact::cases
           throw std::invalid_argument(where + "Map/parameter = Coulomb 3D needs Material/modulus = power law");
         if (!s.references.fem)
           throw std::invalid_argument(where + "Map/parameter is set with References/fem = false: a map is FE data");
-        if (!s.map.ratios.empty())
-          throw std::invalid_argument(where + "Map/parameter = Coulomb 3D takes no Map/ratios (the map is over Map/k "
-                                      "values and Map/nu values)");
+
         if (s.tangential.holl_ratio)
           throw std::invalid_argument(where + "Map/parameter = Coulomb 3D: use Map/Holl ratio, not Tangential/Holl "
                                       "ratio (the map runs every nu of Map/nu values)");

@@ -239,7 +239,7 @@ namespace gradcontact::cases
       indenter_modulus,  ///< a homogeneous elastic indenter (Indenter/nu), E1 = ratio E0, against the rigid one
       friction_coefficient, ///< Coulomb friction mu = ratio (Friction/load steps) against the frictionless indenter
       tabor_parameter,      ///< a Dugdale cohesive zone of Tabor parameter lambda = ratio against JKR (cases/fe_cohesive.h)
-      coulomb_3d            ///< the 3D Coulomb sphere over k and nu against 9.80-9.86 (cases/fe_coulomb_3d.h; no ratios)
+      coulomb_3d            ///< the 3D Coulomb sphere over k, nu and mu = ratio against 9.80-9.86 (cases/fe_coulomb_3d.h)
     };
     Parameter parameter = Parameter::none;
     std::vector<double> ratios;     ///< a/z0, a/H, a/w, E1/E0 or mu, > 0
