@@ -276,7 +276,7 @@ namespace gradcontact::fem
                     // changes in the forces (a node with a force near round-off has a direction near round-off)
                     if (s.status[i] == NodeStatus::slip)
                       turn = std::max(turn, std::hypot(direction_i[0] - t[i][0], direction_i[1] - t[i][1]) *
-                                              std::max(P, 0.0) / largest);
+                                              (largest > 0 ? std::max(P, 0.0) / largest : 1.0));
                     t[i] = direction_i;
                   }
               }
@@ -380,7 +380,10 @@ namespace gradcontact::fem
       b.nodes = ray.size();
       for (const auto &[r, status] : ray)
         if (in(status))
-          b.inside = std::max(b.inside, r);
+          {
+            b.inside = std::max(b.inside, r);
+            b.empty  = false;
+          }
       for (const auto &[r, status] : ray)
         {
           if (r > b.inside)
@@ -416,7 +419,7 @@ namespace gradcontact::fem
     for (unsigned int i = 0; i < n; ++i)
       {
         points.emplace_back(i, 1.0);
-        if (surface.nodes[i][1] != 0)
+        if (surface.unknown[i][1] >= 0) // off the symmetry plane
           points.emplace_back(i, -1.0);
       }
     std::ofstream out(filename);

@@ -95,14 +95,15 @@ namespace gradcontact::fem
   struct RayBracket
   {
     unsigned int nodes   = 0; ///< nodes on the ray (0: the mesh has none there, nothing is measured)
-    double       inside  = 0; ///< r of the outermost node in the zone (0: none is)
+    bool         empty   = true; ///< no node of the ray is in the zone
+    double       inside  = 0; ///< r of the outermost node in the zone (0: the axis node, or none when empty)
     double       outside = std::numeric_limits<double>::infinity(); ///< r of the next node of the ray (inf: none)
     /// nodes of the ray inside `inside` that are not in the zone (0 for a disc on this ray)
     unsigned int holes   = 0;
-    /// The boundary's estimate, the middle of the bracket (`inside` when no node lies beyond).
-    double radius() const { return std::isfinite(outside) ? 0.5 * (inside + outside) : inside; }
-    /// Half the bracket: the resolution of radius() (0 when no node lies beyond).
-    double half_width() const { return std::isfinite(outside) ? 0.5 * (outside - inside) : 0.0; }
+    /// The boundary's estimate, the middle of the bracket (`inside` when no node lies beyond; 0 when empty).
+    double radius() const { return empty ? 0.0 : std::isfinite(outside) ? 0.5 * (inside + outside) : inside; }
+    /// Half the bracket: the resolution of radius() (0 when no node lies beyond or the zone is empty).
+    double half_width() const { return !empty && std::isfinite(outside) ? 0.5 * (outside - inside) : 0.0; }
   };
 
   /// The assumptions of the Ciavarella-Jaeger theory (a stick disc about the axis, slip parallel to the load)

@@ -146,6 +146,9 @@ namespace gradcontact::fem
     const unsigned int m            = rows.size();
     if (m == 0)
       throw std::invalid_argument("inverse_on_rows: no rows");
+    if (static_cast<std::size_t>(m) * m > static_cast<std::size_t>(std::numeric_limits<int>::max()))
+      throw std::invalid_argument("inverse_on_rows: " + std::to_string(m) + " rows, more than the 46340 whose m x m block one "
+                                  "MPI message can carry");
     {
       std::vector<types::global_dof_index> sorted = rows;
       std::sort(sorted.begin(), sorted.end());
@@ -242,20 +245,30 @@ namespace gradcontact::fem
 
     // C = S^{-1} (S by rows; symmetric for a symmetric A).
     FullMatrix<double> result(m, m);
+    int                inverted = 1; // process 0 tells the others whether S was positive definite
     if (root)
-      {
-        LAPACKFullMatrix<double> S(m, m);
-        for (unsigned int k = 0; k < m; ++k)
-          for (unsigned int l = 0; l < m; ++l)
-            S(k, l) = schur[static_cast<std::size_t>(k) * m + l];
-        S.set_property(LAPACKSupport::symmetric);
-        S.compute_cholesky_factorization();
-        S.invert();
-        for (unsigned int k = 0; k < m; ++k)
-          for (unsigned int l = 0; l < m; ++l)
-            result(k, l) = S(k, l);
-      }
-    MPI_Bcast(&result(0, 0), static_cast<int>(m * m), MPI_DOUBLE, 0, communicator);
+      try
+        {
+          LAPACKFullMatrix<double> S(m, m);
+          for (unsigned int k = 0; k < m; ++k)
+            for (unsigned int l = 0; l < m; ++l)
+              S(k, l) = schur[static_cast<std::size_t>(k) * m + l];
+          S.set_property(LAPACKSupport::symmetric);
+          S.compute_cholesky_factorization();
+          S.invert();
+          for (unsigned int k = 0; k < m; ++k)
+            for (unsigned int l = 0; l < m; ++l)
+              result(k, l) = S(k, l);
+        }
+      catch (const std::exception &)
+        {
+          inverted = 0;
+        }
+    MPI_Bcast(&inverted, 1, MPI_INT, 0, communicator);
+    if (!inverted)
+      throw std::runtime_error("inverse_on_rows: the Schur complement on the " + std::to_string(m) +
+                               " rows is not positive definite (a rigid mode of the body left free?)");
+    MPI_Bcast(&result(0, 0), static_cast<int>(static_cast<std::size_t>(m) * m), MPI_DOUBLE, 0, communicator);
     return result;
   }
 

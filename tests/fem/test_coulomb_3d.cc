@@ -74,7 +74,7 @@ TEST_CASE("Coulomb contact on a Winkler foundation shall give every node its spr
   CHECK(normal.n_slip == 0); // no tangential load: nothing slips
 
   // Loading to delta_A: the nodes with delta_A / c_t < mu P stick.
-  const double delta_A = 0.6 * mu * ct * P(dealii::Point<2>(0, 0)); // sticks for r < 0.63
+  const double delta_A = 0.6 * mu * ct * P(dealii::Point<2>(0, 0)); // sticks for r < 0.663
   std::vector<double> slid(surface.nodes.size(), 0.0);
   for (const double delta : {0.5 * delta_A, delta_A})
     {
