@@ -36,8 +36,8 @@ namespace gradcontact::cases
       fem::fail(where, "depth", depth, "(0, inf)");
     if (!(mu_normal >= 0))
       fem::fail(where, "mu_normal", mu_normal, "[0, inf]");
-    if (!(mu > 0))
-      fem::fail(where, "mu", mu, "(0, inf]");
+    if (!(mu >= 0) || (delta > 0 && !(mu > 0)))
+      fem::fail(where, "mu", mu, delta > 0 ? "(0, inf] (delta > 0)" : "[0, inf]");
     if (!(delta >= 0) || !std::isfinite(delta))
       fem::fail(where, "delta", delta, "[0, inf)");
     if (normal_steps < 1)
@@ -50,6 +50,9 @@ namespace gradcontact::cases
 
   namespace
   {
+    /// into = max(into, v), a NaN `into` (nothing measured yet) taking v.
+    void worse(double &into, const double v) { into = std::isnan(into) ? v : std::max(into, v); }
+
     /// Simpson's rule over equally spaced samples (an even number of intervals).
     double simpson(const std::vector<double> &y, const double h)
     {
@@ -156,8 +159,7 @@ namespace gradcontact::cases
               {
                 s.theory_stick   = a * std::sqrt(1 - delta / full_slip);
                 s.theory_force_x = tangential_force(medium, slip, a, s.theory_stick);
-                path.loading_deviation = std::max(std::isnan(path.loading_deviation) ? 0. : path.loading_deviation,
-                                                  std::abs(s.state.force_x / s.theory_force_x - 1));
+                worse(path.loading_deviation, std::abs(s.state.force_x / s.theory_force_x - 1));
               }
             else
               {
@@ -165,8 +167,7 @@ namespace gradcontact::cases
                 // (the force at +-u_A is +-F_A up to round-off, which may put it a few ulps outside)
                 s.theory_stick = reversal_radius(medium, slip, a, result.force_a_theory, branch,
                                                  std::clamp(s.theory_force_x, -result.force_a_theory, result.force_a_theory));
-                path.branch_deviation = std::max(std::isnan(path.branch_deviation) ? 0. : path.branch_deviation,
-                                                 std::abs(s.state.force_x - s.theory_force_x) / result.force_a_theory);
+                worse(path.branch_deviation, std::abs(s.state.force_x - s.theory_force_x) / result.force_a_theory);
               }
             // The stick zone along the rays the mesh has nodes on.
             double lo = std::numeric_limits<double>::infinity(), hi = 0;
@@ -268,7 +269,6 @@ namespace gradcontact::cases
       {
         result.decoupled = run_path(fem::without_coupling(surface), true);
         const std::vector<CoulombSphereStep> &x = result.fe.steps, &y = result.decoupled.steps;
-        const auto worse = [](double &into, const double v) { into = std::isnan(into) ? v : std::max(into, v); };
         if (x.size() >= c.normal_steps && y.size() >= c.normal_steps)
           result.coupling_force_z =
             x[c.normal_steps - 1].state.force_z / y[c.normal_steps - 1].state.force_z - 1;

@@ -46,7 +46,7 @@ namespace gradcontact::cases
     double       candidates       = 1.3;  ///< the candidate surface nodes lie within candidates * mesh.contact_radius
     double       depth            = 0;    ///< d of the normal loading, m, > 0
     double       mu_normal        = 0.3;  ///< friction during the normal loading, [0, inf]
-    double       mu               = 0.3;  ///< friction during the tangential loading, (0, inf] (inf: full stick)
+    double       mu               = 0.3;  ///< friction during the tangential loading, (0, inf] (inf: full stick); unused when delta = 0
     double       delta            = 0;    ///< the tangential amplitude delta_A, m, > 0 (0: no tangential loading)
     unsigned int normal_steps     = 10;   ///< >= 1
     unsigned int tangential_steps = 10;   ///< of the loading to delta_A, >= 1 when delta > 0; each branch of the cycle takes twice

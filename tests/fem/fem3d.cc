@@ -63,6 +63,14 @@ namespace
     meridian.h_far           = std::min(meridian.h_far, meridian.near_field_size);
     return meridian;
   }
+
+  /// The meridian references' discretisation (degree 3: their error well below the 3D model's).
+  DiscretizationParameters meridian_discretization()
+  {
+    DiscretizationParameters d;
+    d.degree = 3;
+    return d;
+  }
 } // namespace
 
 int main(int argc, char **argv)
@@ -80,18 +88,7 @@ int main(int argc, char **argv)
 
       HalfSpaceMesh3DParameters mesh;
       mesh.contact_radius      = a;
-      mesh.core_radius         = num("R0", mesh.core_radius);
-      mesh.sectors             = args.count("sectors", mesh.sectors);
-      mesh.far_field_size      = num("L", mesh.far_field_size);
-      mesh.ring_growth         = num("g3", mesh.ring_growth);
-      mesh.h_edge              = num("h_edge", mesh.h_edge);
-      mesh.edge_ratio          = num("q", mesh.edge_ratio);
-      mesh.inner_ring_width    = num("inner", mesh.inner_ring_width);
-      mesh.surface_layer_thickness = num("layer", mesh.surface_layer_thickness);
-      mesh.edge_refinements    = args.count("edge", mesh.edge_refinements);
-      mesh.edge_grading        = num("grading", mesh.edge_grading);
-      mesh.contact_refinements = args.count("contact_ref", mesh.contact_refinements);
-      mesh.global_refinements  = args.count("global3", mesh.global_refinements);
+      args.apply(mesh);
       DiscretizationParameters disc;
       disc.degree = 2;
       args.apply(disc);
@@ -119,8 +116,7 @@ int main(int argc, char **argv)
               if (root)
                 {
                   const MeshParameters meridian = meridian_of(mesh, k);
-                  DiscretizationParameters reference_disc;
-                  reference_disc.degree = 3;
+                  const DiscretizationParameters reference_disc = meridian_discretization();
                   AxisymmetricSolver axisymmetric(material, meridian, reference_disc);
                   LoadCase           load;
                   load.type    = LoadType::indenter;
@@ -151,15 +147,8 @@ int main(int argc, char **argv)
           study.cycle            = num("cycle", 0) != 0;
           study.decoupled_reference = num("decoupled", 0) != 0;
           const double mu        = study.mu;
-          // mu = 0 or tangential_steps = 0: the normal loading only (frictionless with mu = 0; the tangential loading
-          // needs mu > 0).
-          if (mu == 0 || study.tangential_steps == 0)
-            {
-              study.mu    = mu == 0 ? 1 : mu; // unused without a tangential loading
-              study.delta = 0;
-            }
-          else
-            study.delta = num("delta", 1.0) * mu * d_max;
+          // mu = 0 or tangential_steps = 0: the normal loading only (frictionless with mu = 0).
+          study.delta = mu == 0 || study.tangential_steps == 0 ? 0.0 : num("delta", 1.0) * mu * d_max;
           int failed = 0;
           // vtu=PREFIX: the surface state of every step of the FE path, PREFIX-<step>.vtu, and PREFIX.pvd (process 0).
           const std::string vtu = args.text("vtu", "");
@@ -254,8 +243,7 @@ int main(int argc, char **argv)
               double reference[2] = {0, 0};
               if (root)
                 {
-                  DiscretizationParameters reference_disc;
-                  reference_disc.degree = 3;
+                  const DiscretizationParameters reference_disc = meridian_discretization();
                   UnilateralContactSolver axisymmetric(material, meridian_of(mesh, k), reference_disc, 1.3 * a);
                   UnilateralLoad load;
                   load.indenter             = Indenter::of(Profile::paraboloid(R), a);
@@ -490,8 +478,7 @@ int main(int argc, char **argv)
             {
               // The meridian models of the same cylinder r <= L, z <= L.
               const MeshParameters meridian = meridian_of(mesh, k);
-              DiscretizationParameters reference_disc;
-              reference_disc.degree = 3;
+              const DiscretizationParameters reference_disc = meridian_discretization();
               const double expect   = num("expect", 0);
               const auto   report   = [&](const char *what, const double fe3d, const double reference) {
                 const double difference = std::abs(fe3d / reference - 1);

@@ -11,6 +11,7 @@
 #include <fem/discretization.h>
 #include <fem/distributed_linear_solver.h>
 #include <fem/mesh.h>
+#include <fem/mesh_3d.h>
 
 #include <map>
 #include <stdexcept>
@@ -60,6 +61,24 @@ namespace gradcontact::fem::testing
     unsigned int count(const std::string &key, const unsigned int fallback) const
     {
       return static_cast<unsigned int>(num(key, fallback));
+    }
+
+    /// Overrides the entries of the 3D mesh (fem/mesh_3d.h) whose keys are given: R0, sectors, L, g3, h_edge, q,
+    /// inner, layer, edge, grading, contact_ref, global3.
+    void apply(HalfSpaceMesh3DParameters &mesh) const
+    {
+      mesh.core_radius             = num("R0", mesh.core_radius);
+      mesh.sectors                 = count("sectors", mesh.sectors);
+      mesh.far_field_size          = num("L", mesh.far_field_size);
+      mesh.ring_growth             = num("g3", mesh.ring_growth);
+      mesh.h_edge                  = num("h_edge", mesh.h_edge);
+      mesh.edge_ratio              = num("q", mesh.edge_ratio);
+      mesh.inner_ring_width        = num("inner", mesh.inner_ring_width);
+      mesh.surface_layer_thickness = num("layer", mesh.surface_layer_thickness);
+      mesh.edge_refinements        = count("edge", mesh.edge_refinements);
+      mesh.edge_grading            = num("grading", mesh.edge_grading);
+      mesh.contact_refinements     = count("contact_ref", mesh.contact_refinements);
+      mesh.global_refinements      = count("global3", mesh.global_refinements);
     }
 
     /// Overrides the entries of `mesh` whose keys are given (header).

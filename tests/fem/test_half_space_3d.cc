@@ -189,13 +189,15 @@ TEST_CASE("The 3D half-space mesh shall be the half cylinder with the contact di
     HalfSpaceMesh3DParameters q = p;
     q.inner_ring_width          = 0.05;
     const std::vector<double> capped = ring_radii(q), graded = ring_radii(p);
-    double widest_capped = 0, widest_graded = 0;
-    for (std::size_t i = 1; i < capped.size(); ++i)
-      if (capped[i - 1] >= q.core_radius - 1e-12 && capped[i] <= 1 + 1e-12)
-        widest_capped = std::max(widest_capped, capped[i] - capped[i - 1]);
-    for (std::size_t i = 1; i < graded.size(); ++i)
-      if (graded[i - 1] >= p.core_radius - 1e-12 && graded[i] <= 1 + 1e-12)
-        widest_graded = std::max(widest_graded, graded[i] - graded[i - 1]);
+    // the widest ring between the core radius R0 and the contact circle
+    const auto widest_inside = [](const std::vector<double> &radii, const double R0) {
+      double widest = 0;
+      for (std::size_t i = 1; i < radii.size(); ++i)
+        if (radii[i - 1] >= R0 - 1e-12 && radii[i] <= 1 + 1e-12)
+          widest = std::max(widest, radii[i] - radii[i - 1]);
+      return widest;
+    };
+    const double widest_capped = widest_inside(capped, q.core_radius), widest_graded = widest_inside(graded, p.core_radius);
     // The last ring before the core takes what is left: at most 1.5 widths.
     CHECK(widest_capped <= 1.5 * q.inner_ring_width);
     CHECK(widest_graded > 2 * q.inner_ring_width); // without the cap the steps grow by q = 2
