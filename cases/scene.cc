@@ -242,6 +242,10 @@ namespace gradcontact::cases
                       "FE unknowns: displacement; mixed (u and q = lambda div u, Taylor-Hood: nu -> 0.5 without "
                       "locking, nu = 0.5, the Gibson medium k = 1); automatic (mixed for nu >= 0.45). "
                       "fem/README.md, \"Mixed formulation\".");
+    prm.declare_entry("surface map", "auto", Patterns::Selection("auto|off"),
+                      "auto: a modulus vanishing at the surface like z^k, 0 < k < 1, without jumps is resolved by the "
+                      "singular depth map of fem/surface_map.h in the rigid frictionless normal scenes (no thin "
+                      "cells; flat punch k = 0.5 2.3e-6 with a third of the DoFs); off: z-halvings to 1e-10 a.");
     prm.leave_subsection();
   }
   void DiscretizationParameters::parse(ParameterHandler &prm)
@@ -255,6 +259,7 @@ namespace gradcontact::cases
     far_field = prm.get_double("far field");
     const std::string f = prm.get("formulation");
     formulation = f == "mixed" ? Formulation::mixed : (f == "automatic" ? Formulation::automatic : Formulation::displacement);
+    surface_map = prm.get("surface map") == "auto";
     prm.leave_subsection();
   }
 

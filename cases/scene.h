@@ -129,6 +129,9 @@ namespace gradcontact::cases
       automatic     ///< mixed from nu = 0.45 on (fem::automatic_mixed_threshold)
     };
     Formulation formulation = Formulation::displacement; ///< the FE unknowns (fem::Formulation)
+    /// The surface map of fem/surface_map.h instead of z-halvings for 0 < k < 1 in the rigid frictionless
+    /// normal scenes (fem::use_surface_map); off: the halvings everywhere.
+    bool surface_map = true;
     static void declare(dealii::ParameterHandler &prm);
     void parse(dealii::ParameterHandler &prm);
   };

@@ -139,7 +139,8 @@ namespace gradcontact::fem
   void AxisymmetricSolver::assemble_system()
   {
     const auto start = std::chrono::steady_clock::now();
-    CellStiffness cell_stiffness(material, fe, mapping, discretization);
+    CellStiffness cell_stiffness(material, fe, mapping, discretization, mesh_parameters.contact_radius,
+                                mesh_parameters.h_edge);
     system.assemble(dof_handler, cell_stiffness, contact_dofs); // P: the contact z-DoFs of every rigid-contact load
     setup_time.assemble = seconds_since(start);
   }
@@ -657,7 +658,11 @@ namespace gradcontact::fem
 
   void AxisymmetricSolver::output_results(const Vector<double> &u, const std::string &filename) const
   {
-    DataOut<2> data_out;
+    const SurfaceMap<2> map(discretization.surface_map, *material.modulus, mesh_parameters.contact_radius,
+                            mesh_parameters.h_edge);
+    MeridianDataOut     data_out;
+    if (map.active())
+      data_out.to_physical = [&map](const Point<2> &x) { return map.physical(x); };
     data_out.attach_dof_handler(dof_handler);
     std::vector<std::string> names{"u_r", "u_z"};
     if (used_formulation == Formulation::mixed)
@@ -665,7 +670,7 @@ namespace gradcontact::fem
     data_out.add_data_vector(u, names);
     Vector<float> modulus(triangulation.n_active_cells());
     for (const auto &cell : triangulation.active_cell_iterators())
-      modulus[cell->active_cell_index()] = material.modulus->value(cell->center()[1]);
+      modulus[cell->active_cell_index()] = material.modulus->value(map.physical(cell->center())[1]);
     data_out.add_data_vector(modulus, "E");
     write_vtu(data_out, mapping, discretization.degree, filename, "AxisymmetricSolver::output_results");
   }

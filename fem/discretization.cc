@@ -31,6 +31,7 @@ namespace gradcontact::fem
     if (formulation == Formulation::mixed && degree < 2)
       fail("DiscretizationParameters (mixed formulation)", "degree", degree,
            "[2, 4] (the pressure space is FE_Q(degree - 1))");
+    surface_map.validate();
   }
 
 
@@ -82,6 +83,18 @@ namespace gradcontact::fem
         settings.mesh.halving_radius = 1.0;
       }
     return settings;
+  }
+
+
+
+  bool use_surface_map(Settings &settings, const ModulusField &modulus)
+  {
+    const double s = modulus.surface_exponent();
+    if (!(s > 0 && s < 1) || !modulus.discontinuities().empty())
+      return false;
+    settings.discretization.surface_map.enabled = true;
+    settings.mesh.surface_layer_thickness       = 1.0;
+    return true;
   }
 
   Settings recommended_settings(const double contact_radius, const ModulusField &modulus, const double force_tolerance)

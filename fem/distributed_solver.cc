@@ -187,7 +187,8 @@ namespace gradcontact::fem
     // K_cell: fem/graded_elasticity.h (shared with the serial solver). The unit punch right-hand
     // side is -A g_1 on the free DoFs, g_1 the unit prescribed values (deal.II's elimination of
     // inhomogeneous constraints, with the constrained rows carrying a diagonal entry only).
-    CellStiffness                        cell_stiffness(material, fe, mapping, discretization);
+    CellStiffness                        cell_stiffness(material, fe, mapping, discretization,
+                                                         mesh_parameters.contact_radius, mesh_parameters.h_edge);
     std::vector<types::global_dof_index> local_dof_indices(fe.n_dofs_per_cell());
     dealii::Vector<double>               cell_rhs(fe.n_dofs_per_cell());
     for (const auto &cell : dof_handler.active_cell_iterators())

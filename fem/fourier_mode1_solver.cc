@@ -253,10 +253,21 @@ namespace gradcontact::fem
 
 
 
+  double FourierMode1Solver::edge_cell() const
+  {
+    double h_edge = 1.0;
+    for (const SurfaceFace &face : surface_faces)
+      if (face.contact && std::abs(face.r1 - a) <= node_tolerance * a)
+        h_edge = std::min(h_edge, (face.r1 - face.r0) / a);
+    return h_edge;
+  }
+
+
+
   void FourierMode1Solver::assemble_system()
   {
     const auto                           start = std::chrono::steady_clock::now();
-    Mode1CellStiffness cell_stiffness(material, fe, mapping, discretization);
+    Mode1CellStiffness cell_stiffness(material, fe, mapping, discretization, a, edge_cell());
     system.assemble(dof_handler, cell_stiffness, punch_dofs); // P: U, V on r <= a of the tangential flat punch
     setup_time.assemble = seconds_since(start);
   }
@@ -404,7 +415,10 @@ namespace gradcontact::fem
 
   void FourierMode1Solver::output_results(const Vector<double> &u, const std::string &filename) const
   {
-    DataOut<2> data_out;
+    const SurfaceMap<2> map(discretization.surface_map, *material.modulus, a, edge_cell());
+    MeridianDataOut     data_out;
+    if (map.active())
+      data_out.to_physical = [&map](const Point<2> &x) { return map.physical(x); };
     data_out.attach_dof_handler(dof_handler);
     data_out.add_data_vector(u, std::vector<std::string>{"U", "V", "W"});
     write_vtu(data_out, mapping, discretization.degree, filename, "FourierMode1Solver::output_results");

@@ -161,6 +161,8 @@ namespace gradcontact::fem
     void make_grid(const MeshParameters &mesh, const SurfaceRefinement &refinement);
     void setup_system();
     void assemble_system();
+    /// The width of the contact face that ends at the contact edge / a (the surface map's floor).
+    double edge_cell() const;
     dealii::Vector<double> traction_load(const TangentialLoad &load) const;
     /// The two loads: each solves u, fills the force of `result` and returns the work of the load (per pi).
     double solve_punch(const TangentialLoad &load, dealii::Vector<double> &u, TangentialResult &result);

@@ -32,9 +32,10 @@ namespace gradcontact::fem
   template <int dim>
   GradedCellRules<dim>::GradedCellRules(const Material &material, const FESystem<dim> &fe,
                                         const Mapping<dim> &mapping, const DiscretizationParameters &discretization,
-                                        const bool inverse_rules)
+                                        const bool inverse_rules, const double map_gamma)
     : s(material.modulus->surface_exponent())
     , jumps(material.modulus->discontinuities())
+    , map_rules(map_gamma != 0.0)
   {
     const unsigned int n_q = n_points(discretization);
     regular    = std::make_unique<FEValues<dim>>(mapping, fe, QGauss<dim>(n_q), cell_flags);
@@ -49,6 +50,12 @@ namespace gradcontact::fem
       for (unsigned int f = 0; f < 2 * dim; ++f)
         surface_inverse[f] = std::make_unique<FEValues<dim>>(
           mapping, fe, surface_cell_quadrature<dim>(n_q, -s, f, distance_inverse[f]), cell_flags);
+    if (map_rules)
+      for (unsigned int part = 0; part < 2; ++part)
+        for (unsigned int f = 0; f < 2 * dim; ++f)
+          surface_mapped[part][f] = std::make_unique<FEValues<dim>>(
+            mapping, fe, surface_cell_quadrature<dim>(n_q, (part + 1) * map_gamma, f, distance_mapped[part][f]),
+            cell_flags);
   }
 
 
@@ -74,7 +81,7 @@ namespace gradcontact::fem
     // away from the surface there).
     if (choice.straddles)
       choice.values = subdivided.get();
-    else if (choice.surface_face != numbers::invalid_unsigned_int && s != 0.0)
+    else if (choice.surface_face != numbers::invalid_unsigned_int && s != 0.0 && !map_rules)
       {
         choice.values = surface[choice.surface_face].get();
         choice.xi     = &distance[choice.surface_face];
@@ -108,6 +115,19 @@ namespace gradcontact::fem
 
 
 
+  template <int dim>
+  FEValues<dim> &GradedCellRules<dim>::mapped(const typename DoFHandler<dim>::active_cell_iterator &cell,
+                                              const unsigned int face, const unsigned int part,
+                                              const std::vector<double> *&xi)
+  {
+    Assert(map_rules && part < 2, ExcMessage("surface map rules were not built"));
+    surface_mapped[part][face]->reinit(cell);
+    xi = &distance_mapped[part][face];
+    return *surface_mapped[part][face];
+  }
+
+
+
   template class GradedCellRules<2>;
   template class GradedCellRules<3>;
 
@@ -116,14 +136,17 @@ namespace gradcontact::fem
   template <class Strain>
   GradedElasticityCell<Strain>::GradedElasticityCell(const Material &material_, const FESystem<dim> &fe_,
                                                      const Mapping<dim> &mapping,
-                                                     const DiscretizationParameters &discretization)
+                                                     const DiscretizationParameters &discretization,
+                                                     const double contact_radius, const double h_edge)
     : material(material_)
     , fe(fe_)
     , mixed(fe_.n_components() == Strain::n_displacement_components + 1)
     , inverse_lambda_factor(mixed ? (1 + material_.nu) * (1 - 2 * material_.nu) / material_.nu : 0.0)
-    , rules(material_, fe_, mapping, discretization, mixed && inverse_lambda_factor != 0.0)
+    , map(discretization.surface_map, *material_.modulus, contact_radius, h_edge)
+    , rules(material_, fe_, mapping, discretization, mixed && inverse_lambda_factor != 0.0, map.gamma())
     , cell_matrix(fe_.n_dofs_per_cell(), fe_.n_dofs_per_cell())
     , B(fe_.n_dofs_per_cell())
+    , B_b(fe_.n_dofs_per_cell())
     , trace(fe_.n_dofs_per_cell())
     , psi(fe_.n_dofs_per_cell())
   {}
@@ -134,64 +157,23 @@ namespace gradcontact::fem
   const FullMatrix<double> &
   GradedElasticityCell<Strain>::matrix(const typename DoFHandler<dim>::active_cell_iterator &cell)
   {
-    const ModulusField &E        = *material.modulus;
-    const double        nu       = material.nu;
-    const double        c_lambda = nu / ((1 + nu) * (1 - 2 * nu));
-    const double        c_mu     = 1 / (2 * (1 + nu));
-    const double        s        = rules.surface_exponent();
-
-    const typename GradedCellRules<dim>::Choice choice    = rules.select(cell);
-    FEValues<dim>                              &fe_values = *choice.values;
-    const std::vector<double>    *xi        = choice.xi;
-
-    const unsigned int dofs_per_cell = fe.n_dofs_per_cell();
-    cell_matrix                      = 0;
-    // K_uu. The mixed formulation keeps only 2 mu eps:eps (lambda div u div v is replaced by the q blocks
-    // of add_mixed_blocks), and the rows of its q shape functions are zero here.
-    for (const unsigned int q : fe_values.quadrature_point_indices())
+    const typename GradedCellRules<dim>::Choice choice = rules.select(cell);
+    cell_matrix                                        = 0;
+    if (map.active() && choice.surface_face != numbers::invalid_unsigned_int)
       {
-        const Point<dim> &x = fe_values.quadrature_point(q);
-        const double      r = x[0];
-        // With the Gauss-Jacobi rule JxW contains xi^s, so E is divided by it: E(z)/xi^s is the
-        // regular factor (E0 (h(x)/c0)^k for the power law, h the local cell height).
-        const double z       = x[dim - 1];
-        const double modulus = (xi ? E.value(z) / std::pow((*xi)[q], s) : E.value(z));
-        const double lambda  = mixed ? 0.0 : c_lambda * modulus;
-        const double mu      = c_mu * modulus;
-        const double weight  = Strain::weight(x) * fe_values.JxW(q);
-
-        for (unsigned int i = 0; i < dofs_per_cell; ++i)
-          {
-            const unsigned int c = fe.system_to_component_index(i).first;
-            B[i] = (c < Strain::n_displacement_components) ?
-                     Strain::of(c, fe_values.shape_value(i, q), fe_values.shape_grad(i, q), r) :
-                     typename Strain::Vector{};
-          }
-        for (unsigned int i = 0; i < dofs_per_cell; ++i)
-          {
-            const auto  &Bi   = B[i];
-            const double tr_i = Bi[0] + Bi[1] + Bi[2];
-            for (unsigned int j = 0; j <= i; ++j)
-              {
-                const auto  &Bj     = B[j];
-                const double tr_j   = Bj[0] + Bj[1] + Bj[2];
-                const double normal = Bi[0] * Bj[0] + Bi[1] * Bj[1] + Bi[2] * Bj[2];
-                double       shear_term;
-                if constexpr (Strain::n_shear == 1)
-                  shear_term = mu * Bi[3] * Bj[3];
-                else
-                  {
-                    double shear = Bi[3] * Bj[3];
-                    for (unsigned int m = 4; m < 3 + Strain::n_shear; ++m)
-                      shear += Bi[m] * Bj[m];
-                    shear_term = mu * shear;
-                  }
-                cell_matrix(i, j) += (lambda * tr_i * tr_j + 2 * mu * normal + shear_term) * weight;
-              }
-          }
+        // A surface cell under the map: the three parts with their own rules (fem/surface_map.h).
+        const std::vector<double> *xi = nullptr;
+        add_part(*choice.values, nullptr, 0.0, Part::zz);
+        FEValues<dim> &mixed_rule = rules.mapped(cell, choice.surface_face, 0, xi);
+        add_part(mixed_rule, xi, map.gamma(), Part::mixed);
+        FEValues<dim> &plane_rule = rules.mapped(cell, choice.surface_face, 1, xi);
+        add_part(plane_rule, xi, 2 * map.gamma(), Part::plane);
       }
+    else
+      add_part(*choice.values, choice.xi, rules.surface_exponent(), Part::all);
     if (mixed)
       add_mixed_blocks(cell, choice);
+    const unsigned int dofs_per_cell = fe.n_dofs_per_cell();
     for (unsigned int i = 0; i < dofs_per_cell; ++i)
       for (unsigned int j = i + 1; j < dofs_per_cell; ++j)
         cell_matrix(i, j) = cell_matrix(j, i);
@@ -201,9 +183,202 @@ namespace gradcontact::fem
 
 
   template <class Strain>
+  void GradedElasticityCell<Strain>::add_part(FEValues<dim> &fe_values, const std::vector<double> *xi,
+                                              const double xi_exponent, const Part part)
+  {
+    const ModulusField &E        = *material.modulus;
+    const double        nu       = material.nu;
+    const double        c_lambda = nu / ((1 + nu) * (1 - 2 * nu));
+    const double        c_mu     = 1 / (2 * (1 + nu));
+
+    const unsigned int dofs_per_cell = fe.n_dofs_per_cell();
+    // The integrand lambda tr X tr Y + 2 mu X_n.Y_n + mu X_s.Y_s of two strain vectors, tr X given.
+    const auto product = [](const typename Strain::Vector &X, const double tr_X, const typename Strain::Vector &Y,
+                            const double tr_Y, const double lambda, const double mu) {
+      const double normal = X[0] * Y[0] + X[1] * Y[1] + X[2] * Y[2];
+      double       shear  = X[3] * Y[3];
+      for (unsigned int m = 4; m < 3 + Strain::n_shear; ++m)
+        shear += X[m] * Y[m];
+      return lambda * tr_X * tr_Y + 2 * mu * normal + mu * shear;
+    };
+    if (trace_b.size() != dofs_per_cell)
+      trace_b.resize(dofs_per_cell);
+    // K_uu. The mixed formulation keeps only 2 mu eps:eps (lambda div u div v is replaced by the q blocks
+    // of add_mixed_blocks), and the rows of its q shape functions are zero here.
+    for (const unsigned int q : fe_values.quadrature_point_indices())
+      {
+        const Point<dim> &x = fe_values.quadrature_point(q);
+        const double      r = x[0];
+        // The map (the identity without one): the physical depth, dz / dzeta and the tangential shift.
+        const typename SurfaceMap<dim>::Value m = map.at(x);
+        // With a Gauss-Jacobi rule JxW contains xi^e, so the integrand is divided by it. Unmapped, e = s
+        // and E(z)/xi^s is the regular factor (E0 (h(x)/c0)^k for the power law, h the local cell height);
+        // mapped, each part's power of zeta is e (fem/surface_map.h).
+        double factor = E.value(m.z);
+        if (xi)
+          factor /= std::pow((*xi)[q], xi_exponent);
+        switch (part)
+          {
+            case Part::all:
+            case Part::plane:
+              factor *= m.dz;
+              break;
+            case Part::zz:
+              factor /= m.dz;
+              break;
+            case Part::mixed:
+              break;
+          }
+        const double lambda = mixed ? 0.0 : c_lambda * factor;
+        const double mu     = c_mu * factor;
+        const double weight = Strain::weight(x) * fe_values.JxW(q);
+
+        for (unsigned int i = 0; i < dofs_per_cell; ++i)
+          {
+            const unsigned int c = fe.system_to_component_index(i).first;
+            if (c >= Strain::n_displacement_components)
+              {
+                B[i] = B_b[i] = typename Strain::Vector{}; // the pressure q of the mixed formulation
+                continue;
+              }
+            const double          phi = fe_values.shape_value(i, q);
+            const Tensor<1, dim> &g   = fe_values.shape_grad(i, q);
+            const double          g_z = g[dim - 1];
+            // B_a: the tangential part of the physical gradient, g_t - shift_t g_zeta (and phi / r);
+            // B_b: g_zeta in the depth slot, to be divided by Phi_zeta.
+            Tensor<1, dim> g_a = g - g_z * m.shift;
+            g_a[dim - 1]       = 0.0;
+            Tensor<1, dim> g_b;
+            g_b[dim - 1] = g_z;
+            if (part == Part::all)
+              {
+                g_a[dim - 1] = g_z / m.dz;
+                B[i]         = Strain::of(c, phi, g_a, r);
+              }
+            else
+              {
+                B[i]   = Strain::of(c, phi, g_a, r);
+                B_b[i] = Strain::of(c, 0.0, g_b, r);
+              }
+          }
+        for (unsigned int i = 0; i < dofs_per_cell; ++i)
+          {
+            trace[i]   = B[i][0] + B[i][1] + B[i][2];
+            trace_b[i] = B_b[i][0] + B_b[i][1] + B_b[i][2];
+          }
+        switch (part)
+          {
+            case Part::all:
+            case Part::plane:
+              for (unsigned int i = 0; i < dofs_per_cell; ++i)
+                for (unsigned int j = 0; j <= i; ++j)
+                  cell_matrix(i, j) += product(B[i], trace[i], B[j], trace[j], lambda, mu) * weight;
+              break;
+            case Part::zz:
+              for (unsigned int i = 0; i < dofs_per_cell; ++i)
+                for (unsigned int j = 0; j <= i; ++j)
+                  cell_matrix(i, j) += product(B_b[i], trace_b[i], B_b[j], trace_b[j], lambda, mu) * weight;
+              break;
+            case Part::mixed:
+              for (unsigned int i = 0; i < dofs_per_cell; ++i)
+                for (unsigned int j = 0; j <= i; ++j)
+                  cell_matrix(i, j) += (product(B[i], trace[i], B_b[j], trace_b[j], lambda, mu) +
+                                        product(B_b[i], trace_b[i], B[j], trace[j], lambda, mu)) *
+                                       weight;
+              break;
+          }
+      }
+  }
+
+
+
+  template <class Strain>
+  void GradedElasticityCell<Strain>::add_mapped_mixed_blocks(const typename DoFHandler<dim>::active_cell_iterator &cell,
+                                                             const typename GradedCellRules<dim>::Choice &choice)
+  {
+    // Under the surface map (fem/surface_map.h) dV = Phi_zeta r dr dzeta and tr B = tr B_a + tr B_b / Phi_zeta:
+    //   K_uq = \int (tr B_a Phi_zeta + tr B_b) psi r dr dzeta   (~ zeta^gamma and zeta^0 in a surface cell),
+    //   K_qq = -\int psi psi Phi_zeta / lambda r dr dzeta       (~ zeta^0: 1/E ~ zeta^-gamma).
+    const ModulusField &E             = *material.modulus;
+    const unsigned int  dofs_per_cell = fe.n_dofs_per_cell();
+    const unsigned int  pressure      = Strain::n_displacement_components;
+    const bool          surface_cell  = choice.surface_face != numbers::invalid_unsigned_int;
+    // trace_b holds tr B_b, trace tr B_a (in a surface cell) or the whole tr B (elsewhere).
+    const auto traces = [&](FEValues<dim> &values, const unsigned int q, const typename SurfaceMap<dim>::Value &m) {
+      const double r = values.quadrature_point(q)[0];
+      for (unsigned int i = 0; i < dofs_per_cell; ++i)
+        {
+          const unsigned int c   = fe.system_to_component_index(i).first;
+          const double       phi = values.shape_value(i, q);
+          psi[i]                 = (c == pressure) ? phi : 0.0;
+          trace[i] = trace_b[i] = 0.0;
+          if (c >= pressure)
+            continue;
+          const Tensor<1, dim> &g   = values.shape_grad(i, q);
+          const double          g_z = g[dim - 1];
+          Tensor<1, dim>        g_a = g - g_z * m.shift;
+          g_a[dim - 1]              = surface_cell ? 0.0 : g_z / m.dz;
+          const auto b_a            = Strain::of(c, phi, g_a, r);
+          trace[i]                  = b_a[0] + b_a[1] + b_a[2];
+          if (surface_cell)
+            {
+              Tensor<1, dim> g_b;
+              g_b[dim - 1]   = g_z;
+              const auto b_b = Strain::of(c, 0.0, g_b, r);
+              trace_b[i]     = b_b[0] + b_b[1] + b_b[2];
+            }
+        }
+    };
+    if (trace_b.size() != dofs_per_cell)
+      trace_b.resize(dofs_per_cell);
+
+    FEValues<dim> &plain = rules.plain(cell, false);
+    for (const unsigned int q : plain.quadrature_point_indices())
+      {
+        const Point<dim>                      &x = plain.quadrature_point(q);
+        const typename SurfaceMap<dim>::Value m = map.at(x);
+        traces(plain, q, m);
+        const double weight = Strain::weight(x) * plain.JxW(q);
+        // K_qq (both cells) and the zeta^0 part of K_uq (surface cell) or all of it (elsewhere).
+        const double qq = (inverse_lambda_factor != 0.0) ? inverse_lambda_factor * m.dz / E.value(m.z) : 0.0;
+        for (unsigned int i = 0; i < dofs_per_cell; ++i)
+          {
+            const double t_i = surface_cell ? trace_b[i] : trace[i] * m.dz;
+            for (unsigned int j = 0; j <= i; ++j)
+              {
+                const double t_j = surface_cell ? trace_b[j] : trace[j] * m.dz;
+                cell_matrix(i, j) += (t_i * psi[j] + psi[i] * t_j - qq * psi[i] * psi[j]) * weight;
+              }
+          }
+      }
+    if (!surface_cell)
+      return;
+    // The zeta^gamma part of K_uq in a surface cell: tr B_a psi Phi_zeta, the weights containing xi^gamma.
+    const std::vector<double> *xi   = nullptr;
+    FEValues<dim>             &rule = rules.mapped(cell, choice.surface_face, 0, xi);
+    for (const unsigned int q : rule.quadrature_point_indices())
+      {
+        const Point<dim>                      &x = rule.quadrature_point(q);
+        const typename SurfaceMap<dim>::Value m = map.at(x);
+        traces(rule, q, m);
+        const double weight = Strain::weight(x) * rule.JxW(q) * m.dz / std::pow((*xi)[q], map.gamma());
+        for (unsigned int i = 0; i < dofs_per_cell; ++i)
+          for (unsigned int j = 0; j <= i; ++j)
+            cell_matrix(i, j) += (trace[i] * psi[j] + psi[i] * trace[j]) * weight;
+      }
+  }
+
+
+
+  template <class Strain>
   void GradedElasticityCell<Strain>::add_mixed_blocks(const typename DoFHandler<dim>::active_cell_iterator &cell,
                                                       const typename GradedCellRules<dim>::Choice        &choice)
   {
+    if (map.active())
+      {
+        add_mapped_mixed_blocks(cell, choice);
+        return;
+      }
     const ModulusField &E             = *material.modulus;
     const double        s             = rules.surface_exponent();
     const unsigned int  dofs_per_cell = fe.n_dofs_per_cell();

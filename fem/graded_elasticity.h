@@ -124,8 +124,10 @@ namespace gradcontact::fem
   class GradedCellRules
   {
   public:
+    /// `map_gamma` != 0: the surface cells get the rules of the surface map's parts (exponents gamma and
+    /// 2 gamma, fem/surface_map.h) instead of the exponent s one.
     GradedCellRules(const Material &material, const dealii::FESystem<dim> &fe, const dealii::Mapping<dim> &mapping,
-                    const DiscretizationParameters &discretization, bool inverse_rules);
+                    const DiscretizationParameters &discretization, bool inverse_rules, double map_gamma = 0.0);
 
     /// The rule chosen for one cell, reinit'ed on it.
     struct Choice
@@ -143,6 +145,11 @@ namespace gradcontact::fem
     dealii::FEValues<dim> &inverse(const typename dealii::DoFHandler<dim>::active_cell_iterator &cell, unsigned int face,
                                  const std::vector<double> *&xi);
 
+    /// Gauss-Jacobi of exponent (part + 1) gamma across `face` (the surface map's mixed, part 0, and
+    /// in-plane, part 1, integrands), reinit'ed; xi in `xi`.
+    dealii::FEValues<dim> &mapped(const typename dealii::DoFHandler<dim>::active_cell_iterator &cell, unsigned int face,
+                                unsigned int part, const std::vector<double> *&xi);
+
     double surface_exponent() const { return s; }
 
   private:
@@ -151,6 +158,9 @@ namespace gradcontact::fem
     std::unique_ptr<dealii::FEValues<dim>>               regular, subdivided;
     std::array<std::unique_ptr<dealii::FEValues<dim>>, 2 * dim> surface, surface_inverse;
     std::array<std::vector<double>, 2 * dim>                 distance, distance_inverse;
+    const bool                                             map_rules;
+    std::array<std::array<std::unique_ptr<dealii::FEValues<dim>>, 2 * dim>, 2> surface_mapped;
+    std::array<std::array<std::vector<double>, 2 * dim>, 2>                   distance_mapped;
   };
 
   /// K_cell of graded elasticity for the strain operator `Strain`; when `fe` has one component more
@@ -161,13 +171,34 @@ namespace gradcontact::fem
   public:
     static constexpr int dim = Strain::dim;
 
+    /// `contact_radius` (physical units) and `h_edge` (the mesh's edge cell / a) place the surface map of
+    /// `discretization` (fem/surface_map.h).
     GradedElasticityCell(const Material &material, const dealii::FESystem<dim> &fe,
-                         const dealii::Mapping<dim> &mapping, const DiscretizationParameters &discretization);
+                         const dealii::Mapping<dim> &mapping, const DiscretizationParameters &discretization,
+                         double contact_radius, double h_edge);
+
+    /// The surface map (the identity when the discretisation has none).
+    const SurfaceMap<dim> &surface_map() const { return map; }
 
     /// The cell matrix (full, symmetric), valid until the next call.
     const dealii::FullMatrix<double> &matrix(const typename dealii::DoFHandler<dim>::active_cell_iterator &cell);
 
   private:
+    /// Which products of the strain parts B = B_a + B_b / Phi_zeta a pass integrates (header of
+    /// fem/surface_map.h): `all` the whole integrand, the others one power of zeta each.
+    enum class Part
+    {
+      all,   ///< B.B with the whole (mapped) gradient
+      zz,    ///< B_b.B_b E / Phi_zeta   ~ zeta^0
+      mixed, ///< (B_a.B_b + B_b.B_a) E ~ zeta^gamma
+      plane  ///< B_a.B_a E Phi_zeta     ~ zeta^{2 gamma}
+    };
+    /// Adds one pass over the points of `values`; the weights contain xi^{xi_exponent} when `xi` is set.
+    void add_part(dealii::FEValues<dim> &values, const std::vector<double> *xi, double xi_exponent, Part part);
+
+    /// The mixed blocks under the surface map (fem/surface_map.h).
+    void add_mapped_mixed_blocks(const typename dealii::DoFHandler<dim>::active_cell_iterator &cell,
+                                 const typename GradedCellRules<dim>::Choice                 &choice);
     void add_mixed_blocks(const typename dealii::DoFHandler<dim>::active_cell_iterator &cell,
                           const typename GradedCellRules<dim>::Choice &choice);
 
@@ -175,10 +206,11 @@ namespace gradcontact::fem
     const dealii::FESystem<dim>          &fe;
     const bool                          mixed;
     const double                        inverse_lambda_factor; ///< 1/lambda = this / E (0 at nu = 1/2)
+    const SurfaceMap<dim>               map;
     GradedCellRules<dim>                rules;
     dealii::FullMatrix<double>          cell_matrix;
-    std::vector<typename Strain::Vector> B;
-    std::vector<double>                 trace, psi;
+    std::vector<typename Strain::Vector> B, B_b;
+    std::vector<double>                 trace, trace_b, psi;
   };
 
   /// The axisymmetric cell stiffness (mode 0, displacement or mixed).

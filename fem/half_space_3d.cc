@@ -127,7 +127,8 @@ namespace gradcontact::fem
 
   void HalfSpace3DSolver::assemble(const AffineConstraints<double> &with, Matrix &matrix)
   {
-    CellStiffness3D                      cell_stiffness(material, fe, mapping, discretization);
+    CellStiffness3D                      cell_stiffness(material, fe, mapping, discretization,
+                                                         mesh_parameters.contact_radius, mesh_parameters.h_edge);
     std::vector<types::global_dof_index> local_dof_indices(fe.n_dofs_per_cell());
     for (const auto &cell : dof_handler.active_cell_iterators())
       if (cell->is_locally_owned())

@@ -122,6 +122,8 @@ namespace gradcontact::fem
                                       const SurfaceRefinement &refinement, const std::string &name_)
     : name(name_)
     , material(material_)
+    , contact_radius(mesh.contact_radius)
+    , h_edge(mesh.h_edge)
     , used_formulation(checked_formulation(material_, discretization))
     , fe(axisymmetric_element(discretization.degree, used_formulation))
     , dof_handler(triangulation)
@@ -155,7 +157,7 @@ namespace gradcontact::fem
     time.setup = seconds_since(start);
 
     start = std::chrono::steady_clock::now();
-    CellStiffness cell_stiffness(material, fe, mapping, discretization);
+    CellStiffness cell_stiffness(material, fe, mapping, discretization, contact_radius, h_edge);
     system.assemble(dof_handler, cell_stiffness, {}); // contact enters as nodal forces: nothing prescribed
     time.assemble = seconds_since(start);
   }
@@ -795,7 +797,11 @@ namespace gradcontact::fem
         // The half-space in vtu_file; an elastic indenter beside it, in <stem>-indenter.vtu (its own axes:
         // z into the indenter).
         const auto write = [&](const Body &body, const Vector<double> &field, const std::string &file) {
-          DataOut<2> data_out;
+          const SurfaceMap<2> map(discretization.surface_map, *body.material.modulus, body.contact_radius,
+                                  body.h_edge);
+          MeridianDataOut     data_out;
+          if (map.active())
+            data_out.to_physical = [&map](const dealii::Point<2> &x) { return map.physical(x); };
           data_out.attach_dof_handler(body.dof_handler);
           std::vector<std::string> names{"u_r", "u_z"};
           if (body.used_formulation == Formulation::mixed)

@@ -244,6 +244,7 @@ namespace gradcontact::fem
 
       const std::string                 name; ///< "half-space" or "indenter", for messages
       const Material                    material;
+      const double                      contact_radius, h_edge; ///< the mesh's (they place the surface map)
       const Formulation                 used_formulation;
       dealii::Triangulation<2>          triangulation;
       MeshInfo                          mesh_info;

@@ -2,17 +2,36 @@
 #ifndef GRADCONTACT_FEM_VTU_OUTPUT_H
 #define GRADCONTACT_FEM_VTU_OUTPUT_H
 
+#include <deal.II/base/point.h>
 #include <deal.II/fe/mapping.h>
 #include <deal.II/numerics/data_out.h>
 
+#include <functional>
 #include <string>
+#include <vector>
 
 namespace gradcontact::fem
 {
+  /// DataOut of the meridian plane whose patches are written at physical points: the mesh coordinates
+  /// through `to_physical` (the surface map of fem/surface_map.h), or as they are when it is empty.
+  class MeridianDataOut : public dealii::DataOut<2>
+  {
+  public:
+    std::function<dealii::Point<2>(const dealii::Point<2> &)> to_physical;
+
+    const std::vector<Patch> &get_patches() const override;
+
+    /// Moves every patch point through `to_physical` (call after build_patches).
+    void map_patches();
+
+  private:
+    std::vector<Patch> mapped;
+  };
+
   /// Builds the patches of `data_out` (its vectors attached) with `degree` subdivisions per cell on
-  /// `mapping` and writes them to `filename` as VTU; std::runtime_error naming `who` and the file when
-  /// it cannot be written.
-  void write_vtu(dealii::DataOut<2> &data_out, const dealii::Mapping<2> &mapping, unsigned int degree,
+  /// `mapping`, maps them to physical points, and writes them to `filename` as VTU; std::runtime_error
+  /// naming `who` and the file when it cannot be written.
+  void write_vtu(MeridianDataOut &data_out, const dealii::Mapping<2> &mapping, unsigned int degree,
                  const std::string &filename, const std::string &who);
 } // namespace gradcontact::fem
 

@@ -4,6 +4,7 @@
 //   mesh:            h_edge h_surface h_far g (ring growth) L (far field / a) layer (surface layer / a)
 //                    R1 (near field / a) halving_radius axis_refinements edge_refinements global
 //   discretisation:  p (degree) extra_q subdiv formulation=displacement|mixed|automatic
+//                    map=0|auto|alpha (surface map) map_floor (tau / a, 0: h_edge)
 //   distributed:     solver=direct|amg tol threshold sweeps
 #ifndef GRADCONTACT_TESTS_FEM_STUDY_ARGUMENTS_H
 #define GRADCONTACT_TESTS_FEM_STUDY_ARGUMENTS_H
@@ -103,6 +104,13 @@ namespace gradcontact::fem::testing
       discretization.degree                     = count("p", discretization.degree);
       discretization.extra_quadrature_points    = count("extra_q", discretization.extra_quadrature_points);
       discretization.discontinuity_subdivisions = count("subdiv", discretization.discontinuity_subdivisions);
+      if (has("map"))
+        {
+          // map=0 off, map=auto the automatic scale, map=alpha that scale
+          discretization.surface_map.enabled = text("map") != "0";
+          discretization.surface_map.scale   = (text("map") == "auto") ? 0.0 : num("map", 0.0);
+        }
+      discretization.surface_map.floor          = num("map_floor", discretization.surface_map.floor);
       const std::string formulation             = text("formulation", "displacement");
       if (formulation == "mixed")
         discretization.formulation = Formulation::mixed;

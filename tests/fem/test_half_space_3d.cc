@@ -51,7 +51,7 @@ TEST_CASE("The 3D cell integrand shall give no energy to rigid modes and the clo
   dealii::DoFHandler<3>      dofs(tria);
   const dealii::MappingQ1<3> mapping;
   dofs.distribute_dofs(fe);
-  CellStiffness3D cell_stiffness(material, fe, mapping, discretization);
+  CellStiffness3D cell_stiffness(material, fe, mapping, discretization, 1.0, 1e-5); // no surface map
 
   const auto nodal = [&](const auto &cell, const auto &value) {
     dealii::Vector<double> u(fe.n_dofs_per_cell());

@@ -1,0 +1,114 @@
+// A singular change of the depth coordinate near the surface of a modulus E ~ z^s (0 < |s| < 1).
+//
+// Under a surface traction the displacement of such a body behaves like u_z ~ d - c z^{1-s} (the strain
+// p / E(z) ~ z^{-s} integrates to z^{1-s}): no polynomial in z resolves it, and the meridian model resolves
+// it today by halving the surface cells down to 1e-10 a. The map below is a global change of coordinates
+// (r, zeta) -> (r, z) in which z^{1-s} is an analytic function of zeta, so the FE space of polynomials in
+// the mesh coordinates (r, zeta) holds it without any thin cell:
+//     z = Phi(zeta; r) = zeta^beta (zeta + T(r))^{1 - beta},  beta = 1 / (1 - s),
+//     z^{1-s} = zeta (zeta + T)^{-s}                       (analytic at zeta = 0 for T > 0).
+// Phi ~ zeta^beta T^{1-beta} for zeta << T and Phi -> zeta - (beta - 1) T for zeta >> T: the map is
+// identity-like away from the surface. Being one map of the whole body (the mesh is a mesh of (r, zeta),
+// the FE functions are polynomials of the mesh coordinates there), it is conforming on any mesh, hanging
+// nodes included.
+//
+// The length T sets where the map acts. Near the contact edge (a, 0) the field is self-similar about the
+// edge point, so T is proportional to the distance from it, and so is the surface cell size of the meshes
+// graded toward it; far away T grows like the distance from the origin, as the far-field rings do:
+//     T = alpha sqrt(u(r)^2 + zeta^2 + tau^2),   u = (r^2 - a^2) / sqrt(2 (r^2 + a^2)),
+// with alpha = SurfaceMapParameters::scale and tau = floor a (the smallest length the map resolves, of the
+// order of the edge cell). u ~ r - a at the edge and is a smooth function of r^2, so the map is smooth
+// across the axis of the 3D model too. T must depend on zeta as well: with T = alpha |r - a| alone, Phi
+// would have a crease above the edge (Phi_r jumps by 2 (beta - 1) alpha across r = a for zeta >> tau),
+// which no mesh follows (measured: a flat-punch force error of 2.7e-3 that refinement hardly reduces).
+// With zeta in T, Phi = rho psi(theta) about the edge point, psi smooth for theta > 0.
+//
+// Derivatives (q = zeta / (zeta + T)):
+//     Phi = zeta q^{beta-1},  dPhi/dT = (1 - beta) q^beta,
+//     Phi_zeta = q^{beta-1} (zeta + beta T) / (zeta + T) + (1 - beta) q^beta T_zeta ~ zeta^{beta-1},
+//     Phi_t = (1 - beta) q^beta T_t;
+// Phi_zeta > 0 for every alpha (Phi / |x| is increasing in zeta / |x|), so the map is one to one. A gradient
+// in the mesh coordinates (g_t, g_zeta) is, in the physical ones,
+//     du/dz = g_zeta / Phi_zeta,   du/dx_t = g_t - shift_t g_zeta,  shift_t = Phi_t / Phi_zeta ~ zeta.
+// The cell integrals then split by their powers of zeta (fem/graded_elasticity.h): with gamma = s / (1 - s)
+// and E(Phi) ~ zeta^gamma, Phi_zeta ~ zeta^gamma, the zz part E (du/dz)(dv/dz) dz ~ zeta^0, the mixed part
+// ~ zeta^gamma and the in-plane part ~ zeta^{2 gamma}, each integrated by its own Gauss-Jacobi rule.
+// The map is for 0 < s < 1 only (SurfaceMap's constructor says why not s < 0).
+//
+// The mesh is a mesh of (r, zeta); the physical body is its image. The image of the truncation boundary
+// differs from it by about (beta - 1) T (the far field is self-similar, so its truncation error keeps its
+// form C (a/L)^{1+k}).
+#ifndef GRADCONTACT_FEM_SURFACE_MAP_H
+#define GRADCONTACT_FEM_SURFACE_MAP_H
+
+#include <fem/modulus.h>
+
+#include <deal.II/base/point.h>
+#include <deal.II/base/tensor.h>
+
+namespace gradcontact::fem
+{
+  /// The map of the header, as a discretisation choice.
+  struct SurfaceMapParameters
+  {
+    bool   enabled = false;
+    /// alpha; 0: alpha = 0.5 sqrt((1 - s) / s), else [0.02, 20]. Measured optimum of the flat-punch force at
+    /// degree 4 (h_edge = 1e-7 a): 0.5 at s = 0.5, 0.3 at 0.7, 0.15 at 0.9, 1..2 at 0.2; away from it the
+    /// error grows fast for s -> 1 (s = 0.9: 5.6e-6 at 0.15, 2e-5 at 0.2, 4e-2 at 0.5).
+    double scale = 0;
+    /// tau / a; 0: the mesh's cell size at the contact edge (h_edge), else [1e-12, 1].
+    double floor = 0;
+
+    /// Throws std::invalid_argument naming the member, its value and the valid range.
+    void validate() const;
+  };
+
+  /// The map for one body: modulus surface exponent s, contact radius a (physical units).
+  template <int dim>
+  class SurfaceMap
+  {
+  public:
+    /// The map at one point of the mesh coordinates.
+    struct Value
+    {
+      double              z;        ///< Phi, the physical depth
+      double              dz;       ///< dPhi / dzeta (> 0 for zeta > 0)
+      dealii::Tensor<1, dim> shift; ///< Phi_t / Phi_zeta for the tangential axes, 0 in the depth axis
+    };
+
+    /// The identity (no map).
+    SurfaceMap() = default;
+
+    /// The map of `parameters` for `modulus` (surface exponent s), contact radius a (physical units) and
+    /// the mesh's edge cell size h_edge (/ a, the floor tau when parameters.floor = 0); the identity when
+    /// the parameters disable it or s = 0. Throws std::invalid_argument when enabled for a modulus with
+    /// jumps (their depths would be mesh coordinates) or with s outside (0, 1): s = 1 (the Gibson medium)
+    /// has no singular layer, and for s < 0 the map makes the regular field outside the contact
+    /// ~ zeta^beta, beta < 1 (measured: the flat punch at k = -0.5 went from 6e-7 to 3e-2).
+    SurfaceMap(const SurfaceMapParameters &parameters, const ModulusField &modulus, double contact_radius,
+               double h_edge);
+
+    bool active() const { return beta != 1.0; }
+    /// beta = 1 / (1 - s).
+    double exponent() const { return beta; }
+    /// gamma = beta - 1 = s / (1 - s): E(Phi) and Phi_zeta both ~ zeta^gamma at the surface.
+    double gamma() const { return beta - 1.0; }
+
+    /// Phi, Phi_zeta and the shift at mesh point x (x[dim - 1] = zeta >= 0).
+    Value at(const dealii::Point<dim> &x) const;
+    /// The physical point of mesh point x (for output).
+    dealii::Point<dim> physical(const dealii::Point<dim> &x) const;
+    /// T at mesh point x.
+    double length(const dealii::Point<dim> &x) const;
+
+  private:
+    double beta = 1.0, alpha = 0.0, a = 1.0, tau = 0.0;
+    /// T and its gradient in the mesh coordinates.
+    double length_and_gradient(const dealii::Point<dim> &x, dealii::Tensor<1, dim> &gradient) const;
+  };
+
+  extern template class SurfaceMap<2>;
+  extern template class SurfaceMap<3>;
+} // namespace gradcontact::fem
+
+#endif
