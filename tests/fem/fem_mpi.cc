@@ -3,7 +3,8 @@
 //
 //   mpirun -np 2 fem_mpi load=punch k=0 p=3 h_edge=1e-5 h_far=3 g=1.15 L=1e8 layer=1 R1=4 global=0
 //                        solver=direct|amg tol=1e-12 compare=1 compare_tol=1e-10
-// load = punch | pressure | paraboloid | cone (the indenters under contact-radius control). Mesh keys default to recommended_mesh_parameters(a, k) except layer (the
+// load = punch | pressure | paraboloid | cone (the indenters under contact-radius control); the punch prints
+// F_error against (9.16). Mesh keys default to recommended_mesh_parameters(a, k) except layer (the
 // z-only surface halvings, which p4est cannot do: default 1, none). compare=1: process 0 also runs the
 // serial AxisymmetricSolver (UMFPACK) and the program fails (exit 1) unless force and depth agree within
 // compare_tol relative. Prints one line of key=value pairs (process 0).
@@ -12,6 +13,7 @@
 #include <fem/modulus.h>
 
 #include "study_arguments.h"
+#include "written_out.h"
 
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/utilities.h>
@@ -81,12 +83,16 @@ int main(int argc, char **argv)
       const double peak_mb = static_cast<double>(memory.VmHWM) / 1024;
       const double peak_max = dealii::Utilities::MPI::max(peak_mb, world);
       const double peak_sum = dealii::Utilities::MPI::sum(peak_mb, world);
+      // The flat punch against (9.16), h_N written out (tests/fem/written_out.h); NaN for the other loads.
+      const double F_punch = 2 * testing::h_N(k, nu) * E0 * load.depth * std::pow(a, 1 + k) /
+                             ((1 - nu * nu) * (1 + k) * std::pow(c0, k));
+      const double F_error = load_name == "punch" ? r.force / F_punch - 1 : std::nan("");
       if (root)
-        std::printf("load=%s k=%g p=%u np=%u solver=%s dofs=%llu cells=%u force=%.16e depth=%.16e "
+        std::printf("load=%s k=%g p=%u np=%u solver=%s dofs=%llu cells=%u force=%.16e F_error=%.3e depth=%.16e "
                     "iterations=%u residual=%.1e mismatch=%.1e mesh=%.2f setup=%.2f assemble=%.2f "
                     "factorize=%.2f solve=%.2f total=%.2f peak_mb_max=%.0f peak_mb_sum=%.0f %s\n",
                     load_name.c_str(), k, disc.degree, r.n_processes, r.solver.c_str(),
-                    static_cast<unsigned long long>(r.n_dofs), r.n_cells, r.force, r.depth, r.iterations,
+                    static_cast<unsigned long long>(r.n_dofs), r.n_cells, r.force, F_error, r.depth, r.iterations,
                     r.residual, r.energy_mismatch, r.time.mesh, r.time.setup, r.time.assemble,
                     r.time.factorize, r.time.solve, total, peak_max, peak_sum, r.message.c_str());
 
