@@ -243,9 +243,10 @@ namespace gradcontact::cases
                       "locking, nu = 0.5, the Gibson medium k = 1); automatic (mixed for nu >= 0.45). "
                       "fem/README.md, \"Mixed formulation\".");
     prm.declare_entry("surface map", "auto", Patterns::Selection("auto|off"),
-                      "auto: a modulus vanishing at the surface like z^k, 0 < k < 1, without jumps is resolved by the "
-                      "singular depth map of fem/surface_map.h in the rigid frictionless normal scenes (no thin "
-                      "cells; flat punch k = 0.5 2.3e-6 with a third of the DoFs); off: z-halvings to 1e-10 a.");
+                      "auto: a modulus vanishing at the surface like z^k, 0 < k <= 0.95, without jumps is resolved by "
+                      "the singular depth map of fem/surface_map.h in the rigid frictionless normal scenes of the "
+                      "displacement formulation (no thin cells; flat punch k = 0.5 2.3e-6 with a third of the DoFs); "
+                      "off, and the mixed formulation: z-halvings to 1e-10 a.");
     prm.leave_subsection();
   }
   void DiscretizationParameters::parse(ParameterHandler &prm)

@@ -665,9 +665,15 @@ namespace gradcontact::fem
       data_out.to_physical = [&map](const Point<2> &x) { return map.physical(x); };
     data_out.attach_dof_handler(dof_handler);
     std::vector<std::string> names{"u_r", "u_z"};
+    Vector<double>           fields = u;
     if (used_formulation == Formulation::mixed)
-      names.push_back("q"); // q = lambda div u (mixed formulation)
-    data_out.add_data_vector(u, names);
+      {
+        names.push_back("q"); // q = lambda div u (mixed formulation), solved for in units of S
+        const double S = mixed_pressure_scale(material, mesh_parameters.contact_radius);
+        for (const auto i : DoFTools::extract_dofs(dof_handler, fe.component_mask(FEValuesExtractors::Scalar(2))))
+          fields[i] *= S;
+      }
+    data_out.add_data_vector(fields, names);
     Vector<float> modulus(triangulation.n_active_cells());
     for (const auto &cell : triangulation.active_cell_iterators())
       modulus[cell->active_cell_index()] = material.modulus->value(map.physical(cell->center())[1]);

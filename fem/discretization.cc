@@ -90,10 +90,15 @@ namespace gradcontact::fem
   bool use_surface_map(Settings &settings, const ModulusField &modulus)
   {
     const double s = modulus.surface_exponent();
-    if (!(s > 0 && s < 1) || !modulus.discontinuities().empty())
+    if (!(s > 0 && s <= 0.95) || !modulus.discontinuities().empty())
       return false;
     settings.discretization.surface_map.enabled = true;
     settings.mesh.surface_layer_thickness       = 1.0;
+    // The map pulls the truncation boundary in (fem/surface_map.h): widen L so that its image is as far.
+    const double alpha = settings.discretization.surface_map.scale != 0 ? settings.discretization.surface_map.scale :
+                                                                          SurfaceMap<2>::automatic_scale(s);
+    settings.mesh.far_field_size =
+      std::min(1e16, settings.mesh.far_field_size * SurfaceMap<2>::far_field_contraction(s, alpha));
     return true;
   }
 

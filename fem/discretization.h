@@ -79,7 +79,8 @@ namespace gradcontact::fem
   Settings recommended_settings(double contact_radius, const ModulusField &modulus, double force_tolerance);
 
   /// Switches `settings` from z-halvings to the surface map (fem/surface_map.h) when `modulus` vanishes at the
-  /// surface like z^s, 0 < s < 1, and has no jumps; returns whether it did. Measured for a contact edge at the
+  /// surface like z^s, 0 < s <= 0.95, and has no jumps, and widens L by SurfaceMap::far_field_contraction of the
+  /// automatic (or already set) scale; returns whether it did. Measured for a contact edge at the
   /// mesh's contact radius (the flat punch at k = 0.5: degree 3 2.3e-6 with 53k DoFs against 2.1e-6 with 156k
   /// by halvings; degree 4, h_edge 1e-7 a: 5.4e-8 with 87k DoFs in 1.6 s; k = 0.9: 5.6e-6 against 0.78).
   /// Where other surface features need cells finer than the distance to that edge (a cohesive zone's end,

@@ -142,6 +142,7 @@ namespace gradcontact::fem
     , fe(fe_)
     , mixed(fe_.n_components() == Strain::n_displacement_components + 1)
     , inverse_lambda_factor(mixed ? (1 + material_.nu) * (1 - 2 * material_.nu) / material_.nu : 0.0)
+    , pressure_scale(mixed ? mixed_pressure_scale(material_, contact_radius) : 1.0)
     , map(discretization.surface_map, *material_.modulus, contact_radius, h_edge)
     , rules(material_, fe_, mapping, discretization, mixed && inverse_lambda_factor != 0.0, map.gamma())
     , cell_matrix(fe_.n_dofs_per_cell(), fe_.n_dofs_per_cell())
@@ -340,13 +341,14 @@ namespace gradcontact::fem
         traces(plain, q, m);
         const double weight = Strain::weight(x) * plain.JxW(q);
         // K_qq (both cells) and the zeta^0 part of K_uq (surface cell) or all of it (elsewhere).
-        const double qq = (inverse_lambda_factor != 0.0) ? inverse_lambda_factor * m.dz / E.value(m.z) : 0.0;
+        const double S  = pressure_scale;
+        const double qq = (inverse_lambda_factor != 0.0) ? S * S * inverse_lambda_factor * m.dz / E.value(m.z) : 0.0;
         for (unsigned int i = 0; i < dofs_per_cell; ++i)
           {
-            const double t_i = surface_cell ? trace_b[i] : trace[i] * m.dz;
+            const double t_i = S * (surface_cell ? trace_b[i] : trace[i] * m.dz);
             for (unsigned int j = 0; j <= i; ++j)
               {
-                const double t_j = surface_cell ? trace_b[j] : trace[j] * m.dz;
+                const double t_j = S * (surface_cell ? trace_b[j] : trace[j] * m.dz);
                 cell_matrix(i, j) += (t_i * psi[j] + psi[i] * t_j - qq * psi[i] * psi[j]) * weight;
               }
           }
@@ -361,7 +363,8 @@ namespace gradcontact::fem
         const Point<dim>                      &x = rule.quadrature_point(q);
         const typename SurfaceMap<dim>::Value m = map.at(x);
         traces(rule, q, m);
-        const double weight = Strain::weight(x) * rule.JxW(q) * m.dz / std::pow((*xi)[q], map.gamma());
+        const double weight =
+          pressure_scale * Strain::weight(x) * rule.JxW(q) * m.dz / std::pow((*xi)[q], map.gamma());
         for (unsigned int i = 0; i < dofs_per_cell; ++i)
           for (unsigned int j = 0; j <= i; ++j)
             cell_matrix(i, j) += (trace[i] * psi[j] + psi[i] * trace[j]) * weight;
@@ -408,10 +411,13 @@ namespace gradcontact::fem
               trace[i] = 0.0;
             psi[i] = (c == pressure) ? phi : 0.0;
           }
-        const double inverse_lambda = qq_here ? inverse_lambda_factor / E.value(x[dim - 1]) : 0.0;
+        // q = S q_hat (mixed_pressure_scale): K_uq times S, K_qq times S^2.
+        const double S              = pressure_scale;
+        const double inverse_lambda = qq_here ? S * S * inverse_lambda_factor / E.value(x[dim - 1]) : 0.0;
         for (unsigned int i = 0; i < dofs_per_cell; ++i)
           for (unsigned int j = 0; j <= i; ++j)
-            cell_matrix(i, j) += (trace[i] * psi[j] + psi[i] * trace[j] - inverse_lambda * psi[i] * psi[j]) * weight;
+            cell_matrix(i, j) +=
+              (S * (trace[i] * psi[j] + psi[i] * trace[j]) - inverse_lambda * psi[i] * psi[j]) * weight;
       }
     if (!(singular_qq && inverse_lambda_factor != 0.0))
       return;
@@ -423,8 +429,8 @@ namespace gradcontact::fem
     for (const unsigned int q : inverse.quadrature_point_indices())
       {
         const Point<dim> &x      = inverse.quadrature_point(q);
-        const double      factor = inverse_lambda_factor * std::pow((*xi)[q], s) / E.value(x[dim - 1]) *
-                              Strain::weight(x) * inverse.JxW(q);
+        const double      factor = pressure_scale * pressure_scale * inverse_lambda_factor * std::pow((*xi)[q], s) /
+                              E.value(x[dim - 1]) * Strain::weight(x) * inverse.JxW(q);
         for (unsigned int i = 0; i < dofs_per_cell; ++i)
           psi[i] = (fe.system_to_component_index(i).first == pressure) ? inverse.shape_value(i, q) : 0.0;
         for (unsigned int i = 0; i < dofs_per_cell; ++i)
@@ -436,6 +442,14 @@ namespace gradcontact::fem
   template class GradedElasticityCell<AxisymmetricStrain>;
   template class GradedElasticityCell<Mode1Strain>;
   template class GradedElasticityCell<CartesianStrain>;
+
+
+
+  double mixed_pressure_scale(const Material &material, const double contact_radius)
+  {
+    const double S = material.modulus->value(contact_radius);
+    return (S > 0 && std::isfinite(S)) ? S : 1.0;
+  }
 
 
 

@@ -19,9 +19,9 @@
 // depth coordinate z is always the last one.
 //
 // Mixed formulation (a pressure component q = lambda div u in FE_Q(p-1) after the displacement
-// components; fem/axisymmetric_solver.h):
+// components, solved for in units of S = E(a), mixed_pressure_scale; fem/axisymmetric_solver.h):
 //   K_uu = \int [ 2 mu sum_n B_i,n B_j,n + mu sum_s B_i,s B_j,s ] r dr dz,
-//   K_uq = \int tr B_i psi_j r dr dz,   K_qq = - \int psi_i psi_j / lambda r dr dz,
+//   K_uq = S \int tr B_i psi_j r dr dz,   K_qq = - S^2 \int psi_i psi_j / lambda r dr dz,
 // each block with the rule that is exact or regular for its integrand: K_uu (carries E) with the rule
 // below; K_uq (polynomial, no E) with plain Gauss (QIterated across a jump), since Gauss-Jacobi would
 // leave the integrand divided by xi^s; K_qq (carries 1/E ~ z^{-s}) with Gauss-Jacobi of exponent -s in
@@ -31,6 +31,11 @@
 // crosses the cell; in the cells with a face on z = 0, when E ~ z^s there (s != 0), Gauss-Jacobi across
 // that face, whose weights contain xi^s (xi the reference distance from the face), so that the integrand
 // is E(z) / xi^s, a regular function (fem/gauss_jacobi.h).
+//
+// With the surface map (fem/surface_map.h) every cell uses the mapped gradient and volume, and a surface cell
+// integrates three parts, each with its own rule: B_b.B_b E / Phi_zeta ~ zeta^0 (Gauss), the cross terms
+// E ~ zeta^gamma and B_a.B_a E Phi_zeta ~ zeta^{2 gamma} (Gauss-Jacobi of exponents gamma and 2 gamma across
+// the surface face), gamma = s / (1 - s); the mixed blocks likewise (zeta^0 and zeta^gamma).
 //
 // Surface load. p(r) = p0 on the faces with boundary id `contact`, pushing into the material (+z):
 //   b_i = \int_face p0 phi_{i,z} r dr.
@@ -206,12 +211,19 @@ namespace gradcontact::fem
     const dealii::FESystem<dim>          &fe;
     const bool                          mixed;
     const double                        inverse_lambda_factor; ///< 1/lambda = this / E (0 at nu = 1/2)
+    const double                        pressure_scale;        ///< S of mixed_pressure_scale
     const SurfaceMap<dim>               map;
     GradedCellRules<dim>                rules;
     dealii::FullMatrix<double>          cell_matrix;
     std::vector<typename Strain::Vector> B, B_b;
     std::vector<double>                 trace, trace_b, psi;
   };
+
+  /// The unit of the mixed formulation's pressure unknown: the element solves for q / S with S = E(a), the
+  /// modulus at the depth of the contact radius, so that its blocks K_uq S and K_qq S^2 are of the size of
+  /// K_uu ~ E. Unscaled, K_uq (no E) against K_uu varies with E0 (a/c0)^k, and the direct solver's pivoting
+  /// can fail on the unbalanced system (test `The mixed formulation shall solve the graded flat punch alike*`).
+  double mixed_pressure_scale(const Material &material, double contact_radius);
 
   /// The axisymmetric cell stiffness (mode 0, displacement or mixed).
   using CellStiffness = GradedElasticityCell<AxisymmetricStrain>;

@@ -26,18 +26,17 @@ namespace gradcontact::fem
       return;
     if (!(contact_radius > 0 && std::isfinite(contact_radius)))
       fail("SurfaceMap", "contact_radius", contact_radius, "(0, inf)");
-    if (!(s > 0 && s < 1))
+    if (!(s > 0 && s <= 0.95))
       fail("SurfaceMap (E ~ z^s at the surface; the map is for a vanishing surface modulus)", "surface exponent", s,
-           "(0, 1)");
+           "(0, 0.95]");
     if (!modulus.discontinuities().empty())
-      throw std::invalid_argument("SurfaceMap: the surface map is not available for a modulus with jumps (first "
-                                  "at z = " + std::to_string(modulus.discontinuities().front()) +
-                                  "): their depths would be mesh coordinates");
+      fail("SurfaceMap (not for a modulus with jumps: their depths would be mesh coordinates)", "first jump depth",
+           modulus.discontinuities().front(), "none");
     const double floor = (p.floor != 0) ? p.floor : h_edge;
     if (!(floor >= 1e-12 && floor <= 1))
       fail("SurfaceMap (the floor from the mesh)", "h_edge", floor, "[1e-12, 1] (/ a)");
     beta  = 1.0 / (1.0 - s);
-    alpha = (p.scale != 0) ? p.scale : 0.5 * std::sqrt((1 - s) / s);
+    alpha = (p.scale != 0) ? p.scale : automatic_scale(s);
     a     = contact_radius;
     tau   = floor * contact_radius;
   }
@@ -80,6 +79,8 @@ namespace gradcontact::fem
     const double zeta = x[dim - 1];
     if (!active())
       return {zeta, 1.0, dealii::Tensor<1, dim>()};
+    if (!(zeta > 0))
+      return {0.0, 0.0, dealii::Tensor<1, dim>()};
     dealii::Tensor<1, dim> dT;
     const double           T     = length_and_gradient(x, dT);
     const double           q     = zeta / (zeta + T);

@@ -804,9 +804,16 @@ namespace gradcontact::fem
             data_out.to_physical = [&map](const dealii::Point<2> &x) { return map.physical(x); };
           data_out.attach_dof_handler(body.dof_handler);
           std::vector<std::string> names{"u_r", "u_z"};
+          Vector<double>           fields = field;
           if (body.used_formulation == Formulation::mixed)
-            names.push_back("q");
-          data_out.add_data_vector(field, names);
+            {
+              names.push_back("q"); // solved for in units of S (mixed_pressure_scale)
+              const double S = mixed_pressure_scale(body.material, body.contact_radius);
+              for (const auto i :
+                   DoFTools::extract_dofs(body.dof_handler, body.fe.component_mask(FEValuesExtractors::Scalar(2))))
+                fields[i] *= S;
+            }
+          data_out.add_data_vector(fields, names);
           write_vtu(data_out, body.mapping, discretization.degree, file, "UnilateralContactSolver");
         };
         write(*half_space, u, outputs.vtu_file);

@@ -84,8 +84,7 @@ int main(int argc, char **argv)
       const double peak_max = dealii::Utilities::MPI::max(peak_mb, world);
       const double peak_sum = dealii::Utilities::MPI::sum(peak_mb, world);
       // The flat punch against (9.16), h_N written out (tests/fem/written_out.h); NaN for the other loads.
-      const double F_punch = 2 * testing::h_N(k, nu) * E0 * load.depth * std::pow(a, 1 + k) /
-                             ((1 - nu * nu) * (1 + k) * std::pow(c0, k));
+      const double F_punch = testing::flat_punch_force(k, nu, E0, c0, a, load.depth);
       const double F_error = load_name == "punch" ? r.force / F_punch - 1 : std::nan("");
       if (root)
         std::printf("load=%s k=%g p=%u np=%u solver=%s dofs=%llu cells=%u force=%.16e F_error=%.3e depth=%.16e "

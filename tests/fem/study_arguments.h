@@ -4,7 +4,7 @@
 //   mesh:            h_edge h_surface h_far g (ring growth) L (far field / a) layer (surface layer / a)
 //                    R1 (near field / a) halving_radius axis_refinements edge_refinements global
 //   discretisation:  p (degree) extra_q subdiv formulation=displacement|mixed|automatic
-//                    map=0|auto|alpha (surface map) map_floor (tau / a, 0: h_edge)
+//                    map=0|auto|alpha (surface map; L is not widened, fem::use_surface_map does) map_floor (tau / a, 0: h_edge)
 //   distributed:     solver=direct|amg tol threshold sweeps
 #ifndef GRADCONTACT_TESTS_FEM_STUDY_ARGUMENTS_H
 #define GRADCONTACT_TESTS_FEM_STUDY_ARGUMENTS_H

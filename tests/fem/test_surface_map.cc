@@ -27,8 +27,7 @@ namespace
 
   double flat_punch_force(const double k, const double d)
   {
-    using gradcontact::fem::testing::h_N;
-    return 2 * h_N(k, nu) * E0 * d * std::pow(a, 1 + k) / ((1 - nu * nu) * (1 + k) * std::pow(c0, k)); // (9.16)
+    return gradcontact::fem::testing::flat_punch_force(k, nu, E0, c0, a, d); // (9.16)
   }
 
   SurfaceMapParameters map_on(const double scale = 0)
@@ -110,7 +109,9 @@ TEST_CASE("The surface map refuses what it cannot map, naming the parameter", "[
   REQUIRE_THROWS_WITH(SurfaceMap<2>(map_on(), half, -a, 1e-5), Contains("contact_radius"));
   // A coating (a jump of E at H) on the power law.
   const CoatingModulus coating(E0, c0, 0.5, 0.1 * a);
-  REQUIRE_THROWS_WITH(SurfaceMap<2>(map_on(), coating, a, 1e-5), Contains("jumps"));
+  REQUIRE_THROWS_WITH(SurfaceMap<2>(map_on(), coating, a, 1e-5), Contains("first jump depth"));
+  const PowerLawModulus steep(E0, c0, 0.97);
+  REQUIRE_THROWS_WITH(SurfaceMap<2>(map_on(), steep, a, 1e-5), Contains("surface exponent = 0.97"));
   // The discretisation refuses a bad scale too, before any solve.
   DiscretizationParameters d;
   d.surface_map = map_on(50);

@@ -17,6 +17,13 @@ namespace gradcontact::fem::testing
     return 2 * (1 + k) * std::cos(k * pi / 2) * std::tgamma(1 + k / 2) /
            (std::sqrt(pi) * C * beta * std::sin(beta * pi / 2) * std::tgamma((1 + k) / 2)); // (9.5)
   }
+
+  /// The flat punch's force (9.16): F = 2 h_N E0 d a^{1+k} / ((1 - nu^2)(1 + k) c0^k).
+  inline double flat_punch_force(const double k, const double v, const double E0, const double c0, const double a,
+                                 const double d)
+  {
+    return 2 * h_N(k, v) * E0 * d * std::pow(a, 1 + k) / ((1 - v * v) * (1 + k) * std::pow(c0, k));
+  }
 } // namespace gradcontact::fem::testing
 
 #endif
