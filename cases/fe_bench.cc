@@ -138,21 +138,32 @@ namespace gradcontact::cases
       }
     };
 
+    /// The normal scenes on a modulus vanishing at the surface are also run with the surface map
+    /// (fem/surface_map.h) instead of z-halvings, as model "deal.II map".
+    bool map_models(const std::string &load, const double k)
+    {
+      return (load == "flat_punch" || load == "paraboloid") && k > 0 && k <= 0.95;
+    }
+
     WorkPrecisionRow run_ours(const std::string &load, const double k, const unsigned int degree,
-                              const unsigned int level, const int repeat, const fs::path &mesh_cache)
+                              const unsigned int level, const int repeat, const fs::path &mesh_cache,
+                              const bool surface_map = false)
     {
       WorkPrecisionRow row;
       row.load = load;
       row.k = k;
-      row.model = "deal.II";
+      row.model = surface_map ? "deal.II map" : "deal.II";
       row.degree = degree;
       row.level = level;
-      fem::MeshParameters mesh = fe_mesh_level(a, k, level);
+      fem::Settings level_settings{fe_mesh_level(a, k, level), fem::DiscretizationParameters{}};
+      if (surface_map)
+        fem::use_surface_map(level_settings, fem::PowerLawModulus(E0, c0, k));
+      fem::MeshParameters mesh = level_settings.mesh;
       mesh.cache_directory = mesh_cache.string();
       row.h_edge = mesh.h_edge;
       row.ring_growth = mesh.ring_growth;
       row.far_field = mesh.far_field_size;
-      fem::DiscretizationParameters discretization;
+      fem::DiscretizationParameters discretization = level_settings.discretization;
       discretization.degree = degree;
       fem::LoadCase loadcase;
       if (load == "flat_punch" || load == "tangential_punch")
@@ -376,7 +387,7 @@ namespace gradcontact::cases
 
     std::string label(const WorkPrecisionRow &r)
     {
-      return r.model == "FreeFem++" ? "FreeFem++ P2" : "deal.II degree " + std::to_string(r.degree);
+      return r.model == "FreeFem++" ? "FreeFem++ P2" : r.model + " degree " + std::to_string(r.degree);
     }
   } // namespace
 
@@ -464,11 +475,16 @@ namespace gradcontact::cases
             for (unsigned int degree = 1; degree <= max_degree; ++degree)
               for (unsigned int level = 0; level < n_levels(load); ++level)
                 {
-                  rows.push_back(run_ours(load, k, degree, level, repeats_of(load, o.repeat), mesh_cache));
-                  const auto &r = rows.back();
-                  std::cerr << "bench fe: " << load << " k=" << k << " degree " << degree << " level " << level
-                            << ": " << r.dofs << " DoFs, error " << fmt(r.error) << ", " << fmt(r.wall_min)
-                            << " s" << (r.note.empty() ? "" : " (" + r.note + ")") << "\n";
+                  for (const bool mapped : {false, true})
+                    {
+                      if (mapped && (!map_models(load, k) || degree < 2))
+                        continue;
+                      rows.push_back(run_ours(load, k, degree, level, repeats_of(load, o.repeat), mesh_cache, mapped));
+                      const auto &r = rows.back();
+                      std::cerr << "bench fe: " << load << " k=" << k << " " << r.model << " degree " << degree
+                                << " level " << level << ": " << r.dofs << " DoFs, error " << fmt(r.error) << ", "
+                                << fmt(r.wall_min) << " s" << (r.note.empty() ? "" : " (" + r.note + ")") << "\n";
+                    }
                 }
           if (peer && peer_models(load))
             for (unsigned int level = 0; level < n_peer_levels; ++level)
@@ -575,6 +591,9 @@ namespace gradcontact::cases
        << "- deal.II model (`fem/`): FE_Q degree 1-4; mesh level 0-4 = h_edge 1e-2 .. 1e-6 a, ring growth "
           "1.6, 1.4, 1.3, 1.15, 1.15 (`fe_mesh_level` in `cases/fe_bench.cc`); L/a and the surface layer from "
           "`recommended_mesh_parameters(a, k)` (L/a = 1e16, 1.1e8, 2.3e5 for k = -0.5, 0, 0.5).\n"
+       << "- `deal.II map` (k > 0, flat punch and paraboloid, degree >= 2): the same levels with the surface map "
+          "(`fem::use_surface_map`, fem/README.md \"Surface map\") instead of the z-halvings, L widened by its "
+          "contraction.\n"
        << "- Times: minimum and median wall time over the repetitions; `cold` is the first repetition, in which "
           "gmsh meshes the near field (later repetitions read its cached .msh, as repeated runs of a scene do); "
           "CPU is the process CPU time (minimum; gmsh's own process not included). The phase split is the "

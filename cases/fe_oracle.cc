@@ -113,7 +113,6 @@ namespace gradcontact::cases
     material.modulus = std::make_shared<fem::PowerLawModulus>(1.0, 1.0, k);
     material.nu = nu;
     fem::Settings settings = fem::recommended_settings(1.0, *material.modulus, tolerance);
-    fem::use_surface_map(settings, *material.modulus); // 0 < k < 1: no thin surface cells
     settings.discretization.formulation = fem::Formulation::automatic;
     state->far_field = settings.mesh.far_field_size;
     settings.mesh.global_refinements = 0;
