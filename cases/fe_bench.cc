@@ -142,7 +142,7 @@ namespace gradcontact::cases
     /// (fem/surface_map.h) instead of z-halvings, as model "deal.II map".
     bool map_models(const std::string &load, const double k)
     {
-      return (load == "flat_punch" || load == "paraboloid") && k > 0 && k <= 0.95;
+      return (load == "flat_punch" || load == "paraboloid") && fem::surface_map_applies(fem::PowerLawModulus(E0, c0, k));
     }
 
     WorkPrecisionRow run_ours(const std::string &load, const double k, const unsigned int degree,

@@ -658,25 +658,19 @@ namespace gradcontact::fem
 
   void AxisymmetricSolver::output_results(const Vector<double> &u, const std::string &filename) const
   {
-    const SurfaceMap<2> map(discretization.surface_map, *material.modulus, mesh_parameters.contact_radius,
-                            mesh_parameters.h_edge);
-    MeridianDataOut     data_out;
-    if (map.active())
-      data_out.to_physical = [&map](const Point<2> &x) { return map.physical(x); };
+    MeridianDataOut data_out;
+    data_out.surface_map =
+      SurfaceMap<2>(discretization.surface_map, *material.modulus, mesh_parameters.contact_radius, mesh_parameters.h_edge);
     data_out.attach_dof_handler(dof_handler);
     std::vector<std::string> names{"u_r", "u_z"};
-    Vector<double>           fields = u;
     if (used_formulation == Formulation::mixed)
-      {
-        names.push_back("q"); // q = lambda div u (mixed formulation), solved for in units of S
-        const double S = mixed_pressure_scale(material, mesh_parameters.contact_radius);
-        for (const auto i : DoFTools::extract_dofs(dof_handler, fe.component_mask(FEValuesExtractors::Scalar(2))))
-          fields[i] *= S;
-      }
-    data_out.add_data_vector(fields, names);
+      names.push_back("q"); // q = lambda div u (mixed formulation)
+    data_out.add_data_vector(with_physical_pressure(u, dof_handler, fe, material, mesh_parameters.contact_radius),
+                             names);
     Vector<float> modulus(triangulation.n_active_cells());
     for (const auto &cell : triangulation.active_cell_iterators())
-      modulus[cell->active_cell_index()] = material.modulus->value(map.physical(cell->center())[1]);
+      modulus[cell->active_cell_index()] =
+        material.modulus->value(data_out.surface_map.physical(cell->center())[1]);
     data_out.add_data_vector(modulus, "E");
     write_vtu(data_out, mapping, discretization.degree, filename, "AxisymmetricSolver::output_results");
   }

@@ -87,11 +87,19 @@ namespace gradcontact::fem
 
 
 
-  bool use_surface_map(Settings &settings, const ModulusField &modulus)
+  bool surface_map_applies(const ModulusField &modulus)
   {
     const double s = modulus.surface_exponent();
-    if (!(s > 0 && s <= 0.95) || !modulus.discontinuities().empty())
+    return s > 0 && s <= 0.95 && modulus.discontinuities().empty();
+  }
+
+
+
+  bool use_surface_map(Settings &settings, const ModulusField &modulus)
+  {
+    if (!surface_map_applies(modulus))
       return false;
+    const double s = modulus.surface_exponent();
     settings.discretization.surface_map.enabled = true;
     settings.mesh.surface_layer_thickness       = 1.0;
     // The map pulls the truncation boundary in (fem/surface_map.h): widen L so that its image is as far.

@@ -88,6 +88,8 @@ namespace gradcontact::fem
   /// 2.2e-3 off JKR against 2e-4 with halvings), and at degree 2 a mesh keeps more accuracy with the halvings
   /// (h_edge 1e-4 a: 1.1e-4 against 6.2e-5, with 22k against 58k DoFs).
   bool use_surface_map(Settings &settings, const ModulusField &modulus);
+  /// Whether use_surface_map would switch a setting for `modulus`.
+  bool surface_map_applies(const ModulusField &modulus);
 
   /// Wall-clock seconds of the phases of a solve.
   struct Timings

@@ -415,10 +415,8 @@ namespace gradcontact::fem
 
   void FourierMode1Solver::output_results(const Vector<double> &u, const std::string &filename) const
   {
-    const SurfaceMap<2> map(discretization.surface_map, *material.modulus, a, edge_cell());
-    MeridianDataOut     data_out;
-    if (map.active())
-      data_out.to_physical = [&map](const Point<2> &x) { return map.physical(x); };
+    MeridianDataOut data_out;
+    data_out.surface_map = SurfaceMap<2>(discretization.surface_map, *material.modulus, a, edge_cell());
     data_out.attach_dof_handler(dof_handler);
     data_out.add_data_vector(u, std::vector<std::string>{"U", "V", "W"});
     write_vtu(data_out, mapping, discretization.degree, filename, "FourierMode1Solver::output_results");

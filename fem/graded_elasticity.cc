@@ -149,6 +149,7 @@ namespace gradcontact::fem
     , B(fe_.n_dofs_per_cell())
     , B_b(fe_.n_dofs_per_cell())
     , trace(fe_.n_dofs_per_cell())
+    , trace_b(fe_.n_dofs_per_cell())
     , psi(fe_.n_dofs_per_cell())
   {}
 
@@ -160,20 +161,33 @@ namespace gradcontact::fem
   {
     const typename GradedCellRules<dim>::Choice choice = rules.select(cell);
     cell_matrix                                        = 0;
-    if (map.active() && choice.surface_face != numbers::invalid_unsigned_int)
+    if (map.active())
       {
-        // A surface cell under the map: the three parts with their own rules (fem/surface_map.h).
-        const std::vector<double> *xi = nullptr;
-        add_part(*choice.values, nullptr, 0.0, Part::zz);
-        FEValues<dim> &mixed_rule = rules.mapped(cell, choice.surface_face, 0, xi);
-        add_part(mixed_rule, xi, map.gamma(), Part::mixed);
-        FEValues<dim> &plane_rule = rules.mapped(cell, choice.surface_face, 1, xi);
-        add_part(plane_rule, xi, 2 * map.gamma(), Part::plane);
+        // Under the map no jump straddles a cell, so choice.values is the Gauss rule, reinit'ed on `cell`; a
+        // surface cell adds its three parts with their own rules (fem/surface_map.h), the zeta^gamma rule
+        // serving the mixed blocks too.
+        FEValues<dim>             *gamma_rule = nullptr;
+        const std::vector<double> *xi_gamma   = nullptr;
+        if (choice.surface_face != numbers::invalid_unsigned_int)
+          {
+            add_part(*choice.values, nullptr, 0.0, Part::zz);
+            gamma_rule = &rules.mapped(cell, choice.surface_face, 0, xi_gamma);
+            add_part(*gamma_rule, xi_gamma, map.gamma(), Part::mixed);
+            const std::vector<double> *xi = nullptr;
+            FEValues<dim>             &plane_rule = rules.mapped(cell, choice.surface_face, 1, xi);
+            add_part(plane_rule, xi, 2 * map.gamma(), Part::plane);
+          }
+        else
+          add_part(*choice.values, nullptr, 0.0, Part::all);
+        if (mixed)
+          add_mapped_mixed_blocks(*choice.values, gamma_rule, xi_gamma);
       }
     else
-      add_part(*choice.values, choice.xi, rules.surface_exponent(), Part::all);
-    if (mixed)
-      add_mixed_blocks(cell, choice);
+      {
+        add_part(*choice.values, choice.xi, rules.surface_exponent(), Part::all);
+        if (mixed)
+          add_mixed_blocks(cell, choice);
+      }
     const unsigned int dofs_per_cell = fe.n_dofs_per_cell();
     for (unsigned int i = 0; i < dofs_per_cell; ++i)
       for (unsigned int j = i + 1; j < dofs_per_cell; ++j)
@@ -202,14 +216,11 @@ namespace gradcontact::fem
         shear += X[m] * Y[m];
       return lambda * tr_X * tr_Y + 2 * mu * normal + mu * shear;
     };
-    if (trace_b.size() != dofs_per_cell)
-      trace_b.resize(dofs_per_cell);
     // K_uu. The mixed formulation keeps only 2 mu eps:eps (lambda div u div v is replaced by the q blocks
     // of add_mixed_blocks), and the rows of its q shape functions are zero here.
     for (const unsigned int q : fe_values.quadrature_point_indices())
       {
         const Point<dim> &x = fe_values.quadrature_point(q);
-        const double      r = x[0];
         // The map (the identity without one): the physical depth, dz / dzeta and the tangential shift.
         const typename SurfaceMap<dim>::Value m = map.at(x);
         // With a Gauss-Jacobi rule JxW contains xi^e, so the integrand is divided by it. Unmapped, e = s
@@ -235,38 +246,7 @@ namespace gradcontact::fem
         const double weight = Strain::weight(x) * fe_values.JxW(q);
 
         for (unsigned int i = 0; i < dofs_per_cell; ++i)
-          {
-            const unsigned int c = fe.system_to_component_index(i).first;
-            if (c >= Strain::n_displacement_components)
-              {
-                B[i] = B_b[i] = typename Strain::Vector{}; // the pressure q of the mixed formulation
-                continue;
-              }
-            const double          phi = fe_values.shape_value(i, q);
-            const Tensor<1, dim> &g   = fe_values.shape_grad(i, q);
-            const double          g_z = g[dim - 1];
-            // B_a: the tangential part of the physical gradient, g_t - shift_t g_zeta (and phi / r);
-            // B_b: g_zeta in the depth slot, to be divided by Phi_zeta.
-            Tensor<1, dim> g_a = g - g_z * m.shift;
-            g_a[dim - 1]       = 0.0;
-            Tensor<1, dim> g_b;
-            g_b[dim - 1] = g_z;
-            if (part == Part::all)
-              {
-                g_a[dim - 1] = g_z / m.dz;
-                B[i]         = Strain::of(c, phi, g_a, r);
-              }
-            else
-              {
-                B[i]   = Strain::of(c, phi, g_a, r);
-                B_b[i] = Strain::of(c, 0.0, g_b, r);
-              }
-          }
-        for (unsigned int i = 0; i < dofs_per_cell; ++i)
-          {
-            trace[i]   = B[i][0] + B[i][1] + B[i][2];
-            trace_b[i] = B_b[i][0] + B_b[i][1] + B_b[i][2];
-          }
+          strain_parts(fe_values, i, q, m, part == Part::all);
         switch (part)
           {
             case Part::all:
@@ -294,54 +274,58 @@ namespace gradcontact::fem
 
 
   template <class Strain>
-  void GradedElasticityCell<Strain>::add_mapped_mixed_blocks(const typename DoFHandler<dim>::active_cell_iterator &cell,
-                                                             const typename GradedCellRules<dim>::Choice &choice)
+  void GradedElasticityCell<Strain>::strain_parts(const FEValues<dim> &values, const unsigned int i,
+                                                  const unsigned int q, const typename SurfaceMap<dim>::Value &m,
+                                                  const bool whole)
+  {
+    const unsigned int c = fe.system_to_component_index(i).first;
+    psi[i]               = (c == Strain::n_displacement_components) ? values.shape_value(i, q) : 0.0;
+    if (c >= Strain::n_displacement_components)
+      {
+        B[i] = B_b[i] = typename Strain::Vector{}; // the pressure q of the mixed formulation
+        trace[i] = trace_b[i] = 0.0;
+        return;
+      }
+    const double          r   = values.quadrature_point(q)[0];
+    const Tensor<1, dim> &g   = values.shape_grad(i, q);
+    const double          g_z = g[dim - 1];
+    // B_a: the tangential part of the physical gradient, g_t - shift_t g_zeta (and phi / r); whole: with
+    // g_zeta / Phi_zeta in the depth slot, i.e. all of B. B_b: g_zeta in the depth slot (to be divided by
+    // Phi_zeta).
+    Tensor<1, dim> g_a = g - g_z * m.shift;
+    g_a[dim - 1]       = whole ? g_z / m.dz : 0.0;
+    B[i]               = Strain::of(c, values.shape_value(i, q), g_a, r);
+    trace[i]           = B[i][0] + B[i][1] + B[i][2];
+    if (whole)
+      return;
+    Tensor<1, dim> g_b;
+    g_b[dim - 1] = g_z;
+    B_b[i]       = Strain::of(c, 0.0, g_b, r);
+    trace_b[i]   = B_b[i][0] + B_b[i][1] + B_b[i][2];
+  }
+
+
+
+  template <class Strain>
+  void GradedElasticityCell<Strain>::add_mapped_mixed_blocks(FEValues<dim> &plain, FEValues<dim> *gamma_rule,
+                                                             const std::vector<double> *xi)
   {
     // Under the surface map (fem/surface_map.h) dV = Phi_zeta r dr dzeta and tr B = tr B_a + tr B_b / Phi_zeta:
     //   K_uq = \int (tr B_a Phi_zeta + tr B_b) psi r dr dzeta   (~ zeta^gamma and zeta^0 in a surface cell),
     //   K_qq = -\int psi psi Phi_zeta / lambda r dr dzeta       (~ zeta^0: 1/E ~ zeta^-gamma).
+    // Both with q = S q_hat (mixed_pressure_scale). In a surface cell (gamma_rule set) `plain` integrates the
+    // zeta^0 terms and gamma_rule the zeta^gamma one; elsewhere `plain` all of them.
     const ModulusField &E             = *material.modulus;
     const unsigned int  dofs_per_cell = fe.n_dofs_per_cell();
-    const unsigned int  pressure      = Strain::n_displacement_components;
-    const bool          surface_cell  = choice.surface_face != numbers::invalid_unsigned_int;
-    // trace_b holds tr B_b, trace tr B_a (in a surface cell) or the whole tr B (elsewhere).
-    const auto traces = [&](FEValues<dim> &values, const unsigned int q, const typename SurfaceMap<dim>::Value &m) {
-      const double r = values.quadrature_point(q)[0];
-      for (unsigned int i = 0; i < dofs_per_cell; ++i)
-        {
-          const unsigned int c   = fe.system_to_component_index(i).first;
-          const double       phi = values.shape_value(i, q);
-          psi[i]                 = (c == pressure) ? phi : 0.0;
-          trace[i] = trace_b[i] = 0.0;
-          if (c >= pressure)
-            continue;
-          const Tensor<1, dim> &g   = values.shape_grad(i, q);
-          const double          g_z = g[dim - 1];
-          Tensor<1, dim>        g_a = g - g_z * m.shift;
-          g_a[dim - 1]              = surface_cell ? 0.0 : g_z / m.dz;
-          const auto b_a            = Strain::of(c, phi, g_a, r);
-          trace[i]                  = b_a[0] + b_a[1] + b_a[2];
-          if (surface_cell)
-            {
-              Tensor<1, dim> g_b;
-              g_b[dim - 1]   = g_z;
-              const auto b_b = Strain::of(c, 0.0, g_b, r);
-              trace_b[i]     = b_b[0] + b_b[1] + b_b[2];
-            }
-        }
-    };
-    if (trace_b.size() != dofs_per_cell)
-      trace_b.resize(dofs_per_cell);
-
-    FEValues<dim> &plain = rules.plain(cell, false);
+    const bool          surface_cell  = gamma_rule != nullptr;
+    const double        S             = pressure_scale;
     for (const unsigned int q : plain.quadrature_point_indices())
       {
         const Point<dim>                      &x = plain.quadrature_point(q);
         const typename SurfaceMap<dim>::Value m = map.at(x);
-        traces(plain, q, m);
+        for (unsigned int i = 0; i < dofs_per_cell; ++i)
+          strain_parts(plain, i, q, m, !surface_cell);
         const double weight = Strain::weight(x) * plain.JxW(q);
-        // K_qq (both cells) and the zeta^0 part of K_uq (surface cell) or all of it (elsewhere).
-        const double S  = pressure_scale;
         const double qq = (inverse_lambda_factor != 0.0) ? S * S * inverse_lambda_factor * m.dz / E.value(m.z) : 0.0;
         for (unsigned int i = 0; i < dofs_per_cell; ++i)
           {
@@ -355,16 +339,14 @@ namespace gradcontact::fem
       }
     if (!surface_cell)
       return;
-    // The zeta^gamma part of K_uq in a surface cell: tr B_a psi Phi_zeta, the weights containing xi^gamma.
-    const std::vector<double> *xi   = nullptr;
-    FEValues<dim>             &rule = rules.mapped(cell, choice.surface_face, 0, xi);
-    for (const unsigned int q : rule.quadrature_point_indices())
+    // The zeta^gamma part of K_uq: tr B_a psi Phi_zeta, the weights containing xi^gamma.
+    for (const unsigned int q : gamma_rule->quadrature_point_indices())
       {
-        const Point<dim>                      &x = rule.quadrature_point(q);
+        const Point<dim>                      &x = gamma_rule->quadrature_point(q);
         const typename SurfaceMap<dim>::Value m = map.at(x);
-        traces(rule, q, m);
-        const double weight =
-          pressure_scale * Strain::weight(x) * rule.JxW(q) * m.dz / std::pow((*xi)[q], map.gamma());
+        for (unsigned int i = 0; i < dofs_per_cell; ++i)
+          strain_parts(*gamma_rule, i, q, m, false);
+        const double weight = S * Strain::weight(x) * gamma_rule->JxW(q) * m.dz / std::pow((*xi)[q], map.gamma());
         for (unsigned int i = 0; i < dofs_per_cell; ++i)
           for (unsigned int j = 0; j <= i; ++j)
             cell_matrix(i, j) += (trace[i] * psi[j] + psi[i] * trace[j]) * weight;
@@ -377,11 +359,6 @@ namespace gradcontact::fem
   void GradedElasticityCell<Strain>::add_mixed_blocks(const typename DoFHandler<dim>::active_cell_iterator &cell,
                                                       const typename GradedCellRules<dim>::Choice        &choice)
   {
-    if (map.active())
-      {
-        add_mapped_mixed_blocks(cell, choice);
-        return;
-      }
     const ModulusField &E             = *material.modulus;
     const double        s             = rules.surface_exponent();
     const unsigned int  dofs_per_cell = fe.n_dofs_per_cell();
@@ -449,6 +426,21 @@ namespace gradcontact::fem
   {
     const double S = material.modulus->value(contact_radius);
     return (S > 0 && std::isfinite(S)) ? S : 1.0;
+  }
+
+
+
+  Vector<double> with_physical_pressure(const Vector<double> &u, const DoFHandler<2> &dof_handler,
+                                       const FESystem<2> &fe, const Material &material, const double contact_radius)
+  {
+    Vector<double> fields = u;
+    if (fe.n_components() == AxisymmetricStrain::n_displacement_components + 1)
+      {
+        const double S = mixed_pressure_scale(material, contact_radius);
+        for (const auto i : DoFTools::extract_dofs(dof_handler, fe.component_mask(FEValuesExtractors::Scalar(2))))
+          fields[i] *= S;
+      }
+    return fields;
   }
 
 

@@ -201,9 +201,14 @@ namespace gradcontact::fem
     /// Adds one pass over the points of `values`; the weights contain xi^{xi_exponent} when `xi` is set.
     void add_part(dealii::FEValues<dim> &values, const std::vector<double> *xi, double xi_exponent, Part part);
 
-    /// The mixed blocks under the surface map (fem/surface_map.h).
-    void add_mapped_mixed_blocks(const typename dealii::DoFHandler<dim>::active_cell_iterator &cell,
-                                 const typename GradedCellRules<dim>::Choice                 &choice);
+    /// B, tr B (whole: the mapped strain) or B_a, tr B_a and B_b, tr B_b (header of fem/surface_map.h) of shape
+    /// function i at point q, and psi[i] (the pressure shape function, 0 for a displacement one).
+    void strain_parts(const dealii::FEValues<dim> &values, unsigned int i, unsigned int q,
+                      const typename SurfaceMap<dim>::Value &m, bool whole);
+    /// The mixed blocks under the surface map: `plain` the Gauss rule reinit'ed on the cell; in a surface cell
+    /// `gamma_rule` the Gauss-Jacobi rule of exponent gamma (weights with xi^gamma), else null.
+    void add_mapped_mixed_blocks(dealii::FEValues<dim> &plain, dealii::FEValues<dim> *gamma_rule,
+                                 const std::vector<double> *xi);
     void add_mixed_blocks(const typename dealii::DoFHandler<dim>::active_cell_iterator &cell,
                           const typename GradedCellRules<dim>::Choice &choice);
 
@@ -224,6 +229,12 @@ namespace gradcontact::fem
   /// K_uu ~ E. Unscaled, K_uq (no E) against K_uu varies with E0 (a/c0)^k, and the direct solver's pivoting
   /// can fail on the unbalanced system (test `The mixed formulation shall solve the graded flat punch alike*`).
   double mixed_pressure_scale(const Material &material, double contact_radius);
+
+  /// A solution vector of the meridian element with the mixed formulation's pressure unknowns in physical
+  /// units (q = lambda div u, times mixed_pressure_scale); the displacement-only element's vector as it is.
+  dealii::Vector<double> with_physical_pressure(const dealii::Vector<double> &u, const dealii::DoFHandler<2> &dof_handler,
+                                                const dealii::FESystem<2> &fe, const Material &material,
+                                                double contact_radius);
 
   /// The axisymmetric cell stiffness (mode 0, displacement or mixed).
   using CellStiffness = GradedElasticityCell<AxisymmetricStrain>;

@@ -797,23 +797,15 @@ namespace gradcontact::fem
         // The half-space in vtu_file; an elastic indenter beside it, in <stem>-indenter.vtu (its own axes:
         // z into the indenter).
         const auto write = [&](const Body &body, const Vector<double> &field, const std::string &file) {
-          const SurfaceMap<2> map(discretization.surface_map, *body.material.modulus, body.contact_radius,
-                                  body.h_edge);
-          MeridianDataOut     data_out;
-          if (map.active())
-            data_out.to_physical = [&map](const dealii::Point<2> &x) { return map.physical(x); };
+          MeridianDataOut data_out;
+          data_out.surface_map =
+            SurfaceMap<2>(discretization.surface_map, *body.material.modulus, body.contact_radius, body.h_edge);
           data_out.attach_dof_handler(body.dof_handler);
           std::vector<std::string> names{"u_r", "u_z"};
-          Vector<double>           fields = field;
           if (body.used_formulation == Formulation::mixed)
-            {
-              names.push_back("q"); // solved for in units of S (mixed_pressure_scale)
-              const double S = mixed_pressure_scale(body.material, body.contact_radius);
-              for (const auto i :
-                   DoFTools::extract_dofs(body.dof_handler, body.fe.component_mask(FEValuesExtractors::Scalar(2))))
-                fields[i] *= S;
-            }
-          data_out.add_data_vector(fields, names);
+            names.push_back("q");
+          data_out.add_data_vector(
+            with_physical_pressure(field, body.dof_handler, body.fe, body.material, body.contact_radius), names);
           write_vtu(data_out, body.mapping, discretization.degree, file, "UnilateralContactSolver");
         };
         write(*half_space, u, outputs.vtu_file);

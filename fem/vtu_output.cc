@@ -7,7 +7,7 @@ namespace gradcontact::fem
 {
   const std::vector<MeridianDataOut::Patch> &MeridianDataOut::get_patches() const
   {
-    return to_physical ? mapped : dealii::DataOut<2>::get_patches();
+    return surface_map.active() ? mapped : dealii::DataOut<2>::get_patches();
   }
 
 
@@ -15,7 +15,7 @@ namespace gradcontact::fem
   void MeridianDataOut::map_patches()
   {
     mapped.clear();
-    if (!to_physical)
+    if (!surface_map.active())
       return;
     mapped = dealii::DataOut<2>::get_patches();
     for (Patch &patch : mapped)
@@ -42,12 +42,12 @@ namespace gradcontact::fem
                     x[d] = (1 - s) * (1 - t) * patch.vertices[0][d] + s * (1 - t) * patch.vertices[1][d] +
                            (1 - s) * t * patch.vertices[2][d] + s * t * patch.vertices[3][d];
                 }
-              const dealii::Point<2> p = to_physical(x);
+              const dealii::Point<2> p = surface_map.physical(x);
               data(n_data, j)          = p[0];
               data(n_data + 1, j)      = p[1];
             }
         for (auto &v : patch.vertices)
-          v = to_physical(v);
+          v = surface_map.physical(v);
         patch.data.swap(data);
         patch.points_are_available = true;
       }

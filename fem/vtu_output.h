@@ -2,26 +2,27 @@
 #ifndef GRADCONTACT_FEM_VTU_OUTPUT_H
 #define GRADCONTACT_FEM_VTU_OUTPUT_H
 
+#include <fem/surface_map.h>
+
 #include <deal.II/base/point.h>
 #include <deal.II/fe/mapping.h>
 #include <deal.II/numerics/data_out.h>
 
-#include <functional>
 #include <string>
 #include <vector>
 
 namespace gradcontact::fem
 {
   /// DataOut of the meridian plane whose patches are written at physical points: the mesh coordinates
-  /// through `to_physical` (the surface map of fem/surface_map.h), or as they are when it is empty.
+  /// through `surface_map` (fem/surface_map.h; the identity by default).
   class MeridianDataOut : public dealii::DataOut<2>
   {
   public:
-    std::function<dealii::Point<2>(const dealii::Point<2> &)> to_physical;
+    SurfaceMap<2> surface_map;
 
     const std::vector<Patch> &get_patches() const override;
 
-    /// Moves every patch point through `to_physical` (call after build_patches).
+    /// Moves every patch point through the surface map (call after build_patches).
     void map_patches();
 
   private:
