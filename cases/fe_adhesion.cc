@@ -64,7 +64,11 @@ namespace gradcontact::cases
     fem::AdhesiveContact::SettingsFunction settings_at(const Scene &s, const fem::Material &material,
                                                         const unsigned int level)
     {
-      return [&s, material, level](const double a) { return fe_settings(s, material, a, level); };
+      return [&s, material, level](const double a) {
+        fem::Settings st = fe_settings(s, material, a, level);
+        condense_far_field(s, material, st);
+        return st;
+      };
     }
 
     std::optional<fem::Profile> fe_profile_of(const LoadParameters &l)

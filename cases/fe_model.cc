@@ -144,6 +144,20 @@ namespace gradcontact::cases
     return model;
   }
 
+  bool condense_far_field(const Scene &s, const fem::Material &material, fem::Settings &settings)
+  {
+    if (!s.discretization.condensed_far_field)
+      return false;
+    double L = s.discretization.far_field;
+    if (!(L > 0.))
+      {
+        L = fem::condensed_far_field_size;
+        for (const double r : s.outputs.displacement_radii)
+          L = std::max(L, 1.5 * r);
+      }
+    return fem::use_condensed_far_field(settings, material, L);
+  }
+
   FeModel candidate_fe_model(const Scene &s, const fem::Profile &profile)
   {
     FeModel model = fe_model(s, finest_refinement(s));

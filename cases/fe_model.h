@@ -58,6 +58,11 @@ namespace gradcontact::cases
   };
   FeModel fe_model(const Scene &scene, unsigned int refinement);
 
+  /// Discretization/far field condition = auto: the condensed far field of fem::use_condensed_far_field for the
+  /// axisymmetric solver's runs (L / a = Discretization/far field if given, else 100 or 1.5 times the largest
+  /// Outputs/displacement radii); returns whether it applied.
+  bool condense_far_field(const Scene &scene, const fem::Material &material, fem::Settings &settings);
+
   /// The FE model of a candidate scene (Candidate/profile): `profile`, the user's f(r), as a rigid indenter
   /// under contact-radius control at Load/a, at the finest refinement level.
   FeModel candidate_fe_model(const Scene &scene, const fem::Profile &profile);

@@ -114,6 +114,7 @@ namespace gradcontact::cases
     material.nu = nu;
     fem::Settings settings = fem::recommended_settings(1.0, *material.modulus, tolerance);
     settings.discretization.formulation = fem::Formulation::automatic;
+    fem::use_condensed_far_field(settings, material); // no truncation error, L / a = 100
     state->far_field = settings.mesh.far_field_size;
     settings.mesh.global_refinements = 0;
     state->coarse = std::make_unique<fem::AxisymmetricSolver>(material, settings.mesh, settings.discretization);

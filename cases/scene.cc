@@ -247,6 +247,11 @@ namespace gradcontact::cases
                       "the singular depth map of fem/surface_map.h in the rigid frictionless normal scenes of the "
                       "displacement formulation (no thin cells; flat punch k = 0.5 2.3e-6 with a third of the DoFs); "
                       "off, and the mixed formulation: z-halvings to 1e-10 a.");
+    prm.declare_entry("far field condition", "auto", Patterns::Selection("auto|clamped"),
+                      "auto: for a power-law modulus in the rigid frictionless normal scenes of the displacement "
+                      "formulation without the surface map, the half-space beyond L is condensed onto max(r, z) = L "
+                      "(fem/far_field.h: no truncation error; L / a = far field, else 100 or 1.5 times the largest "
+                      "displacement radius); clamped: u = 0 at L.");
     prm.leave_subsection();
   }
   void DiscretizationParameters::parse(ParameterHandler &prm)
@@ -261,6 +266,7 @@ namespace gradcontact::cases
     const std::string f = prm.get("formulation");
     formulation = f == "mixed" ? Formulation::mixed : (f == "automatic" ? Formulation::automatic : Formulation::displacement);
     surface_map = prm.get("surface map") == "auto";
+    condensed_far_field = prm.get("far field condition") == "auto";
     prm.leave_subsection();
   }
 

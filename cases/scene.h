@@ -132,6 +132,9 @@ namespace gradcontact::cases
     /// The surface map of fem/surface_map.h instead of z-halvings for 0 < k < 1 in the rigid frictionless
     /// normal scenes (fem::use_surface_map); off: the halvings everywhere.
     bool surface_map = true;
+    /// The exterior of max(r, z) = L condensed onto it (fem::use_condensed_far_field) where it applies, in the
+    /// scenes of fem::AxisymmetricSolver; off: u = 0 at L.
+    bool condensed_far_field = true;
     static void declare(dealii::ParameterHandler &prm);
     void parse(dealii::ParameterHandler &prm);
   };

@@ -79,10 +79,18 @@ namespace gradcontact::fem
     dof_handler.distribute_dofs(fe);
 
     // Homogeneous constraints shared by every load: hanging nodes (z-only halvings, edge refinement),
-    // u_r = 0 on the axis, u = 0 on the truncation boundary.
+    // u_r = 0 on the axis, u = 0 on the truncation boundary unless the far field is condensed onto it.
+    const bool condensed = discretization.far_field == FarField::condensed;
+    if (condensed && used_formulation == Formulation::mixed)
+      throw std::invalid_argument("AxisymmetricSolver: DiscretizationParameters::far_field = condensed needs the "
+                                  "displacement formulation (the pressure DoFs of the rings scale otherwise); "
+                                  "nu = " + std::to_string(material.nu));
     constraints.clear();
-    make_homogeneous_constraints(dof_handler, mapping, fe, constraints);
-    system.reinit(dof_handler, constraints);
+    make_homogeneous_constraints(dof_handler, mapping, fe, constraints, !condensed);
+    if (condensed)
+      far_field_rings = std::make_unique<FarFieldRings>(dof_handler, mapping, constraints, mesh_parameters, mesh_info);
+    system.reinit(dof_handler, constraints,
+                  condensed ? far_field_rings->boundary_dofs() : std::vector<types::global_dof_index>{});
 
     dof_r = support_radii(mapping, dof_handler);
 
@@ -141,7 +149,13 @@ namespace gradcontact::fem
     const auto start = std::chrono::steady_clock::now();
     CellStiffness cell_stiffness(material, fe, mapping, discretization, mesh_parameters.contact_radius,
                                 mesh_parameters.h_edge);
-    system.assemble(dof_handler, cell_stiffness, contact_dofs); // P: the contact z-DoFs of every rigid-contact load
+    if (far_field_rings)
+      exterior = far_field_rings->condense(
+        [&](const DoFHandler<2>::active_cell_iterator &cell) -> const FullMatrix<double> & {
+          return cell_stiffness.matrix(cell);
+        });
+    // P: the contact z-DoFs of every rigid-contact load
+    system.assemble(dof_handler, cell_stiffness, contact_dofs, far_field_rings ? &exterior : nullptr);
     setup_time.assemble = seconds_since(start);
   }
 
@@ -418,6 +432,9 @@ namespace gradcontact::fem
     load.validate();
     Result result;
     result.start(setup_time, dof_handler.n_dofs(), triangulation.n_active_cells(), mesh_info);
+    result.far_field_ring_scale      = exterior.ring_scale;
+    result.far_field_self_similarity = exterior.self_similarity;
+    result.far_field_doublings       = exterior.doublings;
     result.formulation      = used_formulation;
     result.contact_radius   = mesh_parameters.contact_radius;
     result.edge_node_radius = mesh_parameters.contact_radius;

@@ -10,11 +10,15 @@ namespace gradcontact::fem
 {
   using namespace dealii;
 
-  void DirectSystem::reinit(const DoFHandler<2> &dof_handler, const AffineConstraints<double> &constraints_)
+  void DirectSystem::reinit(const DoFHandler<2> &dof_handler, const AffineConstraints<double> &constraints_,
+                            const std::vector<types::global_dof_index> &coupled_dofs)
   {
     constraints = &constraints_;
     DynamicSparsityPattern dsp(dof_handler.n_dofs());
     DoFTools::make_sparsity_pattern(dof_handler, dsp, constraints_, false);
+    for (const auto i : coupled_dofs)
+      for (const auto j : coupled_dofs)
+        dsp.add(i, j);
     sparsity_pattern.copy_from(dsp);
     stiffness.reinit(sparsity_pattern);
     eliminated.clear();

@@ -12,6 +12,8 @@
 #ifndef GRADCONTACT_FEM_DIRECT_SYSTEM_H
 #define GRADCONTACT_FEM_DIRECT_SYSTEM_H
 
+#include <fem/far_field.h>
+
 #include <deal.II/base/types.h>
 #include <deal.II/dofs/dof_handler.h>
 #include <deal.II/lac/affine_constraints.h>
@@ -28,14 +30,17 @@ namespace gradcontact::fem
   class DirectSystem
   {
   public:
-    /// The sparsity of `dof_handler` under `constraints` (kept by reference: it must outlive this).
-    void reinit(const dealii::DoFHandler<2> &dof_handler, const dealii::AffineConstraints<double> &constraints);
+    /// The sparsity of `dof_handler` under `constraints` (kept by reference: it must outlive this), with the
+    /// `coupled_dofs` coupled to each other (the truncation boundary of a condensed far field).
+    void reinit(const dealii::DoFHandler<2> &dof_handler, const dealii::AffineConstraints<double> &constraints,
+                const std::vector<dealii::types::global_dof_index> &coupled_dofs = {});
 
     /// Assembles A from the cell matrices of `cell_integrand` (any class with matrix(cell), e.g.
-    /// CellStiffness) over all active cells, condensed with the constraints, then fixes P = `prescribed_dofs`.
+    /// CellStiffness) over all active cells, condensed with the constraints, plus the stiffness of a condensed
+    /// far field when given (its DoFs coupled by reinit), then fixes P = `prescribed_dofs`.
     template <class CellIntegrand>
     void assemble(const dealii::DoFHandler<2> &dof_handler, CellIntegrand &cell_integrand,
-                  const std::vector<dealii::types::global_dof_index> &prescribed_dofs)
+                  const std::vector<dealii::types::global_dof_index> &prescribed_dofs, const Exterior *exterior = nullptr)
     {
       std::vector<dealii::types::global_dof_index> local_dof_indices(dof_handler.get_fe().n_dofs_per_cell());
       for (const auto &cell : dof_handler.active_cell_iterators())
@@ -43,6 +48,10 @@ namespace gradcontact::fem
           cell->get_dof_indices(local_dof_indices);
           constraints->distribute_local_to_global(cell_integrand.matrix(cell), local_dof_indices, stiffness);
         }
+      if (exterior)
+        for (unsigned int i = 0; i < exterior->dofs.size(); ++i)
+          for (unsigned int j = 0; j < exterior->dofs.size(); ++j)
+            stiffness.add(exterior->dofs[i], exterior->dofs[j], exterior->stiffness(i, j));
       set_prescribed_dofs(prescribed_dofs);
     }
 

@@ -31,6 +31,8 @@ namespace gradcontact::fem
     if (formulation == Formulation::mixed && degree < 2)
       fail("DiscretizationParameters (mixed formulation)", "degree", degree,
            "[2, 4] (the pressure space is FE_Q(degree - 1))");
+    if (far_field != FarField::clamped && far_field != FarField::condensed)
+      fail("DiscretizationParameters", "far_field", static_cast<int>(far_field), "{clamped, condensed}");
     surface_map.validate();
   }
 
@@ -109,6 +111,46 @@ namespace gradcontact::fem
       std::min(1e16, settings.mesh.far_field_size * SurfaceMap<2>::far_field_contraction(s, alpha));
     return true;
   }
+
+  bool power_law_of_depth(const ModulusField &modulus)
+  {
+    if (!modulus.discontinuities().empty() || modulus.deep_exponent() != modulus.surface_exponent())
+      return false;
+    const double factor = std::pow(10.0, modulus.surface_exponent());
+    for (double z = 1e-12; z <= 1e6; z *= 10)
+      {
+        const double E = modulus.value(z), E10 = modulus.value(10 * z);
+        if (!(E > 0 && std::isfinite(E10) && std::abs(E10 / (factor * E) - 1) <= 1e-12))
+          return false;
+      }
+    return true;
+  }
+
+
+
+  bool use_condensed_far_field(Settings &settings, const Material &material, const double far_field_size)
+  {
+    if (!material.modulus || !power_law_of_depth(*material.modulus) || settings.discretization.surface_map.enabled ||
+        resolve_formulation(settings.discretization, material.nu) != Formulation::displacement)
+      return false;
+    if (!(far_field_size >= settings.mesh.near_field_size * 1.1 && far_field_size <= 1e16))
+      fail("use_condensed_far_field", "far_field_size", far_field_size,
+           "[1.1 near_field_size, 1e16] (L / a, two rings at least)");
+    settings.discretization.far_field = FarField::condensed;
+    settings.mesh.far_field_size      = far_field_size;
+    return true;
+  }
+
+
+
+  void require_clamped_far_field(const DiscretizationParameters &discretization, const std::string &where)
+  {
+    if (discretization.far_field == FarField::condensed)
+      throw std::invalid_argument(where + ": DiscretizationParameters::far_field = condensed is not supported (the "
+                                          "axisymmetric solver's only); use FarField::clamped with its L / a");
+  }
+
+
 
   Settings recommended_settings(const double contact_radius, const ModulusField &modulus, const double force_tolerance)
   {

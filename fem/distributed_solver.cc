@@ -44,6 +44,7 @@ namespace gradcontact::fem
     , mesh_parameters((mesh_.validate(), mesh_))
     , discretization((discretization_.validate(),
                       require_displacement_formulation(discretization_, material_.nu, "DistributedSolver"),
+                      require_clamped_far_field(discretization_, "DistributedSolver"),
                       discretization_))
     , solver_parameters((solver_.validate(), solver_))
     , triangulation(communicator)

@@ -41,6 +41,7 @@ namespace gradcontact::fem
     {
       discretization.validate();
       require_displacement_formulation(discretization, nu, "FourierMode1Solver");
+      require_clamped_far_field(discretization, "FourierMode1Solver");
       return discretization;
     }
   } // namespace

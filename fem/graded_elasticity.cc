@@ -446,7 +446,8 @@ namespace gradcontact::fem
 
 
   void make_homogeneous_constraints(const DoFHandler<2> &dof_handler, const Mapping<2> &mapping,
-                                    const FESystem<2> &fe, AffineConstraints<double> &constraints)
+                                    const FESystem<2> &fe, AffineConstraints<double> &constraints,
+                                    const bool clamp_far_field)
   {
     DoFTools::make_hanging_node_constraints(dof_handler, constraints);
     const unsigned int                       n_components = fe.n_components();
@@ -456,9 +457,10 @@ namespace gradcontact::fem
                                                      constraints, fe.component_mask(radial));
     // u = 0 on the truncation boundary; the pressure q of the mixed formulation stays free there.
     const FEValuesExtractors::Vector displacement(0);
-    VectorTools::interpolate_boundary_values(mapping, dof_handler, boundary_id::far_field,
-                                                     Functions::ZeroFunction<2>(n_components),
-                                                     constraints, fe.component_mask(displacement));
+    if (clamp_far_field)
+      VectorTools::interpolate_boundary_values(mapping, dof_handler, boundary_id::far_field,
+                                               Functions::ZeroFunction<2>(n_components), constraints,
+                                               fe.component_mask(displacement));
     constraints.close();
   }
 

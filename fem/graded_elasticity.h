@@ -258,9 +258,11 @@ namespace gradcontact::fem
 
   /// The homogeneous constraints every load of the axisymmetric model shares, added to `constraints`
   /// (which the caller has cleared, and reinit'ed on the relevant DoFs in parallel) and closed:
-  /// hanging nodes, u_r = 0 on the axis, u = 0 on the truncation boundary.
+  /// hanging nodes, u_r = 0 on the axis, u = 0 on the truncation boundary (unless `clamp_far_field` is false:
+  /// the condensed far field of fem/far_field.h).
   void make_homogeneous_constraints(const dealii::DoFHandler<2> &dof_handler, const dealii::Mapping<2> &mapping,
-                                    const dealii::FESystem<2> &fe, dealii::AffineConstraints<double> &constraints);
+                                    const dealii::FESystem<2> &fe, dealii::AffineConstraints<double> &constraints,
+                                    bool clamp_far_field = true);
 
   /// b_cell of the constant pressure p0 on the `contact` faces of `cell` (zero if it has none).
   class CellPressureLoad

@@ -124,7 +124,8 @@ namespace gradcontact::fem
     , material(material_)
     , contact_radius(mesh.contact_radius)
     , h_edge(mesh.h_edge)
-    , used_formulation(checked_formulation(material_, discretization))
+    , used_formulation((require_clamped_far_field(discretization, "UnilateralContactSolver (" + name_ + ")"),
+                        checked_formulation(material_, discretization)))
     , fe(axisymmetric_element(discretization.degree, used_formulation))
     , dof_handler(triangulation)
   {

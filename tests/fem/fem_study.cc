@@ -228,14 +228,15 @@ int main(int argc, char **argv)
       std::printf("load=%s control=%s k=%g p=%u h_edge=%g L=%g dofs=%u F_error=%.3e a_error=%.3e d_error=%.3e "
                   "w1.5_error=%.2e w10_error=%.2e p_L2=%.2e iterations=%u set=%u mismatch=%.1e mesh=%.2f "
                   "setup=%.2f assemble=%.2f factorize=%.2f solve=%.2f post=%.2f total=%.2f rings=%u "
-                  "layer_ratio=%.6g %s\n",
+                  "layer_ratio=%.6g far_scale=%.6g far_deviation=%.1e doublings=%u %s\n",
                   load_name.c_str(), control.c_str(), k, disc.degree, mesh.h_edge, mesh.far_field_size,
                   r.n_dofs, r.force / reference - 1,
                   load_name == "punch" || load_name == "pressure" ? 0.0 : r.contact_radius / a_ref - 1,
                   load_name == "punch" || load_name == "pressure" ? 0.0 : r.depth / gradcontact::depth(medium, power, a_ref) - 1,
                   w_err[0], w_err[1], p_err, r.iterations, r.active_set_size, r.energy_mismatch, r.time.mesh,
                   r.time.setup, r.time.assemble, r.time.factorize, r.time.solve, r.time.postprocess, total,
-                  r.mesh.n_rings, layer_ratio, r.message.c_str());
+                  r.mesh.n_rings, layer_ratio, r.far_field_ring_scale, r.far_field_self_similarity,
+                  r.far_field_doublings, r.message.c_str());
       return 0;
     }
   catch (const std::exception &e)

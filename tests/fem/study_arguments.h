@@ -111,6 +111,11 @@ namespace gradcontact::fem::testing
           discretization.surface_map.scale   = (text("map") == "auto") ? 0.0 : num("map", 0.0);
         }
       discretization.surface_map.floor          = num("map_floor", discretization.surface_map.floor);
+      const std::string far_field               = text("far", "clamped");
+      if (far_field == "condensed")
+        discretization.far_field = FarField::condensed;
+      else if (far_field != "clamped")
+        throw std::invalid_argument(tool + ": far = '" + far_field + "' outside {clamped, condensed}");
       const std::string formulation             = text("formulation", "displacement");
       if (formulation == "mixed")
         discretization.formulation = Formulation::mixed;

@@ -1,0 +1,96 @@
+// The far field beyond the truncation boundary, condensed onto it: the infinitely many rings of the
+// meridian mesh (fem/mesh.h) as one dense stiffness on the DoFs of max(r, z) = L.
+//
+// The rings of fem/mesh.h are copies of one polyline P scaled by g: ring j lies between g^{j-1} P and g^j P.
+// For E(z) = E0 (z/c0)^s, a ring scaled by lambda has lambda^{1+s} times the stiffness of the original in
+// matching DoFs (r dr dz ~ lambda^3, grad^2 ~ lambda^-2, E ~ lambda^s). After static condensation of its
+// interior DoFs a ring is a two-port T = [A B; B^T C] between its inner DoFs and its outer ones, and the
+// exterior beyond the mesh's last ring (scale sigma = g^{1+s} per ring) condensed onto its outer DoFs is the
+// S of
+//   S = sigma (A - B (C + S)^{-1} B^T).
+// It is found by doubling: a chain of N rings and its copy scaled by sigma^N make a chain of 2N rings (the
+// middle port eliminated), and a chain clamped at its far end is the problem truncated at L g^N, whose
+// truncation error falls like g^{-N (1 + s)}; the doubling stops once that factor is below 1e-18, so the
+// mesh's L only has to hold the near field and two rings (the "cloning" of self-similar rings: Dasgupta,
+// J. Appl. Mech. 49 (1982) 136-140).
+//
+// Nothing is assumed of the modulus or the mesh: the mesh's last two rings are both condensed, the scale is
+// the least-squares fit of the outer one onto the inner one, and their relative deviation is measured and
+// bounded. A modulus that is no power law of depth at the rings' size (a finite surface modulus, a coating),
+// the mixed formulation (its pressure DoFs scale otherwise) and a surface map that is not yet homogeneous
+// at L are refused with the deviation found.
+//
+// The infinite discrete problem has no truncation error left: the flat punch at k = -0.5 gives the force
+// of the mesh clamped at L / a = 1e16 (fem/README.md "Far field").
+#ifndef GRADCONTACT_FEM_FAR_FIELD_H
+#define GRADCONTACT_FEM_FAR_FIELD_H
+
+#include <fem/mesh.h>
+
+#include <deal.II/base/types.h>
+#include <deal.II/dofs/dof_handler.h>
+#include <deal.II/fe/mapping.h>
+#include <deal.II/lac/affine_constraints.h>
+#include <deal.II/lac/full_matrix.h>
+
+#include <functional>
+#include <vector>
+
+namespace gradcontact::fem
+{
+  /// Relative deviation of the last ring's two-port from the scaled one of the ring before it above which
+  /// FarFieldRings::condense refuses: the exterior then is no copy of one ring.
+  inline constexpr double self_similarity_tolerance = 1e-7;
+
+  /// The exterior stiffness on the truncation boundary and how it was found.
+  struct Exterior
+  {
+    std::vector<dealii::types::global_dof_index> dofs; ///< the truncation-boundary DoFs S acts on
+    dealii::FullMatrix<double>                   stiffness; ///< S (symmetric), in the order of `dofs`
+    double       ring_scale      = 0; ///< sigma, the measured ratio of consecutive rings' stiffness
+    double       self_similarity = 0; ///< |T_n - sigma T_{n-1}| / |T_n| (Frobenius)
+    unsigned int doublings       = 0; ///< chains of 2^doublings rings
+    double       chain_error     = 0; ///< the truncation factor sigma^{-N} of the last chain
+  };
+
+  /// The last two rings of a meridian mesh and the DoFs of their ports, found by geometry (the cells
+  /// whose centre has max(r, z) between L / g^2 and L / g, and between L / g and L).
+  class FarFieldRings
+  {
+  public:
+    /// `constraints`: the model's homogeneous constraints *without* the far-field condition: a ring DoF
+    /// constrained to zero (the axis) is left out, any other constrained ring DoF is refused. Needs at
+    /// least two rings (MeshInfo::n_rings >= 2). Throws std::invalid_argument naming what is missing.
+    FarFieldRings(const dealii::DoFHandler<2> &dof_handler, const dealii::Mapping<2> &mapping,
+                  const dealii::AffineConstraints<double> &constraints, const MeshParameters &mesh,
+                  const MeshInfo &info);
+
+    /// The unconstrained DoFs on the truncation boundary (for the sparsity pattern: they couple densely).
+    const std::vector<dealii::types::global_dof_index> &boundary_dofs() const { return outer_port[1]; }
+
+    /// The exterior from the cell matrices of `cell_matrix` (e.g. CellStiffness::matrix). Throws
+    /// std::runtime_error with the measured deviation when the rings are no scaled copies of each other.
+    using CellMatrix = std::function<const dealii::FullMatrix<double> &(
+      const typename dealii::DoFHandler<2>::active_cell_iterator &)>;
+    Exterior condense(const CellMatrix &cell_matrix) const;
+
+  private:
+    /// Ring 0 is the mesh's last but one, ring 1 its last.
+    struct Ring
+    {
+      std::vector<typename dealii::DoFHandler<2>::active_cell_iterator> cells;
+      std::vector<dealii::types::global_dof_index>                      interior;
+    };
+    /// The condensed two-port of ring `i`: rows and columns in the order inner_port[i], outer_port[i].
+    dealii::FullMatrix<double> two_port(unsigned int i, const CellMatrix &cell_matrix) const;
+
+    const dealii::DoFHandler<2>                        &dof_handler;
+    const dealii::AffineConstraints<double>            &constraints;
+    std::array<Ring, 2>                                  rings;
+    /// Port DoFs of each ring, sorted by (component, angle), so that entry j of every port is the same
+    /// DoF of the polyline scaled.
+    std::array<std::vector<dealii::types::global_dof_index>, 2> inner_port, outer_port;
+  };
+} // namespace gradcontact::fem
+
+#endif

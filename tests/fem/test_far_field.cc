@@ -1,0 +1,154 @@
+// Tests of the condensed far field (fem/far_field.h): the same discrete problem as the mesh clamped so far out
+// that its truncation error is below round-off, the flat punch (9.16) and the paraboloid under depth control
+// (9.26) written out, at L / a = 10 where the clamped mesh is far off, and its refusals.
+#include <fem/axisymmetric_solver.h>
+#include <fem/modulus.h>
+
+#include "written_out.h"
+
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <iostream>
+#include <memory>
+#include <stdexcept>
+
+using namespace gradcontact::fem;
+using Catch::Matchers::Contains;
+using Catch::Matchers::WithinRel;
+
+namespace
+{
+  constexpr double nu = 0.3;
+  constexpr double E0 = 2.0e9;
+  constexpr double c0 = 3.0e-4;
+  constexpr double a  = 1.0e-4;
+
+  DiscretizationParameters condensed(const unsigned int degree = 3)
+  {
+    DiscretizationParameters d;
+    d.degree    = degree;
+    d.far_field = FarField::condensed;
+    return d;
+  }
+
+  LoadCase flat_punch()
+  {
+    LoadCase punch;
+    punch.type  = LoadType::flat_punch;
+    punch.depth = 1e-3 * a;
+    return punch;
+  }
+} // namespace
+
+TEST_CASE("The condensed far field is the mesh clamped at L g^N for N to infinity", "[fem]")
+{
+  // All meshes have the same rings R1 g^j, g = 1.3: the condensed one 3 of them, the clamped ones 3 + 92 and
+  // 3 + 132 (L / a = 4 1.3^135 = 1.0e16), whose truncation error C (a / L)^{1+k} is removed by extrapolation
+  // in L with the exponent 1 + k (the next term, (a / L)^{3+k}, is below 1e-20).
+  const double k = GENERATE(-0.5, 0.0, 0.5);
+  Material     mat{std::make_shared<PowerLawModulus>(E0, c0, k), nu};
+  MeshParameters mesh = recommended_mesh_parameters(a, k);
+  mesh.ring_growth    = 1.3;
+  mesh.h_far          = 4.0;
+  const auto at_rings = [&](const unsigned int n) {
+    MeshParameters m = mesh;
+    m.far_field_size = m.near_field_size * std::pow(m.ring_growth, n) * (1 - 1e-12);
+    return m;
+  };
+  DiscretizationParameters clamped;
+  clamped.degree  = 2;
+  const Result r1 = AxisymmetricSolver(mat, at_rings(95), clamped).run(flat_punch());
+  const Result r2 = AxisymmetricSolver(mat, at_rings(135), clamped).run(flat_punch());
+  const Result rn = AxisymmetricSolver(mat, at_rings(3), condensed(2)).run(flat_punch());
+  const double ratio          = std::pow(r2.mesh.ring_growth, 40 * (1 + k)); // (L2 / L1)^{1+k}
+  const double F_extrapolated = r2.force + (r2.force - r1.force) / (ratio - 1);
+  CAPTURE(k, r2.n_dofs, rn.n_dofs, rn.force / r2.force - 1, rn.force / F_extrapolated - 1, rn.far_field_self_similarity,
+          rn.far_field_doublings);
+  REQUIRE(r2.mesh.n_rings == 135);
+  REQUIRE(rn.mesh.n_rings == 3);
+  REQUIRE(rn.reliable);
+  REQUIRE(rn.far_field_self_similarity < 1e-12);
+  // g^{1+k}: the stiffness of a ring scaled by g
+  REQUIRE_THAT(rn.far_field_ring_scale, WithinRel(std::pow(rn.mesh.ring_growth, 1 + k), 1e-10));
+  // Measured 3e-14 (k = 0) and 6e-10 (k = -0.5, where the clamped meshes' own energy mismatch is 5e-9: the round-off of
+  // stiffnesses spanning 1.14^135 = 5e7; their successive differences over 20 rings fall by 13.8 = 1.3^10 as they
+  // should). Unextrapolated, the clamped mesh at L = 1e16 a is 1.0e-8 off at k = -0.5.
+  REQUIRE_THAT(rn.force, WithinRel(F_extrapolated, k < 0 ? 3e-9 : 1e-10));
+  REQUIRE(rn.n_dofs < r2.n_dofs);
+}
+
+TEST_CASE("With the condensed far field the flat punch reaches (9.16) with L = 10 a", "[fem]")
+{
+  const double k = GENERATE(-0.9, -0.5, 0.0, 0.5);
+  Material     mat{std::make_shared<PowerLawModulus>(E0, c0, k), nu};
+  MeshParameters mesh  = recommended_mesh_parameters(a, k, 1e-6);
+  mesh.far_field_size  = 10;
+  const LoadCase punch = flat_punch();
+  const double   F_ref = gradcontact::fem::testing::flat_punch_force(k, nu, E0, c0, a, punch.depth);
+  const Result   r     = AxisymmetricSolver(mat, mesh, condensed()).run(punch);
+  // The same mesh clamped at L = 10 a: the truncation error C (a / L)^{1+k}.
+  DiscretizationParameters clamped;
+  const Result r0 = AxisymmetricSolver(mat, mesh, clamped).run(punch);
+  CAPTURE(k, r.n_dofs, r.force / F_ref - 1, r0.force / F_ref - 1, r.energy_mismatch, r.far_field_doublings);
+  std::cout << "[fem] condensed far field, flat punch k = " << k << ": " << r.force / F_ref - 1 << " (clamped at 10 a "
+            << r0.force / F_ref - 1 << "), " << r.n_dofs << " DoFs\n";
+  REQUIRE(r.reliable);
+  // Measured at degree 3: 1.5e-5 (k = -0.9; clamped at 1e16 a: 2.7e-2), 3.7e-7 (-0.5), 7.8e-7 (0), 2.1e-6 (0.5, the
+  // u_z ~ z^{1-k} surface layer).
+  REQUIRE_THAT(r.force, WithinRel(F_ref, k > 0 ? 5e-6 : (k < -0.6 ? 3e-5 : 2e-6)));
+  REQUIRE(std::abs(r0.force / F_ref - 1) > 1e3 * std::abs(r.force / F_ref - 1));
+}
+
+TEST_CASE("With the condensed far field depth control of the paraboloid reaches (9.26)", "[fem]")
+{
+  const double k = -0.5;
+  Material     mat{std::make_shared<PowerLawModulus>(E0, c0, k), nu};
+  MeshParameters mesh = recommended_mesh_parameters(a, k, 1e-6);
+  mesh.far_field_size = 10;
+  AxisymmetricSolver solver(mat, mesh, condensed());
+  const double       R = 50 * a;
+  // (9.26): d = a^2 / ((1 + k) R) puts the contact edge at the mesh's a; 2e-5 more moves it by 1e-5 a.
+  LoadCase sphere;
+  sphere.type    = LoadType::indenter_depth;
+  sphere.profile = Profile::paraboloid(R);
+  sphere.depth   = (1 + 2e-5) * a * a / ((1 + k) * R);
+  const Result r = solver.run(sphere);
+  using gradcontact::fem::testing::h_N;
+  const double a_ref = std::sqrt((1 + k) * R * sphere.depth);
+  const double F_ref = 4 * h_N(k, nu) * E0 * std::pow(a_ref, k + 3) /
+                       ((1 - nu * nu) * std::pow(c0, k) * (1 + k) * (1 + k) * (k + 3) * R);
+  CAPTURE(r.n_dofs, r.iterations, r.force / F_ref - 1, r.contact_radius / a_ref - 1);
+  REQUIRE(r.reliable);
+  REQUIRE_THAT(r.force, WithinRel(F_ref, 1e-5));
+  REQUIRE_THAT(r.contact_radius, WithinRel(a_ref, 1e-5));
+}
+
+TEST_CASE("The condensed far field refuses too few rings, a modulus that is no power law there and the mixed "
+          "formulation",
+          "[fem]")
+{
+  MeshParameters mesh = recommended_mesh_parameters(a, 0.0, 1e-6);
+  SECTION("one ring")
+  {
+    mesh.far_field_size = mesh.near_field_size * 1.1;
+    Material mat{std::make_shared<PowerLawModulus>(E0, c0, 0.0), nu};
+    REQUIRE_THROWS_WITH(AxisymmetricSolver(mat, mesh, condensed()),
+                        Contains("far_field_size") && Contains("at least 2"));
+  }
+  SECTION("a finite surface modulus E0 ((z + z0) / c0)^k: the rings are no scaled copies at L = 10 a")
+  {
+    mesh.far_field_size = 10;
+    Material mat{std::make_shared<ShiftedPowerLawModulus>(E0, c0, 0.5, a), nu};
+    REQUIRE_THROWS_WITH(AxisymmetricSolver(mat, mesh, condensed()),
+                        Contains("no scaled copies") && Contains("relative deviation"));
+  }
+  SECTION("mixed formulation")
+  {
+    mesh.far_field_size = 10;
+    Material                 mat{std::make_shared<PowerLawModulus>(E0, c0, 0.0), 0.5};
+    DiscretizationParameters d = condensed();
+    d.formulation              = Formulation::mixed;
+    REQUIRE_THROWS_WITH(AxisymmetricSolver(mat, mesh, d), Contains("far_field = condensed") && Contains("nu = 0.5"));
+  }
+}
