@@ -146,7 +146,7 @@ namespace gradcontact::cases
     }
 
     /// The variants of our model: as recommended, with the surface map, with the condensed far field
-    /// (fem/far_field.h, L = 100 a) for the radius-controlled normal scenes.
+    /// (fem/far_field.h, L = 100 a) for the radius-controlled normal scenes and the tangential punch.
     enum class Variant
     {
       plain,
@@ -154,7 +154,10 @@ namespace gradcontact::cases
       condensed
     };
 
-    bool condensed_models(const std::string &load) { return load == "flat_punch" || load == "paraboloid"; }
+    bool condensed_models(const std::string &load)
+    {
+      return load == "flat_punch" || load == "paraboloid" || load == "tangential_punch";
+    }
 
     WorkPrecisionRow run_ours(const std::string &load, const double k, const unsigned int degree,
                               const unsigned int level, const int repeat, const fs::path &mesh_cache,
@@ -609,7 +612,7 @@ namespace gradcontact::cases
        << "- `deal.II map` (k > 0, flat punch and paraboloid, degree >= 2): the same levels with the surface map "
           "(`fem::use_surface_map`, fem/README.md \"Surface map\") instead of the z-halvings, L widened by its "
           "contraction.\n"
-       << "- `deal.II condensed` (flat punch and paraboloid): the same levels with the half-space beyond L = 100 a "
+       << "- `deal.II condensed` (flat punch, paraboloid, tangential punch): the same levels with the half-space beyond L = 100 a "
           "condensed onto max(r, z) = L (`fem::use_condensed_far_field`, fem/README.md \"Far field\"): no truncation "
           "error and no rings beyond 100 a.\n"
        << "- Times: minimum and median wall time over the repetitions; `cold` is the first repetition, in which "

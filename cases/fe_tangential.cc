@@ -81,6 +81,7 @@ namespace gradcontact::cases
       {
         material = fe_material(s);
         settings = fe_settings(s, material, s.load.a, finest_refinement(s)); // the mode-1 solver refuses mixed
+        condense_far_field(s, material, settings);
         fem::SurfaceRefinement refinement;
         for (const double c : stick_radii)
           if (c > 0. && c < s.load.a * (1. - 1e-12)) // c = a is a mesh node already

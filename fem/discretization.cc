@@ -146,8 +146,10 @@ namespace gradcontact::fem
   void require_clamped_far_field(const DiscretizationParameters &discretization, const std::string &where)
   {
     if (discretization.far_field == FarField::condensed)
-      throw std::invalid_argument(where + ": DiscretizationParameters::far_field = condensed is not supported (the "
-                                          "axisymmetric solver's only); use FarField::clamped with its L / a");
+      throw std::invalid_argument(where +
+                                  ": DiscretizationParameters::far_field = condensed is not supported (the axisymmetric "
+                                  "and mode-1 solvers' only, on the meshes of fem/mesh.h); use FarField::clamped with its "
+                                  "L / a");
   }
 
 

@@ -49,7 +49,7 @@ namespace gradcontact::fem
     /// E ~ z^s, 0 < s < 1, needs no z-halvings of the surface cells.
     SurfaceMapParameters surface_map;
     /// `condensed` needs a modulus that is a power law of depth at the size of the last rings, the displacement
-    /// formulation and two rings at least; the axisymmetric (mode 0) solver only.
+    /// formulation and two rings at least; the axisymmetric (mode 0) and mode-1 solvers only.
     FarField far_field = FarField::clamped;
 
     /// Throws std::invalid_argument naming the entry, its value and the valid range.
@@ -112,7 +112,8 @@ namespace gradcontact::fem
   /// Switches `settings` to the condensed far field (fem/far_field.h, the exterior of max(r, z) = L condensed
   /// onto it, no truncation error) with L / a = `far_field_size`, when `material` has a power-law modulus
   /// (power_law_of_depth), the displacement formulation, and no surface map is on (the map is homogeneous
-  /// only for L >> a); returns whether it did. For the axisymmetric solver only (the others refuse it).
+  /// only for L >> a); returns whether it did. For the axisymmetric and mode-1 solvers on the meshes of
+  /// fem/mesh.h (the unilateral, distributed and 3D ones refuse it).
   /// Measured (flat punch, degree 3 recommended mesh): k = -0.5 3.7e-7 with 45k DoFs in 0.60 s against
   /// 3.9e-7 with 117k in 1.5 s at L = 1e16 a; k = 0 7.8e-7 with 32k in 0.49 s against 7.9e-7 with 66k in
   /// 0.77 s; k = -0.9 1.5e-5, where the clamped mesh is 2.7e-2 off at L = 1e16 a.

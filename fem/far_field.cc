@@ -86,13 +86,20 @@ namespace gradcontact::fem
           {
             if (constraints.is_constrained(d))
               {
+                // u_r = 0 (mode 0) or W = 0 and V = U (mode 1) on the axis: the same relation in every ring,
+                // applied when its matrix is assembled; a DoF tied to DoFs of another ring (a hanging node) is
+                // refused.
                 const auto *entries = constraints.get_constraint_entries(d);
-                if (constraints.is_inhomogeneously_constrained(d) || (entries && !entries->empty()))
+                bool        local   = !constraints.is_inhomogeneously_constrained(d);
+                if (entries)
+                  for (const auto &[master, weight] : *entries)
+                    local = local && ring_dofs[i].count(master) && !constraints.is_constrained(master);
+                if (!local)
                   throw std::invalid_argument("FarFieldRings: DoF " + std::to_string(d) + " at (" +
                                               std::to_string(support[d][0]) + ", " + std::to_string(support[d][1]) +
-                                              ") of a far-field ring is constrained to other DoFs (hanging node); "
-                                              "the rings must be conforming");
-                continue; // u_r = 0 on the axis: the same DoF of every ring, left out
+                                              ") of a far-field ring is constrained to DoFs outside its ring "
+                                              "(a hanging node) or inhomogeneously; the rings must be conforming");
+                continue;
               }
             const double R = polyline_radius(support[d]);
             if (std::abs(R - radius[i]) <= on_polyline * radius[i])
@@ -154,24 +161,37 @@ namespace gradcontact::fem
 
     Dense                                K(2 * n + m, 2 * n + m);
     std::vector<types::global_dof_index> local(dof_handler.get_fe().n_dofs_per_cell());
-    std::vector<int>                     to(local.size());
+    // Each cell DoF as a combination of ring unknowns: itself, its masters (constrained), or none (zero).
+    std::vector<std::vector<std::pair<unsigned int, double>>> to(local.size());
     for (const auto &cell : rings[i].cells)
       {
         cell->get_dof_indices(local);
         for (unsigned int l = 0; l < local.size(); ++l)
           {
-            const auto it = index.find(local[l]);
-            to[l]         = (it == index.end()) ? -1 : static_cast<int>(it->second);
+            to[l].clear();
+            if (!constraints.is_constrained(local[l]))
+              to[l].emplace_back(index.at(local[l]), 1.0);
+            else if (const auto *entries = constraints.get_constraint_entries(local[l]))
+              for (const auto &[master, weight] : *entries)
+                to[l].emplace_back(index.at(master), weight);
           }
         const FullMatrix<double> &Kc = cell_matrix(cell);
         for (unsigned int p = 0; p < local.size(); ++p)
-          if (to[p] >= 0)
+          for (const auto &[P, wp] : to[p])
             for (unsigned int q = 0; q < local.size(); ++q)
-              if (to[q] >= 0)
-                K(to[p], to[q]) += Kc(p, q);
+              for (const auto &[Q, wq] : to[q])
+                K(P, Q) += wp * wq * Kc(p, q);
       }
 
-    // T = K_PP - K_PI K_II^{-1} K_IP over the 2n port DoFs.
+    // T = K_PP - K_PI K_II^{-1} K_IP over the 2n port DoFs (degree 1: no interior DoFs).
+    FullMatrix<double> T(2 * n, 2 * n);
+    if (m == 0)
+      {
+        for (unsigned int r = 0; r < 2 * n; ++r)
+          for (unsigned int c = 0; c < 2 * n; ++c)
+            T(r, c) = K(r, c);
+        return T;
+      }
     Dense Kii(m, m), Kip(m, 2 * n);
     for (unsigned int r = 0; r < m; ++r)
       {
@@ -180,8 +200,7 @@ namespace gradcontact::fem
         for (unsigned int c = 0; c < 2 * n; ++c)
           Kip(r, c) = K(2 * n + r, c);
       }
-    const Dense        X = solve(Kii, Kip);
-    FullMatrix<double> T(2 * n, 2 * n);
+    const Dense X = solve(Kii, Kip);
     for (unsigned int r = 0; r < 2 * n; ++r)
       for (unsigned int c = 0; c < 2 * n; ++c)
         {

@@ -59,7 +59,8 @@ namespace gradcontact::fem
   {
   public:
     /// `constraints`: the model's homogeneous constraints *without* the far-field condition: a ring DoF
-    /// constrained to zero (the axis) is left out, any other constrained ring DoF is refused. Needs at
+    /// constrained to zero or to DoFs of its own ring (the axis conditions) is applied in the ring's matrix, one
+    /// tied to other rings (a hanging node) is refused. Needs at
     /// least two rings (MeshInfo::n_rings >= 2). Throws std::invalid_argument naming what is missing.
     FarFieldRings(const dealii::DoFHandler<2> &dof_handler, const dealii::Mapping<2> &mapping,
                   const dealii::AffineConstraints<double> &constraints, const MeshParameters &mesh,

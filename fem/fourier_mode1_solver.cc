@@ -41,7 +41,6 @@ namespace gradcontact::fem
     {
       discretization.validate();
       require_displacement_formulation(discretization, nu, "FourierMode1Solver");
-      require_clamped_far_field(discretization, "FourierMode1Solver");
       return discretization;
     }
   } // namespace
@@ -127,7 +126,7 @@ namespace gradcontact::fem
   {
     mesh.validate();
     make_grid(mesh, refinement);
-    setup_system();
+    setup_system(&mesh);
     assemble_system();
   }
 
@@ -138,6 +137,7 @@ namespace gradcontact::fem
     , fe(FE_Q<2>(discretization_.degree), 3)
     , dof_handler(triangulation)
   {
+    require_clamped_far_field(discretization, "FourierMode1Solver (a given triangulation, no rings of fem/mesh.h)");
     const auto start = std::chrono::steady_clock::now();
     triangulation.copy_triangulation(mesh);
     for (const auto &cell : triangulation.active_cell_iterators())
@@ -170,20 +170,22 @@ namespace gradcontact::fem
 
 
 
-  void FourierMode1Solver::setup_system()
+  void FourierMode1Solver::setup_system(const MeshParameters *mesh)
   {
+    const bool condensed = mesh && discretization.far_field == FarField::condensed;
     const auto start = std::chrono::steady_clock::now();
     dof_handler.distribute_dofs(fe);
 
     std::vector<Point<2>> support(dof_handler.n_dofs());
     DoFTools::map_dofs_to_support_points(mapping, dof_handler, support);
 
-    // Constraints: hanging nodes; far field u = 0; on the axis W = 0 and V = U (header). The far
-    // field comes first so that a corner node on both keeps u = 0.
+    // Constraints: hanging nodes; far field u = 0 unless condensed (fem/far_field.h); on the axis W = 0 and
+    // V = U (header). The far field comes first so that a corner node on both keeps u = 0.
     constraints.clear();
     DoFTools::make_hanging_node_constraints(dof_handler, constraints);
-    VectorTools::interpolate_boundary_values(mapping, dof_handler, boundary_id::far_field,
-                                             Functions::ZeroFunction<2>(3), constraints);
+    if (!condensed)
+      VectorTools::interpolate_boundary_values(mapping, dof_handler, boundary_id::far_field,
+                                               Functions::ZeroFunction<2>(3), constraints);
     const FEValuesExtractors::Scalar W(2);
     VectorTools::interpolate_boundary_values(mapping, dof_handler, boundary_id::axis,
                                              Functions::ZeroFunction<2>(3), constraints, fe.component_mask(W));
@@ -223,7 +225,10 @@ namespace gradcontact::fem
     }
     constraints.close();
 
-    system.reinit(dof_handler, constraints);
+    if (condensed)
+      far_field_rings = std::make_unique<FarFieldRings>(dof_handler, mapping, constraints, *mesh, mesh_info);
+    system.reinit(dof_handler, constraints,
+                  condensed ? far_field_rings->boundary_dofs() : std::vector<types::global_dof_index>{});
 
     // Surface faces with their U, V, W DoFs sorted by r; the contact radius a; the punch DoFs.
     std::vector<double> support_r(support.size());
@@ -269,7 +274,13 @@ namespace gradcontact::fem
   {
     const auto                           start = std::chrono::steady_clock::now();
     Mode1CellStiffness cell_stiffness(material, fe, mapping, discretization, a, edge_cell());
-    system.assemble(dof_handler, cell_stiffness, punch_dofs); // P: U, V on r <= a of the tangential flat punch
+    if (far_field_rings)
+      exterior = far_field_rings->condense(
+        [&](const DoFHandler<2>::active_cell_iterator &cell) -> const FullMatrix<double> & {
+          return cell_stiffness.matrix(cell);
+        });
+    // P: U, V on r <= a of the tangential flat punch
+    system.assemble(dof_handler, cell_stiffness, punch_dofs, far_field_rings ? &exterior : nullptr);
     setup_time.assemble = seconds_since(start);
   }
 
@@ -397,6 +408,9 @@ namespace gradcontact::fem
     load.validate();
     TangentialResult result;
     result.start(setup_time, dof_handler.n_dofs(), triangulation.n_active_cells(), mesh_info);
+    result.far_field_ring_scale      = exterior.ring_scale;
+    result.far_field_self_similarity = exterior.self_similarity;
+    result.far_field_doublings       = exterior.doublings;
 
     const auto     start = std::chrono::steady_clock::now();
     Vector<double> u;

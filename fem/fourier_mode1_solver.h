@@ -31,7 +31,8 @@
 // Boundary conditions. Axis r = 0 (single-valuedness of a mode-1 field: u_z = W cos must not depend on
 // theta there, and u_r e_r + u_theta e_theta = (U cos^2 + V sin^2) e_x + (U - V) sin cos e_y must be a
 // constant vector): W = 0 and U = V, the latter an AffineConstraints line V_i = U_i. Far field
-// (boundary id far_field): U = V = W = 0. Surface z = 0: a rigid tangential flat punch or a prescribed
+// (boundary id far_field): U = V = W = 0, or the exterior condensed onto it (DiscretizationParameters::far_field,
+// fem/far_field.h; the meshes of fem/mesh.h only). Surface z = 0: a rigid tangential flat punch or a prescribed
 // tangential traction; W is always free and the normal traction zero (no normal load).
 //
 // Loads (TangentialLoad):
@@ -159,7 +160,8 @@ namespace gradcontact::fem
 
   private:
     void make_grid(const MeshParameters &mesh, const SurfaceRefinement &refinement);
-    void setup_system();
+    /// `mesh`: the parameters of a mesh of fem/mesh.h (its rings, for the condensed far field), else null.
+    void setup_system(const MeshParameters *mesh = nullptr);
     void assemble_system();
     /// The width of the contact face that ends at the contact edge / a (the surface map's floor).
     double edge_cell() const;
@@ -187,6 +189,8 @@ namespace gradcontact::fem
 
     dealii::AffineConstraints<double> constraints; ///< hanging nodes, axis (W = 0, V = U), far field
     DirectSystem                      system; ///< A (meridian, without the pi), and A with the punch DoFs eliminated
+    std::unique_ptr<FarFieldRings>    far_field_rings; ///< DiscretizationParameters::far_field condensed
+    Exterior                          exterior;        ///< its stiffness (empty when clamped)
 
     std::vector<dealii::types::global_dof_index> punch_dofs; ///< free U, V DoFs on r <= a
     std::vector<SurfaceFace>                     surface_faces; ///< ascending r; dofs: U, V, W

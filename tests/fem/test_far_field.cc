@@ -1,7 +1,9 @@
 // Tests of the condensed far field (fem/far_field.h): the same discrete problem as the mesh clamped so far out
 // that its truncation error is below round-off, the flat punch (9.16) and the paraboloid under depth control
-// (9.26) written out, at L / a = 10 where the clamped mesh is far off, and its refusals.
+// (9.26) written out, at L / a = 10 where the clamped mesh is far off, the mode-1 tangential punch against the mesh
+// clamped at 1e16 a and Mindlin's K_T, and its refusals.
 #include <fem/axisymmetric_solver.h>
+#include <fem/fourier_mode1_solver.h>
 #include <fem/modulus.h>
 
 #include "written_out.h"
@@ -46,7 +48,8 @@ TEST_CASE("The condensed far field is the mesh clamped at L g^N for N to infinit
   // All meshes have the same rings R1 g^j, g = 1.3: the condensed one 3 of them, the clamped ones 3 + 92 and
   // 3 + 132 (L / a = 4 1.3^135 = 1.0e16), whose truncation error C (a / L)^{1+k} is removed by extrapolation
   // in L with the exponent 1 + k (the next term, (a / L)^{3+k}, is below 1e-20).
-  const double k = GENERATE(-0.5, 0.0, 0.5);
+  const double       k      = GENERATE(-0.5, 0.0, 0.5);
+  const unsigned int degree = GENERATE(1u, 2u); // degree 1: rings without interior DoFs
   Material     mat{std::make_shared<PowerLawModulus>(E0, c0, k), nu};
   MeshParameters mesh = recommended_mesh_parameters(a, k);
   mesh.ring_growth    = 1.3;
@@ -57,13 +60,14 @@ TEST_CASE("The condensed far field is the mesh clamped at L g^N for N to infinit
     return m;
   };
   DiscretizationParameters clamped;
-  clamped.degree  = 2;
+  clamped.degree  = degree;
   const Result r1 = AxisymmetricSolver(mat, at_rings(95), clamped).run(flat_punch());
   const Result r2 = AxisymmetricSolver(mat, at_rings(135), clamped).run(flat_punch());
-  const Result rn = AxisymmetricSolver(mat, at_rings(3), condensed(2)).run(flat_punch());
+  const Result rn = AxisymmetricSolver(mat, at_rings(3), condensed(degree)).run(flat_punch());
   const double ratio          = std::pow(r2.mesh.ring_growth, 40 * (1 + k)); // (L2 / L1)^{1+k}
   const double F_extrapolated = r2.force + (r2.force - r1.force) / (ratio - 1);
-  CAPTURE(k, r2.n_dofs, rn.n_dofs, rn.force / r2.force - 1, rn.force / F_extrapolated - 1, rn.far_field_self_similarity,
+  CAPTURE(k, degree, r2.n_dofs, rn.n_dofs, rn.force / r2.force - 1, rn.force / F_extrapolated - 1,
+          rn.far_field_self_similarity,
           rn.far_field_doublings);
   REQUIRE(r2.mesh.n_rings == 135);
   REQUIRE(rn.mesh.n_rings == 3);
@@ -122,6 +126,34 @@ TEST_CASE("With the condensed far field depth control of the paraboloid reaches 
   REQUIRE(r.reliable);
   REQUIRE_THAT(r.force, WithinRel(F_ref, 1e-5));
   REQUIRE_THAT(r.contact_radius, WithinRel(a_ref, 1e-5));
+}
+
+TEST_CASE("The mode-1 solver with the condensed far field gives the tangential punch of the mesh clamped at 1e16 a",
+          "[fem]")
+{
+  // k = 0: the clamped mesh's truncation error (a / L) is 1e-16 at L / a = 4 1.3^135; Mindlin (1949):
+  // K_T = 8 G a / (2 - nu).
+  Material     mat{std::make_shared<PowerLawModulus>(E0, c0, 0.0), nu};
+  MeshParameters mesh = recommended_mesh_parameters(a, 0.0, 1e-6);
+  mesh.ring_growth    = 1.3;
+  const auto at_rings = [&](const unsigned int n) {
+    MeshParameters m = mesh;
+    m.far_field_size = m.near_field_size * std::pow(m.ring_growth, n) * (1 - 1e-12);
+    return m;
+  };
+  DiscretizationParameters clamped;
+  const double             delta = 1e-3 * a;
+  const TangentialResult   rf    = FourierMode1Solver(mat, at_rings(135), clamped).run(TangentialLoad::flat_punch(delta));
+  const TangentialResult   rn =
+    FourierMode1Solver(mat, at_rings(3), condensed()).run(TangentialLoad::flat_punch(delta));
+  const double G = E0 / (2 * (1 + nu)), K_T = 8 * G * a / (2 - nu);
+  CAPTURE(rf.n_dofs, rn.n_dofs, rn.force / rf.force - 1, rn.stiffness / K_T - 1, rn.far_field_self_similarity);
+  REQUIRE(rn.reliable);
+  REQUIRE(rn.far_field_self_similarity < 1e-12);
+  REQUIRE_THAT(rn.force, WithinRel(rf.force, 1e-10));
+  REQUIRE_THAT(rn.stiffness, WithinRel(K_T, 2e-6));
+  REQUIRE_THROWS_WITH(FourierMode1Solver(mat, dealii::Triangulation<2>(), condensed()),
+                      Contains("far_field = condensed") && Contains("given triangulation"));
 }
 
 TEST_CASE("The condensed far field refuses too few rings, a modulus that is no power law there and the mixed "
