@@ -390,4 +390,86 @@ namespace gradcontact::fem
     result.time.solve = elapsed_max(start) - result.time.factorize;
     return result;
   }
+  DistributedResult solve_controlled(MPI_Comm communicator, const Material &material, const LoadCase &load,
+                                     const SettingsAtRadius &settings, const double a0, const double tolerance,
+                                     const unsigned int max_trials, const DistributedSolverParameters &solver)
+  {
+    const char *where = "solve_controlled";
+    load.validate();
+    const bool by_depth = load.type == LoadType::indenter_depth;
+    if (!by_depth && load.type != LoadType::indenter_force)
+      throw std::invalid_argument(std::string(where) + ": LoadCase::type = " + std::to_string(static_cast<int>(load.type)) +
+                                  " is not indenter_depth or indenter_force");
+    if (!(a0 > 0) || !std::isfinite(a0))
+      fail(where, "a0 (first contact radius)", a0, "(0, inf)");
+    if (!(tolerance >= 1e-14 && tolerance < 1))
+      fail(where, "tolerance", tolerance, "[1e-14, 1)");
+    if (max_trials < 3 || max_trials > 100)
+      fail(where, "max_trials", max_trials, "[3, 100]");
+    if (!settings)
+      throw std::invalid_argument(std::string(where) + ": the settings function is empty");
+    const double target = by_depth ? load.depth : load.force;
+
+    LoadCase radius_controlled = load;
+    radius_controlled.type     = LoadType::indenter;
+    // log(value(a) / target) of a radius-controlled state at a (every process solves the same state).
+    DistributedResult last;
+    const auto        trial = [&](const double a) {
+      Settings st            = settings(a);
+      st.mesh.contact_radius = a;
+      DistributedSolver s(communicator, material, st.mesh, st.discretization, solver);
+      const unsigned int trials = last.control_trials;
+      last                      = s.run(radius_controlled);
+      last.control_trials       = trials + 1;
+      const double value        = by_depth ? last.depth : last.force;
+      if (!(value > 0) || !last.reliable)
+        {
+          std::ostringstream msg;
+          msg << where << ": the radius-controlled state at a = " << a << " has " << (by_depth ? "depth " : "force ")
+              << value << (last.reliable ? "" : " and is unreliable: " + last.message);
+          throw std::runtime_error(msg.str());
+        }
+      return std::log(value / target);
+    };
+    double x0 = std::log(a0), y0 = trial(a0);
+    if (std::abs(y0) <= tolerance)
+      return last;
+    double x1 = x0 + std::log(1.05), y1 = trial(std::exp(x1));
+    while (std::abs(y1) > tolerance)
+      {
+        if (std::abs(x1 - x0) <= 1e-9)
+          {
+            // a no longer moves: the value's round-off (an ill-conditioned system) is above the tolerance.
+            std::ostringstream msg;
+            msg << " " << where << ": stopped at the round-off of " << (by_depth ? "d(a)" : "F(a)") << ", relative "
+                << std::expm1(y1) << " off the target (tolerance " << tolerance << ", " << last.control_trials
+                << " trials);";
+            last.message += msg.str();
+            return last;
+          }
+        if (!(y1 > y0))
+          {
+            std::ostringstream msg;
+            msg << where << ": " << (by_depth ? "d(a)" : "F(a)") << " does not grow with a between a = " << std::exp(x0)
+                << " and " << std::exp(x1) << " (" << last.control_trials << " trials)";
+            throw std::runtime_error(msg.str());
+          }
+        if (last.control_trials >= max_trials)
+          {
+            std::ostringstream msg;
+            msg.precision(10);
+            msg << where << ": no contact radius after " << last.control_trials << " radius-controlled states: the last, a = "
+                << std::exp(x1) << ", has " << (by_depth ? "d = " : "F = ") << target * std::exp(y1) << " for "
+                << target << " (relative " << std::expm1(y1) << ", tolerance " << tolerance << ")";
+            throw std::runtime_error(msg.str());
+          }
+        const double step = std::clamp(-y1 * (x1 - x0) / (y1 - y0), -std::log(2.0), std::log(2.0));
+        x0                = x1;
+        y0                = y1;
+        x1                = x1 + step;
+        y1                = trial(std::exp(x1));
+      }
+    return last;
+  }
+
 } // namespace gradcontact::fem

@@ -4,10 +4,12 @@
 //   mpirun -np 2 fem_mpi load=punch k=0 p=3 h_edge=1e-5 h_far=3 g=1.15 L=1e8 layer=1 R1=4 global=0
 //                        solver=direct|amg tol=1e-12 compare=1 compare_tol=1e-10
 // load = punch | pressure | paraboloid | cone (the indenters under contact-radius control); the punch prints
-// F_error against (9.16). Mesh keys default to recommended_mesh_parameters(a, k) except layer (the
-// z-only surface halvings, which p4est cannot do: default 1, none). compare=1: process 0 also runs the
-// serial AxisymmetricSolver (UMFPACK) and the program fails (exit 1) unless force and depth agree within
-// compare_tol relative. Prints one line of key=value pairs (process 0).
+// F_error against (9.16). control=depth|force with load=paraboloid: depth or force control (solve_controlled) to
+// the state of contact radius 1.1 a of (9.26), printing trials, a_error and F_error; expect_tol=t fails the run
+// when the punch's F_error (or a_error and F_error under control) exceeds t. Mesh keys default to
+// recommended_mesh_parameters(a, k) except layer (the z-only surface halvings, which p4est cannot do: default 1,
+// none). compare=1: process 0 also runs the serial AxisymmetricSolver (UMFPACK) and the program fails (exit 1)
+// unless force and depth agree within compare_tol relative. Prints one line of key=value pairs (process 0).
 #include <fem/axisymmetric_solver.h>
 #include <fem/distributed_solver.h>
 #include <fem/modulus.h>
@@ -72,9 +74,32 @@ int main(int argc, char **argv)
         throw std::invalid_argument("fem_mpi: load = " + load_name + " outside {punch, pressure, paraboloid, cone}");
       const Material material{std::make_shared<PowerLawModulus>(E0, c0, k), nu};
 
+      // control=depth|force (paraboloid): the target of the contact radius a_true = 1.1 a by (9.26), the radius
+      // found by solve_controlled (meshes graded at each trial radius).
+      const std::string control = args.text("control", "radius");
+      const double      R = 50 * a, a_true = 1.1 * a;
+      const double F_true = 4 * testing::h_N(k, nu) * E0 * std::pow(a_true, k + 3) /
+                            ((1 - nu * nu) * std::pow(c0, k) * (1 + k) * (1 + k) * (k + 3) * R); // (9.26)
+      if (control != "radius")
+        {
+          if (load_name != "paraboloid" || (control != "depth" && control != "force"))
+            throw std::invalid_argument("fem_mpi: control = " + control + " needs load=paraboloid and depth|force");
+          load.type  = control == "depth" ? LoadType::indenter_depth : LoadType::indenter_force;
+          load.depth = a_true * a_true / ((1 + k) * R); // (9.26)
+          load.force = F_true;
+        }
+
       const auto        start = std::chrono::steady_clock::now();
-      DistributedSolver solver(world, material, mesh, disc, parameters);
-      const DistributedResult r = solver.run(load);
+      const DistributedResult r =
+        control == "radius" ?
+          DistributedSolver(world, material, mesh, disc, parameters).run(load) :
+          solve_controlled(world, material, load,
+                           [&](const double radius) {
+                             Settings st{mesh, disc};
+                             st.mesh.contact_radius = radius;
+                             return st;
+                           },
+                           a, num("control_tol", 1e-10), 20, parameters);
       const double total = dealii::Utilities::MPI::max(
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), world);
       // Peak resident memory (VmHWM) of the largest process and of all processes together [MB].
@@ -85,7 +110,12 @@ int main(int argc, char **argv)
       const double peak_sum = dealii::Utilities::MPI::sum(peak_mb, world);
       // The flat punch against (9.16), h_N written out (tests/fem/written_out.h); NaN for the other loads.
       const double F_punch = testing::flat_punch_force(k, nu, E0, c0, a, load.depth);
-      const double F_error = load_name == "punch" ? r.force / F_punch - 1 : std::nan("");
+      const double F_error = load_name == "punch" ? r.force / F_punch - 1 :
+                             control != "radius"  ? r.force / F_true - 1 :
+                                                    std::nan("");
+      const double a_error = control != "radius" ? r.contact_radius / a_true - 1 : std::nan("");
+      if (root && control != "radius")
+        std::printf("control=%s trials=%u a_error=%.3e ", control.c_str(), r.control_trials, a_error);
       if (root)
         std::printf("load=%s k=%g p=%u np=%u solver=%s dofs=%llu cells=%u force=%.16e F_error=%.3e depth=%.16e "
                     "iterations=%u residual=%.1e mismatch=%.1e mesh=%.2f setup=%.2f assemble=%.2f "
@@ -96,6 +126,17 @@ int main(int argc, char **argv)
                     r.time.factorize, r.time.solve, total, peak_max, peak_sum, r.message.c_str());
 
       int failed = r.reliable && r.consistent_contact ? 0 : 1;
+      if (args.has("expect_tol"))
+        {
+          // The written-out closed form within expect_tol (the punch's F, or a and F under depth/force control).
+          const double tol = num("expect_tol", 0);
+          if (!(std::abs(F_error) <= tol) || (control != "radius" && !(std::abs(a_error) <= tol)))
+            {
+              if (root)
+                std::printf("FAILED: F_error %.3e or a_error %.3e above expect_tol %.1e\n", F_error, a_error, tol);
+              failed = 1;
+            }
+        }
       if (args.has("compare") && num("compare", 0) != 0)
         {
           // The serial reference on process 0 (the others wait): same mesh, same operator, UMFPACK.
