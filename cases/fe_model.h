@@ -59,7 +59,7 @@ namespace gradcontact::cases
   FeModel fe_model(const Scene &scene, unsigned int refinement);
 
   /// Discretization/far field condition = auto: the condensed far field of fem::use_condensed_far_field for the
-  /// axisymmetric solver's runs (L / a = Discretization/far field if given, else 100 or 1.5 times the largest
+  /// runs of the axisymmetric and mode-1 solvers (L / a = Discretization/far field if given, else 100 or 1.5 times the largest
   /// Outputs/displacement radii); returns whether it applied.
   bool condense_far_field(const Scene &scene, const fem::Material &material, fem::Settings &settings);
 

@@ -114,7 +114,8 @@ namespace gradcontact::cases
     material.nu = nu;
     fem::Settings settings = fem::recommended_settings(1.0, *material.modulus, tolerance);
     settings.discretization.formulation = fem::Formulation::automatic;
-    fem::use_condensed_far_field(settings, material); // no truncation error, L / a = 100
+    // No truncation error; L / a = 1e4 keeps the displacement requests up to r = 1e4 a (rings are cheap).
+    fem::use_condensed_far_field(settings, material, 1e4);
     state->far_field = settings.mesh.far_field_size;
     settings.mesh.global_refinements = 0;
     state->coarse = std::make_unique<fem::AxisymmetricSolver>(material, settings.mesh, settings.discretization);

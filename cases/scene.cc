@@ -248,8 +248,9 @@ namespace gradcontact::cases
                       "displacement formulation (no thin cells; flat punch k = 0.5 2.3e-6 with a third of the DoFs); "
                       "off, and the mixed formulation: z-halvings to 1e-10 a.");
     prm.declare_entry("far field condition", "auto", Patterns::Selection("auto|clamped"),
-                      "auto: for a power-law modulus in the rigid frictionless normal scenes of the displacement "
-                      "formulation without the surface map, the half-space beyond L is condensed onto max(r, z) = L "
+                      "auto: for a power-law modulus in the scenes of the axisymmetric and mode-1 solvers (normal, "
+                      "candidate, JKR, Dugdale, tangential) with the displacement formulation and without the surface "
+                      "map, the half-space beyond L is condensed onto max(r, z) = L "
                       "(fem/far_field.h: no truncation error; L / a = far field, else 100 or 1.5 times the largest "
                       "displacement radius); clamped: u = 0 at L.");
     prm.leave_subsection();

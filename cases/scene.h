@@ -133,7 +133,7 @@ namespace gradcontact::cases
     /// normal scenes (fem::use_surface_map); off: the halvings everywhere.
     bool surface_map = true;
     /// The exterior of max(r, z) = L condensed onto it (fem::use_condensed_far_field) where it applies, in the
-    /// scenes of fem::AxisymmetricSolver; off: u = 0 at L.
+    /// scenes of fem::AxisymmetricSolver and fem::FourierMode1Solver; off: u = 0 at L.
     bool condensed_far_field = true;
     static void declare(dealii::ParameterHandler &prm);
     void parse(dealii::ParameterHandler &prm);

@@ -97,7 +97,7 @@ namespace gradcontact::fem
   class AdhesiveContact
   {
   public:
-    using SettingsFunction = std::function<Settings(double contact_radius)>;
+    using SettingsFunction = SettingsAtRadius;
 
     /// `profile`: the indenter; std::nullopt for the flat punch. `settings(a)` gives the mesh and the
     /// discretisation of the model of contact radius a.

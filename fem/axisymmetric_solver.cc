@@ -149,11 +149,7 @@ namespace gradcontact::fem
     const auto start = std::chrono::steady_clock::now();
     CellStiffness cell_stiffness(material, fe, mapping, discretization, mesh_parameters.contact_radius,
                                 mesh_parameters.h_edge);
-    if (far_field_rings)
-      exterior = far_field_rings->condense(
-        [&](const DoFHandler<2>::active_cell_iterator &cell) -> const FullMatrix<double> & {
-          return cell_stiffness.matrix(cell);
-        });
+    exterior = condense_exterior(far_field_rings.get(), cell_stiffness);
     // P: the contact z-DoFs of every rigid-contact load
     system.assemble(dof_handler, cell_stiffness, contact_dofs, far_field_rings ? &exterior : nullptr);
     setup_time.assemble = seconds_since(start);
@@ -432,9 +428,7 @@ namespace gradcontact::fem
     load.validate();
     Result result;
     result.start(setup_time, dof_handler.n_dofs(), triangulation.n_active_cells(), mesh_info);
-    result.far_field_ring_scale      = exterior.ring_scale;
-    result.far_field_self_similarity = exterior.self_similarity;
-    result.far_field_doublings       = exterior.doublings;
+    record_far_field(exterior, result);
     result.formulation      = used_formulation;
     result.contact_radius   = mesh_parameters.contact_radius;
     result.edge_node_radius = mesh_parameters.contact_radius;

@@ -133,9 +133,10 @@ namespace gradcontact::fem
     if (!material.modulus || !power_law_of_depth(*material.modulus) || settings.discretization.surface_map.enabled ||
         resolve_formulation(settings.discretization, material.nu) != Formulation::displacement)
       return false;
-    if (!(far_field_size >= settings.mesh.near_field_size * 1.1 && far_field_size <= 1e16))
+    const double two_rings = settings.mesh.near_field_size * settings.mesh.ring_growth * (1 + 1e-9);
+    if (!(far_field_size > two_rings && far_field_size <= 1e16))
       fail("use_condensed_far_field", "far_field_size", far_field_size,
-           "[1.1 near_field_size, 1e16] (L / a, two rings at least)");
+           "(" + std::to_string(two_rings) + ", 1e16] (L / a > near_field_size ring_growth: two rings at least)");
     settings.discretization.far_field = FarField::condensed;
     settings.mesh.far_field_size      = far_field_size;
     return true;

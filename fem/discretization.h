@@ -14,6 +14,7 @@
 #include <deal.II/base/types.h>
 
 #include <chrono>
+#include <functional>
 #include <string>
 
 namespace gradcontact::fem
@@ -100,6 +101,10 @@ namespace gradcontact::fem
   bool use_surface_map(Settings &settings, const ModulusField &modulus);
   /// Whether use_surface_map would switch a setting for `modulus`.
   bool surface_map_applies(const ModulusField &modulus);
+
+  /// The mesh and discretisation at contact radius a (physical units): the searches over a (adhesion,
+  /// cohesive zones, distributed depth/force control) solve on a mesh graded at each trial radius.
+  using SettingsAtRadius = std::function<Settings(double contact_radius)>;
 
   /// L / a that use_condensed_far_field gives the mesh: the near field and rings out to where the
   /// surface displacement is sampled (w(r) is known for r <= L only).

@@ -434,7 +434,8 @@ namespace gradcontact::fem
     double x0 = std::log(a0), y0 = trial(a0);
     if (std::abs(y0) <= tolerance)
       return last;
-    double x1 = x0 + std::log(1.05), y1 = trial(std::exp(x1));
+    // First step toward the target: d and F grow with a.
+    double x1 = x0 + (y0 < 0 ? 1 : -1) * std::log(1.05), y1 = trial(std::exp(x1));
     while (std::abs(y1) > tolerance)
       {
         if (std::abs(x1 - x0) <= 1e-9)
@@ -447,7 +448,7 @@ namespace gradcontact::fem
             last.message += msg.str();
             return last;
           }
-        if (!(y1 > y0))
+        if (!((y1 - y0) * (x1 - x0) > 0))
           {
             std::ostringstream msg;
             msg << where << ": " << (by_depth ? "d(a)" : "F(a)") << " does not grow with a between a = " << std::exp(x0)

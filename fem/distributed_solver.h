@@ -128,16 +128,13 @@ namespace gradcontact::fem
     DistributedLinearSolver<2> punch_solver, free_solver;
     Timings      setup_time;
   };
-  /// The mesh and discretisation at contact radius a (physical units), for solve_controlled.
-  using SettingsAtRadius = std::function<Settings(double contact_radius)>;
-
   /// Depth or force control of a rigid indenter on the distributed solver (`load.type` indenter_depth or
   /// indenter_force, collective). p4est cannot take the serial solver's search over contact sets of one mesh
   /// (fem/axisymmetric_solver.h), so the contact radius a is searched over radius-controlled states, each on
   /// its own mesh graded at a (`settings(a)`, a new DistributedSolver): the secant method on (log a,
-  /// log(value(a) / target)), value = d(a) or F(a), from a0 and 1.05 a0, steps limited to a factor 2. On a
-  /// power-law modulus the problem is scale free (every mesh a scaled copy), d and F are powers of a and the
-  /// third state is the answer. Stops when |value / target - 1| <= tolerance, or when a moves by less than 1e-9
+  /// log(value(a) / target)), value = d(a) or F(a), from a0 and a0 times or over 1.05 (toward the target), steps
+  /// limited to a factor 2. On a power-law modulus the problem is scale free (every mesh a scaled copy), d and F
+  /// are powers of a and the third state is the answer. Stops when |value / target - 1| <= tolerance, or when a moves by less than 1e-9
   /// relative (the value's round-off is above the tolerance: said in `message`); throws std::runtime_error with
   /// the trials, the last a and value after `max_trials`, or when value(a) does not grow with a. The result is
   /// the last state, with control_trials set.

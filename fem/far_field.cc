@@ -48,8 +48,8 @@ namespace gradcontact::fem
       {
         std::ostringstream msg;
         msg << "FarFieldRings: MeshParameters::far_field_size = " << mesh.far_field_size << " gives " << info.n_rings
-            << " far-field rings; the condensed far field needs at least 2 (L / a >= near_field_size ring_growth^2 = "
-            << mesh.near_field_size * mesh.ring_growth * mesh.ring_growth << ")";
+            << " far-field rings; the condensed far field needs at least 2 (L / a > near_field_size ring_growth = "
+            << mesh.near_field_size * mesh.ring_growth << ")";
         throw std::invalid_argument(msg.str());
       }
     const double L = mesh.far_field_size * mesh.contact_radius, g = info.ring_growth;
@@ -264,14 +264,22 @@ namespace gradcontact::fem
         if (exterior.doublings == 64)
           throw std::runtime_error("FarFieldRings::condense: the chain of 2^64 rings still has a truncation factor " +
                                    std::to_string(1 / scale));
-        Dense M(C), Bt(n, n);
+        Dense M(C), R(n, 2 * n);
         M.add(scale, A);
         for (unsigned int r = 0; r < n; ++r)
           for (unsigned int c = 0; c < n; ++c)
-            Bt(r, c) = B(c, r);
-        const Dense P = solve(M, Bt); // M^{-1} B^T
-        const Dense Q = solve(M, B);  // M^{-1} B
-        Dense       BP(n, n), BQ(n, n), BtQ(n, n);
+            {
+              R(r, c)     = B(c, r); // B^T
+              R(r, n + c) = B(r, c);
+            }
+        const Dense X = solve(M, R); // [M^{-1} B^T | M^{-1} B], one factorisation
+        Dense       P(n, n), Q(n, n), BP(n, n), BQ(n, n), BtQ(n, n);
+        for (unsigned int r = 0; r < n; ++r)
+          for (unsigned int c = 0; c < n; ++c)
+            {
+              P(r, c) = X(r, c);
+              Q(r, c) = X(r, n + c);
+            }
         B.mmult(BP, P);
         B.mmult(BQ, Q);
         B.Tmmult(BtQ, Q);
@@ -291,5 +299,14 @@ namespace gradcontact::fem
       for (unsigned int c = 0; c < n; ++c)
         exterior.stiffness(r, c) = 0.5 * (A(r, c) + A(c, r));
     return exterior;
+  }
+
+
+
+  void record_far_field(const Exterior &exterior, RunReport &report)
+  {
+    report.far_field_ring_scale      = exterior.ring_scale;
+    report.far_field_self_similarity = exterior.self_similarity;
+    report.far_field_doublings       = exterior.doublings;
   }
 } // namespace gradcontact::fem

@@ -16,15 +16,16 @@
 //
 // Nothing is assumed of the modulus or the mesh: the mesh's last two rings are both condensed, the scale is
 // the least-squares fit of the outer one onto the inner one, and their relative deviation is measured and
-// bounded. A modulus that is no power law of depth at the rings' size (a finite surface modulus, a coating),
-// the mixed formulation (its pressure DoFs scale otherwise) and a surface map that is not yet homogeneous
-// at L are refused with the deviation found.
+// bounded: a modulus that is no power law of depth at the rings' size (a finite surface modulus, a coating)
+// and a surface map that is not yet homogeneous at L are refused with the deviation found; the solvers refuse
+// the mixed formulation up front (its pressure DoFs scale otherwise).
 //
 // The infinite discrete problem has no truncation error left: the flat punch at k = -0.5 gives the force
 // of the mesh clamped at L / a = 1e16 (fem/README.md "Far field").
 #ifndef GRADCONTACT_FEM_FAR_FIELD_H
 #define GRADCONTACT_FEM_FAR_FIELD_H
 
+#include <fem/discretization.h>
 #include <fem/mesh.h>
 
 #include <deal.II/base/types.h>
@@ -92,6 +93,22 @@ namespace gradcontact::fem
     /// DoF of the polyline scaled.
     std::array<std::vector<dealii::types::global_dof_index>, 2> inner_port, outer_port;
   };
+
+  /// `rings->condense` over the cell matrices of `cell_integrand` (any class with matrix(cell), e.g. CellStiffness);
+  /// an empty Exterior when `rings` is null (the far field clamped).
+  template <class CellIntegrand>
+  Exterior condense_exterior(const FarFieldRings *rings, CellIntegrand &cell_integrand)
+  {
+    if (!rings)
+      return Exterior();
+    return rings->condense(
+      [&](const typename dealii::DoFHandler<2>::active_cell_iterator &cell) -> const dealii::FullMatrix<double> & {
+        return cell_integrand.matrix(cell);
+      });
+  }
+
+  /// Copies the exterior's ring scale, self-similarity and doublings into a run's report.
+  void record_far_field(const Exterior &exterior, RunReport &report);
 } // namespace gradcontact::fem
 
 #endif

@@ -274,11 +274,7 @@ namespace gradcontact::fem
   {
     const auto                           start = std::chrono::steady_clock::now();
     Mode1CellStiffness cell_stiffness(material, fe, mapping, discretization, a, edge_cell());
-    if (far_field_rings)
-      exterior = far_field_rings->condense(
-        [&](const DoFHandler<2>::active_cell_iterator &cell) -> const FullMatrix<double> & {
-          return cell_stiffness.matrix(cell);
-        });
+    exterior = condense_exterior(far_field_rings.get(), cell_stiffness);
     // P: U, V on r <= a of the tangential flat punch
     system.assemble(dof_handler, cell_stiffness, punch_dofs, far_field_rings ? &exterior : nullptr);
     setup_time.assemble = seconds_since(start);
@@ -408,9 +404,7 @@ namespace gradcontact::fem
     load.validate();
     TangentialResult result;
     result.start(setup_time, dof_handler.n_dofs(), triangulation.n_active_cells(), mesh_info);
-    result.far_field_ring_scale      = exterior.ring_scale;
-    result.far_field_self_similarity = exterior.self_similarity;
-    result.far_field_doublings       = exterior.doublings;
+    record_far_field(exterior, result);
 
     const auto     start = std::chrono::steady_clock::now();
     Vector<double> u;

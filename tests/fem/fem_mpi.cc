@@ -1,15 +1,16 @@
-// fem_mpi: one flat-punch or constant-pressure run of the distributed solver (p4est + Trilinos,
-// fem/distributed_solver.h), optionally checked against the serial solver on the same mesh.
+// fem_mpi: one run of the distributed solver (p4est + Trilinos, fem/distributed_solver.h), optionally checked
+// against the serial solver on the same mesh.
 //
 //   mpirun -np 2 fem_mpi load=punch k=0 p=3 h_edge=1e-5 h_far=3 g=1.15 L=1e8 layer=1 R1=4 global=0
 //                        solver=direct|amg tol=1e-12 compare=1 compare_tol=1e-10
 // load = punch | pressure | paraboloid | cone (the indenters under contact-radius control); the punch prints
 // F_error against (9.16). control=depth|force with load=paraboloid: depth or force control (solve_controlled) to
-// the state of contact radius 1.1 a of (9.26), printing trials, a_error and F_error; expect_tol=t fails the run
-// when the punch's F_error (or a_error and F_error under control) exceeds t. Mesh keys default to
-// recommended_mesh_parameters(a, k) except layer (the z-only surface halvings, which p4est cannot do: default 1,
-// none). compare=1: process 0 also runs the serial AxisymmetricSolver (UMFPACK) and the program fails (exit 1)
-// unless force and depth agree within compare_tol relative. Prints one line of key=value pairs (process 0).
+// the state of contact radius 1.1 a of (9.26), from a first trial radius start a (start=1), printing trials,
+// a_error and F_error. expect_tol=t fails the run when the punch's F_error (or a_error and F_error under control)
+// exceeds t. Mesh keys default to recommended_mesh_parameters(a, k) except layer (the z-only surface halvings,
+// which p4est cannot do: default 1, none). compare=1 (radius control): process 0 also runs the serial
+// AxisymmetricSolver (UMFPACK) and the program fails (exit 1) unless force and depth agree within compare_tol
+// relative. Prints one line of key=value pairs (process 0).
 #include <fem/axisymmetric_solver.h>
 #include <fem/distributed_solver.h>
 #include <fem/modulus.h>
@@ -78,12 +79,14 @@ int main(int argc, char **argv)
       // found by solve_controlled (meshes graded at each trial radius).
       const std::string control = args.text("control", "radius");
       const double      R = 50 * a, a_true = 1.1 * a;
-      const double F_true = 4 * testing::h_N(k, nu) * E0 * std::pow(a_true, k + 3) /
-                            ((1 - nu * nu) * std::pow(c0, k) * (1 + k) * (1 + k) * (k + 3) * R); // (9.26)
+      const double F_true = testing::paraboloid_force(k, nu, E0, c0, a_true, R); // (9.26)
       if (control != "radius")
         {
           if (load_name != "paraboloid" || (control != "depth" && control != "force"))
             throw std::invalid_argument("fem_mpi: control = " + control + " needs load=paraboloid and depth|force");
+          if (args.has("compare"))
+            throw std::invalid_argument("fem_mpi: compare is for radius control (the serial solver's search has its own "
+                                        "mesh), not with control = " + control);
           load.type  = control == "depth" ? LoadType::indenter_depth : LoadType::indenter_force;
           load.depth = a_true * a_true / ((1 + k) * R); // (9.26)
           load.force = F_true;
@@ -99,7 +102,7 @@ int main(int argc, char **argv)
                              st.mesh.contact_radius = radius;
                              return st;
                            },
-                           a, num("control_tol", 1e-10), 20, parameters);
+                           num("start", 1.0) * a, num("control_tol", 1e-10), 20, parameters);
       const double total = dealii::Utilities::MPI::max(
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), world);
       // Peak resident memory (VmHWM) of the largest process and of all processes together [MB].
@@ -128,6 +131,9 @@ int main(int argc, char **argv)
       int failed = r.reliable && r.consistent_contact ? 0 : 1;
       if (args.has("expect_tol"))
         {
+          if (load_name != "punch" && control == "radius")
+            throw std::invalid_argument("fem_mpi: expect_tol needs load=punch or control=depth|force (load = " +
+                                        load_name + ")");
           // The written-out closed form within expect_tol (the punch's F, or a and F under depth/force control).
           const double tol = num("expect_tol", 0);
           if (!(std::abs(F_error) <= tol) || (control != "radius" && !(std::abs(a_error) <= tol)))

@@ -201,8 +201,7 @@ TEST_CASE("The solver shall reproduce the flat-punch force (9.16) and the parabo
   // radius at the FE depth (the required bounds 1e-5 and 1e-4), and the depth at the given radius.
   const double d_ref   = a * a / ((1 + k) * R);
   auto         force_at_radius = [&](const double r) {
-    return 4 * h_N(k, nu) * E0 * std::pow(r, k + 3) /
-           ((1 - nu * nu) * std::pow(c0, k) * (1 + k) * (1 + k) * (k + 3) * R);
+    return gradcontact::fem::testing::paraboloid_force(k, nu, E0, c0, r, R);
   };
   const double a_at_depth = std::sqrt((1 + k) * R * hertz.depth);
   const double F_at_depth = force_at_radius(a_at_depth);

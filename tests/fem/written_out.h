@@ -24,6 +24,13 @@ namespace gradcontact::fem::testing
   {
     return 2 * h_N(k, v) * E0 * d * std::pow(a, 1 + k) / ((1 - v * v) * (1 + k) * std::pow(c0, k));
   }
+
+  /// The paraboloid's force at contact radius a (9.26): F = 4 h_N E0 a^{k+3} / ((1 - nu^2) c0^k (1 + k)^2 (k + 3) R).
+  inline double paraboloid_force(const double k, const double v, const double E0, const double c0, const double a,
+                                 const double R)
+  {
+    return 4 * h_N(k, v) * E0 * std::pow(a, k + 3) / ((1 - v * v) * std::pow(c0, k) * (1 + k) * (1 + k) * (k + 3) * R);
+  }
 } // namespace gradcontact::fem::testing
 
 #endif
