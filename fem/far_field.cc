@@ -1,3 +1,4 @@
+#include <fem/boundary_ids.h>
 #include <fem/far_field.h>
 
 #include <deal.II/dofs/dof_tools.h>
@@ -139,6 +140,22 @@ namespace gradcontact::fem
                                       " are no scaled copy of those on max(r, z) = " + std::to_string(radius[0]) +
                                       " (the last rings of the mesh are not self-similar)");
       }
+    // The outer port found by geometry is the truncation boundary of the mesh (boundary id far_field).
+    std::set<types::global_dof_index> truncation;
+    std::vector<types::global_dof_index> face_dofs(fe.n_dofs_per_face());
+    for (const auto &cell : rings[1].cells)
+      for (const unsigned int f : cell->face_indices())
+        if (cell->face(f)->at_boundary() && cell->face(f)->boundary_id() == boundary_id::far_field)
+          {
+            cell->face(f)->get_dof_indices(face_dofs);
+            for (const auto d : face_dofs)
+              if (!constraints.is_constrained(d))
+                truncation.insert(d);
+          }
+    if (truncation != std::set<types::global_dof_index>(outer_port[1].begin(), outer_port[1].end()))
+      throw std::invalid_argument("FarFieldRings: the " + std::to_string(outer_port[1].size()) +
+                                  " DoFs on max(r, z) = L are not the " + std::to_string(truncation.size()) +
+                                  " free DoFs of the far_field boundary (not a mesh of fem/mesh.h)");
     if (rings[0].interior.size() != rings[1].interior.size())
       throw std::invalid_argument("FarFieldRings: the last two rings differ in their interior DoFs (" +
                                   std::to_string(rings[0].interior.size()) + " and " +
