@@ -80,17 +80,12 @@ namespace gradcontact::fem
 
     // Homogeneous constraints shared by every load: hanging nodes (z-only halvings, edge refinement),
     // u_r = 0 on the axis, u = 0 on the truncation boundary unless the far field is condensed onto it.
-    const bool condensed = discretization.far_field == FarField::condensed;
-    if (condensed && used_formulation == Formulation::mixed)
-      throw std::invalid_argument("AxisymmetricSolver: DiscretizationParameters::far_field = condensed needs the "
-                                  "displacement formulation (the pressure DoFs of the rings scale otherwise); "
-                                  "nu = " + std::to_string(material.nu));
+    const bool condensed = discretization.far_field == FarField::condensed; // mixed refused by checked_formulation
     constraints.clear();
     make_homogeneous_constraints(dof_handler, mapping, fe, constraints, !condensed);
-    if (condensed)
-      far_field_rings = std::make_unique<FarFieldRings>(dof_handler, mapping, constraints, mesh_parameters, mesh_info);
     system.reinit(dof_handler, constraints,
-                  condensed ? far_field_rings->boundary_dofs() : std::vector<types::global_dof_index>{});
+                  condensed ? std::make_unique<FarFieldRings>(dof_handler, mapping, constraints, mesh_parameters, mesh_info) :
+                              nullptr);
 
     dof_r = support_radii(mapping, dof_handler);
 
@@ -149,9 +144,8 @@ namespace gradcontact::fem
     const auto start = std::chrono::steady_clock::now();
     CellStiffness cell_stiffness(material, fe, mapping, discretization, mesh_parameters.contact_radius,
                                 mesh_parameters.h_edge);
-    exterior = condense_exterior(far_field_rings.get(), cell_stiffness);
     // P: the contact z-DoFs of every rigid-contact load
-    system.assemble(dof_handler, cell_stiffness, contact_dofs, far_field_rings ? &exterior : nullptr);
+    system.assemble(dof_handler, cell_stiffness, contact_dofs);
     setup_time.assemble = seconds_since(start);
   }
 
@@ -428,7 +422,7 @@ namespace gradcontact::fem
     load.validate();
     Result result;
     result.start(setup_time, dof_handler.n_dofs(), triangulation.n_active_cells(), mesh_info);
-    record_far_field(exterior, result);
+    record_far_field(system.far_field_exterior(), result);
     result.formulation      = used_formulation;
     result.contact_radius   = mesh_parameters.contact_radius;
     result.edge_node_radius = mesh_parameters.contact_radius;

@@ -62,7 +62,6 @@
 
 #include <fem/direct_system.h>
 #include <fem/discretization.h>
-#include <fem/far_field.h>
 #include <fem/loads.h>
 #include <fem/mesh.h>
 #include <fem/modulus.h>
@@ -190,8 +189,6 @@ namespace gradcontact::fem
 
     dealii::AffineConstraints<double> constraints; ///< hanging nodes, axis, far field (homogeneous)
     DirectSystem                      system;      ///< A, and A with the contact z-DoFs eliminated
-    std::unique_ptr<FarFieldRings>    far_field_rings; ///< DiscretizationParameters::far_field condensed
-    Exterior                          exterior;        ///< its stiffness (empty when clamped)
 
     std::vector<dealii::types::global_dof_index> contact_dofs; ///< z-DoFs on r <= a, ascending r
     std::vector<double>                          contact_r;

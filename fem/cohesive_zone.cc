@@ -119,9 +119,9 @@ namespace gradcontact::fem
         s.mesh.h_far *= wanted / base;
         s.mesh.h_surface_outer = std::clamp(wanted / 20, s.mesh.h_surface, s.mesh.h_far);
         s.mesh.near_field_size = wanted;
-        // A condensed far field needs two rings beyond the near field (fem/far_field.h).
-        if (s.discretization.far_field == FarField::condensed)
-          s.mesh.far_field_size = std::max(s.mesh.far_field_size, 4 * wanted);
+        // The truncation boundary stays beyond the widened near field, two rings at least (a condensed far field,
+        // fem/far_field.h, needs them; a clamped one lies far beyond anyway).
+        s.mesh.far_field_size = std::max(s.mesh.far_field_size, 4 * wanted);
       }
     const double       reach = 0.9 * s.mesh.near_field_size * a; // the zone must end inside the near field
     SurfaceRefinement  refinement;

@@ -11,14 +11,17 @@ namespace gradcontact::fem
   using namespace dealii;
 
   void DirectSystem::reinit(const DoFHandler<2> &dof_handler, const AffineConstraints<double> &constraints_,
-                            const std::vector<types::global_dof_index> &coupled_dofs)
+                            std::unique_ptr<FarFieldRings> far_field_)
   {
     constraints = &constraints_;
+    far_field   = std::move(far_field_);
+    exterior    = Exterior();
     DynamicSparsityPattern dsp(dof_handler.n_dofs());
     DoFTools::make_sparsity_pattern(dof_handler, dsp, constraints_, false);
-    for (const auto i : coupled_dofs)
-      for (const auto j : coupled_dofs)
-        dsp.add(i, j);
+    if (far_field)
+      for (const auto i : far_field->boundary_dofs())
+        for (const auto j : far_field->boundary_dofs())
+          dsp.add(i, j);
     sparsity_pattern.copy_from(dsp);
     stiffness.reinit(sparsity_pattern);
     eliminated.clear();

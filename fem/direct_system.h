@@ -30,17 +30,18 @@ namespace gradcontact::fem
   class DirectSystem
   {
   public:
-    /// The sparsity of `dof_handler` under `constraints` (kept by reference: it must outlive this), with the
-    /// `coupled_dofs` coupled to each other (the truncation boundary of a condensed far field).
+    /// The sparsity of `dof_handler` under `constraints` (kept by reference: it must outlive this). With the rings
+    /// of a condensed far field (fem/far_field.h; kept), their truncation-boundary DoFs are coupled to each other
+    /// and assemble adds the exterior's stiffness.
     void reinit(const dealii::DoFHandler<2> &dof_handler, const dealii::AffineConstraints<double> &constraints,
-                const std::vector<dealii::types::global_dof_index> &coupled_dofs = {});
+                std::unique_ptr<FarFieldRings> far_field = nullptr);
 
     /// Assembles A from the cell matrices of `cell_integrand` (any class with matrix(cell), e.g.
-    /// CellStiffness) over all active cells, condensed with the constraints, plus the stiffness of a condensed
-    /// far field when given (its DoFs coupled by reinit), then fixes P = `prescribed_dofs`.
+    /// CellStiffness) over all active cells, condensed with the constraints, plus the stiffness of the condensed
+    /// far field given to reinit (from the same cell integrand), then fixes P = `prescribed_dofs`.
     template <class CellIntegrand>
     void assemble(const dealii::DoFHandler<2> &dof_handler, CellIntegrand &cell_integrand,
-                  const std::vector<dealii::types::global_dof_index> &prescribed_dofs, const Exterior *exterior = nullptr)
+                  const std::vector<dealii::types::global_dof_index> &prescribed_dofs)
     {
       std::vector<dealii::types::global_dof_index> local_dof_indices(dof_handler.get_fe().n_dofs_per_cell());
       for (const auto &cell : dof_handler.active_cell_iterators())
@@ -48,12 +49,15 @@ namespace gradcontact::fem
           cell->get_dof_indices(local_dof_indices);
           constraints->distribute_local_to_global(cell_integrand.matrix(cell), local_dof_indices, stiffness);
         }
-      if (exterior)
-        for (unsigned int i = 0; i < exterior->dofs.size(); ++i)
-          for (unsigned int j = 0; j < exterior->dofs.size(); ++j)
-            stiffness.add(exterior->dofs[i], exterior->dofs[j], exterior->stiffness(i, j));
+      exterior = condense_exterior(far_field.get(), cell_integrand);
+      for (unsigned int i = 0; i < exterior.dofs.size(); ++i)
+        for (unsigned int j = 0; j < exterior.dofs.size(); ++j)
+          stiffness.add(exterior.dofs[i], exterior.dofs[j], exterior.stiffness(i, j));
       set_prescribed_dofs(prescribed_dofs);
     }
+
+    /// The condensed far field's stiffness and diagnostics (empty when the far field is clamped).
+    const Exterior &far_field_exterior() const { return exterior; }
 
     /// A, to be assembled (condensed with the constraints) before set_prescribed_dofs.
     dealii::SparseMatrix<double>       &matrix() { return stiffness; }
@@ -81,6 +85,8 @@ namespace gradcontact::fem
     dealii::SparseMatrix<double>                 stiffness, eliminated;
     std::unique_ptr<dealii::SparseDirectUMFPACK> free_solver, prescribed_solver;
     std::vector<dealii::types::global_dof_index> prescribed;
+    std::unique_ptr<FarFieldRings>               far_field;
+    Exterior                                     exterior;
   };
 } // namespace gradcontact::fem
 

@@ -225,10 +225,9 @@ namespace gradcontact::fem
     }
     constraints.close();
 
-    if (condensed)
-      far_field_rings = std::make_unique<FarFieldRings>(dof_handler, mapping, constraints, *mesh, mesh_info);
     system.reinit(dof_handler, constraints,
-                  condensed ? far_field_rings->boundary_dofs() : std::vector<types::global_dof_index>{});
+                  condensed ? std::make_unique<FarFieldRings>(dof_handler, mapping, constraints, *mesh, mesh_info) :
+                              nullptr);
 
     // Surface faces with their U, V, W DoFs sorted by r; the contact radius a; the punch DoFs.
     std::vector<double> support_r(support.size());
@@ -274,9 +273,8 @@ namespace gradcontact::fem
   {
     const auto                           start = std::chrono::steady_clock::now();
     Mode1CellStiffness cell_stiffness(material, fe, mapping, discretization, a, edge_cell());
-    exterior = condense_exterior(far_field_rings.get(), cell_stiffness);
     // P: U, V on r <= a of the tangential flat punch
-    system.assemble(dof_handler, cell_stiffness, punch_dofs, far_field_rings ? &exterior : nullptr);
+    system.assemble(dof_handler, cell_stiffness, punch_dofs);
     setup_time.assemble = seconds_since(start);
   }
 
@@ -404,7 +402,7 @@ namespace gradcontact::fem
     load.validate();
     TangentialResult result;
     result.start(setup_time, dof_handler.n_dofs(), triangulation.n_active_cells(), mesh_info);
-    record_far_field(exterior, result);
+    record_far_field(system.far_field_exterior(), result);
 
     const auto     start = std::chrono::steady_clock::now();
     Vector<double> u;

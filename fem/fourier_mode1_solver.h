@@ -189,8 +189,6 @@ namespace gradcontact::fem
 
     dealii::AffineConstraints<double> constraints; ///< hanging nodes, axis (W = 0, V = U), far field
     DirectSystem                      system; ///< A (meridian, without the pi), and A with the punch DoFs eliminated
-    std::unique_ptr<FarFieldRings>    far_field_rings; ///< DiscretizationParameters::far_field condensed
-    Exterior                          exterior;        ///< its stiffness (empty when clamped)
 
     std::vector<dealii::types::global_dof_index> punch_dofs; ///< free U, V DoFs on r <= a
     std::vector<SurfaceFace>                     surface_faces; ///< ascending r; dofs: U, V, W

@@ -497,6 +497,11 @@ namespace gradcontact::fem
   {
     discretization.validate();
     const Formulation f = resolve_formulation(discretization, material.nu);
+    // The condensed far field (fem/far_field.h) scales every ring DoF alike; the pressure DoFs scale otherwise.
+    if (f == Formulation::mixed && discretization.far_field == FarField::condensed)
+      throw std::invalid_argument("DiscretizationParameters::far_field = condensed needs the displacement formulation "
+                                  "(the pressure DoFs of the rings scale otherwise); nu = " +
+                                  std::to_string(material.nu));
     material.validate(f == Formulation::mixed);
     return f;
   }
