@@ -417,6 +417,40 @@ namespace gradcontact::fem
 
 
 
+  SurfaceFlexibility AxisymmetricSolver::surface_flexibility()
+  {
+    const auto         start = std::chrono::steady_clock::now();
+    SurfaceFlexibility flexibility;
+    flexibility.faces = surface_faces;
+    for (const auto d : surface_dofs)
+      {
+        if (!constraints.is_constrained(d))
+          {
+            flexibility.dofs.push_back(d);
+            flexibility.r.push_back(dof_r[d]);
+          }
+        else if (constraints.get_constraint_entries(d) && !constraints.get_constraint_entries(d)->empty())
+          throw std::logic_error("AxisymmetricSolver::surface_flexibility: the surface z-DoF at r = " +
+                                 std::to_string(dof_r[d]) + " is constrained to other DoFs (a hanging node)");
+      }
+    const unsigned int n = flexibility.dofs.size();
+    flexibility.matrix.reinit(n, n);
+    Vector<double> u(dof_handler.n_dofs());
+    for (unsigned int j = 0; j < n; ++j)
+      {
+        u                      = 0;
+        u[flexibility.dofs[j]] = 1;
+        double unused          = 0;
+        system.solve_free(u, unused);
+        for (unsigned int i = 0; i < n; ++i)
+          flexibility.matrix(i, j) = u[flexibility.dofs[i]];
+      }
+    flexibility.seconds = seconds_since(start);
+    return flexibility;
+  }
+
+
+
   Result AxisymmetricSolver::run(const LoadCase &load, const OutputRequest &outputs)
   {
     load.validate();

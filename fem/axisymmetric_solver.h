@@ -105,6 +105,19 @@ namespace gradcontact::fem
     Formulation formulation = Formulation::displacement; ///< the one used (never automatic)
   };
 
+  /// The free surface z = 0 as a linear map of normal nodal loads (a traction that depends on the gap, e.g. the
+  /// smooth adhesion law of fem/smooth_cohesion.h): C_ij = u_z at dofs[i] under a unit nodal force (+z, into the
+  /// material) at dofs[j], no contact zone held. The surface z-DoFs that the constraints fix (the clamped far
+  /// field) are left out: they stay at zero.
+  struct SurfaceFlexibility
+  {
+    std::vector<SurfaceFace>                     faces; ///< all faces on z = 0, ascending r
+    std::vector<dealii::types::global_dof_index> dofs;  ///< the unconstrained surface z-DoFs, ascending r
+    std::vector<double>                          r;     ///< their radii
+    dealii::FullMatrix<double>                   matrix;
+    double                                       seconds = 0; ///< factorisation and the dofs.size() solves
+  };
+
   class AxisymmetricSolver
   {
   public:
@@ -117,6 +130,10 @@ namespace gradcontact::fem
 
     /// Solves one load case, reusing everything load independent.
     Result run(const LoadCase &load, const OutputRequest &outputs = {});
+
+    /// The flexibility of the free surface (one back substitution per surface DoF, with the factorisation of A
+    /// that run() shares). Throws std::logic_error when a surface z-DoF is constrained other than to zero.
+    SurfaceFlexibility surface_flexibility();
 
     unsigned int n_dofs() const { return dof_handler.n_dofs(); }
     /// displacement or mixed (resolved from DiscretizationParameters::formulation and nu).

@@ -66,6 +66,14 @@ namespace gradcontact::fem
 
 
 
+  void DirectSystem::solve_free(Vector<double> &b_and_u, double &factorize_seconds)
+  {
+    factorization(false, factorize_seconds).solve(b_and_u);
+    constraints->distribute(b_and_u);
+  }
+
+
+
   Vector<double> DirectSystem::solve(const bool prescribe, const std::vector<double> &g, const Vector<double> &b,
                                      Vector<double> &reaction, double &factorize_seconds)
   {

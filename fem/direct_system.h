@@ -74,6 +74,10 @@ namespace gradcontact::fem
     dealii::Vector<double> solve(bool prescribe, const std::vector<double> &g, const dealii::Vector<double> &b,
                                  dealii::Vector<double> &reaction, double &factorize_seconds);
 
+    /// Overwrites the (condensed) load b with u = A^{-1} b, the constraints distributed; no reactions. For many
+    /// right-hand sides (a surface flexibility): one back substitution each.
+    void solve_free(dealii::Vector<double> &b_and_u, double &factorize_seconds);
+
     /// u.Au over the unconstrained DoFs (the constrained rows of A hold dummy diagonal entries).
     double energy(const dealii::Vector<double> &u) const;
 

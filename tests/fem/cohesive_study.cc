@@ -5,12 +5,15 @@
 //   cohesive_study k=0.5 lambda=10 mode=state x=1 p=2 h_edge=1e-5 zone_refinements=8
 //   cohesive_study k=0.5 lambda=10 mode=critical control=force
 //   cohesive_study k=0.5 mode=jkr control=force      (the FE JKR pull-off of fem/adhesion.h on the same mesh)
+//   cohesive_study k=0.5 lambda=1 mode=smooth         (the Lennard-Jones path of fem/smooth_cohesion.h, its largest
+//                                                      stress the Dugdale sigma_0 of lambda; path=1 prints the states)
 // lambda is the map's Tabor parameter (cases/fe_cohesive.h); x: a / a_c,JKR of the state. Every key is optional;
 // the mesh and discretisation keys of study_arguments.h override the recommended settings (force tolerance
 // 1e-5). Prints key=value lines.
 #include <fem/adhesion.h>
 #include <fem/cohesive_zone.h>
 #include <fem/modulus.h>
+#include <fem/smooth_cohesion.h>
 
 #include "study_arguments.h"
 
@@ -69,6 +72,51 @@ int main(int argc, char **argv)
                                                                        : AdhesionControl::displacement, jkr.radius);
           std::cout << "fe_jkr a/a_jkr=" << c.state.radius / jkr.radius << " F/F_jkr-1=" << c.state.force / jkr.force - 1
                     << " d/d_jkr-1=" << c.state.depth / jkr.depth - 1 << '\n';
+          return 0;
+        }
+      if (mode == "smooth")
+        {
+          // One mesh for the whole path, graded toward the force-controlled JKR radius (smooth_cohesion_settings).
+          Settings s = smooth_cohesion_settings(material, jkr_f.radius, args.num("refinement", 1));
+          args.apply(s.mesh);
+          args.apply(s.discretization);
+          const LennardJonesLaw    smooth = LennardJonesLaw::with_max_stress(law.strength, dgamma);
+          SmoothCohesionParameters sp;
+          sp.max_change = args.num("max_change", sp.max_change);
+          sp.start_gap  = args.num("start_gap", sp.start_gap);
+          sp.quadrature_points = args.count("qp", sp.quadrature_points);
+          SmoothCohesiveContact contact(material, Profile::paraboloid(R), s, sp);
+          const SmoothCohesionPath path = contact.trace(smooth);
+          const double F_dmt = -2 * pi * dgamma * R;
+          const auto print = [&](const std::string &what, const SmoothCohesionState &st) {
+            std::cout << what << " hc/eps=" << st.central_gap / smooth.separation << " d/eps=" << st.depth / smooth.separation
+                      << " F/F_jkr=" << st.force / jkr_f.force << " F/F_dmt=" << st.force / F_dmt
+                      << " a/a_jkr=" << st.contact_radius / jkr_f.radius << " dF=" << st.force_slope
+                      << " dd=" << st.depth_slope << " it=" << st.newton_iterations << '\n';
+          };
+          if (args.count("path", 0))
+            for (const auto &st : path.states)
+              print("path", st);
+          if (path.has_snap_in)
+            print("snap_in", path.snap_in);
+          if (path.has_depth_jump)
+            print("depth_pull_off", path.depth_pull_off);
+          if (path.has_force_minimum)
+            print("force_pull_off", path.force_pull_off);
+          std::cout << "eps=" << smooth.separation << " dofs=" << path.n_dofs << " surface=" << path.surface_dofs
+                    << " steps=" << path.steps << " rejected=" << path.rejected_steps << " newton=" << path.newton_iterations
+                    << " critical=" << path.critical_evaluations << " flex_s=" << path.flexibility_seconds
+                    << " s=" << path.seconds << " converged=" << path.converged << " " << path.message << '\n';
+          if (path.has_force_minimum)
+            std::cout << "force: F_c/F_jkr-1=" << path.force_pull_off.force / jkr_f.force - 1
+                      << " F_c/F_dmt-1=" << path.force_pull_off.force / F_dmt - 1 << '\n';
+          if (path.has_depth_jump)
+            {
+              const auto jkr_d = gradcontact::jkr::critical_state(medium, gradcontact::Paraboloid{R}, dgamma,
+                                                                  gradcontact::Control::displacement);
+              std::cout << "displacement: F/F_jkr-1=" << path.depth_pull_off.force / jkr_d.force - 1
+                        << " d/d_jkr-1=" << path.depth_pull_off.depth / jkr_d.depth - 1 << '\n';
+            }
           return 0;
         }
       if (mode == "fixed")

@@ -1,0 +1,682 @@
+#include <fem/errors.h>
+#include <fem/smooth_cohesion.h>
+
+#include <deal.II/base/quadrature_lib.h>
+#include <deal.II/lac/lapack_full_matrix.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <limits>
+#include <memory>
+#include <sstream>
+#include <stdexcept>
+
+namespace gradcontact::fem
+{
+  namespace
+  {
+    /// Below this gap / eps the law continues linearly (header).
+    constexpr double linear_below = 0.5;
+
+    /// Newton's line search halves the update at most this often.
+    constexpr unsigned int max_halvings = 12;
+
+    /// False-position iterations per critical state.
+    constexpr unsigned int max_critical_iterations = 80;
+
+    /// Folds of F(d) a resolved path can have: a snap-in and its way back on approach, then the jump off the contact
+    /// (measured at lambda = 10: two on approach, one on the contact); more are the mesh's (header).
+    constexpr unsigned int max_depth_folds = 4;
+  } // namespace
+
+
+
+  double LennardJonesLaw::stress(const double h) const
+  {
+    const double eps = separation, A = 8 * work / (3 * eps);
+    if (h < linear_below * eps)
+      {
+        const double h1 = linear_below * eps;
+        return stress(h1) + slope(h1) * (h - h1);
+      }
+    const double q = eps / h, q3 = q * q * q;
+    return A * (q3 - q3 * q3 * q3);
+  }
+
+  double LennardJonesLaw::slope(double h) const
+  {
+    const double eps = separation, A = 8 * work / (3 * eps);
+    h                = std::max(h, linear_below * eps);
+    const double q = eps / h, q3 = q * q * q;
+    return A / h * (-3 * q3 + 9 * q3 * q3 * q3);
+  }
+
+  double LennardJonesLaw::max_stress() const { return 16 * work / (9 * std::sqrt(3.0) * separation); }
+
+  LennardJonesLaw LennardJonesLaw::with_max_stress(const double max_stress, const double work)
+  {
+    if (!(max_stress > 0) || !std::isfinite(max_stress))
+      fail("LennardJonesLaw::with_max_stress", "max_stress", max_stress, "(0, inf)");
+    if (!(work > 0) || !std::isfinite(work))
+      fail("LennardJonesLaw::with_max_stress", "work of adhesion", work, "(0, inf)");
+    return {work, 16 * work / (9 * std::sqrt(3.0) * max_stress)};
+  }
+
+  void LennardJonesLaw::validate() const
+  {
+    if (!(work > 0) || !std::isfinite(work))
+      fail("LennardJonesLaw", "work of adhesion", work, "(0, inf)");
+    if (!(separation > 0) || !std::isfinite(separation))
+      fail("LennardJonesLaw", "separation (eps)", separation, "(0, inf)");
+  }
+
+  void SmoothCohesionParameters::validate() const
+  {
+    if (!(start_gap > 1 && start_gap <= 1e3))
+      fail("SmoothCohesionParameters", "start_gap", start_gap, "(1, 1e3]");
+    if (!(min_gap >= linear_below && min_gap < 1))
+      fail("SmoothCohesionParameters", "min_gap", min_gap, "[0.5, 1)");
+    if (!(first_step > 0 && first_step <= max_step))
+      fail("SmoothCohesionParameters", "first_step", first_step, "(0, max_step]");
+    if (!(max_step > 0 && max_step <= 1))
+      fail("SmoothCohesionParameters", "max_step", max_step, "(0, 1]");
+    if (!(max_change > 0 && max_change <= 0.5))
+      fail("SmoothCohesionParameters", "max_change", max_change, "(0, 0.5]");
+    if (!std::isfinite(stop_force))
+      fail("SmoothCohesionParameters", "stop_force", stop_force, "finite");
+    if (!(newton_tolerance >= 1e-15 && newton_tolerance <= 1e-3))
+      fail("SmoothCohesionParameters", "newton_tolerance", newton_tolerance, "[1e-15, 1e-3]");
+    if (max_newton < 2 || max_newton > 200)
+      fail("SmoothCohesionParameters", "max_newton", max_newton, "[2, 200]");
+    if (max_steps < 10 || max_steps > 100000)
+      fail("SmoothCohesionParameters", "max_steps", max_steps, "[10, 100000]");
+    if (!(critical_tolerance >= 1e-15 && critical_tolerance <= 1e-2))
+      fail("SmoothCohesionParameters", "critical_tolerance", critical_tolerance, "[1e-15, 1e-2]");
+    if (quadrature_points < 2 || quadrature_points > 32)
+      fail("SmoothCohesionParameters", "quadrature_points", quadrature_points, "[2, 32]");
+  }
+
+
+
+  Settings smooth_cohesion_settings(const Material &material, const double contact_radius, const double refinement)
+  {
+    if (!(refinement >= 0.25 && refinement <= 16))
+      fail("smooth_cohesion_settings", "refinement", refinement, "[0.25, 16]");
+    if (!material.modulus)
+      throw std::invalid_argument("smooth_cohesion_settings: the material has no modulus");
+    Settings s = recommended_settings(contact_radius, *material.modulus, 1e-5);
+    s.discretization.degree = 2;
+    s.mesh.near_field_size  = 2.5;
+    s.mesh.h_edge           = 5e-3 / refinement;
+    s.mesh.h_surface        = 5e-2 / refinement;
+    s.mesh.h_surface_outer  = 0;
+    s.mesh.h_far            = 1;
+    s.mesh.halving_radius   = s.mesh.near_field_size;
+    use_condensed_far_field(s, material);
+    return s;
+  }
+
+
+
+  struct SmoothCohesiveContact::Impl
+  {
+    /// A Gauss point of a surface face: r, weight times r, f(r), the face's Lagrange basis there.
+    struct Point
+    {
+      double              r = 0, weight = 0, f = 0;
+      std::vector<double> basis;
+    };
+    struct Face
+    {
+      std::vector<int>   unknown; ///< per node: index into the surface unknowns, -1 when held at zero
+      std::vector<Point> points;
+    };
+
+    /// A solved state: x = (w, d), its tangent dx/ds along the path and its public numbers.
+    struct Solved
+    {
+      std::vector<double> x, tangent;
+      SmoothCohesionState state;
+    };
+
+    Impl(const Material &material, const Profile &profile_, const Settings &settings,
+         const SmoothCohesionParameters &parameters_)
+      : profile(profile_)
+      , parameters((parameters_.validate(), parameters_))
+    {
+      profile.validate();
+      if (profile.shape == Profile::Shape::concave_paraboloid)
+        throw std::invalid_argument("SmoothCohesiveContact: the profile must open monotonically (not the concave punch)");
+      const double f0 = profile(0, settings.mesh.contact_radius);
+      if (f0 != 0)
+        fail("SmoothCohesiveContact", "profile f(0)", f0, "0 (the indenter's tip at r = 0)");
+      solver      = std::make_unique<AxisymmetricSolver>(material, settings.mesh, settings.discretization);
+      flexibility = solver->surface_flexibility();
+      n           = flexibility.dofs.size();
+      if (n == 0 || flexibility.r.front() > node_tolerance * settings.mesh.contact_radius)
+        throw std::logic_error("SmoothCohesiveContact: no free surface z-DoF on the axis");
+
+      std::vector<int> index_of(solver->n_dofs(), -1);
+      for (unsigned int i = 0; i < n; ++i)
+        index_of[flexibility.dofs[i]] = i;
+      const dealii::QGauss<1> gauss(parameters.quadrature_points);
+      for (const SurfaceFace &sf : flexibility.faces)
+        {
+          Face face;
+          for (const auto d : sf.dofs[1])
+            face.unknown.push_back(index_of[d]);
+          for (unsigned int q = 0; q < gauss.size(); ++q)
+            {
+              Point p;
+              p.r      = sf.r0 + gauss.point(q)[0] * (sf.r1 - sf.r0);
+              p.weight = gauss.weight(q) * (sf.r1 - sf.r0) * p.r;
+              p.f      = profile(p.r, settings.mesh.contact_radius);
+              for (unsigned int a = 0; a < sf.r.size(); ++a)
+                {
+                  std::vector<double> y(sf.r.size(), 0.0);
+                  y[a] = 1;
+                  p.basis.push_back(lagrange(sf.r, y, p.r));
+                }
+              face.points.push_back(p);
+            }
+          faces.push_back(face);
+        }
+    }
+
+    double eps() const { return law.separation; }
+
+    /// w(r) at a Gauss point.
+    double surface_value(const Face &face, const Point &p, const std::vector<double> &w) const
+    {
+      double value = 0;
+      for (unsigned int a = 0; a < face.unknown.size(); ++a)
+        if (face.unknown[a] >= 0)
+          value += p.basis[a] * w[face.unknown[a]];
+      return value;
+    }
+
+    /// x = (w, d): the surface values and the depth (x[n] = d). A linear constraint closes the system:
+    /// row . x = value (the central gap h_c = w_0 - d, or the pseudo-arclength of the path).
+    struct Constraint
+    {
+      std::vector<double> row;
+      double              value = 0;
+    };
+
+    /// The central-gap constraint h_c = w_0 - d = hc.
+    Constraint gap_constraint(const double hc) const
+    {
+      Constraint c{std::vector<double>(n + 1, 0.0), hc};
+      c.row[0] = 1;
+      c.row[n] = -1;
+      return c;
+    }
+
+    /// The path metric: |dx|^2 = dd^2 + dh_c^2 + |dw|^2 / n (the first two alone degenerate where the contact grows at
+    /// fixed d and h_c, measured at lambda = 10).
+    double metric(const std::vector<double> &a, const std::vector<double> &b) const
+    {
+      double w = 0;
+      for (unsigned int i = 0; i < n; ++i)
+        w += a[i] * b[i];
+      return a[n] * b[n] + (a[0] - a[n]) * (b[0] - b[n]) + w / n;
+    }
+
+    /// The residual (w - C b(w, d), c_w w_0 + c_d d - value).
+    std::vector<double> residual(const std::vector<double> &x, const Constraint &constraint) const
+    {
+      const double        d = x[n];
+      std::vector<double> b(n, 0.0), R(n + 1);
+      for (const Face &face : faces)
+        for (const Point &p : face.points)
+          {
+            const double sigma = law.stress(p.f - d + surface_value(face, p, x));
+            for (unsigned int a = 0; a < face.unknown.size(); ++a)
+              if (face.unknown[a] >= 0)
+                b[face.unknown[a]] -= sigma * p.basis[a] * p.weight;
+          }
+      for (unsigned int i = 0; i < n; ++i)
+        {
+          double Cb = 0;
+          for (unsigned int j = 0; j < n; ++j)
+            Cb += flexibility.matrix(i, j) * b[j];
+          R[i] = x[i] - Cb;
+        }
+      R[n] = -constraint.value;
+      for (unsigned int i = 0; i <= n; ++i)
+        R[n] += constraint.row[i] * x[i];
+      return R;
+    }
+
+    /// The bordered Jacobian, factorised: rows i < n: dR_i/dw_j = delta_ij - (C B')_ij, dR_i/dd = -(C s)_i with
+    /// B'_ij = -\int sigma'(h) phi_i phi_j r dr and s_i = \int sigma'(h) phi_i r dr (db_i/dd = s_i); row n: the
+    /// constraint.
+    void jacobian(const std::vector<double> &x, const Constraint &constraint, dealii::LAPACKFullMatrix<double> &J) const
+    {
+      const double               d = x[n];
+      std::vector<double>        s(n, 0.0);
+      dealii::FullMatrix<double> CB(n, n); // C B', column by column from the face-local blocks of B'
+      for (const Face &face : faces)
+        {
+          const unsigned int         m = face.unknown.size();
+          dealii::FullMatrix<double> local(m, m);
+          for (const Point &p : face.points)
+            {
+              const double slope = law.slope(p.f - d + surface_value(face, p, x));
+              for (unsigned int a = 0; a < m; ++a)
+                {
+                  if (face.unknown[a] >= 0)
+                    s[face.unknown[a]] += slope * p.basis[a] * p.weight;
+                  for (unsigned int c = 0; c < m; ++c)
+                    local(a, c) -= slope * p.basis[a] * p.basis[c] * p.weight;
+                }
+            }
+          for (unsigned int a = 0; a < m; ++a)
+            if (face.unknown[a] >= 0)
+              for (unsigned int c = 0; c < m; ++c)
+                if (face.unknown[c] >= 0 && local(a, c) != 0)
+                  {
+                    const unsigned int ia = face.unknown[a], ic = face.unknown[c];
+                    for (unsigned int i = 0; i < n; ++i)
+                      CB(i, ic) += flexibility.matrix(i, ia) * local(a, c);
+                  }
+        }
+      J.reinit(n + 1, n + 1);
+      for (unsigned int i = 0; i < n; ++i)
+        {
+          double Cs = 0;
+          for (unsigned int j = 0; j < n; ++j)
+            {
+              J(i, j) = (i == j ? 1.0 : 0.0) - CB(i, j);
+              Cs += flexibility.matrix(i, j) * s[j];
+            }
+          J(i, n) = -Cs;
+        }
+      for (unsigned int i = 0; i <= n; ++i)
+        J(n, i) = constraint.row[i];
+      J.compute_lu_factorization();
+    }
+
+    static double max_norm(const std::vector<double> &v)
+    {
+      double m = 0;
+      for (const double x : v)
+        m = std::max(m, std::abs(x));
+      return m;
+    }
+
+    /// Newton from the predictor x under `constraint`. On convergence fills `solved`, its tangent dx/dvalue (the
+    /// derivative along the constraint's value, from the Jacobian at the converged x), and returns true;
+    /// `iterations` counts the Jacobians.
+    bool newton(std::vector<double> x, const Constraint &constraint, Solved &solved, unsigned int &iterations) const
+    {
+      dealii::LAPACKFullMatrix<double> J;
+      std::vector<double>              R = residual(x, constraint);
+      for (iterations = 1; iterations <= parameters.max_newton; ++iterations)
+        {
+          jacobian(x, constraint, J);
+          dealii::Vector<double> delta(n + 1);
+          for (unsigned int i = 0; i <= n; ++i)
+            delta[i] = -R[i];
+          J.solve(delta);
+          const double step = delta.linfty_norm();
+          if (!std::isfinite(step))
+            return false;
+          if (step <= parameters.newton_tolerance * eps())
+            {
+              dealii::Vector<double> t(n + 1);
+              t[n] = 1;
+              J.solve(t);
+              solved.x = x;
+              solved.tangent.assign(t.begin(), t.end());
+              solved.state.newton_iterations = iterations;
+              return true;
+            }
+          // Line search on |R|_inf.
+          const double norm  = max_norm(R);
+          bool         taken = false;
+          double       alpha = 1;
+          for (unsigned int k = 0; k <= max_halvings && !taken; ++k, alpha /= 2)
+            {
+              std::vector<double> trial(x);
+              for (unsigned int i = 0; i <= n; ++i)
+                trial[i] += alpha * delta[i];
+              std::vector<double> R_trial = residual(trial, constraint);
+              if (max_norm(R_trial) < norm)
+                {
+                  taken = true;
+                  x     = std::move(trial);
+                  R     = std::move(R_trial);
+                }
+            }
+          if (!taken)
+            return false;
+        }
+      return false;
+    }
+
+    /// The constraint of the pseudo-arclength step `ds` from `from` along its unit tangent: t . (x - x') = ds in
+    /// the path metric.
+    Constraint arclength(const Solved &from, const double ds) const
+    {
+      Constraint c{std::vector<double>(n + 1, 0.0), ds};
+      for (unsigned int i = 0; i < n; ++i)
+        c.row[i] = from.tangent[i] / n;
+      c.row[0] += from.tangent[0] - from.tangent[n];
+      c.row[n] = 2 * from.tangent[n] - from.tangent[0];
+      for (unsigned int i = 0; i <= n; ++i)
+        c.value += c.row[i] * from.x[i];
+      return c;
+    }
+
+    /// The public numbers of a solved state; the tangent is normalised to unit length in the path metric and
+    /// oriented along `previous` (the previous state's tangent; none: h_c decreasing).
+    void finish(Solved &solved, const std::vector<double> *previous) const
+    {
+      std::vector<double> &x = solved.x, &t = solved.tangent;
+      double               norm = std::sqrt(metric(t, t));
+      if (previous ? metric(t, *previous) < 0 : t[0] - t[n] > 0)
+        norm = -norm;
+      for (double &v : t)
+        v /= norm;
+      SmoothCohesionState &s = solved.state;
+      s.depth                = x[n];
+      s.central_gap          = x[0] - x[n];
+      s.depth_slope          = t[n];
+      s.gap_slope            = t[0] - t[n];
+      double F = 0, dF = 0, last_r = -1, last_h = 0;
+      s.contact_radius = 0;
+      for (const Face &face : faces)
+        for (const Point &p : face.points)
+          {
+            const double h = p.f - s.depth + surface_value(face, p, x);
+            F -= law.stress(h) * p.weight;
+            dF -= law.slope(h) * (surface_value(face, p, t) - s.depth_slope) * p.weight;
+            // The outermost crossing of h = eps, interpolated between Gauss points.
+            if (last_r >= 0 && last_h <= eps() && h > eps())
+              s.contact_radius = last_r + (eps() - last_h) / (h - last_h) * (p.r - last_r);
+            last_r = p.r;
+            last_h = h;
+          }
+      s.force       = 2 * M_PI * F;
+      s.force_slope = 2 * M_PI * dF;
+    }
+
+    /// The state `ds` along the path from `from` (Newton from the tangent predictor).
+    bool step_from(const Solved &from, const double ds, Solved &next, unsigned int &iterations) const
+    {
+      std::vector<double> predictor(from.x);
+      for (unsigned int i = 0; i <= n; ++i)
+        predictor[i] += ds * from.tangent[i];
+      if (!newton(predictor, arclength(from, ds), next, iterations))
+        return false;
+      finish(next, &from.tangent);
+      return true;
+    }
+
+    /// The state at central gap hc by Newton from `from`'s tangent predictor (or from x = 0 without `from`).
+    bool at_gap(const double hc, const Solved *from, Solved &solved, unsigned int &iterations) const
+    {
+      std::vector<double> x(n + 1, 0.0);
+      x[n] = -hc;
+      if (from)
+        {
+          // Along the tangent to the wanted h_c (the tangent is per unit arclength).
+          const double ds = from->state.gap_slope != 0 ? (hc - from->state.central_gap) / from->state.gap_slope : 0;
+          for (unsigned int i = 0; i <= n; ++i)
+            x[i] = from->x[i] + ds * from->tangent[i];
+        }
+      if (!newton(x, gap_constraint(hc), solved, iterations))
+        return false;
+      finish(solved, from ? &from->tangent : nullptr);
+      return true;
+    }
+
+    /// Follows the path from `current` (pseudo-arclength in (h_c, d)): to its end (trace, `path` given: the minimum of
+    /// F passed and F >= stop_force, or h_c <= min_gap eps), or until h_c first reaches `target` (path null).
+    Solved follow(Solved current, const double target, SmoothCohesionPath *path) const
+    {
+      double       ds    = parameters.first_step * eps();
+      double       F_min = current.state.force;
+      const double floor = parameters.min_gap * eps();
+      unsigned int steps = 0, rejected = 0, iterations_total = 0;
+      const auto   done  = [&]() {
+        if (path)
+          {
+            path->steps += steps;
+            path->rejected_steps += rejected;
+            path->newton_iterations += iterations_total;
+          }
+      };
+      while (true)
+        {
+          if (path && path->has_force_minimum && current.state.force >= parameters.stop_force)
+            break;
+          if (current.state.central_gap <= floor)
+            {
+              if (path && !path->has_force_minimum)
+                {
+                  path->converged = false;
+                  path->message += "the path reached the central gap " + std::to_string(parameters.min_gap) +
+                                   " eps before the minimum of F; ";
+                }
+              break;
+            }
+          if (steps + rejected >= parameters.max_steps)
+            {
+              done();
+              throw std::runtime_error("SmoothCohesiveContact: " + std::to_string(parameters.max_steps) +
+                                       " path steps (" + std::to_string(rejected) +
+                                       " rejected) did not reach the end; stopped at h_c = " +
+                                       std::to_string(current.state.central_gap / eps()) + " eps");
+            }
+          Solved       next;
+          unsigned int iterations = 0;
+          const bool   converged  = step_from(current, ds, next, iterations);
+          iterations_total += iterations;
+          const double change_d =
+            converged ? std::abs(next.state.depth - current.state.depth) / (eps() + std::abs(current.state.depth)) : 0;
+          const double change_F = converged ? std::abs(next.state.force - current.state.force) /
+                                                std::max({std::abs(current.state.force), std::abs(F_min),
+                                                          std::numeric_limits<double>::min()}) :
+                                              0;
+          if (!converged || change_d > parameters.max_change || change_F > parameters.max_change)
+            {
+              ++rejected;
+              ds /= 2;
+              if (ds < 1e-14 * eps())
+                {
+                  done();
+                  std::ostringstream msg;
+                  msg << "SmoothCohesiveContact: the path stalls at h_c = " << current.state.central_gap / eps()
+                      << " eps, d = " << current.state.depth / eps() << " eps (Newton "
+                      << (converged ? "converged" : "did not converge") << " in " << iterations
+                      << " iterations, change of d " << change_d << ", of F " << change_F << "; " << steps
+                      << " steps, " << rejected << " rejected)";
+                  throw std::runtime_error(msg.str());
+                }
+              continue;
+            }
+          ++steps;
+          if (target >= 0 && next.state.central_gap <= target)
+            {
+              // The wanted central gap lies between current and next.
+              Solved       exact;
+              unsigned int its = 0;
+              if (!at_gap(target, &current, exact, its))
+                throw std::runtime_error("SmoothCohesiveContact: Newton did not converge at h_c = " +
+                                         std::to_string(target / eps()) + " eps (" + std::to_string(its) +
+                                         " iterations)");
+              return exact;
+            }
+          if (path)
+            {
+              path->states.push_back(next.state);
+              locate_critical(current, next, ds, *path);
+              if (path->depth_folds > max_depth_folds)
+                {
+                  done();
+                  throw std::runtime_error(
+                    "SmoothCohesiveContact: F(d) folds " + std::to_string(path->depth_folds) +
+                    " times (a smooth law has at most " + std::to_string(max_depth_folds) +
+                    "): the surface cells are too coarse for the adhesive zone, and the discrete path snaps back at "
+                    "every node; refine the surface where the contact edge passes (stopped at h_c = " +
+                    std::to_string(next.state.central_gap / eps()) + " eps)");
+                }
+            }
+          F_min   = std::min(F_min, next.state.force);
+          current = std::move(next);
+          if (iterations <= 4 && change_d < parameters.max_change / 2 && change_F < parameters.max_change / 2)
+            ds = std::min(1.5 * ds, parameters.max_step * eps());
+          else if (iterations >= 8)
+            ds *= 0.7;
+        }
+      done();
+      return current;
+    }
+
+    /// The critical states whose derivative along the path changes sign between a and b = a + ds: dF/ds from - to +
+    /// (a minimum of F), dd/ds from + to - (snap-in) and from - to + (pull-off under displacement control).
+    void locate_critical(const Solved &a, const Solved &b, const double ds, SmoothCohesionPath &path) const
+    {
+      const auto force_slope = [](const SmoothCohesionState &s) { return s.force_slope; };
+      const auto depth_slope = [](const SmoothCohesionState &s) { return s.depth_slope; };
+      if (a.state.force_slope < 0 && b.state.force_slope >= 0)
+        {
+          const SmoothCohesionState s = root(a, b, ds, force_slope, path);
+          if (!path.has_force_minimum || s.force < path.force_pull_off.force)
+            path.force_pull_off = s;
+          path.has_force_minimum = true;
+        }
+      if (a.state.depth_slope > 0 && b.state.depth_slope <= 0 && !path.has_snap_in)
+        {
+          path.snap_in     = root(a, b, ds, depth_slope, path);
+          path.has_snap_in = true;
+        }
+      if ((a.state.depth_slope > 0) != (b.state.depth_slope > 0))
+        ++path.depth_folds;
+      if (a.state.depth_slope < 0 && b.state.depth_slope >= 0 && !path.has_depth_jump)
+        {
+          path.depth_pull_off = root(a, b, ds, depth_slope, path);
+          path.has_depth_jump = true;
+        }
+    }
+
+    /// False position (Illinois) in the arclength t in (0, ds) from a for g = 0 (g(a), g(b) of opposite signs).
+    template <class G>
+    SmoothCohesionState root(const Solved &a, const Solved &b, const double ds, const G &g,
+                             SmoothCohesionPath &path) const
+    {
+      double              t_lo = 0, t_hi = ds, g_lo = g(a.state), g_hi = g(b.state);
+      SmoothCohesionState best = std::abs(g_lo) < std::abs(g_hi) ? a.state : b.state;
+      int                 side = 0;
+      for (unsigned int k = 0; k < max_critical_iterations; ++k)
+        {
+          if (t_hi - t_lo <= parameters.critical_tolerance * eps() || g_lo == g_hi)
+            break;
+          const double t = t_hi - g_hi * (t_hi - t_lo) / (g_hi - g_lo);
+          Solved       s;
+          unsigned int iterations = 0;
+          ++path.critical_evaluations;
+          if (!step_from(a, t, s, iterations))
+            {
+              path.converged = false;
+              path.message += "Newton did not converge at a critical state's trial (" + std::to_string(iterations) +
+                              " iterations); ";
+              break;
+            }
+          path.newton_iterations += iterations;
+          const double gs = g(s.state);
+          if (std::abs(gs) < std::abs(g(best)))
+            best = s.state;
+          if (gs == 0)
+            break;
+          if ((gs > 0) == (g_lo > 0))
+            {
+              t_lo = t, g_lo = gs;
+              if (side == -1)
+                g_hi /= 2;
+              side = -1;
+            }
+          else
+            {
+              t_hi = t, g_hi = gs;
+              if (side == 1)
+                g_lo /= 2;
+              side = 1;
+            }
+        }
+      return best;
+    }
+
+    /// The first state, at start_gap eps, by Newton from the undeformed surface.
+    Solved first_state() const
+    {
+      Solved       s;
+      unsigned int iterations = 0;
+      if (!at_gap(parameters.start_gap * eps(), nullptr, s, iterations))
+        throw std::runtime_error("SmoothCohesiveContact: Newton did not converge at the first state (h_c = " +
+                                 std::to_string(parameters.start_gap) + " eps, " + std::to_string(iterations) +
+                                 " iterations); start farther apart");
+      return s;
+    }
+
+    const Profile                          profile;
+    LennardJonesLaw                        law; ///< of the path being followed
+    const SmoothCohesionParameters         parameters;
+    std::unique_ptr<AxisymmetricSolver>    solver;
+    SurfaceFlexibility                     flexibility;
+    unsigned int                           n = 0;
+    std::vector<Face>                      faces;
+  };
+
+
+
+  SmoothCohesiveContact::SmoothCohesiveContact(const Material &material, const Profile &profile,
+                                               const Settings &settings, const SmoothCohesionParameters &parameters)
+    : impl(std::make_unique<Impl>(material, profile, settings, parameters))
+  {}
+
+  SmoothCohesiveContact::~SmoothCohesiveContact() = default;
+
+  unsigned int SmoothCohesiveContact::n_dofs() const { return impl->solver->n_dofs(); }
+  unsigned int SmoothCohesiveContact::surface_dofs() const { return impl->n; }
+
+  SmoothCohesionPath SmoothCohesiveContact::trace(const LennardJonesLaw &law)
+  {
+    law.validate();
+    impl->law                = law;
+    const auto         start = std::chrono::steady_clock::now();
+    SmoothCohesionPath path;
+    path.n_dofs              = impl->solver->n_dofs();
+    path.surface_dofs        = impl->n;
+    path.flexibility_seconds = impl->flexibility.seconds;
+    Impl::Solved first       = impl->first_state();
+    path.states.push_back(first.state);
+    path.newton_iterations += first.state.newton_iterations;
+    try
+      {
+        impl->follow(std::move(first), -1, &path);
+      }
+    catch (const std::runtime_error &e)
+      {
+        path.converged = false;
+        path.message += e.what();
+      }
+    path.seconds = seconds_since(start);
+    return path;
+  }
+
+  SmoothCohesionState SmoothCohesiveContact::state(const LennardJonesLaw &law, const double central_gap)
+  {
+    law.validate();
+    impl->law        = law;
+    const double eps = impl->eps();
+    if (!(central_gap >= impl->parameters.min_gap * eps && central_gap <= impl->parameters.start_gap * eps))
+      fail("SmoothCohesiveContact::state", "central gap", central_gap,
+           "[" + std::to_string(impl->parameters.min_gap * eps) + ", " +
+             std::to_string(impl->parameters.start_gap * eps) + "] (min_gap eps, start_gap eps)");
+    return impl->follow(impl->first_state(), central_gap, nullptr).state;
+  }
+} // namespace gradcontact::fem

@@ -1,0 +1,150 @@
+// Adhesion with a smooth traction-separation law on the graded half-space: the Lennard-Jones law, solved by
+// Newton on the FE surface and followed along its whole equilibrium path (approach, snap-in, pull-off under force
+// and displacement control). No contact constraint and no JKR or Dugdale assumption: repulsion is the law's own
+// branch. Nothing here comes from the MDR or a closed form.
+//
+// The law (the 6-12 potential integrated over two half-spaces; Muller, Yushchenko and Derjaguin, J. Colloid
+// Interface Sci. 77 (1980) 91-101; Greenwood, Proc. R. Soc. Lond. A 453 (1997) 1277-1297, eq. 2.1):
+//   sigma(h) = 8 dgamma / (3 eps) [ (eps / h)^3 - (eps / h)^9 ],   attraction positive,
+// zero at the equilibrium separation h = eps, largest, 16 dgamma / (9 sqrt 3 eps), at h = 3^{1/6} eps, and
+// \int_eps^inf sigma dh = dgamma. Below h = eps / 2 (a repulsion of 500 times the largest attraction, never
+// reached by an equilibrium of this suite) it continues linearly, so that a Newton trial cannot produce NaN.
+// With sigma_0 = its largest stress, Maugis' Tabor parameter of the Dugdale law (fem/cohesive_zone.h) becomes
+// lambda = 1.16 mu, mu = (R dgamma^2 / (E*^2 eps^3))^{1/3} Tabor's (k = 0).
+//
+// The equations. The gap between the rigid indenter z = d - f(r) and the surface z = w(r) is
+// h(r) = f(r) - d + w(r) (as in fem/cohesive_zone.h), the traction sigma(h) pulls the surface toward the
+// indenter (-z), the force on the indenter is F = -2 pi \int sigma(h) r dr (compressive positive). The FE
+// surface is condensed: w = C b(w) with C the flexibility of the free surface z-DoFs
+// (AxisymmetricSolver::surface_flexibility, exact for the FE model: one back substitution per surface DoF) and
+// b_i = -\int sigma(h) phi_i r dr (Gauss on every surface face out to the truncation radius, so no traction is
+// cut off inside L). Newton on this dense system of the surface DoFs; its Jacobian
+// I - C db/dw is assembled face by face.
+//
+// The path. Under displacement control F(d) is S-shaped at large Tabor parameters (snap-in on approach, a jump
+// off the surface on retraction); under force control F has a minimum; and at large Tabor parameters the central
+// gap h_c = h(0) = f(0) - d + w(0) folds too (measured at lambda = 10: Newton in h_c stalls at 0.91 eps). So the
+// path is followed by pseudo-arclength continuation (Keller's) in the plane (h_c, d): the unknowns (w, d), the
+// constraint t_h (h_c - h_c') + t_d (d - d') = ds with (t_h, t_d) the unit tangent of the last state, a tangent
+// predictor, Newton on the bordered system, and steps ds adapted to Newton's iteration count and to the change of
+// d and F. It starts with the surfaces apart (h_c = start_gap eps, solved with h_c fixed). The critical states
+// are the roots of dF/ds (pull-off under force control: the minimum of F) and of dd/ds (the folds of F(d):
+// snap-in, the largest d on approach, and pull-off under displacement control, the smallest d after it), found by
+// false position in the arclength between the path states that bracket them, each derivative exact from the
+// tangent. A path that stops before its minimum of F, or whose Newton does not converge, says so (`message`)
+// with its counts.
+#ifndef GRADCONTACT_FEM_SMOOTH_COHESION_H
+#define GRADCONTACT_FEM_SMOOTH_COHESION_H
+
+#include <fem/axisymmetric_solver.h>
+
+#include <deal.II/lac/vector.h>
+
+#include <string>
+#include <vector>
+
+namespace gradcontact::fem
+{
+  /// The Lennard-Jones law of the header: work of adhesion and equilibrium separation.
+  struct LennardJonesLaw
+  {
+    double work       = 0; ///< dgamma > 0
+    double separation = 0; ///< eps > 0, the gap of zero traction
+
+    /// sigma(h), attraction positive.
+    double stress(double h) const;
+    /// d sigma / dh.
+    double slope(double h) const;
+    /// 16 dgamma / (9 sqrt 3 eps), at h = 3^{1/6} eps.
+    double max_stress() const;
+    /// The law with this largest stress (e.g. a Dugdale sigma_0 for the same Tabor parameter) and work.
+    static LennardJonesLaw with_max_stress(double max_stress, double work);
+    void   validate() const;
+  };
+
+  struct SmoothCohesionParameters
+  {
+    double       start_gap       = 3.0;   ///< central gap of the first state / eps (the surfaces apart)
+    double       first_step      = 0.05;  ///< first decrease of the central gap / eps
+    double       max_step        = 0.25;  ///< largest decrease of the central gap per step / eps
+    double       max_change      = 0.05;  ///< per step: |delta d| <= this (eps + |d|), |delta F| <= this max(|F|, |F_min|)
+    double       stop_force      = 0.0;   ///< the path ends at the first F >= this after its minimum of F
+    double       min_gap         = 0.5;   ///< ... or at this central gap / eps (the contact pressed hard)
+    double       newton_tolerance = 1e-12; ///< |Newton update|_inf / eps that ends the iteration
+    unsigned int max_newton      = 30;    ///< iterations per state
+    unsigned int max_steps       = 2000;  ///< path steps (accepted and rejected)
+    double       critical_tolerance = 1e-11; ///< bracket of the central gap of a critical state / eps
+    unsigned int quadrature_points  = 8;     ///< Gauss points per surface face
+
+    void validate() const;
+  };
+
+  /// One equilibrium state.
+  struct SmoothCohesionState
+  {
+    double       central_gap    = 0; ///< h_c = h(0)
+    double       depth          = 0; ///< d
+    double       force          = 0; ///< F, compressive positive
+    double       contact_radius = 0; ///< outermost r with h(r) <= eps (compressive traction); 0 when none
+    /// Derivatives along the path, s its arclength in the plane (h_c, d): (dh_c/ds)^2 + (dd/ds)^2 = 1, s growing
+    /// from the surfaces apart toward the contact.
+    double       gap_slope      = 0; ///< dh_c / ds
+    double       depth_slope    = 0; ///< dd / ds
+    double       force_slope    = 0; ///< dF / ds
+    unsigned int newton_iterations = 0;
+  };
+
+  struct SmoothCohesionPath
+  {
+    std::vector<SmoothCohesionState> states; ///< along the path, h_c decreasing
+    /// Pull-off under force control: the smallest F (its minimum, dF/dh_c = 0).
+    bool                has_force_minimum = false;
+    SmoothCohesionState force_pull_off;
+    /// Snap-in on approach (the largest d before the contact forms) and pull-off under displacement control (the
+    /// smallest d after it): the folds of F(d), dd/dh_c = 0; none when d grows monotonically (small Tabor parameter).
+    bool                has_snap_in = false, has_depth_jump = false;
+    SmoothCohesionState snap_in, depth_pull_off;
+
+    unsigned int depth_folds = 0; ///< sign changes of dd/ds along the path
+    unsigned int steps = 0, rejected_steps = 0, newton_iterations = 0, critical_evaluations = 0;
+    unsigned int n_dofs = 0, surface_dofs = 0;
+    double       flexibility_seconds = 0, seconds = 0;
+    bool         converged = true; ///< every Newton converged and the path reached its end
+    std::string  message;          ///< why not
+  };
+
+  /// The mesh the model was measured on (fem/README.md): degree 2, surface cells of 2.5e-3 a at the expected
+  /// contact edge a (e.g. the JKR pull-off radius) and 2.5e-2 a at the axis and at the near field's end 2.5 a
+  /// (gmsh sizes twice these, halved by its subdivision), divided by `refinement`; the z-halvings of a modulus
+  /// E ~ z^s (s > 0) under the whole near field (the law acts everywhere there); the condensed far field at 100 a
+  /// for a power law (fem/far_field.h), else the clamped one of recommended_settings.
+  Settings smooth_cohesion_settings(const Material &material, double contact_radius, double refinement = 1);
+
+  class SmoothCohesiveContact
+  {
+  public:
+    /// Builds the FE model of `settings` (its mesh must resolve the surface where the law acts; the traction is
+    /// integrated out to the truncation radius) and its surface flexibility, which does not depend on the law: one
+    /// model serves every law (a Tabor-parameter sweep). The profile must have f(0) = 0 and open monotonically
+    /// (paraboloid, power law, cone, custom). Throws std::invalid_argument on bad input.
+    SmoothCohesiveContact(const Material &material, const Profile &profile, const Settings &settings,
+                          const SmoothCohesionParameters &parameters = {});
+    ~SmoothCohesiveContact();
+
+    /// The whole path of the header with its critical states, under `law`.
+    SmoothCohesionPath trace(const LennardJonesLaw &law);
+
+    /// The state at one central gap in [min_gap, start_gap] eps, followed from start_gap with the steps of trace.
+    /// Throws std::runtime_error when Newton does not converge on the way.
+    SmoothCohesionState state(const LennardJonesLaw &law, double central_gap);
+
+    unsigned int n_dofs() const;
+    unsigned int surface_dofs() const;
+
+  private:
+    struct Impl;
+    std::unique_ptr<Impl> impl;
+  };
+} // namespace gradcontact::fem
+
+#endif

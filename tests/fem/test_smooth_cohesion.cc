@@ -1,0 +1,186 @@
+// Tests of the Lennard-Jones adhesion FE, fem/smooth_cohesion.h. References: the law's own integrals (computed
+// here by quadrature), the rigid sphere's force-separation curve (Derjaguin: F(d) = -2 pi R Phi(-d), Phi the
+// law's work beyond a gap, written out below; its minimum -2 pi dgamma R is the DMT pull-off for every k), the
+// chapter's JKR critical states (analytic/adhesion.h, 9.55-9.56) at large Tabor parameter, and the FE on a finer
+// mesh.
+#include <fem/modulus.h>
+#include <fem/smooth_cohesion.h>
+
+#include <analytic/adhesion.h>
+#include <analytic/material.h>
+
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <iostream>
+#include <memory>
+#include <vector>
+
+using namespace gradcontact::fem;
+
+namespace
+{
+  constexpr double nu = 0.3, c0 = 1.0, R = 1.0, dgamma = 1e-3;
+  constexpr double pi = 3.14159265358979323846;
+
+  Material power_law_material(const double E0, const double k)
+  {
+    return Material{std::make_shared<PowerLawModulus>(E0, c0, k), nu};
+  }
+
+  /// The law's work beyond the gap h >= eps / 2, \int_h^inf sigma: 8 dgamma / (3 eps) (eps^3 / (2 h^2) - eps^9 / (8 h^8)).
+  double work_beyond(const double h, const double eps)
+  {
+    const double q = eps / h;
+    return dgamma * (4.0 / 3.0 * q * q - std::pow(q, 8) / 3.0);
+  }
+
+  /// Tabor's parameter mu = (R dgamma^2 / (E*^2 eps^3))^{1/3} (k = 0, E* = E0 / (1 - nu^2)) -> eps.
+  double separation_of_tabor(const double mu, const double E0)
+  {
+    const double E_star = E0 / (1 - nu * nu);
+    return std::cbrt(R * dgamma * dgamma / (E_star * E_star)) / mu;
+  }
+} // namespace
+
+TEST_CASE("Lennard-Jones law: zero at eps, largest at 3^(1/6) eps, work dgamma, slope", "[fem]")
+{
+  const LennardJonesLaw law{dgamma, 2e-3};
+  REQUIRE(std::abs(law.stress(law.separation)) <= 1e-15 * law.max_stress());
+  const double h_max = std::pow(3.0, 1.0 / 6.0) * law.separation;
+  CHECK_THAT(law.stress(h_max), Catch::Matchers::WithinRel(law.max_stress(), 1e-14));
+  CHECK(law.stress(1.01 * h_max) < law.stress(h_max));
+  CHECK(law.stress(0.99 * h_max) < law.stress(h_max));
+  // Work: composite Gauss-Legendre on h = eps / t, t in (0, 1] (dh = eps / t^2 dt), 400 panels of 8 points.
+  double             work = 0;
+  const unsigned int panels = 400;
+  const double       x[4] = {0.1834346424956498, 0.5255324099163290, 0.7966664774136267, 0.9602898564975363};
+  const double       w[4] = {0.3626837833783620, 0.3137066458778873, 0.2223810344533745, 0.1012285362903763};
+  for (unsigned int p = 0; p < panels; ++p)
+    for (unsigned int i = 0; i < 4; ++i)
+      for (const double sign : {-1.0, 1.0})
+        {
+          const double t = (p + 0.5 + sign * 0.5 * x[i]) / panels;
+          work += 0.5 * w[i] / panels * law.stress(law.separation / t) * law.separation / (t * t);
+        }
+  CHECK_THAT(work, Catch::Matchers::WithinRel(dgamma, 1e-12));
+  CHECK_THAT(work_beyond(law.separation, law.separation), Catch::Matchers::WithinRel(dgamma, 1e-15));
+  for (const double h : {0.6, 0.9, 1.0, 1.3, 2.0, 5.0})
+    {
+      const double step  = 1e-6 * law.separation, at = h * law.separation;
+      const double slope = (law.stress(at + step) - law.stress(at - step)) / (2 * step);
+      CHECK_THAT(law.slope(at), Catch::Matchers::WithinRel(slope, 1e-7));
+    }
+  // Below eps / 2 it continues linearly, finite.
+  CHECK(std::isfinite(law.stress(0)));
+  CHECK(law.stress(0) < law.stress(0.5 * law.separation));
+  const LennardJonesLaw same = LennardJonesLaw::with_max_stress(law.max_stress(), dgamma);
+  CHECK_THAT(same.separation, Catch::Matchers::WithinRel(law.separation, 1e-14));
+}
+
+TEST_CASE("Lennard-Jones FE: a rigid sphere's path is the Derjaguin integral, pull-off -2 pi dgamma R for every k",
+          "[fem]")
+{
+  // E0 = 1e10 against adhesive stresses of 0.1 (repulsion up to ~10 at the path's end): the surface moves by
+  // ~1e-11 of eps, so the FE path must be the rigid one: F(d) = -2 pi R Phi(-d) exactly for the paraboloid, its
+  // minimum -2 pi dgamma R at d = -eps (DMT). (At E0 = 1e8 the worst state was 5.7e-6 off at k = 0.5, 8.4e-7 at
+  // k = 0: the elastic part, falling like 1 / E0.)
+  const double          eps = 1e-2;
+  const LennardJonesLaw law{dgamma, eps};
+  for (const double k : {-0.5, 0.0, 0.5})
+    {
+      const Material            material = power_law_material(1e10, k);
+      const Settings            settings = smooth_cohesion_settings(material, std::sqrt(2 * R * eps), 0.5);
+      SmoothCohesiveContact     contact(material, Profile::paraboloid(R), settings);
+      const SmoothCohesionPath  path = contact.trace(law);
+      INFO("k = " << k << ": " << path.message);
+      REQUIRE(path.converged);
+      REQUIRE(path.has_force_minimum);
+      CHECK_FALSE(path.has_snap_in);
+      CHECK_FALSE(path.has_depth_jump);
+      double worst = 0, worst_gap = 0;
+      for (const SmoothCohesionState &s : path.states)
+        {
+          const double error = std::abs(s.force + 2 * pi * R * work_beyond(-s.depth, eps)) / (2 * pi * R * dgamma);
+          if (error > worst)
+            worst = error, worst_gap = s.central_gap / eps;
+        }
+      std::cout << "rigid limit k = " << k << ": " << path.states.size() << " states, worst |F - F_rigid| / (2 pi R dgamma) "
+                << worst << " (at h_c = " << worst_gap << " eps), F_c / (-2 pi R dgamma) - 1 = " << path.force_pull_off.force / (-2 * pi * R * dgamma) - 1
+                << ", d_c / eps = " << path.force_pull_off.depth / eps << ", " << path.surface_dofs
+                << " surface DoFs, " << path.seconds << " s\n";
+      CHECK(worst <= 1e-6);
+      CHECK_THAT(path.force_pull_off.force, Catch::Matchers::WithinRel(-2 * pi * R * dgamma, 1e-6));
+      CHECK_THAT(path.force_pull_off.depth, Catch::Matchers::WithinRel(-eps, 1e-5));
+    }
+}
+
+TEST_CASE("Lennard-Jones FE at k = 0: from DMT toward the chapter's JKR as the Tabor parameter grows", "[fem]")
+{
+  const double              E0 = 1, k = 0;
+  const Material            material = power_law_material(E0, k);
+  const gradcontact::Medium medium   = gradcontact::medium(gradcontact::GradedHalfSpace{E0, c0, k, nu});
+  const auto jkr = gradcontact::jkr::critical_state(medium, gradcontact::Paraboloid{R}, dgamma, gradcontact::Control::force);
+  SmoothCohesiveContact contact(material, Profile::paraboloid(R), smooth_cohesion_settings(material, jkr.radius));
+  std::vector<double> deviation;
+  for (const double mu : {0.3, 1.0, 3.0})
+    {
+      const SmoothCohesionPath path = contact.trace({dgamma, separation_of_tabor(mu, E0)});
+      INFO("mu = " << mu << ": " << path.message);
+      REQUIRE(path.converged);
+      REQUIRE(path.has_force_minimum);
+      deviation.push_back(path.force_pull_off.force / jkr.force - 1);
+      std::cout << "Lennard-Jones k = 0, mu = " << mu << ": F_c / F_JKR - 1 = " << deviation.back()
+                << ", F_c / (pi R dgamma) = " << -path.force_pull_off.force / (pi * R * dgamma)
+                << ", depth jump " << path.has_depth_jump << ", " << path.steps << " steps, " << path.newton_iterations
+                << " Newton iterations, " << path.seconds << " s\n";
+      // Between DMT (4/3 of JKR's force) and JKR.
+      CHECK(deviation.back() > 0);
+      CHECK(deviation.back() < 1.0 / 3.0);
+      // Displacement control jumps off only from mu ~ 1 on (Greenwood 1997).
+      CHECK(path.has_depth_jump == (mu >= 1));
+    }
+  CHECK(deviation[1] < deviation[0]);
+  CHECK(deviation[2] < deviation[1]);
+  CHECK(deviation[2] < 0.05);
+}
+
+TEST_CASE("Lennard-Jones FE: pull-off on a finer mesh", "[fem]")
+{
+  const double              E0 = 1, k = 0.5;
+  const Material            material = power_law_material(E0, k);
+  const gradcontact::Medium medium   = gradcontact::medium(gradcontact::GradedHalfSpace{E0, c0, k, nu});
+  const auto jkr = gradcontact::jkr::critical_state(medium, gradcontact::Paraboloid{R}, dgamma, gradcontact::Control::force);
+  const LennardJonesLaw law{dgamma, separation_of_tabor(1.0, E0)};
+  std::vector<double>   force;
+  for (const double refinement : {0.5, 1.0})
+    {
+      SmoothCohesiveContact    contact(material, Profile::paraboloid(R), smooth_cohesion_settings(material, jkr.radius, refinement));
+      const SmoothCohesionPath path = contact.trace(law);
+      INFO(path.message);
+      REQUIRE(path.converged);
+      REQUIRE(path.has_force_minimum);
+      force.push_back(path.force_pull_off.force);
+      std::cout << "Lennard-Jones k = 0.5, mesh x" << refinement << ": F_c / F_JKR = " << force.back() / jkr.force
+                << ", " << path.surface_dofs << " surface DoFs of " << path.n_dofs << ", flexibility "
+                << path.flexibility_seconds << " s, path " << path.seconds << " s\n";
+    }
+  CHECK_THAT(force[0], Catch::Matchers::WithinRel(force[1], 1e-4));
+}
+
+TEST_CASE("Lennard-Jones FE: bad input names the parameter", "[fem]")
+{
+  CHECK_THROWS_WITH((LennardJonesLaw{0, 1}.validate()), Catch::Matchers::Contains("work of adhesion"));
+  CHECK_THROWS_WITH((LennardJonesLaw{1, -1}.validate()), Catch::Matchers::Contains("separation"));
+  CHECK_THROWS_WITH(LennardJonesLaw::with_max_stress(std::nan(""), 1), Catch::Matchers::Contains("max_stress"));
+  SmoothCohesionParameters p;
+  p.min_gap = 0.2;
+  CHECK_THROWS_WITH(p.validate(), Catch::Matchers::Contains("min_gap"));
+  p         = {};
+  p.start_gap = 1;
+  CHECK_THROWS_WITH(p.validate(), Catch::Matchers::Contains("start_gap"));
+  const Material material = power_law_material(1, 0);
+  CHECK_THROWS_WITH(smooth_cohesion_settings(material, 0.1, 100), Catch::Matchers::Contains("refinement"));
+  CHECK_THROWS_WITH(SmoothCohesiveContact(material, Profile::concave_paraboloid(0.01), smooth_cohesion_settings(material, 0.1)),
+                    Catch::Matchers::Contains("concave"));
+}
