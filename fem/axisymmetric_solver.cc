@@ -433,18 +433,8 @@ namespace gradcontact::fem
           throw std::logic_error("AxisymmetricSolver::surface_flexibility: the surface z-DoF at r = " +
                                  std::to_string(dof_r[d]) + " is constrained to other DoFs (a hanging node)");
       }
-    const unsigned int n = flexibility.dofs.size();
-    flexibility.matrix.reinit(n, n);
-    Vector<double> u(dof_handler.n_dofs());
-    for (unsigned int j = 0; j < n; ++j)
-      {
-        u                      = 0;
-        u[flexibility.dofs[j]] = 1;
-        double unused          = 0;
-        system.solve_free(u, unused);
-        for (unsigned int i = 0; i < n; ++i)
-          flexibility.matrix(i, j) = u[flexibility.dofs[i]];
-      }
+    double unused       = 0;
+    flexibility.matrix  = system.inverse_block(flexibility.dofs, unused);
     flexibility.seconds = seconds_since(start);
     return flexibility;
   }

@@ -4,7 +4,14 @@
 #include <deal.II/dofs/dof_tools.h>
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
 
+#include <suitesparse/cholmod.h>
+
+#include <algorithm>
 #include <chrono>
+#include <limits>
+#include <memory>
+#include <stdexcept>
+#include <string>
 
 namespace gradcontact::fem
 {
@@ -70,6 +77,122 @@ namespace gradcontact::fem
   {
     factorization(false, factorize_seconds).solve(b_and_u);
     constraints->distribute(b_and_u);
+  }
+
+
+
+  namespace
+  {
+    /// Columns of unit loads per CHOLMOD solve: n x 128 doubles (90 MB at 90k DoFs) at a time.
+    constexpr unsigned int inverse_block_columns = 128;
+
+    /// CHOLMOD's workspace, finished on every exit.
+    struct CholmodCommon
+    {
+      cholmod_common common;
+      CholmodCommon() { cholmod_start(&common); }
+      ~CholmodCommon() { cholmod_finish(&common); }
+    };
+  } // namespace
+
+
+
+  FullMatrix<double> DirectSystem::inverse_block(const std::vector<types::global_dof_index> &rows, double &seconds)
+  {
+    const auto         start = std::chrono::steady_clock::now();
+    const unsigned int n = stiffness.m(), m = rows.size();
+    FullMatrix<double> result(m, m);
+    {
+      std::vector<types::global_dof_index> sorted(rows);
+      std::sort(sorted.begin(), sorted.end());
+      if (std::adjacent_find(sorted.begin(), sorted.end()) != sorted.end())
+        throw std::invalid_argument("DirectSystem::inverse_block: a row is listed twice");
+      if (!sorted.empty() && sorted.back() >= n)
+        throw std::invalid_argument("DirectSystem::inverse_block: row " + std::to_string(sorted.back()) +
+                                    " outside the matrix of " + std::to_string(n) + " rows");
+    }
+    if (m == 0)
+      return result;
+
+    CholmodCommon cm;
+    cholmod_common *c = &cm.common;
+    // A is symmetric: its CSR rows are its CSC columns; CHOLMOD reads the upper triangle (stype = 1), the entries
+    // (i, j) with i <= j of column j.
+    std::size_t nnz = 0;
+    for (unsigned int j = 0; j < n; ++j)
+      for (auto entry = stiffness.begin(j); entry != stiffness.end(j); ++entry)
+        nnz += entry->column() <= j;
+    cholmod_sparse *A = cholmod_allocate_sparse(n, n, nnz, /*sorted*/ 0, /*packed*/ 1, /*stype*/ 1, CHOLMOD_REAL, c);
+    if (!A)
+      throw std::runtime_error("DirectSystem::inverse_block: CHOLMOD cannot allocate the matrix (" + std::to_string(nnz) +
+                               " entries)");
+    auto *Ap = static_cast<int *>(A->p);
+    auto *Ai = static_cast<int *>(A->i);
+    auto *Ax = static_cast<double *>(A->x);
+    std::size_t k = 0;
+    for (unsigned int j = 0; j < n; ++j)
+      {
+        Ap[j] = static_cast<int>(k);
+        for (auto entry = stiffness.begin(j); entry != stiffness.end(j); ++entry)
+          if (entry->column() <= j)
+            {
+              Ai[k]   = static_cast<int>(entry->column());
+              Ax[k++] = entry->value();
+            }
+      }
+    Ap[n] = static_cast<int>(k);
+
+    cholmod_factor *L = cholmod_analyze(A, c);
+    bool            positive_definite = L && cholmod_factorize(A, L, c) && c->status == CHOLMOD_OK;
+    cholmod_free_sparse(&A, c);
+    if (!positive_definite)
+      {
+        // Not positive definite (or CHOLMOD failed): one back substitution of the LU factorisation per row.
+        if (L)
+          cholmod_free_factor(&L, c);
+        Vector<double> u(n);
+        double         unused = 0;
+        for (unsigned int j = 0; j < m; ++j)
+          {
+            u          = 0;
+            u[rows[j]] = 1;
+            solve_free(u, unused);
+            for (unsigned int i = 0; i < m; ++i)
+              result(i, j) = u[rows[i]];
+          }
+        seconds = seconds_since(start);
+        return result;
+      }
+    for (unsigned int first = 0; first < m; first += inverse_block_columns)
+      {
+        const unsigned int columns = std::min(inverse_block_columns, m - first);
+        cholmod_dense     *B       = cholmod_zeros(n, columns, CHOLMOD_REAL, c);
+        if (!B)
+          {
+            cholmod_free_factor(&L, c);
+            throw std::runtime_error("DirectSystem::inverse_block: CHOLMOD cannot allocate " + std::to_string(columns) +
+                                     " right-hand sides");
+          }
+        auto *Bx = static_cast<double *>(B->x);
+        for (unsigned int j = 0; j < columns; ++j)
+          Bx[static_cast<std::size_t>(j) * B->d + rows[first + j]] = 1;
+        cholmod_dense *X = cholmod_solve(CHOLMOD_A, L, B, c);
+        cholmod_free_dense(&B, c);
+        if (!X)
+          {
+            cholmod_free_factor(&L, c);
+            throw std::runtime_error("DirectSystem::inverse_block: the CHOLMOD solve failed (status " +
+                                     std::to_string(c->status) + ")");
+          }
+        const auto *Xx = static_cast<const double *>(X->x);
+        for (unsigned int j = 0; j < columns; ++j)
+          for (unsigned int i = 0; i < m; ++i)
+            result(i, first + j) = Xx[static_cast<std::size_t>(j) * X->d + rows[i]];
+        cholmod_free_dense(&X, c);
+      }
+    cholmod_free_factor(&L, c);
+    seconds = seconds_since(start);
+    return result;
   }
 
 

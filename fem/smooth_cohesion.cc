@@ -25,8 +25,9 @@ namespace gradcontact::fem
     /// False-position iterations per critical state.
     constexpr unsigned int max_critical_iterations = 80;
 
-    /// Folds of F(d) a resolved path can have: a snap-in and its way back on approach, then the jump off the contact
-    /// (measured at lambda = 10: two on approach, one on the contact); more are the mesh's (header).
+    /// Folds of F(d) a resolved path can have: at large Tabor parameters the surface's bulge on approach (a maximum
+    /// and a minimum of d) and the contact's formation (a maximum and the jump-off minimum); more are the mesh's
+    /// (header).
     constexpr unsigned int max_depth_folds = 4;
   } // namespace
 
@@ -542,11 +543,11 @@ namespace gradcontact::fem
     {
       const auto force_slope = [](const SmoothCohesionState &s) { return s.force_slope; };
       const auto depth_slope = [](const SmoothCohesionState &s) { return s.depth_slope; };
+      // Retraction from the contact follows the path backward: it leaves at the last minimum of F (force control)
+      // or of d (displacement control) before the contact; approach leaves the path at its first maximum of d.
       if (a.state.force_slope < 0 && b.state.force_slope >= 0)
         {
-          const SmoothCohesionState s = root(a, b, ds, force_slope, path);
-          if (!path.has_force_minimum || s.force < path.force_pull_off.force)
-            path.force_pull_off = s;
+          path.force_pull_off    = root(a, b, ds, force_slope, path);
           path.has_force_minimum = true;
         }
       if (a.state.depth_slope > 0 && b.state.depth_slope <= 0 && !path.has_snap_in)
@@ -556,7 +557,7 @@ namespace gradcontact::fem
         }
       if ((a.state.depth_slope > 0) != (b.state.depth_slope > 0))
         ++path.depth_folds;
-      if (a.state.depth_slope < 0 && b.state.depth_slope >= 0 && !path.has_depth_jump)
+      if (a.state.depth_slope < 0 && b.state.depth_slope >= 0)
         {
           path.depth_pull_off = root(a, b, ds, depth_slope, path);
           path.has_depth_jump = true;

@@ -97,11 +97,13 @@ namespace gradcontact::fem
   struct SmoothCohesionPath
   {
     std::vector<SmoothCohesionState> states; ///< along the path, h_c decreasing
-    /// Pull-off under force control: the smallest F (its minimum, dF/dh_c = 0).
+    /// Pull-off under force control: the last minimum of F along the path (dF/ds = 0), where retraction from the
+    /// contact under force control leaves it.
     bool                has_force_minimum = false;
     SmoothCohesionState force_pull_off;
-    /// Snap-in on approach (the largest d before the contact forms) and pull-off under displacement control (the
-    /// smallest d after it): the folds of F(d), dd/dh_c = 0; none when d grows monotonically (small Tabor parameter).
+    /// Snap-in on approach (the first maximum of d) and pull-off under displacement control (the last minimum of d,
+    /// where retraction under displacement control jumps off): folds of F(d), dd/ds = 0; none when d grows
+    /// monotonically (small Tabor parameter).
     bool                has_snap_in = false, has_depth_jump = false;
     SmoothCohesionState snap_in, depth_pull_off;
 
