@@ -8,6 +8,7 @@
 #include <analytic/adhesion.h>
 #include <analytic/maugis_dugdale.h>
 #include <fem/cohesive_zone.h>
+#include <fem/smooth_cohesion.h>
 
 #include <algorithm>
 #include <chrono>
@@ -16,6 +17,7 @@
 #include <iostream>
 #include <limits>
 #include <map>
+#include <memory>
 #include <sstream>
 
 namespace gradcontact::cases
@@ -215,6 +217,51 @@ namespace gradcontact::cases
       return solution;
     }
 
+    /// The Lennard-Jones map's lambda (fem/smooth_cohesion.h: its largest stress the Dugdale sigma_0 of lambda): one
+    /// path, through snap-in and both pull-offs, on the model of its k (the surface flexibility shared by every
+    /// lambda). Its depths are shifted by the law's equilibrium separation eps (d + eps: the approach beyond the
+    /// touching of the surfaces, JKR's depth); a displacement-controlled pull-off without a jump is "none".
+    LambdaSolution solve_lambda_smooth(fem::SmoothCohesiveContact &contact, const gradcontact::Medium &medium,
+                                       const JkrProfile &profile, const double dgamma, const Point &base,
+                                       const std::vector<bool> &controls)
+    {
+      LambdaSolution                solution;
+      const fem::LennardJonesLaw    law  = fem::LennardJonesLaw::with_max_stress(base.strength, dgamma);
+      const fem::SmoothCohesionPath path = contact.trace(law);
+      for (const bool force_control : controls)
+        {
+          Point p            = base;
+          p.force_control    = force_control;
+          const auto jkr     = jkr_critical(medium, profile, dgamma,
+                                            force_control ? gradcontact::Control::force : gradcontact::Control::displacement);
+          p.force_jkr        = jkr.force;
+          p.radius_jkr       = jkr.radius;
+          p.depth_jkr        = jkr.depth;
+          p.zone_ratio       = std::nan("");
+          p.states           = path.steps;
+          p.dofs             = path.n_dofs;
+          p.seconds          = path.seconds;
+          const bool found   = force_control ? path.has_force_minimum : path.has_depth_jump;
+          const fem::SmoothCohesionState &c = force_control ? path.force_pull_off : path.depth_pull_off;
+          if (!path.converged)
+            p.error = "Lennard-Jones path: " + path.message + " (" + std::to_string(path.steps) + " steps, " +
+                      std::to_string(path.rejected_steps) + " rejected, " + std::to_string(path.newton_iterations) +
+                      " Newton iterations)";
+          else if (!found && force_control)
+            p.error = "Lennard-Jones path: no minimum of F before the contact";
+          p.vanishing = !force_control && !found;
+          if (found)
+            {
+              p.force  = c.force;
+              p.radius = c.contact_radius;
+              p.depth  = c.depth + law.separation;
+            }
+          solution.points.push_back(p);
+        }
+      for (const fem::SmoothCohesionState &st : path.states)
+        solution.path.push_back({st.contact_radius, std::nan(""), st.depth + law.separation, st.force, true});
+      return solution;
+    }
   } // namespace
 
 
@@ -290,6 +337,8 @@ namespace gradcontact::cases
     const std::string profile_name =
       paraboloid ? "paraboloid R = " + format(s.load.R) + " m" : "power law f = A r^n, n = " + format(s.load.n);
 
+    const bool smooth = s.adhesion.lennard_jones;
+    const std::string law_name = smooth ? "Lennard-Jones" : "Dugdale";
     std::ofstream csv(folder / "map.csv");
     csv.precision(10);
     csv << "k,lambda,control,sigma0,h0,force,force_jkr,force_deviation,radius,radius_jkr,radius_deviation,depth,depth_jkr,"
@@ -298,15 +347,24 @@ namespace gradcontact::cases
     std::ostringstream md, thresholds_md;
     md << "# " << s.info.name << ": where the chapter's JKR pull-off holds\n\n"
        << (s.info.description.empty() ? "" : s.info.description + "\n\n")
-       << "The FE model of a rigid " << profile_name << " with a Dugdale cohesive zone (tension sigma_0 where the gap is "
-          "below h_0 = dgamma / sigma_0, fem/cohesive_zone.h) on E0 (z/c0)^k, dgamma = "
-       << format(dgamma) << " J/m^2, nu = " << format(s.material.nu)
-       << ": its pull-off (the minimum of F(a) under force control, of d(a) under displacement control, along the path "
-          "parametrised by the contact radius) against the chapter's JKR critical state (9.55-9.56 for the paraboloid, "
+       << "The FE model of a rigid " << profile_name
+       << (smooth ? " with the Lennard-Jones law (sigma(h) = 8 dgamma / (3 eps) ((eps/h)^3 - (eps/h)^9), repulsion "
+                    "included, its largest attraction sigma_0, fem/smooth_cohesion.h)"
+                  : " with a Dugdale cohesive zone (tension sigma_0 where the gap is below h_0 = dgamma / sigma_0, "
+                    "fem/cohesive_zone.h)")
+       << " on E0 (z/c0)^k, dgamma = " << format(dgamma) << " J/m^2, nu = " << format(s.material.nu)
+       << (smooth ? ": its pull-off (the last minimum of F under force control, of d under displacement control, along "
+                    "the equilibrium path followed by pseudo-arclength from the surfaces apart through snap-in into "
+                    "contact; the contact radius where the gap is eps, the depth d + eps)"
+                  : ": its pull-off (the minimum of F(a) under force control, of d(a) under displacement control, along "
+                    "the path parametrised by the contact radius)")
+       << " against the chapter's JKR critical state (9.55-9.56 for the paraboloid, "
           "9.60-9.61 for the power law). lambda is the Tabor parameter C Delta_l(a_c) / h_0 (cases/fe_cohesive.h; "
-          "Maugis' at k = 0). F_rigid = -pi sigma_0 c^2 with f(c) = h_0 is the pull-off of the rigid limit (DMT: "
-          "-2 pi dgamma R for the paraboloid, for every k). Where the contact shrinks to nothing without a jump "
-          "(no minimum of d(a), small lambda) the chapter's displacement-controlled instability does not exist: "
+          "Maugis' at k = 0"
+       << (smooth ? "; with sigma_0 the Lennard-Jones' largest stress, lambda = 1.16 mu, mu Tabor's" : "")
+       << "). F_rigid = -pi sigma_0 c^2 with f(c) = h_0 is the pull-off of the rigid limit (DMT: "
+          "-2 pi dgamma R for the paraboloid, for every k and law). Where the contact shrinks to nothing without a jump "
+          "(no minimum of d, small lambda) the chapter's displacement-controlled instability does not exist: "
           "\"none\", counted as a deviation of 100 %.\n\n";
     thresholds_md << "## Where the chapter's JKR pull-off force holds\n\n| k | control |";
     for (const double t : s.map.thresholds)
@@ -326,8 +384,23 @@ namespace gradcontact::cases
           gradcontact::medium(gradcontact::GradedHalfSpace{s.material.E0, s.material.c0, k, s.material.nu});
         const unsigned int level = finest_refinement(s);
         const auto settings = [&sk, material, level](const double a) { return fe_settings(sk, material, a, level); };
-        md << "## k = " << format(k) << "\n\n| lambda | control | F_c / F_c,JKR | a_c / a_c,JKR | c / a | F_c / F_rigid | "
-              "states | DoFs | s |\n|---|---|---|---|---|---|---|---|---|\n";
+        // Lennard-Jones: one model of this k for every lambda, built when a point is solved here (its mesh graded
+        // toward the force-controlled JKR radius, refined 2^level times).
+        std::unique_ptr<fem::SmoothCohesiveContact> smooth_contact;
+        double                                      flexibility_seconds = 0;
+        const auto smooth_model = [&]() -> fem::SmoothCohesiveContact & {
+          if (!smooth_contact)
+            {
+              const auto start_model = std::chrono::steady_clock::now();
+              const double a_c = jkr_critical(medium, profile, dgamma, gradcontact::Control::force).radius;
+              smooth_contact   = std::make_unique<fem::SmoothCohesiveContact>(
+                material, fe_profile, fem::smooth_cohesion_settings(material, a_c, std::pow(2.0, level)));
+              flexibility_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start_model).count();
+            }
+          return *smooth_contact;
+        };
+        md << "## k = " << format(k) << "\n\n| lambda | control | F_c / F_c,JKR | a_c / a_c,JKR | d_c / d_c,JKR | c / a | "
+              "F_c / F_rigid | states | DoFs | s |\n|---|---|---|---|---|---|---|---|---|---|\n";
         std::map<bool, std::vector<Point>> by_control;
         for (const double lambda : lambdas)
           {
@@ -338,10 +411,13 @@ namespace gradcontact::cases
             base.strength = cohesive_strength(lambda, medium, profile, dgamma);
             base.range    = dgamma / base.strength;
             const double c_rigid = paraboloid ? std::sqrt(2 * s.load.R * base.range) : std::pow(base.range / s.load.A, 1 / s.load.n);
-            base.force_rigid     = -pi * base.strength * c_rigid * c_rigid;
+            // (The Lennard-Jones' rigid limit of the power law is not Dugdale's: only the paraboloid's, -2 pi dgamma R, is
+            // shared.)
+            base.force_rigid     = smooth && !paraboloid ? std::nan("") : -pi * base.strength * c_rigid * c_rigid;
             // The pull-offs of every control and the states of the path: from the point cache (a --map-shard job's
             // or an earlier run's) or solved here.
-            const std::string key = "cohesive map point\n" + s.resolved + "\nk = " + exact(k) + ", lambda = " + exact(lambda);
+            const std::string key = "cohesive map point\n" + s.resolved + "\nk = " + exact(k) + ", lambda = " + exact(lambda) +
+                                    (smooth ? ", Lennard-Jones" : "");
             LambdaSolution solution;
             if (const auto cached = cache.get(key))
               {
@@ -355,8 +431,17 @@ namespace gradcontact::cases
                     ++skipped;
                     continue; // another shard's
                   }
-                solution = solve_lambda(material, fe_profile, settings, medium, profile, dgamma, base, controls,
-                                        s.adhesion.curve_points);
+                if (smooth)
+                  {
+                    solution = solve_lambda_smooth(smooth_model(), medium, profile, dgamma, base, controls);
+                    // The model's construction (mesh, factorisation, surface flexibility) counts toward its first lambda.
+                    for (Point &p : solution.points)
+                      p.seconds += flexibility_seconds;
+                    flexibility_seconds = 0;
+                  }
+                else
+                  solution = solve_lambda(material, fe_profile, settings, medium, profile, dgamma, base, controls,
+                                          s.adhesion.curve_points);
                 ++computed;
                 cache.put(key, solution.to_json());
               }
@@ -377,7 +462,7 @@ namespace gradcontact::cases
                   md << "none (no jump" << (p.note.empty() ? "" : "; " + p.note) << ") | - | - | - | - |";
                 else
                   md << format(p.force / p.force_jkr) << " | " << (p.vanishing ? "0 (contact vanished)" : format(p.radius / p.radius_jkr))
-                     << " | " << format(p.depth / p.depth_jkr) << " | " << format(p.zone_ratio) << " | "
+                     << " | " << format(p.depth / p.depth_jkr) << " | " << (smooth ? "-" : format(p.zone_ratio)) << " | "
                      << format(p.force / p.force_rigid) << " |";
                 md << " " << p.states << " | " << p.dofs << " | " << format(p.seconds) << " |\n";
                 if (verbose)
@@ -387,13 +472,13 @@ namespace gradcontact::cases
                             << "\n";
                 if (!p.error.empty())
                   {
-                    result.rows.push_back(failed("pull-off force (" + control_name(force_control) + ")", "FE cohesive",
+                    result.rows.push_back(failed("pull-off force (" + control_name(force_control) + ")", "FE " + law_name,
                                                  "closed form (JKR idealisation)",
                                                  "k = " + format(k) + ", lambda = " + format(lambda) + ": " + p.error));
                     continue;
                   }
                 // The sharp check at k = 0: Maugis-Dugdale.
-                if (k == 0 && paraboloid && lambda >= 1e-3 && lambda <= 1e3)
+                if (!smooth && k == 0 && paraboloid && lambda >= 1e-3 && lambda <= 1e3)
                   {
                     const double E_star = s.material.E0 / (1 - s.material.nu * s.material.nu);
                     if (const auto row = maugis_dugdale_row(
@@ -404,7 +489,7 @@ namespace gradcontact::cases
                   }
               }
             for (const auto &[x, error] : solution.path_errors)
-              result.rows.push_back(failed("F(d) path", "FE cohesive", "-",
+              result.rows.push_back(failed("F(d) path", "FE " + law_name, "-",
                                            "k = " + format(k) + ", lambda = " + format(lambda) + ", a = " + format(x) +
                                              " a_c,JKR: " + error));
             const auto jkr_force = jkr_critical(medium, profile, dgamma, gradcontact::Control::force);

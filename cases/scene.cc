@@ -411,11 +411,14 @@ namespace gradcontact::cases
     prm.declare_entry("curve points", "", Patterns::List(Patterns::Double(0.), 0, 50),
                       "a / a_c (force control) of FE points on the adhesive force-depth curve (9.57, figures "
                       "9.22-9.23); empty: none.");
-    prm.declare_entry("law", "JKR", Patterns::Selection("JKR|Dugdale"),
+    prm.declare_entry("law", "JKR", Patterns::Selection("JKR|Dugdale|Lennard-Jones"),
                       "JKR: the chapter's adhesion (infinitely short range; the FE from its energy release rate). "
                       "Dugdale: a cohesive zone of finite range (tension sigma_0 where the gap is below dgamma / "
                       "sigma_0, fem/cohesive_zone.h): the FE drops JKR's assumption and the closed-form rows say "
-                      "\"(JKR idealisation)\" (paraboloid or power law).");
+                      "\"(JKR idealisation)\" (paraboloid or power law). Lennard-Jones: the smooth law of "
+                      "fem/smooth_cohesion.h (repulsion included, its largest attraction the Dugdale sigma_0 of the "
+                      "Tabor parameter), in Tabor-parameter maps (Map/parameter = Tabor parameter; without it the "
+                      "map is Dugdale's).");
     prm.declare_entry("Tabor parameter", "0", Patterns::Double(0.),
                       "Dugdale: lambda (cases/fe_cohesive.h; Maugis' at k = 0), which sets sigma_0; or give the "
                       "cohesive strength.");
@@ -437,6 +440,7 @@ namespace gradcontact::cases
     for (const std::string &x : dealii::Utilities::split_string_list(prm.get("curve points")))
       curve_points.push_back(dealii::Utilities::string_to_double(x));
     dugdale = prm.get("law") == "Dugdale";
+    lennard_jones = prm.get("law") == "Lennard-Jones";
     tabor_parameter = prm.get_double("Tabor parameter");
     cohesive_strength = prm.get_double("cohesive strength");
     prm.leave_subsection();
@@ -620,6 +624,9 @@ namespace gradcontact::cases
       if (optimal && !(ad.tensile_strength > 0.))
         throw std::invalid_argument(where + "Adhesion/tensile strength = " + format(ad.tensile_strength) +
                                     " must be in (0, inf) for the optimal profile");
+      if (ad.lennard_jones && !(s.map.parameter == MapParameters::Parameter::tabor_parameter))
+        throw std::invalid_argument(where + "Adhesion/law = Lennard-Jones runs in Tabor-parameter maps only (Map/parameter "
+                                    "= Tabor parameter, which gives its lambdas)");
       if (!ad.dugdale && (ad.tabor_parameter > 0. || ad.cohesive_strength > 0.))
         throw std::invalid_argument(where + "Adhesion/Tabor parameter or cohesive strength is set with Adhesion/law = "
                                     "JKR: they belong to law = Dugdale");
@@ -768,6 +775,9 @@ namespace gradcontact::cases
         if (s.tangential.enabled() || s.candidate.enabled() || s.load.contact == LoadParameters::Contact::unilateral)
           throw std::invalid_argument(where + "Map/parameter = Tabor parameter: an adhesive scene (no Tangential or "
                                       "Candidate entries, Load/contact = disc)");
+        if (s.adhesion.tabor_parameter > 0. || s.adhesion.cohesive_strength > 0.)
+          throw std::invalid_argument(where + "Map/parameter = Tabor parameter: Adhesion/Tabor parameter and cohesive "
+                                      "strength are not set (Map/ratios gives the lambdas)");
         if (!(s.adhesion.work_of_adhesion > 0.))
           throw std::invalid_argument(where + "Map/parameter = Tabor parameter with Adhesion/work of adhesion = " +
                                       format(s.adhesion.work_of_adhesion) + ": it must be in (0, inf)");

@@ -181,6 +181,9 @@ namespace gradcontact::cases
     /// The adhesive law of the FE: JKR (the chapter's, energy release rate) or a Dugdale cohesive zone of strength
     /// sigma_0 (given, or from the Tabor parameter lambda, cases/fe_cohesive.h), fem/cohesive_zone.h.
     bool dugdale = false;
+    /// Or the Lennard-Jones law of fem/smooth_cohesion.h, its largest stress the Dugdale sigma_0 of the Tabor
+    /// parameter (Tabor-parameter maps only).
+    bool lennard_jones = false;
     double tabor_parameter = 0.;    ///< lambda > 0 (Dugdale; or cohesive_strength)
     double cohesive_strength = 0.;  ///< sigma_0 [Pa] > 0 (Dugdale; or tabor_parameter)
     bool enabled(const LoadParameters &load) const;

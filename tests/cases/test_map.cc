@@ -371,3 +371,46 @@ TEST_CASE("A Coulomb 3D map shall read the shipped scene and name the entries it
   CHECK_THROWS_WITH(with({"Tangential/Holl ratio=true"}), Catch::Contains("use Map/Holl ratio"));
   CHECK_THROWS_WITH(with({"Load/R=1e-5"}), Catch::Contains("Load/a < Load/R"));
 }
+
+TEST_CASE("A Lennard-Jones Tabor map shall follow the path from DMT toward JKR and refuse the law elsewhere", "[cases]")
+{
+  const TemporaryFolder folder("gradcontact-lennard-jones-map");
+  const fs::path scene = folder.path() / "lj_map.prm";
+  std::ofstream(scene) << "subsection Material\n  set k = 0\nend\n"
+                          "subsection Load\n  set type = paraboloid\n  set R = 5e-3\nend\n"
+                          "subsection Adhesion\n  set work of adhesion = 0.05\n  set control = both\n"
+                          "  set law = Lennard-Jones\nend\n"
+                          "subsection Map\n  set parameter = Tabor parameter\n  set ratios = 0.3, 1\n"
+                          "  set thresholds = 0.1\nend\n";
+  const fs::path reports = folder.path() / "reports";
+  REQUIRE(run({scene.string(), "--reports", reports.string(), "--quiet"}) == 0);
+  const fs::path out = reports / "lj_map";
+  const auto     csv = testing::read_csv(out / "map.csv");
+  REQUIRE(csv.size() == 5); // header, (0.3, 1) x (force, displacement)
+  REQUIRE(csv[0][7] == "force_deviation");
+  REQUIRE(csv[0][16] == "vanishing_contact");
+  // Force control: between DMT (F_c / F_c,JKR = 4/3 at k = 0) and JKR, falling toward JKR.
+  for (const std::size_t row : {1, 3})
+    {
+      CHECK(csv[row][2] == "force");
+      CHECK(std::stod(csv[row][7]) > 0);
+      CHECK(std::stod(csv[row][7]) < 1.0 / 3.0);
+    }
+  CHECK(std::stod(csv[3][7]) < std::stod(csv[1][7]));
+  // Displacement control: no jump at lambda = 0.3 (the contact shrinks to nothing), a jump at 1 (Greenwood 1997).
+  CHECK(csv[2][16] == "1");
+  CHECK(csv[4][16] == "0");
+  const auto errors = testing::read_csv(out / "errors.csv");
+  REQUIRE(errors.size() == 4); // header, the JKR trends of both controls, the DMT trend
+  for (std::size_t i = 1; i < errors.size(); ++i)
+    CHECK(errors[i][9] == "pass");
+  const std::string md = testing::read_text(out / "map.md");
+  CHECK(md.find("Lennard-Jones law") != std::string::npos);
+
+  using testing::scene_with;
+  CHECK_THROWS_WITH(scene_with({"Load/type=paraboloid", "Adhesion/work of adhesion=0.05", "Adhesion/law=Lennard-Jones"}),
+                    Catch::Contains("Lennard-Jones runs in Tabor-parameter maps only"));
+  CHECK_THROWS_WITH(scene_with({"Load/type=paraboloid", "Adhesion/work of adhesion=0.05", "Adhesion/law=Lennard-Jones",
+                                "Map/parameter=Tabor parameter", "Map/ratios=1", "Adhesion/Tabor parameter=2"}),
+                    Catch::Contains("Map/ratios gives the lambdas"));
+}
