@@ -54,12 +54,12 @@ namespace gradcontact::cases
 
     /// A trend check: a deviation must fall toward a limit, from `before` to `after` (rel_error = after / before < 1).
     Row falling_row(const std::string &quantity, const std::string &metric, const std::string &reference,
-                    const double before, const double after, const Point &at)
+                    const double before, const double after, const Point &at, const std::string &method)
     {
       Row row;
       row.quantity        = quantity;
       row.metric          = metric + " (must fall: < 1)";
-      row.method          = "FE cohesive";
+      row.method          = method;
       row.reference       = reference;
       row.reference_value = before;
       row.value           = after;
@@ -225,9 +225,18 @@ namespace gradcontact::cases
                                        const JkrProfile &profile, const double dgamma, const Point &base,
                                        const std::vector<bool> &controls)
     {
-      LambdaSolution                solution;
-      const fem::LennardJonesLaw    law  = fem::LennardJonesLaw::with_max_stress(base.strength, dgamma);
-      const fem::SmoothCohesionPath path = contact.trace(law);
+      LambdaSolution             solution;
+      const fem::LennardJonesLaw law = fem::LennardJonesLaw::with_max_stress(base.strength, dgamma);
+      fem::SmoothCohesionPath    path;
+      try
+        {
+          path = contact.trace(law);
+        }
+      catch (const std::exception &e)
+        {
+          path.converged = false;
+          path.message   = concise(e);
+        }
       for (const bool force_control : controls)
         {
           Point p            = base;
@@ -362,8 +371,8 @@ namespace gradcontact::cases
           "9.60-9.61 for the power law). lambda is the Tabor parameter C Delta_l(a_c) / h_0 (cases/fe_cohesive.h; "
           "Maugis' at k = 0"
        << (smooth ? "; with sigma_0 the Lennard-Jones' largest stress, lambda = 1.16 mu, mu Tabor's" : "")
-       << "). F_rigid = -pi sigma_0 c^2 with f(c) = h_0 is the pull-off of the rigid limit (DMT: "
-          "-2 pi dgamma R for the paraboloid, for every k and law). Where the contact shrinks to nothing without a jump "
+       << "). F_rigid = -pi sigma_0 c^2 with f(c) = h_0 is the Dugdale law's pull-off in the rigid limit (DMT: "
+          "-2 pi dgamma R for the paraboloid, for every k and law; not drawn for the Lennard-Jones power law). Where the contact shrinks to nothing without a jump "
           "(no minimum of d, small lambda) the chapter's displacement-controlled instability does not exist: "
           "\"none\", counted as a deviation of 100 %.\n\n";
     thresholds_md << "## Where the chapter's JKR pull-off force holds\n\n| k | control |";
@@ -463,11 +472,12 @@ namespace gradcontact::cases
                 else
                   md << format(p.force / p.force_jkr) << " | " << (p.vanishing ? "0 (contact vanished)" : format(p.radius / p.radius_jkr))
                      << " | " << format(p.depth / p.depth_jkr) << " | " << (smooth ? "-" : format(p.zone_ratio)) << " | "
-                     << format(p.force / p.force_rigid) << " |";
+                     << (std::isfinite(p.force_rigid) ? format(p.force / p.force_rigid) : "-") << " |";
                 md << " " << p.states << " | " << p.dofs << " | " << format(p.seconds) << " |\n";
                 if (verbose)
                   std::cerr << "  k = " << k << ", lambda = " << lambda << ", " << control_name(force_control)
-                            << ": F/F_JKR = " << p.force / p.force_jkr << ", c/a = " << p.zone_ratio << ", "
+                            << ": F/F_JKR = " << p.force / p.force_jkr << (smooth ? "" : ", c/a = " + format(p.zone_ratio))
+                            << ", "
                             << p.states << " states, " << p.seconds << " s" << (p.error.empty() ? "" : " (" + p.error + ")")
                             << "\n";
                 if (!p.error.empty())
@@ -539,7 +549,8 @@ namespace gradcontact::cases
                                                   "k = " + format(k) + ": |F_c / F_c,JKR - 1| at lambda = " +
                                                     format(r.back()) + " over its value at lambda = " +
                                                     format(r[r.size() - 2]),
-                                                  "closed form (JKR idealisation)", prev, last, points.back()));
+                                                  "closed form (JKR idealisation)", prev, last, points.back(),
+                                                  "FE " + law_name));
               }
             if (force_control && paraboloid && r.size() >= 2)
               {
@@ -551,7 +562,7 @@ namespace gradcontact::cases
                                                         format(p0.lambda) + " over its value at lambda = " +
                                                         format(p1.lambda),
                                                       "rigid sphere (DMT)", std::abs(p1.rigid_deviation()),
-                                                      std::abs(p0.rigid_deviation()), p0));
+                                                      std::abs(p0.rigid_deviation()), p0, "FE " + law_name));
                   }
               }
           }

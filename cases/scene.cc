@@ -624,9 +624,6 @@ namespace gradcontact::cases
       if (optimal && !(ad.tensile_strength > 0.))
         throw std::invalid_argument(where + "Adhesion/tensile strength = " + format(ad.tensile_strength) +
                                     " must be in (0, inf) for the optimal profile");
-      if (ad.lennard_jones && !(s.map.parameter == MapParameters::Parameter::tabor_parameter))
-        throw std::invalid_argument(where + "Adhesion/law = Lennard-Jones runs in Tabor-parameter maps only (Map/parameter "
-                                    "= Tabor parameter, which gives its lambdas)");
       if (!ad.dugdale && (ad.tabor_parameter > 0. || ad.cohesive_strength > 0.))
         throw std::invalid_argument(where + "Adhesion/Tabor parameter or cohesive strength is set with Adhesion/law = "
                                     "JKR: they belong to law = Dugdale");
@@ -688,6 +685,9 @@ namespace gradcontact::cases
   SceneKind scene_kind(const Scene &s)
   {
     const std::string where = "scene " + s.file + ": ";
+    if (s.adhesion.lennard_jones && s.map.parameter != MapParameters::Parameter::tabor_parameter)
+      throw std::invalid_argument(where + "Adhesion/law = Lennard-Jones runs in Tabor-parameter maps only (Map/parameter "
+                                  "= Tabor parameter, which gives its lambdas)");
     if (s.references.fem && s.material.nu >= 0.5 &&
         s.discretization.formulation == DiscretizationParameters::Formulation::displacement)
       throw std::invalid_argument(where + "Material/nu = 0.5 with Discretization/formulation = displacement: the "
@@ -772,6 +772,12 @@ namespace gradcontact::cases
     if (s.map.parameter == MapParameters::Parameter::tabor_parameter)
       {
         using Type = LoadParameters::Type;
+        if (s.adhesion.lennard_jones && !s.discretization.refinements.empty() &&
+            s.discretization.refinements.back() > 4)
+          throw std::invalid_argument(where + "Discretization/refinements = " +
+                                      std::to_string(s.discretization.refinements.back()) +
+                                      " with Adhesion/law = Lennard-Jones: at most 4 (its mesh is refined 2^level times, "
+                                      "fem/smooth_cohesion.h)");
         if (s.tangential.enabled() || s.candidate.enabled() || s.load.contact == LoadParameters::Contact::unilateral)
           throw std::invalid_argument(where + "Map/parameter = Tabor parameter: an adhesive scene (no Tangential or "
                                       "Candidate entries, Load/contact = disc)");

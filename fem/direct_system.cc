@@ -4,7 +4,7 @@
 #include <deal.II/dofs/dof_tools.h>
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
 
-#include <suitesparse/cholmod.h>
+#include <cholmod.h>
 
 #include <algorithm>
 #include <chrono>
@@ -116,12 +116,16 @@ namespace gradcontact::fem
 
     CholmodCommon cm;
     cholmod_common *c = &cm.common;
+    c->print          = 0; // a matrix that is not positive definite is handled below, not printed
     // A is symmetric: its CSR rows are its CSC columns; CHOLMOD reads the upper triangle (stype = 1), the entries
     // (i, j) with i <= j of column j.
     std::size_t nnz = 0;
     for (unsigned int j = 0; j < n; ++j)
       for (auto entry = stiffness.begin(j); entry != stiffness.end(j); ++entry)
         nnz += entry->column() <= j;
+    if (nnz > static_cast<std::size_t>(std::numeric_limits<int>::max()))
+      throw std::invalid_argument("DirectSystem::inverse_block: " + std::to_string(nnz) +
+                                  " entries exceed CHOLMOD's 32-bit indices");
     cholmod_sparse *A = cholmod_allocate_sparse(n, n, nnz, /*sorted*/ 0, /*packed*/ 1, /*stype*/ 1, CHOLMOD_REAL, c);
     if (!A)
       throw std::runtime_error("DirectSystem::inverse_block: CHOLMOD cannot allocate the matrix (" + std::to_string(nnz) +

@@ -78,10 +78,10 @@ namespace gradcontact::fem
       fail("SmoothCohesionParameters", "start_gap", start_gap, "(1, 1e3]");
     if (!(min_gap >= linear_below && min_gap < 1))
       fail("SmoothCohesionParameters", "min_gap", min_gap, "[0.5, 1)");
-    if (!(first_step > 0 && first_step <= max_step))
-      fail("SmoothCohesionParameters", "first_step", first_step, "(0, max_step]");
     if (!(max_step > 0 && max_step <= 1))
       fail("SmoothCohesionParameters", "max_step", max_step, "(0, 1]");
+    if (!(first_step > 0 && first_step <= max_step))
+      fail("SmoothCohesionParameters", "first_step", first_step, "(0, max_step]");
     if (!(max_change > 0 && max_change <= 0.5))
       fail("SmoothCohesionParameters", "max_change", max_change, "(0, 0.5]");
     if (!std::isfinite(stop_force))
@@ -316,11 +316,18 @@ namespace gradcontact::fem
       std::vector<double>              R = residual(x, constraint);
       for (iterations = 1; iterations <= parameters.max_newton; ++iterations)
         {
-          jacobian(x, constraint, J);
           dealii::Vector<double> delta(n + 1);
-          for (unsigned int i = 0; i <= n; ++i)
-            delta[i] = -R[i];
-          J.solve(delta);
+          try
+            {
+              jacobian(x, constraint, J);
+              for (unsigned int i = 0; i <= n; ++i)
+                delta[i] = -R[i];
+              J.solve(delta);
+            }
+          catch (const std::exception &)
+            {
+              return false; // an exactly singular Jacobian (LAPACK's LU): the caller shortens its step
+            }
           const double step = delta.linfty_norm();
           if (!std::isfinite(step))
             return false;
@@ -329,6 +336,8 @@ namespace gradcontact::fem
               dealii::Vector<double> t(n + 1);
               t[n] = 1;
               J.solve(t);
+              for (unsigned int i = 0; i <= n; ++i)
+                x[i] += delta[i];
               solved.x = x;
               solved.tangent.assign(t.begin(), t.end());
               solved.state.newton_iterations = iterations;
@@ -416,25 +425,18 @@ namespace gradcontact::fem
       return true;
     }
 
-    /// The state at central gap hc by Newton from `from`'s tangent predictor (or from x = 0 without `from`).
-    bool at_gap(const double hc, const Solved *from, Solved &solved, unsigned int &iterations) const
+    /// The state at central gap hc by Newton from the undeformed surface (x = 0, d = -hc).
+    bool at_gap(const double hc, Solved &solved, unsigned int &iterations) const
     {
       std::vector<double> x(n + 1, 0.0);
       x[n] = -hc;
-      if (from)
-        {
-          // Along the tangent to the wanted h_c (the tangent is per unit arclength).
-          const double ds = from->state.gap_slope != 0 ? (hc - from->state.central_gap) / from->state.gap_slope : 0;
-          for (unsigned int i = 0; i <= n; ++i)
-            x[i] = from->x[i] + ds * from->tangent[i];
-        }
       if (!newton(x, gap_constraint(hc), solved, iterations))
         return false;
-      finish(solved, from ? &from->tangent : nullptr);
+      finish(solved, nullptr);
       return true;
     }
 
-    /// Follows the path from `current` (pseudo-arclength in (h_c, d)): to its end (trace, `path` given: the minimum of
+    /// Follows the path from `current` (pseudo-arclength): to its end (trace, `path` given: the minimum of
     /// F passed and F >= stop_force, or h_c <= min_gap eps), or until h_c first reaches `target` (path null).
     Solved follow(Solved current, const double target, SmoothCohesionPath *path) const
     {
@@ -502,13 +504,15 @@ namespace gradcontact::fem
           ++steps;
           if (target >= 0 && next.state.central_gap <= target)
             {
-              // The wanted central gap lies between current and next.
-              Solved       exact;
-              unsigned int its = 0;
-              if (!at_gap(target, &current, exact, its))
-                throw std::runtime_error("SmoothCohesiveContact: Newton did not converge at h_c = " +
-                                         std::to_string(target / eps()) + " eps (" + std::to_string(its) +
-                                         " iterations)");
+              // The wanted central gap lies between current and next: false position in the arclength (h_c may fold
+              // nearby, where a step in h_c from the tangent would not be defined).
+              SmoothCohesionPath scratch;
+              Solved             exact;
+              exact.state = root(current, next, ds,
+                                 [target](const SmoothCohesionState &st) { return st.central_gap - target; }, scratch);
+              if (!scratch.converged)
+                throw std::runtime_error("SmoothCohesiveContact: " + scratch.message + "at h_c = " +
+                                         std::to_string(target / eps()) + " eps");
               return exact;
             }
           if (path)
@@ -616,7 +620,7 @@ namespace gradcontact::fem
     {
       Solved       s;
       unsigned int iterations = 0;
-      if (!at_gap(parameters.start_gap * eps(), nullptr, s, iterations))
+      if (!at_gap(parameters.start_gap * eps(), s, iterations))
         throw std::runtime_error("SmoothCohesiveContact: Newton did not converge at the first state (h_c = " +
                                  std::to_string(parameters.start_gap) + " eps, " + std::to_string(iterations) +
                                  " iterations); start farther apart");
@@ -653,14 +657,14 @@ namespace gradcontact::fem
     path.n_dofs              = impl->solver->n_dofs();
     path.surface_dofs        = impl->n;
     path.flexibility_seconds = impl->flexibility.seconds;
-    Impl::Solved first       = impl->first_state();
-    path.states.push_back(first.state);
-    path.newton_iterations += first.state.newton_iterations;
     try
       {
+        Impl::Solved first = impl->first_state();
+        path.states.push_back(first.state);
+        path.newton_iterations += first.state.newton_iterations;
         impl->follow(std::move(first), -1, &path);
       }
-    catch (const std::runtime_error &e)
+    catch (const std::exception &e)
       {
         path.converged = false;
         path.message += e.what();
@@ -675,9 +679,13 @@ namespace gradcontact::fem
     impl->law        = law;
     const double eps = impl->eps();
     if (!(central_gap >= impl->parameters.min_gap * eps && central_gap <= impl->parameters.start_gap * eps))
-      fail("SmoothCohesiveContact::state", "central gap", central_gap,
-           "[" + std::to_string(impl->parameters.min_gap * eps) + ", " +
-             std::to_string(impl->parameters.start_gap * eps) + "] (min_gap eps, start_gap eps)");
+      {
+        std::ostringstream range;
+        range.precision(6);
+        range << "[" << impl->parameters.min_gap * eps << ", " << impl->parameters.start_gap * eps << "] (min_gap eps, "
+              << "start_gap eps, eps = " << eps << ")";
+        fail("SmoothCohesiveContact::state", "central gap", central_gap, range.str());
+      }
     return impl->follow(impl->first_state(), central_gap, nullptr).state;
   }
 } // namespace gradcontact::fem

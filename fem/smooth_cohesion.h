@@ -7,7 +7,7 @@
 // Interface Sci. 77 (1980) 91-101; Greenwood, Proc. R. Soc. Lond. A 453 (1997) 1277-1297, eq. 2.1):
 //   sigma(h) = 8 dgamma / (3 eps) [ (eps / h)^3 - (eps / h)^9 ],   attraction positive,
 // zero at the equilibrium separation h = eps, largest, 16 dgamma / (9 sqrt 3 eps), at h = 3^{1/6} eps, and
-// \int_eps^inf sigma dh = dgamma. Below h = eps / 2 (a repulsion of 500 times the largest attraction, never
+// \int_eps^inf sigma dh = dgamma. Below h = eps / 2 (a repulsion of about 1300 times the largest attraction, never
 // reached by an equilibrium of this suite) it continues linearly, so that a Newton trial cannot produce NaN.
 // With sigma_0 = its largest stress, Maugis' Tabor parameter of the Dugdale law (fem/cohesive_zone.h) becomes
 // lambda = 1.16 mu, mu = (R dgamma^2 / (E*^2 eps^3))^{1/3} Tabor's (k = 0).
@@ -24,9 +24,10 @@
 // The path. Under displacement control F(d) is S-shaped at large Tabor parameters (snap-in on approach, a jump
 // off the surface on retraction); under force control F has a minimum; and at large Tabor parameters the central
 // gap h_c = h(0) = f(0) - d + w(0) folds too (measured at lambda = 10: Newton in h_c stalls at 0.91 eps). So the
-// path is followed by pseudo-arclength continuation (Keller's) in the plane (h_c, d): the unknowns (w, d), the
-// constraint t_h (h_c - h_c') + t_d (d - d') = ds with (t_h, t_d) the unit tangent of the last state, a tangent
-// predictor, Newton on the bordered system, and steps ds adapted to Newton's iteration count and to the change of
+// path is followed by pseudo-arclength continuation (Keller, in Applications of Bifurcation Theory, Academic Press
+// 1977, 359-384): the unknowns x = (w, d), the metric |dx|^2 = dd^2 + dh_c^2 + |dw|^2 / n (the plane (h_c, d) alone
+// degenerates where the contact grows at nearly fixed d and h_c, measured at lambda = 10), the constraint
+// t . (x - x') = ds with t the unit tangent of the last state, a tangent predictor, Newton on the bordered system, and steps ds adapted to Newton's iteration count and to the change of
 // d and F. It starts with the surfaces apart (h_c = start_gap eps, solved with h_c fixed). The critical states
 // are the roots of dF/ds (pull-off under force control: the minimum of F) and of dd/ds (the folds of F(d):
 // snap-in, the largest d on approach, and pull-off under displacement control, the smallest d after it), found by
@@ -73,7 +74,7 @@ namespace gradcontact::fem
     double       newton_tolerance = 1e-12; ///< |Newton update|_inf / eps that ends the iteration
     unsigned int max_newton      = 30;    ///< iterations per state
     unsigned int max_steps       = 2000;  ///< path steps (accepted and rejected)
-    double       critical_tolerance = 1e-11; ///< bracket of the central gap of a critical state / eps
+    double       critical_tolerance = 1e-11; ///< bracket of the arclength of a critical state / eps
     unsigned int quadrature_points  = 8;     ///< Gauss points per surface face
 
     void validate() const;
@@ -86,8 +87,8 @@ namespace gradcontact::fem
     double       depth          = 0; ///< d
     double       force          = 0; ///< F, compressive positive
     double       contact_radius = 0; ///< outermost r with h(r) <= eps (compressive traction); 0 when none
-    /// Derivatives along the path, s its arclength in the plane (h_c, d): (dh_c/ds)^2 + (dd/ds)^2 = 1, s growing
-    /// from the surfaces apart toward the contact.
+    /// Derivatives along the path, s its arclength in the metric of the header (dd^2 + dh_c^2 + |dw|^2 / n), s
+    /// growing from the surfaces apart toward the contact.
     double       gap_slope      = 0; ///< dh_c / ds
     double       depth_slope    = 0; ///< dd / ds
     double       force_slope    = 0; ///< dF / ds

@@ -112,6 +112,12 @@ TEST_CASE("Lennard-Jones FE: a rigid sphere's path is the Derjaguin integral, pu
       CHECK(worst <= 1e-6);
       CHECK_THAT(path.force_pull_off.force, Catch::Matchers::WithinRel(-2 * pi * R * dgamma, 1e-6));
       CHECK_THAT(path.force_pull_off.depth, Catch::Matchers::WithinRel(-eps, 1e-5));
+      // One state followed to a given central gap is the path's state there.
+      const SmoothCohesionState &on_path = path.states[path.states.size() / 2];
+      const SmoothCohesionState  alone   = contact.state(law, on_path.central_gap);
+      CHECK_THAT(alone.central_gap, Catch::Matchers::WithinRel(on_path.central_gap, 1e-10));
+      CHECK_THAT(alone.force, Catch::Matchers::WithinRel(on_path.force, 1e-8));
+      CHECK_THROWS_WITH(contact.state(law, 0.1 * eps), Catch::Matchers::Contains("central gap"));
     }
 }
 
