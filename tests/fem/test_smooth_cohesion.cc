@@ -11,6 +11,7 @@
 
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <iostream>
 #include <memory>
@@ -179,6 +180,72 @@ TEST_CASE("Lennard-Jones FE: pull-off on a finer mesh", "[fem]")
                 << path.flexibility_seconds << " s, path " << path.seconds << " s\n";
     }
   CHECK_THAT(force[0], Catch::Matchers::WithinRel(force[1], 1e-5));
+}
+
+TEST_CASE("Surface flexibility (CHOLMOD, and UMFPACK for the mixed formulation) applied to a pressure equals the solve",
+          "[fem]")
+{
+  // The flexibility's columns against the solver's own constant-pressure solve (fem/axisymmetric_solver.h): w = C b with
+  // b_i = \int_{r <= a} p0 phi_i r dr on the surface faces. The displacement formulation's matrix is positive
+  // definite (CHOLMOD); the mixed one's is not (the UMFPACK fallback of DirectSystem::inverse_block).
+  const double   a = 0.1, p0 = 1e-3;
+  const Material material = power_law_material(1, 0.0);
+  for (const Formulation formulation : {Formulation::displacement, Formulation::mixed})
+    {
+      Settings s                     = recommended_settings(a, 0.0, 1e-4);
+      s.mesh.h_edge                  = 1e-2; // a small model: the fallback solves once per surface DoF
+      s.discretization.degree        = 2;
+      s.discretization.formulation   = formulation;
+      AxisymmetricSolver       solver(material, s.mesh, s.discretization);
+      const SurfaceFlexibility flexibility = solver.surface_flexibility();
+      const unsigned int       n           = flexibility.dofs.size();
+      // b: Gauss (exact for the quadratic traces) on the faces of the loaded disc.
+      std::vector<double> b(n, 0.0);
+      const double        x[2] = {0.5 - 0.5 / std::sqrt(3.0), 0.5 + 0.5 / std::sqrt(3.0)};
+      for (const SurfaceFace &face : flexibility.faces)
+        if (face.r1 <= a * (1 + 1e-12))
+          for (unsigned int i = 0; i < face.r.size(); ++i)
+            {
+              const auto it = std::find(flexibility.dofs.begin(), flexibility.dofs.end(), face.dofs[1][i]);
+              REQUIRE(it != flexibility.dofs.end());
+              std::vector<double> unit(face.r.size(), 0.0);
+              unit[i] = 1;
+              for (const double t : x)
+                {
+                  const double r = face.r0 + t * (face.r1 - face.r0);
+                  b[it - flexibility.dofs.begin()] += 0.5 * (face.r1 - face.r0) * p0 * lagrange(face.r, unit, r) * r;
+                }
+            }
+      LoadCase load;
+      load.type     = LoadType::constant_pressure;
+      load.pressure = p0;
+      OutputRequest out;
+      for (unsigned int i = 0; i < n; i += 7)
+        out.displacement_radii.push_back(flexibility.r[i]);
+      const Result result = solver.run(load, out);
+      double       worst = 0, largest = 0;
+      for (unsigned int i = 0, j = 0; i < n; i += 7, ++j)
+        {
+          double w = 0;
+          for (unsigned int l = 0; l < n; ++l)
+            w += flexibility.matrix(i, l) * b[l];
+          worst   = std::max(worst, std::abs(w - result.displacement[j].value));
+          largest = std::max(largest, std::abs(result.displacement[j].value));
+        }
+      std::cout << "surface flexibility, " << (formulation == Formulation::mixed ? "mixed" : "displacement") << ": " << n
+                << " surface DoFs of " << solver.n_dofs() << " in " << flexibility.seconds << " s, against the solve "
+                << worst / largest << "\n";
+      CHECK(worst <= 1e-8 * largest);
+      // Symmetric (Maxwell-Betti).
+      double asymmetry = 0, entry = 0;
+      for (unsigned int i = 0; i < n; ++i)
+        for (unsigned int j = 0; j < i; ++j)
+          {
+            asymmetry = std::max(asymmetry, std::abs(flexibility.matrix(i, j) - flexibility.matrix(j, i)));
+            entry     = std::max(entry, std::abs(flexibility.matrix(i, j)));
+          }
+      CHECK(asymmetry <= 1e-8 * entry);
+    }
 }
 
 TEST_CASE("Lennard-Jones FE: bad input names the parameter", "[fem]")
