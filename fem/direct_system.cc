@@ -73,14 +73,6 @@ namespace gradcontact::fem
 
 
 
-  void DirectSystem::solve_free(Vector<double> &b_and_u, double &factorize_seconds)
-  {
-    factorization(false, factorize_seconds).solve(b_and_u);
-    constraints->distribute(b_and_u);
-  }
-
-
-
   namespace
   {
     /// Columns of unit loads per CHOLMOD solve: n x 128 doubles (90 MB at 90k DoFs) at a time.
@@ -154,13 +146,14 @@ namespace gradcontact::fem
         // Not positive definite (or CHOLMOD failed): one back substitution of the LU factorisation per row.
         if (L)
           cholmod_free_factor(&L, c);
-        Vector<double> u(n);
-        double         unused = 0;
+        double                     unused = 0;
+        const SparseDirectUMFPACK &direct = factorization(false, unused);
+        Vector<double>             u(n);
         for (unsigned int j = 0; j < m; ++j)
           {
             u          = 0;
             u[rows[j]] = 1;
-            solve_free(u, unused);
+            direct.solve(u); // the unconstrained rows read below need no distribution of the constraints
             for (unsigned int i = 0; i < m; ++i)
               result(i, j) = u[rows[i]];
           }

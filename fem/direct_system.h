@@ -75,10 +75,6 @@ namespace gradcontact::fem
     dealii::Vector<double> solve(bool prescribe, const std::vector<double> &g, const dealii::Vector<double> &b,
                                  dealii::Vector<double> &reaction, double &factorize_seconds);
 
-    /// Overwrites the (condensed) load b with u = A^{-1} b, the constraints distributed; no reactions. For many
-    /// right-hand sides (a surface flexibility): one back substitution each.
-    void solve_free(dealii::Vector<double> &b_and_u, double &factorize_seconds);
-
     /// The block of A^{-1} on `rows` (unconstrained DoFs, no two alike): result(i, j) = u_{rows[i]} under a unit
     /// load at rows[j], no DoF prescribed (a surface flexibility). A supernodal Cholesky factorisation (CHOLMOD,
     /// SuiteSparse; Chen, Davis, Hager and Rajamanickam, ACM TOMS 35 (2008) 22) solves for the unit loads in blocks

@@ -152,13 +152,15 @@ namespace gradcontact::fem
       const double f0 = profile(0, settings.mesh.contact_radius);
       if (f0 != 0)
         fail("SmoothCohesiveContact", "profile f(0)", f0, "0 (the indenter's tip at r = 0)");
-      solver      = std::make_unique<AxisymmetricSolver>(material, settings.mesh, settings.discretization);
-      flexibility = solver->surface_flexibility();
+      // The FE model is needed for its surface flexibility only: built, read and dropped (its matrices and mesh).
+      AxisymmetricSolver solver(material, settings.mesh, settings.discretization);
+      flexibility = solver.surface_flexibility();
+      n_dofs      = solver.n_dofs();
       n           = flexibility.dofs.size();
       if (n == 0 || flexibility.r.front() > node_tolerance * settings.mesh.contact_radius)
         throw std::logic_error("SmoothCohesiveContact: no free surface z-DoF on the axis");
 
-      std::vector<int> index_of(solver->n_dofs(), -1);
+      std::vector<int> index_of(n_dofs, -1);
       for (unsigned int i = 0; i < n; ++i)
         index_of[flexibility.dofs[i]] = i;
       const dealii::QGauss<1> gauss(parameters.quadrature_points);
@@ -630,7 +632,7 @@ namespace gradcontact::fem
     const Profile                          profile;
     LennardJonesLaw                        law; ///< of the path being followed
     const SmoothCohesionParameters         parameters;
-    std::unique_ptr<AxisymmetricSolver>    solver;
+    unsigned int                           n_dofs = 0; ///< of the FE model behind the flexibility
     SurfaceFlexibility                     flexibility;
     unsigned int                           n = 0;
     std::vector<Face>                      faces;
@@ -645,7 +647,7 @@ namespace gradcontact::fem
 
   SmoothCohesiveContact::~SmoothCohesiveContact() = default;
 
-  unsigned int SmoothCohesiveContact::n_dofs() const { return impl->solver->n_dofs(); }
+  unsigned int SmoothCohesiveContact::n_dofs() const { return impl->n_dofs; }
   unsigned int SmoothCohesiveContact::surface_dofs() const { return impl->n; }
 
   SmoothCohesionPath SmoothCohesiveContact::trace(const LennardJonesLaw &law)
@@ -654,7 +656,7 @@ namespace gradcontact::fem
     impl->law                = law;
     const auto         start = std::chrono::steady_clock::now();
     SmoothCohesionPath path;
-    path.n_dofs              = impl->solver->n_dofs();
+    path.n_dofs              = impl->n_dofs;
     path.surface_dofs        = impl->n;
     path.flexibility_seconds = impl->flexibility.seconds;
     try
