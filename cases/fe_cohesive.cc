@@ -255,7 +255,7 @@ namespace gradcontact::cases
           if (!path.converged)
             p.error = "Lennard-Jones path: " + path.message + " (" + std::to_string(path.steps) + " steps, " +
                       std::to_string(path.rejected_steps) + " rejected, " + std::to_string(path.newton_iterations) +
-                      " Newton iterations)";
+                      " Newton solves, " + std::to_string(path.factorisations) + " factorisations)";
           else if (!found && force_control)
             p.error = "Lennard-Jones path: no minimum of F before the contact";
           p.vanishing = !force_control && !found;
@@ -371,8 +371,11 @@ namespace gradcontact::cases
           "9.60-9.61 for the power law). lambda is the Tabor parameter C Delta_l(a_c) / h_0 (cases/fe_cohesive.h; "
           "Maugis' at k = 0"
        << (smooth ? "; with sigma_0 the Lennard-Jones' largest stress, lambda = 1.16 mu, mu Tabor's" : "")
-       << "). F_rigid = -pi sigma_0 c^2 with f(c) = h_0 is the Dugdale law's pull-off in the rigid limit (DMT: "
-          "-2 pi dgamma R for the paraboloid, for every k and law; not drawn for the Lennard-Jones power law). Where the contact shrinks to nothing without a jump "
+       << (smooth ? "). F_rigid is the law's pull-off in the rigid limit: the smallest of Derjaguin's F(d) = -2 pi "
+                    "\\int sigma(f(r) - d) r dr over d (DMT: -2 pi dgamma R for the paraboloid, for every k). Where"
+                  : "). F_rigid = -pi sigma_0 c^2 with f(c) = h_0 is the Dugdale law's pull-off in the rigid limit (DMT: "
+                    "-2 pi dgamma R for the paraboloid, for every k and law). Where")
+       << " the contact shrinks to nothing without a jump "
           "(no minimum of d, small lambda) the chapter's displacement-controlled instability does not exist: "
           "\"none\", counted as a deviation of 100 %.\n\n";
     thresholds_md << "## Where the chapter's JKR pull-off force holds\n\n| k | control |";
@@ -420,9 +423,12 @@ namespace gradcontact::cases
             base.strength = cohesive_strength(lambda, medium, profile, dgamma);
             base.range    = dgamma / base.strength;
             const double c_rigid = paraboloid ? std::sqrt(2 * s.load.R * base.range) : std::pow(base.range / s.load.A, 1 / s.load.n);
-            // (The Lennard-Jones' rigid limit of the power law is not Dugdale's: only the paraboloid's, -2 pi dgamma R, is
-            // shared.)
-            base.force_rigid     = smooth && !paraboloid ? std::nan("") : -pi * base.strength * c_rigid * c_rigid;
+            // The Lennard-Jones' rigid limit of the power law is not Dugdale's (only the paraboloid's, -2 pi dgamma R,
+            // is shared): Derjaguin's integral of the law over the tip, minimised in d.
+            base.force_rigid =
+              smooth && !paraboloid ?
+                fem::rigid_pull_off(fem::LennardJonesLaw::with_max_stress(base.strength, dgamma), fe_profile).force :
+                -pi * base.strength * c_rigid * c_rigid;
             // The pull-offs of every control and the states of the path: from the point cache (a --map-shard job's
             // or an earlier run's) or solved here.
             const std::string key = "cohesive map point\n" + s.resolved + "\nk = " + exact(k) + ", lambda = " + exact(lambda) +
@@ -552,16 +558,18 @@ namespace gradcontact::cases
                                                   "closed form (JKR idealisation)", prev, last, points.back(),
                                                   "FE " + law_name));
               }
-            if (force_control && paraboloid && r.size() >= 2)
+            if (force_control && (paraboloid || smooth) && r.size() >= 2)
               {
                 const Point &p0 = points[0], &p1 = points[1];
                 if (p0.error.empty() && p1.error.empty())
                   {
                     result.rows.push_back(falling_row("DMT limit (force control)",
-                                                      "k = " + format(k) + ": |F_c / (-2 pi dgamma R) - 1| at lambda = " +
-                                                        format(p0.lambda) + " over its value at lambda = " +
-                                                        format(p1.lambda),
-                                                      "rigid sphere (DMT)", std::abs(p1.rigid_deviation()),
+                                                      "k = " + format(k) + ": |F_c / " +
+                                                        (paraboloid ? "(-2 pi dgamma R)" : "F_rigid") +
+                                                        " - 1| at lambda = " + format(p0.lambda) +
+                                                        " over its value at lambda = " + format(p1.lambda),
+                                                      paraboloid ? "rigid sphere (DMT)" : "rigid tip (Derjaguin)",
+                                                      std::abs(p1.rigid_deviation()),
                                                       std::abs(p0.rigid_deviation()), p0, "FE " + law_name));
                   }
               }

@@ -25,6 +25,15 @@ namespace gradcontact::fem
     /// False-position iterations per critical state.
     constexpr unsigned int max_critical_iterations = 80;
 
+    /// Newton keeps its Jacobian while the residual falls at least by this factor per iteration (chord iteration).
+    /// (measured at k = 0, lambda = 3 and k = 0.5, lambda = 1 against 0.1, 0.2 and 0.5: fewest factorisations
+    /// for the same critical states to all printed digits).
+    constexpr double chord_contraction = 0.3;
+
+    /// The path's step grows by 1.5 after a state found with at most this many factorisations and linear solves
+    /// and shrinks by 0.7 after one with at least the second pair.
+    constexpr unsigned int grow_factorisations = 2, grow_solves = 16, shrink_factorisations = 3, shrink_solves = 24;
+
     /// Folds of F(d) a resolved path can have: at large Tabor parameters the surface's bulge on approach (a maximum
     /// and a minimum of d) and the contact's formation (a maximum and the jump-off minimum); more are the mesh's
     /// (header).
@@ -100,6 +109,76 @@ namespace gradcontact::fem
 
 
 
+  double rigid_force(const LennardJonesLaw &law, const Profile &profile, const double d)
+  {
+    law.validate();
+    profile.validate();
+    if (profile.shape == Profile::Shape::concave_paraboloid)
+      throw std::invalid_argument("rigid_force: the profile must open monotonically (not the concave punch)");
+    if (!std::isfinite(d))
+      fail("rigid_force", "depth d", d, "finite");
+    const double eps = law.separation;
+    const auto   f   = [&profile](const double r) { return profile(r, 1.0); };
+    if (f(0) != 0)
+      fail("rigid_force", "profile f(0)", f(0), "0 (the indenter's tip at r = 0)");
+    // r_eps with f(r_eps) = eps, by doubling and bisection (f grows monotonically).
+    double hi = eps;
+    for (unsigned int i = 0; f(hi) < eps; ++i, hi *= 2)
+      if (i > 2000)
+        throw std::invalid_argument("rigid_force: the profile does not grow to the law's range eps");
+    double lo = 0;
+    for (unsigned int i = 0; i < 200 && hi - lo > 1e-15 * hi; ++i)
+      (f(0.5 * (lo + hi)) < eps ? lo : hi) = 0.5 * (lo + hi);
+    const dealii::QGauss<1> gauss(24);
+    const auto              panel = [&](const double r0, const double r1) {
+      double sum = 0;
+      for (unsigned int q = 0; q < gauss.size(); ++q)
+        {
+          const double r = r0 + gauss.point(q)[0] * (r1 - r0);
+          sum += law.stress(f(r) - d) * r * gauss.weight(q) * (r1 - r0);
+        }
+      return sum;
+    };
+    // Panels [0, r/8], [r/8, r/4], ..., doubling until f >= 1e7 eps + |d|; the first ones resolve the tip.
+    double integral = panel(0, hi / 8);
+    double r        = hi / 8;
+    for (unsigned int i = 0; f(r) < 1e7 * eps + std::abs(d); ++i, r *= 2)
+      {
+        if (i > 2000)
+          throw std::invalid_argument("rigid_force: the profile does not grow to 1e7 eps");
+        integral += panel(r, 2 * r);
+      }
+    return -2 * M_PI * integral;
+  }
+
+  RigidPullOff rigid_pull_off(const LennardJonesLaw &law, const Profile &profile)
+  {
+    const double eps = law.separation, golden = (std::sqrt(5.0) - 1) / 2;
+    double       a = -3 * eps, b = -0.5 * eps;
+    double       x1 = b - golden * (b - a), x2 = a + golden * (b - a);
+    double       f1 = rigid_force(law, profile, x1), f2 = rigid_force(law, profile, x2);
+    while (b - a > 1e-10 * eps)
+      if (f1 < f2)
+        {
+          b = x2, x2 = x1, f2 = f1;
+          x1 = b - golden * (b - a);
+          f1 = rigid_force(law, profile, x1);
+        }
+      else
+        {
+          a = x1, x1 = x2, f1 = f2;
+          x2 = a + golden * (b - a);
+          f2 = rigid_force(law, profile, x2);
+        }
+    const double d = 0.5 * (a + b);
+    if (d < -2.99 * eps || d > -0.51 * eps)
+      throw std::runtime_error("rigid_pull_off: the smallest force lies at the end of d in [-3, -0.5] eps (d = " +
+                               std::to_string(d / eps) + " eps): not a minimum of this profile's F(d)");
+    return {d, rigid_force(law, profile, d)};
+  }
+
+
+
   Settings smooth_cohesion_settings(const Material &material, const double contact_radius, const double refinement)
   {
     if (!(refinement >= 0.25 && refinement <= 16))
@@ -135,10 +214,18 @@ namespace gradcontact::fem
     };
 
     /// A solved state: x = (w, d), its tangent dx/ds along the path and its public numbers.
+    /// A factorised bordered Jacobian with its constraint row and u = J^{-1} e_n (the unnormalised tangent).
+    struct Factorised
+    {
+      std::shared_ptr<const dealii::LAPACKFullMatrix<double>> J;
+      std::vector<double>                                     row, u;
+    };
+
     struct Solved
     {
       std::vector<double> x, tangent;
       SmoothCohesionState state;
+      Factorised          jacobian; ///< at x: the chord matrix of the next step
     };
 
     Impl(const Material &material, const Profile &profile_, const Settings &settings,
@@ -309,22 +396,63 @@ namespace gradcontact::fem
       return m;
     }
 
-    /// Newton from the predictor x under `constraint`. On convergence fills `solved`, its tangent dx/dvalue (the
-    /// derivative along the constraint's value, from the Jacobian at the converged x), and returns true;
-    /// `iterations` counts the Jacobians.
-    bool newton(std::vector<double> x, const Constraint &constraint, Solved &solved, unsigned int &iterations) const
+    /// Solves J' y = b in place, J' the Jacobian of `f` with its last row replaced by `row`: J' = J + e_n v^T,
+    /// v = row - f.row, by Sherman-Morrison, y = J^{-1} b - u (v . J^{-1} b) / (row . u) (1 + v . u = row . u, as
+    /// f.row . u = 1). The denominator is the new row against the old tangent: for an arclength row of a nearby
+    /// state's tangent close to its length, far from zero.
+    static void solve(const Factorised &f, const std::vector<double> &row, dealii::Vector<double> &b)
     {
-      dealii::LAPACKFullMatrix<double> J;
-      std::vector<double>              R = residual(x, constraint);
+      f.J->solve(b);
+      if (row == f.row)
+        return;
+      double vy = 0, ru = 0;
+      for (unsigned int i = 0; i < b.size(); ++i)
+        {
+          vy += (row[i] - f.row[i]) * b[i];
+          ru += row[i] * f.u[i];
+        }
+      if (ru == 0 || !std::isfinite(ru))
+        throw std::runtime_error("SmoothCohesiveContact: the constraint row is orthogonal to the chord's tangent");
+      for (unsigned int i = 0; i < b.size(); ++i)
+        b[i] -= f.u[i] * vy / ru;
+    }
+
+    /// Newton from the predictor x under `constraint`, as a chord iteration: it starts on `chord` (a nearby state's
+    /// factorised Jacobian, its row replaced by the constraint's; none: factorised at x) and factorises again only
+    /// where the residual contracts by less than `chord_contraction` per iteration, and once at the converged x,
+    /// whose factorisation gives the tangent dx/dvalue exactly (the critical states are roots of its components)
+    /// and serves as the chord of the next state. On convergence fills `solved` and returns true; `iterations`
+    /// counts the linear solves, `solved.state.factorisations` the Jacobians.
+    bool newton(std::vector<double> x, const Constraint &constraint, Solved &solved, unsigned int &iterations,
+                const Factorised *chord = nullptr) const
+    {
+      Factorised               current;
+      if (chord && chord->J)
+        current = *chord;
+      std::vector<double>      R              = residual(x, constraint);
+      bool                     fresh          = false; // `current` factorised at the current x
+      bool                     refactor       = !current.J;
+      unsigned int             factorisations = 0;
       for (iterations = 1; iterations <= parameters.max_newton; ++iterations)
         {
           dealii::Vector<double> delta(n + 1);
           try
             {
-              jacobian(x, constraint, J);
+              if (refactor)
+                {
+                  auto J = std::make_shared<dealii::LAPACKFullMatrix<double>>();
+                  jacobian(x, constraint, *J);
+                  dealii::Vector<double> u(n + 1);
+                  u[n] = 1;
+                  J->solve(u);
+                  current  = Factorised{J, constraint.row, std::vector<double>(u.begin(), u.end())};
+                  ++factorisations;
+                  fresh    = true;
+                  refactor = false;
+                }
               for (unsigned int i = 0; i <= n; ++i)
                 delta[i] = -R[i];
-              J.solve(delta);
+              solve(current, constraint.row, delta);
             }
           catch (const std::exception &)
             {
@@ -335,14 +463,20 @@ namespace gradcontact::fem
             return false;
           if (step <= parameters.newton_tolerance * eps())
             {
-              dealii::Vector<double> t(n + 1);
-              t[n] = 1;
-              J.solve(t);
               for (unsigned int i = 0; i <= n; ++i)
                 x[i] += delta[i];
-              solved.x = x;
-              solved.tangent.assign(t.begin(), t.end());
+              if (!fresh)
+                {
+                  // Converged on an older Jacobian: once more on the one at x, for the tangent.
+                  R        = residual(x, constraint);
+                  refactor = true;
+                  continue;
+                }
+              solved.x                       = x;
+              solved.tangent                 = current.u;
+              solved.jacobian                = std::move(current);
               solved.state.newton_iterations = iterations;
+              solved.state.factorisations    = factorisations;
               return true;
             }
           // Line search on |R|_inf.
@@ -357,13 +491,19 @@ namespace gradcontact::fem
               std::vector<double> R_trial = residual(trial, constraint);
               if (max_norm(R_trial) < norm)
                 {
-                  taken = true;
-                  x     = std::move(trial);
-                  R     = std::move(R_trial);
+                  taken    = true;
+                  refactor = alpha < 1 || max_norm(R_trial) > chord_contraction * norm;
+                  x        = std::move(trial);
+                  R        = std::move(R_trial);
                 }
             }
           if (!taken)
-            return false;
+            {
+              if (fresh)
+                return false;
+              refactor = true; // the older Jacobian's direction does not descend: a new one at x
+            }
+          fresh = false;
         }
       return false;
     }
@@ -421,7 +561,7 @@ namespace gradcontact::fem
       std::vector<double> predictor(from.x);
       for (unsigned int i = 0; i <= n; ++i)
         predictor[i] += ds * from.tangent[i];
-      if (!newton(predictor, arclength(from, ds), next, iterations))
+      if (!newton(predictor, arclength(from, ds), next, iterations, &from.jacobian))
         return false;
       finish(next, &from.tangent);
       return true;
@@ -445,13 +585,14 @@ namespace gradcontact::fem
       double       ds    = parameters.first_step * eps();
       double       F_min = current.state.force;
       const double floor = parameters.min_gap * eps();
-      unsigned int steps = 0, rejected = 0, iterations_total = 0;
+      unsigned int steps = 0, rejected = 0, iterations_total = 0, factorisations_total = 0;
       const auto   done  = [&]() {
         if (path)
           {
             path->steps += steps;
             path->rejected_steps += rejected;
             path->newton_iterations += iterations_total;
+            path->factorisations += factorisations_total;
           }
       };
       while (true)
@@ -480,6 +621,8 @@ namespace gradcontact::fem
           unsigned int iterations = 0;
           const bool   converged  = step_from(current, ds, next, iterations);
           iterations_total += iterations;
+          if (converged)
+            factorisations_total += next.state.factorisations;
           const double change_d =
             converged ? std::abs(next.state.depth - current.state.depth) / (eps() + std::abs(current.state.depth)) : 0;
           const double change_F = converged ? std::abs(next.state.force - current.state.force) /
@@ -534,9 +677,11 @@ namespace gradcontact::fem
             }
           F_min   = std::min(F_min, next.state.force);
           current = std::move(next);
-          if (iterations <= 4 && change_d < parameters.max_change / 2 && change_F < parameters.max_change / 2)
+          const unsigned int factorisations = current.state.factorisations;
+          if (factorisations <= grow_factorisations && iterations <= grow_solves && change_d < parameters.max_change / 2 &&
+              change_F < parameters.max_change / 2)
             ds = std::min(1.5 * ds, parameters.max_step * eps());
-          else if (iterations >= 8)
+          else if (factorisations >= shrink_factorisations || iterations >= shrink_solves)
             ds *= 0.7;
         }
       done();
@@ -594,6 +739,7 @@ namespace gradcontact::fem
               break;
             }
           path.newton_iterations += iterations;
+          path.factorisations += s.state.factorisations;
           const double gs = g(s.state);
           if (std::abs(gs) < std::abs(g(best)))
             best = s.state;
@@ -664,6 +810,7 @@ namespace gradcontact::fem
         Impl::Solved first = impl->first_state();
         path.states.push_back(first.state);
         path.newton_iterations += first.state.newton_iterations;
+        path.factorisations += first.state.factorisations;
         impl->follow(std::move(first), -1, &path);
       }
     catch (const std::exception &e)

@@ -92,7 +92,8 @@ namespace gradcontact::fem
     double       gap_slope      = 0; ///< dh_c / ds
     double       depth_slope    = 0; ///< dd / ds
     double       force_slope    = 0; ///< dF / ds
-    unsigned int newton_iterations = 0;
+    unsigned int newton_iterations = 0; ///< linear solves of the chord Newton that found this state
+    unsigned int factorisations    = 0; ///< Jacobians it factorised (the last one at the state, for the tangent)
   };
 
   struct SmoothCohesionPath
@@ -109,12 +110,27 @@ namespace gradcontact::fem
     SmoothCohesionState snap_in, depth_pull_off;
 
     unsigned int depth_folds = 0; ///< sign changes of dd/ds along the path
-    unsigned int steps = 0, rejected_steps = 0, newton_iterations = 0, critical_evaluations = 0;
+    unsigned int steps = 0, rejected_steps = 0, newton_iterations = 0, factorisations = 0, critical_evaluations = 0;
     unsigned int n_dofs = 0, surface_dofs = 0;
     double       flexibility_seconds = 0, seconds = 0;
     bool         converged = true; ///< every Newton converged and the path reached its end
     std::string  message;          ///< why not
   };
+
+  /// The rigid limit (Derjaguin): a rigid indenter of `profile` (f(0) = 0, opening monotonically) over a rigid
+  /// flat surface under `law`, F(d) = -2 pi \int_0^inf sigma(f(r) - d) r dr, compressive positive (for the
+  /// paraboloid -2 pi R Phi(-d), Phi the law's work beyond a gap: Derjaguin 1934; Muller, Yushchenko and Derjaguin
+  /// 1980). Composite Gauss-Legendre (24 points) on panels doubling from the radius where f = eps out to f = 1e7 eps;
+  /// the tail beyond, cut, is (eps / f)^(2 / n) of the force for f ~ r^n: 1e-14 for the paraboloid, 1e-7 for a cone. The smallest F over d is the pull-off of every elastic
+  /// half-space as the modulus grows (a DMT limit for any tip), found by golden section in d over [-3, -0.5] eps.
+  struct RigidPullOff
+  {
+    double depth = 0; ///< d at the smallest F
+    double force = 0; ///< the smallest F (negative: tensile)
+  };
+  /// F(d) of the comment above.
+  double rigid_force(const LennardJonesLaw &law, const Profile &profile, double d);
+  RigidPullOff rigid_pull_off(const LennardJonesLaw &law, const Profile &profile);
 
   /// The mesh the model was measured on (fem/README.md): degree 2, surface cells of 2.5e-3 a at the expected
   /// contact edge a (e.g. the JKR pull-off radius) and 2.5e-2 a at the axis and at the near field's end 2.5 a

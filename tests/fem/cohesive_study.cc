@@ -92,7 +92,7 @@ int main(int argc, char **argv)
             std::cout << what << " hc/eps=" << st.central_gap / smooth.separation << " d/eps=" << st.depth / smooth.separation
                       << " F/F_jkr=" << st.force / jkr_f.force << " F/F_dmt=" << st.force / F_dmt
                       << " a/a_jkr=" << st.contact_radius / jkr_f.radius << " dF=" << st.force_slope
-                      << " dd=" << st.depth_slope << " it=" << st.newton_iterations << '\n';
+                      << " dd=" << st.depth_slope << " it=" << st.newton_iterations << " lu=" << st.factorisations << '\n';
           };
           if (args.count("path", 0))
             for (const auto &st : path.states)
@@ -104,7 +104,7 @@ int main(int argc, char **argv)
           if (path.has_force_minimum)
             print("force_pull_off", path.force_pull_off);
           std::cout << "eps=" << smooth.separation << " dofs=" << path.n_dofs << " surface=" << path.surface_dofs
-                    << " steps=" << path.steps << " rejected=" << path.rejected_steps << " newton=" << path.newton_iterations
+                    << " steps=" << path.steps << " rejected=" << path.rejected_steps << " newton=" << path.newton_iterations << " lu=" << path.factorisations
                     << " critical=" << path.critical_evaluations << " flex_s=" << path.flexibility_seconds
                     << " s=" << path.seconds << " converged=" << path.converged << " " << path.message << '\n';
           if (path.has_force_minimum)

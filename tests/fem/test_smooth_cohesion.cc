@@ -129,6 +129,70 @@ TEST_CASE("Lennard-Jones FE: a rigid sphere's path is the Derjaguin integral, pu
     }
 }
 
+TEST_CASE("Lennard-Jones rigid limit: Derjaguin's integral for the paraboloid, the FE path of a rigid power-law tip",
+          "[fem]")
+{
+  const double          eps = 1e-2;
+  const LennardJonesLaw law{dgamma, eps};
+  // The paraboloid: F(d) = -2 pi R Phi(-d) in closed form (work_beyond above), pull-off -2 pi R dgamma at d = -eps.
+  for (const double d : {-2.5 * eps, -1.3 * eps, -eps, -0.7 * eps})
+    CHECK_THAT(rigid_force(law, Profile::paraboloid(R), d),
+               Catch::Matchers::WithinRel(-2 * pi * R * work_beyond(-d, eps), 1e-13));
+  const RigidPullOff sphere = rigid_pull_off(law, Profile::paraboloid(R));
+  CHECK_THAT(sphere.force, Catch::Matchers::WithinRel(-2 * pi * R * dgamma, 1e-13));
+  CHECK_THAT(sphere.depth, Catch::Matchers::WithinRel(-eps, 1e-6));
+
+  // The power-law tip f = A r^4: F(d) = -(pi / 2) A^{-1/2} \int_0^inf sigma(u - d) u^{-1/2} du (u = f(r)), here by
+  // Gauss-Legendre in t = sqrt(u) on [0, 40 sqrt(eps)] and the tail sigma ~ (8 dgamma / 3) eps^2 / u^3 beyond it.
+  const double  A   = 1.0 / (4 * R * R * R);
+  const Profile tip = Profile::power_law(4, A);
+  const auto    by_u = [&](const double d) {
+    const double       t_max = 40 * std::sqrt(eps);
+    const unsigned int panels = 4000;
+    const double       x[2] = {-0.5773502691896257, 0.5773502691896257};
+    double             integral = 0;
+    for (unsigned int i = 0; i < panels; ++i)
+      for (const double xi : x)
+        {
+          const double t = (i + 0.5 + 0.5 * xi) * t_max / panels;
+          integral += 2 * law.stress(t * t - d) * 0.5 * t_max / panels;
+        }
+    const double u_max = t_max * t_max; // \int_umax^inf (8 dgamma / 3) eps^2 / u^3 u^{-1/2} du, beyond which h ~ u
+    integral += 8 * dgamma / 3 * eps * eps / (2.5 * std::pow(u_max, 2.5));
+    return -pi / 2 / std::sqrt(A) * integral;
+  };
+  for (const double d : {-2 * eps, -eps, -0.6 * eps})
+    CHECK_THAT(rigid_force(law, tip, d), Catch::Matchers::WithinRel(by_u(d), 1e-6));
+  const RigidPullOff rigid = rigid_pull_off(law, tip);
+  CHECK(rigid.force < by_u(rigid.depth - 0.05 * eps));
+  CHECK(rigid.force < by_u(rigid.depth + 0.05 * eps));
+
+  // The FE path of the rigid tip (E0 = 1e10, as in the sphere's test above) is F(d) of the rigid limit at every
+  // state, and its pull-off the smallest F.
+  const double r_eps = std::pow(eps / A, 0.25);
+  for (const double k : {0.0, 0.5})
+    {
+      const Material           material = power_law_material(1e10, k);
+      SmoothCohesiveContact    contact(material, tip, smooth_cohesion_settings(material, r_eps, 0.5));
+      const SmoothCohesionPath path = contact.trace(law);
+      INFO("k = " << k << ": " << path.message);
+      REQUIRE(path.converged);
+      REQUIRE(path.has_force_minimum);
+      double worst = 0;
+      for (const SmoothCohesionState &s : path.states)
+        worst = std::max(worst, std::abs(s.force - rigid_force(law, tip, s.depth)) / std::abs(rigid.force));
+      std::cout << "rigid power-law tip n = 4, k = " << k << ": " << path.states.size()
+                << " states, worst |F - F_rigid(d)| / |F_c,rigid| " << worst
+                << ", F_c / F_c,rigid - 1 = " << path.force_pull_off.force / rigid.force - 1
+                << " (F_c,rigid / (2 pi dgamma r_eps) = " << rigid.force / (2 * pi * dgamma * r_eps) << ", d = "
+                << rigid.depth / eps << " eps), " << path.seconds << " s\n";
+      CHECK(worst <= 1e-6);
+      CHECK_THAT(path.force_pull_off.force, Catch::Matchers::WithinRel(rigid.force, 1e-6));
+      CHECK_THAT(path.force_pull_off.depth, Catch::Matchers::WithinRel(rigid.depth, 1e-4));
+    }
+  CHECK_THROWS_WITH(rigid_force(law, Profile::concave_paraboloid(0.1), -eps), Catch::Matchers::Contains("concave"));
+}
+
 TEST_CASE("Lennard-Jones FE at k = -0.5 and 0: from DMT toward the chapter's JKR as the Tabor parameter grows", "[fem]")
 {
   for (const double k : {-0.5, 0.0})
