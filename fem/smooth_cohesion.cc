@@ -25,13 +25,15 @@ namespace gradcontact::fem
     /// False-position iterations per critical state.
     constexpr unsigned int max_critical_iterations = 80;
 
-    /// Newton keeps its Jacobian while the residual falls at least by this factor per iteration (chord iteration).
-    /// (measured at k = 0, lambda = 3 and k = 0.5, lambda = 1 against 0.1, 0.2 and 0.5: fewest factorisations
-    /// for the same critical states to all printed digits).
+    /// Newton keeps its Jacobian (chord iteration) while each solve shrinks |R|_inf to at most this fraction of its
+    /// previous value (measured at k = 0, lambda = 3 and k = 0.5, lambda = 1 against 0.1, 0.2 and 0.5: the fewest
+    /// factorisations for the same critical states to all printed digits).
     constexpr double chord_contraction = 0.3;
 
     /// The path's step grows by 1.5 after a state found with at most this many factorisations and linear solves
-    /// and shrinks by 0.7 after one with at least the second pair.
+    /// and shrinks by 0.7 after one with at least the second pair (a chord state takes 1-2 factorisations and 6-12
+    /// solves where a fresh Newton took 3-5 iterations; at k = 0, lambda = 3 these gave 264 steps against the
+    /// original 224, at k = 0.5, lambda = 1 160 against 188).
     constexpr unsigned int grow_factorisations = 2, grow_solves = 16, shrink_factorisations = 3, shrink_solves = 24;
 
     /// Folds of F(d) a resolved path can have: at large Tabor parameters the surface's bulge on approach (a maximum
@@ -117,6 +119,9 @@ namespace gradcontact::fem
       throw std::invalid_argument("rigid_force: the profile must open monotonically (not the concave punch)");
     if (!std::isfinite(d))
       fail("rigid_force", "depth d", d, "finite");
+    if (profile.exponent() <= 2.0 / 3)
+      fail("rigid_force", "the profile's exponent n (f ~ r^n)", profile.exponent(),
+           "(2/3, inf): below, sigma ~ h^-3 makes the integral over the surface diverge");
     const double eps = law.separation;
     const auto   f   = [&profile](const double r) { return profile(r, 1.0); };
     if (f(0) != 0)
@@ -124,7 +129,7 @@ namespace gradcontact::fem
     // r_eps with f(r_eps) = eps, by doubling and bisection (f grows monotonically).
     double hi = eps;
     for (unsigned int i = 0; f(hi) < eps; ++i, hi *= 2)
-      if (i > 2000)
+      if (i > 2000 || !std::isfinite(hi))
         throw std::invalid_argument("rigid_force: the profile does not grow to the law's range eps");
     double lo = 0;
     for (unsigned int i = 0; i < 200 && hi - lo > 1e-15 * hi; ++i)
@@ -144,10 +149,12 @@ namespace gradcontact::fem
     double r        = hi / 8;
     for (unsigned int i = 0; f(r) < 1e7 * eps + std::abs(d); ++i, r *= 2)
       {
-        if (i > 2000)
+        if (i > 2000 || !std::isfinite(r))
           throw std::invalid_argument("rigid_force: the profile does not grow to 1e7 eps");
         integral += panel(r, 2 * r);
       }
+    if (!std::isfinite(integral))
+      throw std::runtime_error("rigid_force: the integral is not finite (d = " + std::to_string(d / eps) + " eps)");
     return -2 * M_PI * integral;
   }
 
@@ -179,7 +186,8 @@ namespace gradcontact::fem
 
 
 
-  Settings smooth_cohesion_settings(const Material &material, const double contact_radius, const double refinement)
+  Settings smooth_cohesion_settings(const Material &material, const double contact_radius, const double refinement,
+                                    const bool uniform_contact)
   {
     if (!(refinement >= 0.25 && refinement <= 16))
       fail("smooth_cohesion_settings", "refinement", refinement, "[0.25, 16]");
@@ -190,7 +198,9 @@ namespace gradcontact::fem
     s.mesh.near_field_size  = 2.5;
     s.mesh.h_edge           = 5e-3 / refinement;
     s.mesh.h_surface        = 5e-2 / refinement;
-    s.mesh.h_surface_outer  = 0;
+    s.mesh.h_surface_outer  = uniform_contact ? s.mesh.h_surface : 0;
+    if (uniform_contact)
+      s.mesh.h_surface = s.mesh.h_edge;
     s.mesh.h_far            = 1;
     s.mesh.halving_radius   = s.mesh.near_field_size;
     use_condensed_far_field(s, material);
@@ -213,7 +223,6 @@ namespace gradcontact::fem
       std::vector<Point> points;
     };
 
-    /// A solved state: x = (w, d), its tangent dx/ds along the path and its public numbers.
     /// A factorised bordered Jacobian with its constraint row and u = J^{-1} e_n (the unnormalised tangent).
     struct Factorised
     {
@@ -221,6 +230,7 @@ namespace gradcontact::fem
       std::vector<double>                                     row, u;
     };
 
+    /// A solved state: x = (w, d), its tangent dx/ds along the path and its public numbers.
     struct Solved
     {
       std::vector<double> x, tangent;
@@ -433,7 +443,8 @@ namespace gradcontact::fem
       bool                     fresh          = false; // `current` factorised at the current x
       bool                     refactor       = !current.J;
       unsigned int             factorisations = 0;
-      for (iterations = 1; iterations <= parameters.max_newton; ++iterations)
+      unsigned int limit = parameters.max_newton;
+      for (iterations = 1; iterations <= limit; ++iterations)
         {
           dealii::Vector<double> delta(n + 1);
           try
@@ -441,6 +452,7 @@ namespace gradcontact::fem
               if (refactor)
                 {
                   auto J = std::make_shared<dealii::LAPACKFullMatrix<double>>();
+                  ++factorisations_done;
                   jacobian(x, constraint, *J);
                   dealii::Vector<double> u(n + 1);
                   u[n] = 1;
@@ -456,20 +468,34 @@ namespace gradcontact::fem
             }
           catch (const std::exception &)
             {
+              if (!fresh)
+                {
+                  refactor = true; // an older Jacobian's: a new one at x
+                  continue;
+                }
               return false; // an exactly singular Jacobian (LAPACK's LU): the caller shortens its step
             }
           const double step = delta.linfty_norm();
           if (!std::isfinite(step))
-            return false;
+            {
+              if (!fresh)
+                {
+                  refactor = true;
+                  continue;
+                }
+              return false;
+            }
           if (step <= parameters.newton_tolerance * eps())
             {
               for (unsigned int i = 0; i <= n; ++i)
                 x[i] += delta[i];
               if (!fresh)
                 {
-                  // Converged on an older Jacobian: once more on the one at x, for the tangent.
+                  // Converged on an older Jacobian: once more on the one at x, for the tangent (beyond the
+                  // budget if need be).
                   R        = residual(x, constraint);
                   refactor = true;
+                  limit    = std::max(limit, iterations + 1);
                   continue;
                 }
               solved.x                       = x;
@@ -488,11 +514,12 @@ namespace gradcontact::fem
               std::vector<double> trial(x);
               for (unsigned int i = 0; i <= n; ++i)
                 trial[i] += alpha * delta[i];
-              std::vector<double> R_trial = residual(trial, constraint);
-              if (max_norm(R_trial) < norm)
+              std::vector<double> R_trial    = residual(trial, constraint);
+              const double        norm_trial = max_norm(R_trial);
+              if (norm_trial < norm)
                 {
                   taken    = true;
-                  refactor = alpha < 1 || max_norm(R_trial) > chord_contraction * norm;
+                  refactor = alpha < 1 || norm_trial > chord_contraction * norm;
                   x        = std::move(trial);
                   R        = std::move(R_trial);
                 }
@@ -585,14 +612,13 @@ namespace gradcontact::fem
       double       ds    = parameters.first_step * eps();
       double       F_min = current.state.force;
       const double floor = parameters.min_gap * eps();
-      unsigned int steps = 0, rejected = 0, iterations_total = 0, factorisations_total = 0;
+      unsigned int steps = 0, rejected = 0, iterations_total = 0;
       const auto   done  = [&]() {
         if (path)
           {
             path->steps += steps;
             path->rejected_steps += rejected;
             path->newton_iterations += iterations_total;
-            path->factorisations += factorisations_total;
           }
       };
       while (true)
@@ -621,8 +647,6 @@ namespace gradcontact::fem
           unsigned int iterations = 0;
           const bool   converged  = step_from(current, ds, next, iterations);
           iterations_total += iterations;
-          if (converged)
-            factorisations_total += next.state.factorisations;
           const double change_d =
             converged ? std::abs(next.state.depth - current.state.depth) / (eps() + std::abs(current.state.depth)) : 0;
           const double change_F = converged ? std::abs(next.state.force - current.state.force) /
@@ -739,7 +763,6 @@ namespace gradcontact::fem
               break;
             }
           path.newton_iterations += iterations;
-          path.factorisations += s.state.factorisations;
           const double gs = g(s.state);
           if (std::abs(gs) < std::abs(g(best)))
             best = s.state;
@@ -778,6 +801,7 @@ namespace gradcontact::fem
     const Profile                          profile;
     LennardJonesLaw                        law; ///< of the path being followed
     const SmoothCohesionParameters         parameters;
+    mutable unsigned long                  factorisations_done = 0; ///< every Jacobian factorised, failed trials too
     unsigned int                           n_dofs = 0; ///< of the FE model behind the flexibility
     SurfaceFlexibility                     flexibility;
     unsigned int                           n = 0;
@@ -800,8 +824,9 @@ namespace gradcontact::fem
   {
     law.validate();
     impl->law                = law;
-    const auto         start = std::chrono::steady_clock::now();
-    SmoothCohesionPath path;
+    const auto          start          = std::chrono::steady_clock::now();
+    const unsigned long factorisations = impl->factorisations_done;
+    SmoothCohesionPath  path;
     path.n_dofs              = impl->n_dofs;
     path.surface_dofs        = impl->n;
     path.flexibility_seconds = impl->flexibility.seconds;
@@ -810,7 +835,6 @@ namespace gradcontact::fem
         Impl::Solved first = impl->first_state();
         path.states.push_back(first.state);
         path.newton_iterations += first.state.newton_iterations;
-        path.factorisations += first.state.factorisations;
         impl->follow(std::move(first), -1, &path);
       }
     catch (const std::exception &e)
@@ -818,7 +842,8 @@ namespace gradcontact::fem
         path.converged = false;
         path.message += e.what();
       }
-    path.seconds = seconds_since(start);
+    path.seconds        = seconds_since(start);
+    path.factorisations = static_cast<unsigned int>(impl->factorisations_done - factorisations);
     return path;
   }
 

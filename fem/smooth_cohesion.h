@@ -27,8 +27,10 @@
 // path is followed by pseudo-arclength continuation (Keller, in Applications of Bifurcation Theory, Academic Press
 // 1977, 359-384): the unknowns x = (w, d), the metric |dx|^2 = dd^2 + dh_c^2 + |dw|^2 / n (the plane (h_c, d) alone
 // degenerates where the contact grows at nearly fixed d and h_c, measured at lambda = 10), the constraint
-// t . (x - x') = ds with t the unit tangent of the last state, a tangent predictor, Newton on the bordered system, and steps ds adapted to Newton's iteration count and to the change of
-// d and F. It starts with the surfaces apart (h_c = start_gap eps, solved with h_c fixed). The critical states
+// t . (x - x') = ds with t the unit tangent of the last state, a tangent predictor, a chord Newton on the bordered
+// system (the last state's factorisation, its border row replaced by a Sherman-Morrison update, refactorised where
+// it converges slowly and once at the solution for an exact tangent), and steps ds adapted to the factorisations and
+// solves it took and to the change of d and F. It starts with the surfaces apart (h_c = start_gap eps, solved with h_c fixed). The critical states
 // are the roots of dF/ds (pull-off under force control: the minimum of F) and of dd/ds (the folds of F(d):
 // snap-in, the largest d on approach, and pull-off under displacement control, the smallest d after it), found by
 // false position in the arclength between the path states that bracket them, each derivative exact from the
@@ -72,7 +74,7 @@ namespace gradcontact::fem
     double       stop_force      = 0.0;   ///< the path ends at the first F >= this after its minimum of F
     double       min_gap         = 0.5;   ///< ... or at this central gap / eps (the contact pressed hard)
     double       newton_tolerance = 1e-12; ///< |Newton update|_inf / eps that ends the iteration
-    unsigned int max_newton      = 30;    ///< iterations per state
+    unsigned int max_newton      = 30;    ///< linear solves per state (one more for the tangent after a chord)
     unsigned int max_steps       = 2000;  ///< path steps (accepted and rejected)
     double       critical_tolerance = 1e-11; ///< bracket of the arclength of a critical state / eps
     unsigned int quadrature_points  = 8;     ///< Gauss points per surface face
@@ -120,8 +122,9 @@ namespace gradcontact::fem
   /// The rigid limit (Derjaguin): a rigid indenter of `profile` (f(0) = 0, opening monotonically) over a rigid
   /// flat surface under `law`, F(d) = -2 pi \int_0^inf sigma(f(r) - d) r dr, compressive positive (for the
   /// paraboloid -2 pi R Phi(-d), Phi the law's work beyond a gap: Derjaguin 1934; Muller, Yushchenko and Derjaguin
-  /// 1980). Composite Gauss-Legendre (24 points) on panels doubling from the radius where f = eps out to f = 1e7 eps;
-  /// the tail beyond, cut, is (eps / f)^(2 / n) of the force for f ~ r^n: 1e-14 for the paraboloid, 1e-7 for a cone. The smallest F over d is the pull-off of every elastic
+  /// 1980). Composite Gauss-Legendre (24 points): one panel out to r_eps / 8 (f(r_eps) = eps), then panels doubling
+  /// out to f = 1e7 eps; the tail beyond, cut, is (eps / f)^(3 - 2/n) of the force for f ~ r^n: 1e-14 for the
+  /// paraboloid, 1e-7 for a cone; n <= 2/3 is refused (the integral diverges). The smallest F over d is the pull-off of every elastic
   /// half-space as the modulus grows (a DMT limit for any tip), found by golden section in d over [-3, -0.5] eps.
   struct RigidPullOff
   {
@@ -137,7 +140,14 @@ namespace gradcontact::fem
   /// (gmsh sizes twice these, halved by its subdivision), divided by `refinement`; the z-halvings of a modulus
   /// E ~ z^s (s > 0) under the whole near field (the law acts everywhere there); the condensed far field at 100 a
   /// for a power law (fem/far_field.h), else the clamped one of recommended_settings.
-  Settings smooth_cohesion_settings(const Material &material, double contact_radius, double refinement = 1);
+  /// `uniform_contact`: the edge's cell size from the axis out to the expected contact edge as well (growing to
+  /// 2.5e-2 a at 2.5 a only beyond it), for Tabor parameters whose adhesive zone is thinner than the graded
+  /// mesh's cells wherever the contact edge passes on the path (0 to a): measured at k = 0, lambda = 5, the graded
+  /// mesh's path folds 5 times (refused), the uniform one's converges with 1167 surface DoFs (against 575), at
+  /// about 30 times the cost (346 s against 11.6 s for the graded mesh at lambda = 3: the dense factorisations grow like
+  /// the cube of the surface DoFs).
+  Settings smooth_cohesion_settings(const Material &material, double contact_radius, double refinement = 1,
+                                    bool uniform_contact = false);
 
   class SmoothCohesiveContact
   {

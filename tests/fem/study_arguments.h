@@ -87,6 +87,7 @@ namespace gradcontact::fem::testing
     {
       mesh.h_edge                  = num("h_edge", mesh.h_edge);
       mesh.h_surface               = num("h_surface", mesh.h_surface);
+      mesh.h_surface_outer         = num("h_surface_outer", mesh.h_surface_outer);
       mesh.h_far                   = num("h_far", mesh.h_far);
       mesh.ring_growth             = num("g", mesh.ring_growth);
       mesh.far_field_size          = num("L", mesh.far_field_size);
