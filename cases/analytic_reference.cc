@@ -98,7 +98,7 @@ namespace gradcontact::cases
         indenter.E, m.c0, indenter.elasticity == IndenterParameters::Elasticity::graded ? m.k : 0., indenter.nu};
     idealised_indenter = !indenter.covered_by_9_4(m.k);
     idealised_surface  = s.friction.enabled();
-    idealised_adhesion = s.adhesion.dugdale;
+    idealised_adhesion = s.adhesion.law != AdhesionParameters::Law::jkr;
     base.method = method;
     if (problem == Problem::tangential)
       {

@@ -177,7 +177,7 @@ namespace gradcontact::cases
                                    false, lr);
                     else if (l.type == Type::concave_punch)
                       concave_punch(model, lr);
-                    else if (ad.dugdale)
+                    else if (ad.law == AdhesionParameters::Law::dugdale)
                       cohesive_profile(material, settings, lr);
                     else
                       curved_profile(model, level == s.discretization.refinements.back(), lr);

@@ -352,7 +352,7 @@ namespace gradcontact::cases
     const std::string profile_name =
       paraboloid ? "paraboloid R = " + format(s.load.R) + " m" : "power law f = A r^n, n = " + format(s.load.n);
 
-    const bool smooth = s.adhesion.lennard_jones;
+    const bool smooth = s.adhesion.law == AdhesionParameters::Law::lennard_jones;
     const std::string law_name = smooth ? "Lennard-Jones" : "Dugdale";
     std::ofstream csv(folder / "map.csv");
     csv.precision(10);
@@ -430,11 +430,11 @@ namespace gradcontact::cases
             base.lambda   = lambda;
             base.strength = cohesive_strength(lambda, medium, profile, dgamma);
             base.range    = dgamma / base.strength;
+            // The rigid limit: Dugdale's tension sigma_0 on f(c) <= h_0; the Lennard-Jones', Derjaguin's integral of
+            // the law over the tip minimised in d (both -2 pi dgamma R for the paraboloid).
             const double c_rigid = paraboloid ? std::sqrt(2 * s.load.R * base.range) : std::pow(base.range / s.load.A, 1 / s.load.n);
-            // The Lennard-Jones' rigid limit of the power law is not Dugdale's (only the paraboloid's, -2 pi dgamma R,
-            // is shared): Derjaguin's integral of the law over the tip, minimised in d.
             base.force_rigid = -pi * base.strength * c_rigid * c_rigid;
-            if (smooth && !paraboloid)
+            if (smooth)
               try
                 {
                   base.force_rigid =

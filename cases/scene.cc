@@ -439,8 +439,8 @@ namespace gradcontact::cases
     curve_points.clear();
     for (const std::string &x : dealii::Utilities::split_string_list(prm.get("curve points")))
       curve_points.push_back(dealii::Utilities::string_to_double(x));
-    dugdale = prm.get("law") == "Dugdale";
-    lennard_jones = prm.get("law") == "Lennard-Jones";
+    const std::string law_name = prm.get("law");
+    law = law_name == "Dugdale" ? Law::dugdale : law_name == "Lennard-Jones" ? Law::lennard_jones : Law::jkr;
     tabor_parameter = prm.get_double("Tabor parameter");
     cohesive_strength = prm.get_double("cohesive strength");
     prm.leave_subsection();
@@ -624,10 +624,10 @@ namespace gradcontact::cases
       if (optimal && !(ad.tensile_strength > 0.))
         throw std::invalid_argument(where + "Adhesion/tensile strength = " + format(ad.tensile_strength) +
                                     " must be in (0, inf) for the optimal profile");
-      if (!ad.dugdale && (ad.tabor_parameter > 0. || ad.cohesive_strength > 0.))
+      if (ad.law != AdhesionParameters::Law::dugdale && (ad.tabor_parameter > 0. || ad.cohesive_strength > 0.))
         throw std::invalid_argument(where + "Adhesion/Tabor parameter or cohesive strength is set with Adhesion/law = "
                                     "JKR: they belong to law = Dugdale");
-      if (ad.dugdale)
+      if (ad.law == AdhesionParameters::Law::dugdale)
         {
           using Type = LoadParameters::Type;
           if (s.load.type != Type::paraboloid && s.load.type != Type::power_law)
@@ -685,7 +685,7 @@ namespace gradcontact::cases
   SceneKind scene_kind(const Scene &s)
   {
     const std::string where = "scene " + s.file + ": ";
-    if (s.adhesion.lennard_jones && s.map.parameter != MapParameters::Parameter::tabor_parameter)
+    if (s.adhesion.law == AdhesionParameters::Law::lennard_jones && s.map.parameter != MapParameters::Parameter::tabor_parameter)
       throw std::invalid_argument(where + "Adhesion/law = Lennard-Jones runs in Tabor-parameter maps only (Map/parameter "
                                   "= Tabor parameter, which gives its lambdas)");
     if (s.references.fem && s.material.nu >= 0.5 &&
@@ -772,7 +772,7 @@ namespace gradcontact::cases
     if (s.map.parameter == MapParameters::Parameter::tabor_parameter)
       {
         using Type = LoadParameters::Type;
-        if (s.adhesion.lennard_jones && !s.discretization.refinements.empty() &&
+        if (s.adhesion.law == AdhesionParameters::Law::lennard_jones && !s.discretization.refinements.empty() &&
             s.discretization.refinements.back() > 4)
           throw std::invalid_argument(where + "Discretization/refinements = " +
                                       std::to_string(s.discretization.refinements.back()) +

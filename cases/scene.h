@@ -178,12 +178,16 @@ namespace gradcontact::cases
     double stencil_ratio = 1.05;
     bool local_stencil = true;
     std::vector<double> curve_points; ///< a / a_c of FE points on the force-depth curve (force control)
-    /// The adhesive law of the FE: JKR (the chapter's, energy release rate) or a Dugdale cohesive zone of strength
-    /// sigma_0 (given, or from the Tabor parameter lambda, cases/fe_cohesive.h), fem/cohesive_zone.h.
-    bool dugdale = false;
-    /// Or the Lennard-Jones law of fem/smooth_cohesion.h, its largest stress the Dugdale sigma_0 of the Tabor
-    /// parameter (Tabor-parameter maps only).
-    bool lennard_jones = false;
+    /// The adhesive law of the FE.
+    enum class Law
+    {
+      jkr,          ///< the chapter's (the FE from its energy release rate)
+      dugdale,      ///< a cohesive zone of strength sigma_0 (given, or from the Tabor parameter lambda,
+                    ///< cases/fe_cohesive.h), fem/cohesive_zone.h
+      lennard_jones ///< fem/smooth_cohesion.h, its largest stress the Dugdale sigma_0 of the Tabor parameter
+                    ///< (Tabor-parameter maps only)
+    };
+    Law law = Law::jkr;
     double tabor_parameter = 0.;    ///< lambda > 0 (Dugdale; or cohesive_strength)
     double cohesive_strength = 0.;  ///< sigma_0 [Pa] > 0 (Dugdale; or tabor_parameter)
     bool enabled(const LoadParameters &load) const;

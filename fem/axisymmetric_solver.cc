@@ -433,8 +433,7 @@ namespace gradcontact::fem
           throw std::logic_error("AxisymmetricSolver::surface_flexibility: the surface z-DoF at r = " +
                                  std::to_string(dof_r[d]) + " is constrained to other DoFs (a hanging node)");
       }
-    double unused       = 0;
-    flexibility.matrix  = system.inverse_block(flexibility.dofs, unused);
+    flexibility.matrix  = system.inverse_block(flexibility.dofs);
     flexibility.seconds = seconds_since(start);
     return flexibility;
   }

@@ -80,8 +80,8 @@ namespace gradcontact::fem
     /// SuiteSparse; Chen, Davis, Hager and Rajamanickam, ACM TOMS 35 (2008) 22) solves for the unit loads in blocks
     /// of columns with dense (BLAS-3) triangular solves: measured 20x faster than one UMFPACK back substitution
     /// per row. A matrix that is not positive definite (the mixed formulation) falls back to those back
-    /// substitutions. `seconds`: the wall time.
-    dealii::FullMatrix<double> inverse_block(const std::vector<dealii::types::global_dof_index> &rows, double &seconds);
+    /// substitutions.
+    dealii::FullMatrix<double> inverse_block(const std::vector<dealii::types::global_dof_index> &rows);
 
     /// u.Au over the unconstrained DoFs (the constrained rows of A hold dummy diagonal entries).
     double energy(const dealii::Vector<double> &u) const;

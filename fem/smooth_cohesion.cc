@@ -4,9 +4,13 @@
 #include <deal.II/base/quadrature_lib.h>
 #include <deal.II/lac/lapack_full_matrix.h>
 
+#include <boost/math/tools/minima.hpp>
+#include <boost/math/tools/toms748_solve.hpp>
+
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdint>
 #include <limits>
 #include <memory>
 #include <sstream>
@@ -126,14 +130,15 @@ namespace gradcontact::fem
     const auto   f   = [&profile](const double r) { return profile(r, 1.0); };
     if (f(0) != 0)
       fail("rigid_force", "profile f(0)", f(0), "0 (the indenter's tip at r = 0)");
-    // r_eps with f(r_eps) = eps, by doubling and bisection (f grows monotonically).
+    // r_eps with f(r_eps) = eps (f grows monotonically): a bracket by doubling, then TOMS 748.
     double hi = eps;
     for (unsigned int i = 0; f(hi) < eps; ++i, hi *= 2)
       if (i > 2000 || !std::isfinite(hi))
         throw std::invalid_argument("rigid_force: the profile does not grow to the law's range eps");
-    double lo = 0;
-    for (unsigned int i = 0; i < 200 && hi - lo > 1e-15 * hi; ++i)
-      (f(0.5 * (lo + hi)) < eps ? lo : hi) = 0.5 * (lo + hi);
+    std::uintmax_t iterations = 200;
+    hi = boost::math::tools::toms748_solve([&](const double r) { return f(r) - eps; }, 0.0, hi, -eps, f(hi) - eps,
+                                           boost::math::tools::eps_tolerance<double>(50), iterations)
+           .second;
     const dealii::QGauss<1> gauss(24);
     const auto              panel = [&](const double r0, const double r1) {
       double sum = 0;
@@ -160,28 +165,16 @@ namespace gradcontact::fem
 
   RigidPullOff rigid_pull_off(const LennardJonesLaw &law, const Profile &profile)
   {
-    const double eps = law.separation, golden = (std::sqrt(5.0) - 1) / 2;
-    double       a = -3 * eps, b = -0.5 * eps;
-    double       x1 = b - golden * (b - a), x2 = a + golden * (b - a);
-    double       f1 = rigid_force(law, profile, x1), f2 = rigid_force(law, profile, x2);
-    while (b - a > 1e-10 * eps)
-      if (f1 < f2)
-        {
-          b = x2, x2 = x1, f2 = f1;
-          x1 = b - golden * (b - a);
-          f1 = rigid_force(law, profile, x1);
-        }
-      else
-        {
-          a = x1, x1 = x2, f1 = f2;
-          x2 = a + golden * (b - a);
-          f2 = rigid_force(law, profile, x2);
-        }
-    const double d = 0.5 * (a + b);
+    // In units of eps: Brent's stopping test has an absolute part (a quarter of its tolerance), far above eps in
+    // physical units.
+    const double eps     = law.separation;
+    const auto   minimum = boost::math::tools::brent_find_minima(
+      [&](const double t) { return rigid_force(law, profile, t * eps); }, -3.0, -0.5, 50);
+    const double d = minimum.first * eps;
     if (d < -2.99 * eps || d > -0.51 * eps)
       throw std::runtime_error("rigid_pull_off: the smallest force lies at the end of d in [-3, -0.5] eps (d = " +
                                std::to_string(d / eps) + " eps): not a minimum of this profile's F(d)");
-    return {d, rigid_force(law, profile, d)};
+    return {d, minimum.second};
   }
 
 

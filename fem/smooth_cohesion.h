@@ -125,7 +125,7 @@ namespace gradcontact::fem
   /// 1980). Composite Gauss-Legendre (24 points): one panel out to r_eps / 8 (f(r_eps) = eps), then panels doubling
   /// out to f = 1e7 eps; the tail beyond, cut, is (eps / f)^(3 - 2/n) of the force for f ~ r^n: 1e-14 for the
   /// paraboloid, 1e-7 for a cone; n <= 2/3 is refused (the integral diverges). The smallest F over d is the pull-off of every elastic
-  /// half-space as the modulus grows (a DMT limit for any tip), found by golden section in d over [-3, -0.5] eps.
+  /// half-space as the modulus grows (a DMT limit for any tip), found by Brent's method in d over [-3, -0.5] eps.
   struct RigidPullOff
   {
     double depth = 0; ///< d at the smallest F
