@@ -111,6 +111,10 @@ namespace gradcontact::fem
       fail("SmoothCohesionParameters", "critical_tolerance", critical_tolerance, "[1e-15, 1e-2]");
     if (quadrature_points < 2 || quadrature_points > 32)
       fail("SmoothCohesionParameters", "quadrature_points", quadrature_points, "[2, 32]");
+    if (!(edge_band >= 1e-3 && edge_band <= 0.5))
+      fail("SmoothCohesionParameters", "edge_band", edge_band, "[1e-3, 0.5]");
+    if (!(smallest_frame > 0 && smallest_frame <= 1))
+      fail("SmoothCohesionParameters", "smallest_frame", smallest_frame, "(0, 1]");
   }
 
 
@@ -204,10 +208,11 @@ namespace gradcontact::fem
 
   struct SmoothCohesiveContact::Impl
   {
-    /// A Gauss point of a surface face: r, weight times r, f(r), the face's Lagrange basis there.
+    /// A Gauss point of a surface face: r, weight times r, f(r) in the current frame (r_base, weight_base: in the
+    /// settings' mesh), the face's Lagrange basis there.
     struct Point
     {
-      double              r = 0, weight = 0, f = 0;
+      double              r = 0, weight = 0, f = 0, r_base = 0, weight_base = 0;
       std::vector<double> basis;
     };
     struct Face
@@ -235,8 +240,16 @@ namespace gradcontact::fem
          const SmoothCohesionParameters &parameters_)
       : profile(profile_)
       , parameters((parameters_.validate(), parameters_))
+      , reference_radius(settings.mesh.contact_radius)
     {
       profile.validate();
+      if (parameters.follow_edge)
+        {
+          if (!material.modulus || !power_law_of_depth(*material.modulus))
+            throw std::invalid_argument("SmoothCohesiveContact: follow_edge needs a self-similar model, a modulus E0 "
+                                        "(z / c0)^k or a homogeneous one; this material's is neither");
+          exponent = material.modulus->surface_exponent();
+        }
       if (profile.shape == Profile::Shape::concave_paraboloid)
         throw std::invalid_argument("SmoothCohesiveContact: the profile must open monotonically (not the concave punch)");
       const double f0 = profile(0, settings.mesh.contact_radius);
@@ -262,19 +275,116 @@ namespace gradcontact::fem
           for (unsigned int q = 0; q < gauss.size(); ++q)
             {
               Point p;
-              p.r      = sf.r0 + gauss.point(q)[0] * (sf.r1 - sf.r0);
-              p.weight = gauss.weight(q) * (sf.r1 - sf.r0) * p.r;
-              p.f      = profile(p.r, settings.mesh.contact_radius);
+              p.r_base      = sf.r0 + gauss.point(q)[0] * (sf.r1 - sf.r0);
+              p.weight_base = gauss.weight(q) * (sf.r1 - sf.r0) * p.r_base;
               for (unsigned int a = 0; a < sf.r.size(); ++a)
                 {
                   std::vector<double> y(sf.r.size(), 0.0);
                   y[a] = 1;
-                  p.basis.push_back(lagrange(sf.r, y, p.r));
+                  p.basis.push_back(lagrange(sf.r, y, p.r_base));
                 }
               face.points.push_back(p);
             }
           faces.push_back(face);
         }
+      set_frame(1);
+    }
+
+    /// The model scaled by s (header, "Following the edge"): Gauss points at s r, weights s^2, compliance s^{-(1+k)}.
+    void set_frame(const double s)
+    {
+      scale      = s;
+      compliance = std::pow(s, -(1 + exponent));
+      for (Face &face : faces)
+        for (Point &p : face.points)
+          {
+            p.r      = s * p.r_base;
+            p.weight = s * s * p.weight_base;
+            p.f      = profile(p.r, reference_radius);
+          }
+    }
+
+    /// The frame whose centre is the contact edge r_e (the smallest frame for an edge inside it or no contact).
+    double frame_for(const double edge) const
+    {
+      return std::max(edge / reference_radius, parameters.smallest_frame);
+    }
+
+    /// w of the current frame at physical radius r: its interpolant, beyond the last face the far-field decay
+    /// w(L) (L / r)^{1+k}.
+    double value_at(const std::vector<double> &w, const double r) const
+    {
+      const double rho  = r / scale; // in the settings' mesh
+      const auto  &all  = flexibility.faces;
+      const auto   next = std::upper_bound(all.begin(), all.end(), rho,
+                                           [](const double x, const SurfaceFace &f) { return x < f.r0; });
+      const std::size_t i = next == all.begin() ? 0 : std::size_t(next - all.begin()) - 1;
+      const SurfaceFace &sf    = all[i];
+      const Face        &face  = faces[i];
+      std::vector<double> y(sf.r.size(), 0.0);
+      for (unsigned int a = 0; a < y.size(); ++a)
+        if (face.unknown[a] >= 0)
+          y[a] = w[face.unknown[a]];
+      if (rho <= sf.r1)
+        return lagrange(sf.r, y, rho);
+      return y.back() * std::pow(sf.r1 / rho, 1 + exponent);
+    }
+
+    /// `from` (a state of the current frame) moved to frame s: interpolated and solved on the hyperplane of its
+    /// tangent (header); where Newton does not converge, in moves of half the size (up to 16). Throws
+    /// std::runtime_error when the shortest move fails too.
+    Solved move_frame(const Solved &from, const double s)
+    {
+      const double start = scale;
+      Solved       moved;
+      for (unsigned int parts = 1;; parts *= 2)
+        {
+          moved = from;
+          set_frame(start);
+          unsigned int part = 1;
+          for (; part <= parts; ++part)
+            if (!try_move(moved, start + (s - start) * part / parts))
+              break;
+          if (part > parts)
+            return moved;
+          if (parts == 16)
+            {
+              std::ostringstream msg;
+              msg << "SmoothCohesiveContact: Newton did not converge moving the edge-following mesh from frame "
+                  << start << " to " << s << " (times the settings' contact radius) in 16 moves at h_c = "
+                  << from.state.central_gap / eps() << " eps";
+              set_frame(start);
+              throw std::runtime_error(msg.str());
+            }
+        }
+    }
+
+    /// One move of `state` to frame s (false: Newton did not converge; `state` and the frame are then undefined).
+    bool try_move(Solved &state, const double s)
+    {
+      const Solved &from = state;
+      Solved moved;
+      moved.x.assign(n + 1, 0.0);
+      moved.tangent.assign(n + 1, 0.0);
+      std::vector<double> w(from.x.begin(), from.x.begin() + n), t(from.tangent.begin(), from.tangent.begin() + n);
+      for (unsigned int i = 0; i < n; ++i)
+        {
+          moved.x[i]       = value_at(w, s * flexibility.r[i]);
+          moved.tangent[i] = value_at(t, s * flexibility.r[i]);
+        }
+      moved.x[n]       = from.x[n];
+      moved.tangent[n] = from.tangent[n];
+      set_frame(s);
+      const double norm = std::sqrt(metric(moved.tangent, moved.tangent));
+      for (double &v : moved.tangent)
+        v /= norm;
+      Solved       solved;
+      unsigned int iterations = 0;
+      if (!newton(moved.x, arclength(moved, 0), solved, iterations))
+        return false;
+      finish(solved, &moved.tangent);
+      state = std::move(solved);
+      return true;
     }
 
     double eps() const { return law.separation; }
@@ -334,7 +444,7 @@ namespace gradcontact::fem
           double Cb = 0;
           for (unsigned int j = 0; j < n; ++j)
             Cb += flexibility.matrix(i, j) * b[j];
-          R[i] = x[i] - Cb;
+          R[i] = x[i] - compliance * Cb;
         }
       R[n] = -constraint.value;
       for (unsigned int i = 0; i <= n; ++i)
@@ -372,7 +482,7 @@ namespace gradcontact::fem
                   {
                     const unsigned int ia = face.unknown[a], ic = face.unknown[c];
                     for (unsigned int i = 0; i < n; ++i)
-                      CB(i, ic) += flexibility.matrix(i, ia) * local(a, c);
+                      CB(i, ic) += compliance * flexibility.matrix(i, ia) * local(a, c);
                   }
         }
       J.reinit(n + 1, n + 1);
@@ -384,7 +494,7 @@ namespace gradcontact::fem
               J(i, j) = (i == j ? 1.0 : 0.0) - CB(i, j);
               Cs += flexibility.matrix(i, j) * s[j];
             }
-          J(i, n) = -Cs;
+          J(i, n) = -compliance * Cs;
         }
       for (unsigned int i = 0; i <= n; ++i)
         J(n, i) = constraint.row[i];
@@ -558,7 +668,9 @@ namespace gradcontact::fem
       s.depth_slope          = t[n];
       s.gap_slope            = t[0] - t[n];
       double F = 0, dF = 0, last_r = -1, last_h = 0;
+      const double peak = std::pow(3.0, 1.0 / 6) * eps();
       s.contact_radius = 0;
+      s.peak_radius    = 0;
       for (const Face &face : faces)
         for (const Point &p : face.points)
           {
@@ -568,6 +680,8 @@ namespace gradcontact::fem
             // The outermost crossing of h = eps, interpolated between Gauss points.
             if (last_r >= 0 && last_h <= eps() && h > eps())
               s.contact_radius = last_r + (eps() - last_h) / (h - last_h) * (p.r - last_r);
+            if (last_r >= 0 && last_h <= peak && h > peak)
+              s.peak_radius = last_r + (peak - last_h) / (h - last_h) * (p.r - last_r);
             last_r = p.r;
             last_h = h;
           }
@@ -600,8 +714,9 @@ namespace gradcontact::fem
 
     /// Follows the path from `current` (pseudo-arclength): to its end (trace, `path` given: the minimum of
     /// F passed and F >= stop_force, or h_c <= min_gap eps), or until h_c first reaches `target` (path null).
-    Solved follow(Solved current, const double target, SmoothCohesionPath *path) const
+    Solved follow(Solved current, const double target, SmoothCohesionPath *path)
     {
+      unsigned int moves_in_row = 0; // frame moves since the last accepted step
       double       ds    = parameters.first_step * eps();
       double       F_min = current.state.force;
       const double floor = parameters.min_gap * eps();
@@ -663,6 +778,35 @@ namespace gradcontact::fem
                 }
               continue;
             }
+          if (parameters.follow_edge)
+            {
+              // The step took the edge out of the frame's band: the step is redone from `current` moved to the
+              // frame of next's edge (twice in a row: the edge jumps, the step is halved instead).
+              const double s = frame_for(next.state.peak_radius);
+              if (std::abs(s - scale) > parameters.edge_band * scale)
+                {
+                  if (moves_in_row >= 2)
+                    {
+                      ++rejected;
+                      ds /= 2;
+                      continue;
+                    }
+                  try
+                    {
+                      current = move_frame(current, s);
+                    }
+                  catch (const std::exception &)
+                    {
+                      done();
+                      throw;
+                    }
+                  ++moves_in_row;
+                  if (path)
+                    ++path->frames;
+                  continue;
+                }
+            }
+          moves_in_row = 0;
           ++steps;
           if (target >= 0 && next.state.central_gap <= target)
             {
@@ -794,6 +938,10 @@ namespace gradcontact::fem
     const Profile                          profile;
     LennardJonesLaw                        law; ///< of the path being followed
     const SmoothCohesionParameters         parameters;
+    const double                           reference_radius; ///< the settings' contact radius (the mesh's unit)
+    double                                 exponent   = 0;   ///< k of the modulus (follow_edge)
+    double                                 scale      = 1;   ///< the current frame
+    double                                 compliance = 1;   ///< scale^{-(1+k)}
     mutable unsigned long                  factorisations_done = 0; ///< every Jacobian factorised, failed trials too
     unsigned int                           n_dofs = 0; ///< of the FE model behind the flexibility
     SurfaceFlexibility                     flexibility;
@@ -825,6 +973,7 @@ namespace gradcontact::fem
     path.flexibility_seconds = impl->flexibility.seconds;
     try
       {
+        impl->set_frame(impl->parameters.follow_edge ? impl->parameters.smallest_frame : 1.0);
         Impl::Solved first = impl->first_state();
         path.states.push_back(first.state);
         path.newton_iterations += first.state.newton_iterations;
@@ -853,6 +1002,7 @@ namespace gradcontact::fem
               << "start_gap eps, eps = " << eps << ")";
         fail("SmoothCohesiveContact::state", "central gap", central_gap, range.str());
       }
+    impl->set_frame(impl->parameters.follow_edge ? impl->parameters.smallest_frame : 1.0);
     return impl->follow(impl->first_state(), central_gap, nullptr).state;
   }
 } // namespace gradcontact::fem

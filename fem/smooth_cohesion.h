@@ -36,6 +36,21 @@
 // false position in the arclength between the path states that bracket them, each derivative exact from the
 // tangent. A path that stops before its minimum of F, or whose Newton does not converge, says so (`message`)
 // with its counts.
+//
+// Following the edge. The adhesive zone at the contact edge is about E* dgamma / sigma_0^2 wide whatever the contact
+// radius (its width relative to a_c falls like lambda^-2), so a mesh fine enough for it wherever the edge passes
+// (from the axis out to the zero-load radius) has surface DoFs growing like lambda^2 and a dense factorisation like
+// lambda^6. For a modulus E0 (z/c0)^k (and the homogeneous one) the FE model is self-similar: the settings' mesh,
+// in units of its contact radius a, scaled by s has stiffness s^{1+k} times the original's (strains 1/s, modulus
+// s^k, volume s^3), so its surface flexibility is s^{-(1+k)} C at the nodes s r_i; a test checks this against FE
+// models built at two radii. With `follow_edge` the path keeps the mesh's finest cells (h_edge, at a) on the
+// contact edge r_e (the peak radius of the state, where the attraction is largest): it runs on the frame
+// s = max(r_e, smallest_frame a) / a and moves to a new frame when r_e has left the band |r_e - s a| <= edge_band s a. The move: the last state before the step that left the band is
+// interpolated onto the new frame's nodes (w beyond the old truncation radius L by its far-field decay
+// w(L) (L / r)^{1+k}), and Newton finds the new frame's state on the hyperplane of that state's tangent (a step of
+// zero arclength). The critical states are located within a frame only, so that the mesh change between frames (of
+// the order of the discretisation error) cannot be taken for a fold or a minimum. No new FE solve: a move costs
+// one factorisation.
 #ifndef GRADCONTACT_FEM_SMOOTH_COHESION_H
 #define GRADCONTACT_FEM_SMOOTH_COHESION_H
 
@@ -78,6 +93,15 @@ namespace gradcontact::fem
     unsigned int max_steps       = 2000;  ///< path steps (accepted and rejected)
     double       critical_tolerance = 1e-11; ///< bracket of the arclength of a critical state / eps
     unsigned int quadrature_points  = 8;     ///< Gauss points per surface face
+    /// The mesh follows the contact edge (header, "Following the edge"): the model is a self-similar copy of the
+    /// settings' mesh scaled so that its edge cells (at `contact_radius` s) stay at the contact edge.
+    bool         follow_edge    = false;
+    /// A new frame when the edge (or the smallest frame's radius) lies farther than this / the frame's radius from
+    /// its centre; [1e-3, 0.5].
+    double       edge_band      = 0.02;
+    /// The smallest frame / the settings' contact radius, (0, 1]: the frame of the states before and just after the
+    /// contact forms (its axis cells, h_surface times this, must resolve the adhesive zone there).
+    double       smallest_frame = 0.25;
 
     void validate() const;
   };
@@ -89,6 +113,9 @@ namespace gradcontact::fem
     double       depth          = 0; ///< d
     double       force          = 0; ///< F, compressive positive
     double       contact_radius = 0; ///< outermost r with h(r) <= eps (compressive traction); 0 when none
+    /// Outermost r with h(r) <= 3^{1/6} eps (inside it the attraction has passed its peak: the adhesive zone's inner
+    /// end, JKR's contact radius as lambda grows); 0 when none.
+    double       peak_radius    = 0;
     /// Derivatives along the path, s its arclength in the metric of the header (dd^2 + dh_c^2 + |dw|^2 / n), s
     /// growing from the surfaces apart toward the contact.
     double       gap_slope      = 0; ///< dh_c / ds
@@ -114,6 +141,7 @@ namespace gradcontact::fem
     unsigned int depth_folds = 0; ///< sign changes of dd/ds along the path
     unsigned int steps = 0, rejected_steps = 0, newton_iterations = 0, factorisations = 0, critical_evaluations = 0;
     unsigned int n_dofs = 0, surface_dofs = 0;
+    unsigned int frames = 1; ///< meshes of the path (1 + the times the edge-following path moved its frame)
     double       flexibility_seconds = 0, seconds = 0;
     bool         converged = true; ///< every Newton converged and the path reached its end
     std::string  message;          ///< why not

@@ -85,13 +85,16 @@ int main(int argc, char **argv)
           sp.max_change = args.num("max_change", sp.max_change);
           sp.start_gap  = args.num("start_gap", sp.start_gap);
           sp.quadrature_points = args.count("qp", sp.quadrature_points);
+          sp.follow_edge       = args.count("follow_edge", 0) != 0;
+          sp.edge_band         = args.num("edge_band", sp.edge_band);
+          sp.smallest_frame    = args.num("smallest_frame", sp.smallest_frame);
           SmoothCohesiveContact contact(material, Profile::paraboloid(R), s, sp);
           const SmoothCohesionPath path = contact.trace(smooth);
           const double F_dmt = -2 * pi * dgamma * R;
           const auto print = [&](const std::string &what, const SmoothCohesionState &st) {
             std::cout << what << " hc/eps=" << st.central_gap / smooth.separation << " d/eps=" << st.depth / smooth.separation
                       << " F/F_jkr=" << st.force / jkr_f.force << " F/F_dmt=" << st.force / F_dmt
-                      << " a/a_jkr=" << st.contact_radius / jkr_f.radius << " dF=" << st.force_slope
+                      << " a/a_jkr=" << st.contact_radius / jkr_f.radius << " ap/a_jkr=" << st.peak_radius / jkr_f.radius << " dF=" << st.force_slope
                       << " dd=" << st.depth_slope << " it=" << st.newton_iterations << " lu=" << st.factorisations << '\n';
           };
           if (args.count("path", 0))
@@ -104,7 +107,7 @@ int main(int argc, char **argv)
           if (path.has_force_minimum)
             print("force_pull_off", path.force_pull_off);
           std::cout << "eps=" << smooth.separation << " dofs=" << path.n_dofs << " surface=" << path.surface_dofs
-                    << " steps=" << path.steps << " rejected=" << path.rejected_steps << " newton=" << path.newton_iterations << " lu=" << path.factorisations
+                    << " steps=" << path.steps << " rejected=" << path.rejected_steps << " frames=" << path.frames << " newton=" << path.newton_iterations << " lu=" << path.factorisations
                     << " critical=" << path.critical_evaluations << " flex_s=" << path.flexibility_seconds
                     << " s=" << path.seconds << " converged=" << path.converged << " " << path.message << '\n';
           if (path.has_force_minimum)

@@ -255,6 +255,103 @@ TEST_CASE("Lennard-Jones FE: pull-off on a finer mesh", "[fem]")
   CHECK_THAT(force[0], Catch::Matchers::WithinRel(force[1], 1e-5));
 }
 
+TEST_CASE("Lennard-Jones FE following the edge: the model is self-similar, the rescaled path is the fixed mesh's",
+          "[fem]")
+{
+  // The premise (fem/smooth_cohesion.h, "Following the edge"): for E0 (z / c0)^k the FE model built at the contact
+  // radius s a is the one at a scaled by s, its flexibility s^{-(1+k)} times the other's at the nodes s r_i. Both
+  // are built here from scratch (mesh, halvings, condensed far field, Gauss-Jacobi cells) at a and 1.37 a.
+  const double a = 0.02, s = 1.37;
+  for (const double k : {-0.5, 0.5})
+    {
+      const Material           material = power_law_material(1, k);
+      AxisymmetricSolver       small(material, smooth_cohesion_settings(material, a, 0.5).mesh,
+                                     smooth_cohesion_settings(material, a, 0.5).discretization);
+      AxisymmetricSolver       large(material, smooth_cohesion_settings(material, s * a, 0.5).mesh,
+                                     smooth_cohesion_settings(material, s * a, 0.5).discretization);
+      const SurfaceFlexibility C = small.surface_flexibility(), Cs = large.surface_flexibility();
+      REQUIRE(C.r.size() == Cs.r.size());
+      double worst_node = 0, worst = 0, largest = 0;
+      for (unsigned int i = 0; i < C.r.size(); ++i)
+        {
+          worst_node = std::max(worst_node, std::abs(Cs.r[i] - s * C.r[i]) / (s * a));
+          for (unsigned int j = 0; j < C.r.size(); ++j)
+            {
+              worst   = std::max(worst, std::abs(Cs.matrix(i, j) - std::pow(s, -(1 + k)) * C.matrix(i, j)));
+              largest = std::max(largest, std::abs(Cs.matrix(i, j)));
+            }
+        }
+      std::cout << "self-similar flexibility k = " << k << ": " << C.r.size() << " surface DoFs, nodes " << worst_node
+                << ", entries " << worst / largest << "\n";
+      CHECK(worst_node <= 1e-12);
+      // k = 0.5: 9e-8, the round-off of the soft surface's flexibility (its halvings to 1e-10 a).
+      CHECK(worst <= (k > 0 ? 1e-6 : 1e-9) * largest);
+    }
+
+  // The rigid power-law tip (as above): every state of the edge-following path, whatever its frame, is F(d).
+  {
+    const double             A = 1.0 / (4 * R * R * R), eps = 1e-2;
+    const Profile            tip = Profile::power_law(4.0, A);
+    const LennardJonesLaw    law{dgamma, eps};
+    const double             r_eps = std::pow(eps / A, 0.25);
+    const RigidPullOff       rigid = rigid_pull_off(law, tip);
+    const Material           material = power_law_material(1e10, 0.5);
+    SmoothCohesionParameters follow;
+    follow.follow_edge = true;
+    SmoothCohesiveContact    contact(material, tip, smooth_cohesion_settings(material, r_eps, 0.5), follow);
+    const SmoothCohesionPath path = contact.trace(law);
+    INFO(path.message);
+    REQUIRE(path.converged);
+    REQUIRE(path.has_force_minimum);
+    double worst = 0;
+    for (const SmoothCohesionState &st : path.states)
+      worst = std::max(worst, std::abs(st.force - rigid_force(law, tip, st.depth)) / std::abs(rigid.force));
+    std::cout << "rigid n = 4 tip following the edge: " << path.frames << " frames, " << path.states.size()
+              << " states, worst |F - F_rigid(d)| / |F_c,rigid| " << worst << "\n";
+    CHECK(path.frames > 5);
+    CHECK(worst <= 1e-6);
+    CHECK_THAT(path.force_pull_off.force, Catch::Matchers::WithinRel(rigid.force, 1e-6));
+  }
+
+  // Elastic, k = -0.5, mu = 1 (the fixed meshes of "pull-off on a finer mesh" agree to 1e-5 there): the
+  // edge-following path's critical states are the fixed mesh's.
+  {
+    const double              E0 = 1, k = -0.5;
+    const Material            material = power_law_material(E0, k);
+    const gradcontact::Medium medium   = gradcontact::medium(gradcontact::GradedHalfSpace{E0, c0, k, nu});
+    const auto jkr = gradcontact::jkr::critical_state(medium, gradcontact::Paraboloid{R}, dgamma, gradcontact::Control::force);
+    const LennardJonesLaw    law{dgamma, separation_of_tabor(1.0, E0)};
+    SmoothCohesionParameters follow;
+    follow.follow_edge = true;
+    SmoothCohesiveContact    fixed(material, Profile::paraboloid(R), smooth_cohesion_settings(material, jkr.radius));
+    SmoothCohesiveContact    moving(material, Profile::paraboloid(R), smooth_cohesion_settings(material, jkr.radius), follow);
+    const SmoothCohesionPath p0 = fixed.trace(law), p1 = moving.trace(law);
+    INFO(p0.message << " / " << p1.message);
+    REQUIRE(p0.converged);
+    REQUIRE(p1.converged);
+    REQUIRE(p1.has_force_minimum);
+    std::cout << "k = -0.5, mu = 1 following the edge: F_c " << p1.force_pull_off.force / p0.force_pull_off.force - 1
+              << " off the fixed mesh's, " << p1.frames << " frames, peak radius / a_JKR "
+              << p1.force_pull_off.peak_radius / jkr.radius << ", " << p1.seconds << " s (fixed " << p0.seconds << " s)\n";
+    CHECK(p1.frames > 5);
+    CHECK_THAT(p1.force_pull_off.force, Catch::Matchers::WithinRel(p0.force_pull_off.force, 1e-5));
+    CHECK_THAT(p1.force_pull_off.depth, Catch::Matchers::WithinRel(p0.force_pull_off.depth, 1e-5));
+    CHECK(p1.has_depth_jump == p0.has_depth_jump);
+  }
+
+  // Not self-similar: refused.
+  const Material shifted{std::make_shared<ShiftedPowerLawModulus>(1, c0, 0.5, 1e-3), nu};
+  SmoothCohesionParameters follow;
+  follow.follow_edge = true;
+  CHECK_THROWS_WITH(SmoothCohesiveContact(shifted, Profile::paraboloid(R), smooth_cohesion_settings(shifted, 0.1), follow),
+                    Catch::Matchers::Contains("self-similar"));
+  follow.edge_band = 0;
+  CHECK_THROWS_WITH(follow.validate(), Catch::Matchers::Contains("edge_band"));
+  follow = {};
+  follow.smallest_frame = 2;
+  CHECK_THROWS_WITH(follow.validate(), Catch::Matchers::Contains("smallest_frame"));
+}
+
 TEST_CASE("Surface flexibility (CHOLMOD, and UMFPACK for the mixed formulation) applied to a pressure equals the solve",
           "[fem]")
 {
