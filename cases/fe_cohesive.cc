@@ -29,11 +29,15 @@ namespace gradcontact::cases
   {
     constexpr double pi = 3.14159265358979323846;
 
-    /// Lennard-Jones Tabor parameters above this are solved on the mesh with uniform surface cells from the axis to
-    /// the contact edge (fem::smooth_cohesion_settings): the graded mesh's path folds at its nodes from lambda = 5
-    /// (k = 0) and 2 (k = 0.5) on, and resolves lambda = 3 (k <= 0) and 1 (k = 0.5); the uniform mesh costs about 30
-    /// times as much per path.
-    double uniform_contact_above(const double k) { return k > 0 ? 1.5 : 3.0; }
+    /// The Lennard-Jones map's path follows the contact edge (fem::SmoothCohesionParameters::follow_edge) on
+    /// fem::smooth_cohesion_settings' mesh, whose edge cells resolve the adhesive zone up to lambda = 5 (k = 0: 1.1e-6
+    /// off a mesh with those cells over the whole contact); the zone narrows like lambda^-2, so beyond lambda = 5 the
+    /// edge's cells are divided by (lambda / 5)^2, rounded up to a power of 2 (one model per power), and the band the
+    /// edge may move in before the next frame with them.
+    double lennard_jones_edge_refinement(const double lambda)
+    {
+      return lambda <= 5 ? 1.0 : std::exp2(std::ceil(std::log2(lambda * lambda / 25 * (1 - 1e-12))));
+    }
 
     gradcontact::jkr::CriticalState jkr_critical(const gradcontact::Medium &m, const JkrProfile &profile,
                                                  const double dgamma, const gradcontact::Control control)
@@ -268,13 +272,13 @@ namespace gradcontact::cases
           if (found)
             {
               p.force  = c.force;
-              p.radius = c.contact_radius;
+              p.radius = c.peak_radius; // the adhesive zone's inner end: JKR's a as lambda grows
               p.depth  = c.depth + law.separation;
             }
           solution.points.push_back(p);
         }
       for (const fem::SmoothCohesionState &st : path.states)
-        solution.path.push_back({st.contact_radius, std::nan(""), st.depth + law.separation, st.force, true});
+        solution.path.push_back({st.peak_radius, std::nan(""), st.depth + law.separation, st.force, true});
       return solution;
     }
   } // namespace
@@ -370,7 +374,8 @@ namespace gradcontact::cases
        << " on E0 (z/c0)^k, dgamma = " << format(dgamma) << " J/m^2, nu = " << format(s.material.nu)
        << (smooth ? ": its pull-off (the last minimum of F under force control, of d under displacement control, along "
                     "the equilibrium path followed by pseudo-arclength from the surfaces apart through snap-in into "
-                    "contact; the contact radius where the gap is eps, the depth d + eps)"
+                    "contact, on a mesh that follows the contact edge; the contact radius where the gap is 3^(1/6) eps (the "
+                    "largest attraction: the adhesive zone's inner end, JKR's a as lambda grows), the depth d + eps)"
                   : ": its pull-off (the minimum of F(a) under force control, of d(a) under displacement control, along "
                     "the path parametrised by the contact radius)")
        << " against the chapter's JKR critical state (9.55-9.56 for the paraboloid, "
@@ -402,22 +407,27 @@ namespace gradcontact::cases
           gradcontact::medium(gradcontact::GradedHalfSpace{s.material.E0, s.material.c0, k, s.material.nu});
         const unsigned int level = finest_refinement(s);
         const auto settings = [&sk, material, level](const double a) { return fe_settings(sk, material, a, level); };
-        // Lennard-Jones: one model of this k for every lambda up to uniform_contact_above, one more beyond it, each
-        // built when a point is solved here (its mesh graded toward the force-controlled JKR radius, or uniform from
-        // the axis to it beyond; refined 2^level times).
-        std::unique_ptr<fem::SmoothCohesiveContact> smooth_contact[2];
-        double                                      flexibility_seconds[2] = {0, 0};
-        const auto smooth_model = [&](const bool uniform) -> fem::SmoothCohesiveContact & {
-          if (!smooth_contact[uniform])
+        // Lennard-Jones: one model of this k per edge refinement (lennard_jones_edge_refinement), built when a point
+        // is solved here (its mesh graded toward the force-controlled JKR radius, refined 2^level times), its
+        // construction's seconds counted toward the first lambda it serves.
+        std::map<double, std::unique_ptr<fem::SmoothCohesiveContact>> smooth_contact;
+        std::map<double, double>                                      flexibility_seconds;
+        const auto smooth_model = [&](const double edge_refinement) -> fem::SmoothCohesiveContact & {
+          auto &model = smooth_contact[edge_refinement];
+          if (!model)
             {
-              const auto start_model = std::chrono::steady_clock::now();
+              const auto   start_model = std::chrono::steady_clock::now();
               const double a_c = jkr_critical(medium, profile, dgamma, gradcontact::Control::force).radius;
-              smooth_contact[uniform] = std::make_unique<fem::SmoothCohesiveContact>(
-                material, fe_profile, fem::smooth_cohesion_settings(material, a_c, std::pow(2.0, level), uniform));
-              flexibility_seconds[uniform] =
+              fem::SmoothCohesionParameters parameters;
+              parameters.follow_edge = true;
+              parameters.edge_band   = parameters.edge_band / std::sqrt(edge_refinement);
+              model                  = std::make_unique<fem::SmoothCohesiveContact>(
+                material, fe_profile,
+                fem::smooth_cohesion_settings(material, a_c, std::pow(2.0, level), edge_refinement), parameters);
+              flexibility_seconds[edge_refinement] =
                 std::chrono::duration<double>(std::chrono::steady_clock::now() - start_model).count();
             }
-          return *smooth_contact[uniform];
+          return *model;
         };
         md << "## k = " << format(k) << "\n\n| lambda | control | F_c / F_c,JKR | a_c / a_c,JKR | d_c / d_c,JKR | c / a | "
               "F_c / F_rigid | states | DoFs | s |\n|---|---|---|---|---|---|---|---|---|---|\n";
@@ -463,12 +473,11 @@ namespace gradcontact::cases
                   }
                 if (smooth)
                   {
-                    const bool uniform = lambda > uniform_contact_above(k);
-                    solution = solve_lambda_smooth(smooth_model(uniform), medium, profile, dgamma, base, controls);
-                    // The model's construction (mesh, factorisation, surface flexibility) counts toward its first lambda.
+                    const double edge_refinement = lennard_jones_edge_refinement(lambda);
+                    solution = solve_lambda_smooth(smooth_model(edge_refinement), medium, profile, dgamma, base, controls);
                     for (Point &p : solution.points)
-                      p.seconds += flexibility_seconds[uniform];
-                    flexibility_seconds[uniform] = 0;
+                      p.seconds += flexibility_seconds[edge_refinement];
+                    flexibility_seconds[edge_refinement] = 0;
                   }
                 else
                   solution = solve_lambda(material, fe_profile, settings, medium, profile, dgamma, base, controls,

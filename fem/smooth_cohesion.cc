@@ -184,20 +184,19 @@ namespace gradcontact::fem
 
 
   Settings smooth_cohesion_settings(const Material &material, const double contact_radius, const double refinement,
-                                    const bool uniform_contact)
+                                    const double edge_refinement)
   {
     if (!(refinement >= 0.25 && refinement <= 16))
       fail("smooth_cohesion_settings", "refinement", refinement, "[0.25, 16]");
+    if (!(edge_refinement >= 1 && edge_refinement <= 64))
+      fail("smooth_cohesion_settings", "edge_refinement", edge_refinement, "[1, 64]");
     if (!material.modulus)
       throw std::invalid_argument("smooth_cohesion_settings: the material has no modulus");
     Settings s = recommended_settings(contact_radius, *material.modulus, 1e-5);
     s.discretization.degree = 2;
     s.mesh.near_field_size  = 2.5;
-    s.mesh.h_edge           = 5e-3 / refinement;
+    s.mesh.h_edge           = 5e-3 / (refinement * edge_refinement);
     s.mesh.h_surface        = 5e-2 / refinement;
-    s.mesh.h_surface_outer  = uniform_contact ? s.mesh.h_surface : 0;
-    if (uniform_contact)
-      s.mesh.h_surface = s.mesh.h_edge;
     s.mesh.h_far            = 1;
     s.mesh.halving_radius   = s.mesh.near_field_size;
     use_condensed_far_field(s, material);

@@ -167,15 +167,13 @@ namespace gradcontact::fem
   /// contact edge a (e.g. the JKR pull-off radius) and 2.5e-2 a at the axis and at the near field's end 2.5 a
   /// (gmsh sizes twice these, halved by its subdivision), divided by `refinement`; the z-halvings of a modulus
   /// E ~ z^s (s > 0) under the whole near field (the law acts everywhere there); the condensed far field at 100 a
-  /// for a power law (fem/far_field.h), else the clamped one of recommended_settings.
-  /// `uniform_contact`: the edge's cell size from the axis out to the expected contact edge as well (growing to
-  /// 2.5e-2 a at 2.5 a only beyond it), for Tabor parameters whose adhesive zone is thinner than the graded
-  /// mesh's cells wherever the contact edge passes on the path (0 to a): measured at k = 0, lambda = 5, the graded
-  /// mesh's path folds 5 times (refused), the uniform one's converges with 1167 surface DoFs (against 575), at
-  /// about 30 times the cost (346 s against 11.6 s for the graded mesh at lambda = 3: the dense factorisations grow like
-  /// the cube of the surface DoFs).
+  /// for a power law (fem/far_field.h), else the clamped one of recommended_settings. `edge_refinement` divides the
+  /// edge's cells only (for the edge-following path at large Tabor parameters, whose adhesive zone narrows like
+  /// lambda^-2). Alone, this mesh resolves the whole path up to lambda = 3 (k <= 0) and 1 (k = 0.5): beyond, its
+  /// path folds at the nodes where the edge passes coarse cells (between the axis and a), which
+  /// SmoothCohesionParameters::follow_edge avoids.
   Settings smooth_cohesion_settings(const Material &material, double contact_radius, double refinement = 1,
-                                    bool uniform_contact = false);
+                                    double edge_refinement = 1);
 
   class SmoothCohesiveContact
   {

@@ -86,6 +86,8 @@ int main(int argc, char **argv)
           sp.start_gap  = args.num("start_gap", sp.start_gap);
           sp.quadrature_points = args.count("qp", sp.quadrature_points);
           sp.follow_edge       = args.count("follow_edge", 0) != 0;
+          sp.max_step          = args.num("max_step", sp.max_step);
+          sp.max_steps         = args.count("max_steps", sp.max_steps);
           sp.edge_band         = args.num("edge_band", sp.edge_band);
           sp.smallest_frame    = args.num("smallest_frame", sp.smallest_frame);
           SmoothCohesiveContact contact(material, Profile::paraboloid(R), s, sp);
