@@ -421,6 +421,7 @@ namespace gradcontact::cases
               fem::SmoothCohesionParameters parameters;
               parameters.follow_edge = true;
               parameters.edge_band   = parameters.edge_band / std::sqrt(edge_refinement);
+              parameters.max_steps   = 20000; // k = 0, lambda = 10: 5448 steps
               model                  = std::make_unique<fem::SmoothCohesiveContact>(
                 material, fe_profile,
                 fem::smooth_cohesion_settings(material, a_c, std::pow(2.0, level), edge_refinement), parameters);
