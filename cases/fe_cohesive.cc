@@ -33,7 +33,8 @@ namespace gradcontact::cases
     /// fem::smooth_cohesion_settings' mesh, whose edge cells resolve the adhesive zone up to lambda = 5 (k = 0: 1.1e-6
     /// off a mesh with those cells over the whole contact); the zone narrows like lambda^-2, so beyond lambda = 5 the
     /// edge's cells are divided by (lambda / 5)^2, rounded up to a power of 2 (one model per power), and the band the
-    /// edge may move in before the next frame with them.
+    /// edge may move in before the next frame by its square root (the graded mesh's cells grow linearly away from the
+    /// edge, so that a band of a few edge cells keeps them within about twice the finest size).
     double lennard_jones_edge_refinement(const double lambda)
     {
       return lambda <= 5 ? 1.0 : std::exp2(std::ceil(std::log2(lambda * lambda / 25 * (1 - 1e-12))));
@@ -421,7 +422,7 @@ namespace gradcontact::cases
               fem::SmoothCohesionParameters parameters;
               parameters.follow_edge = true;
               parameters.edge_band   = parameters.edge_band / std::sqrt(edge_refinement);
-              parameters.max_steps   = 20000; // k = 0, lambda = 10: 5448 steps
+              parameters.max_steps   = 20000; // the path's length grows with lambda: thousands of steps at 10
               model                  = std::make_unique<fem::SmoothCohesiveContact>(
                 material, fe_profile,
                 fem::smooth_cohesion_settings(material, a_c, std::pow(2.0, level), edge_refinement), parameters);

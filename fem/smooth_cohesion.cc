@@ -332,7 +332,7 @@ namespace gradcontact::fem
     /// `from` (a state of the current frame) moved to frame s: interpolated and solved on the hyperplane of its
     /// tangent (header); where Newton does not converge, in moves of half the size (up to 16). Throws
     /// std::runtime_error when the shortest move fails too.
-    Solved move_frame(const Solved &from, const double s)
+    Solved move_frame(const Solved &from, const double s, unsigned int &iterations)
     {
       const double start = scale;
       Solved       moved;
@@ -342,7 +342,7 @@ namespace gradcontact::fem
           set_frame(start);
           unsigned int part = 1;
           for (; part <= parts; ++part)
-            if (!try_move(moved, start + (s - start) * part / parts))
+            if (!try_move(moved, start + (s - start) * part / parts, iterations))
               break;
           if (part > parts)
             return moved;
@@ -358,8 +358,9 @@ namespace gradcontact::fem
         }
     }
 
-    /// One move of `state` to frame s (false: Newton did not converge; `state` and the frame are then undefined).
-    bool try_move(Solved &state, const double s)
+    /// One move of `state` to frame s (false: Newton did not converge; `state` and the frame are then undefined);
+    /// adds its linear solves to `iterations`.
+    bool try_move(Solved &state, const double s, unsigned int &iterations)
     {
       const Solved &from = state;
       Solved moved;
@@ -378,8 +379,10 @@ namespace gradcontact::fem
       for (double &v : moved.tangent)
         v /= norm;
       Solved       solved;
-      unsigned int iterations = 0;
-      if (!newton(moved.x, arclength(moved, 0), solved, iterations))
+      unsigned int solves = 0;
+      const bool   converged = newton(moved.x, arclength(moved, 0), solved, solves);
+      iterations += solves;
+      if (!converged)
         return false;
       finish(solved, &moved.tangent);
       state = std::move(solved);
@@ -715,7 +718,7 @@ namespace gradcontact::fem
     /// F passed and F >= stop_force, or h_c <= min_gap eps), or until h_c first reaches `target` (path null).
     Solved follow(Solved current, const double target, SmoothCohesionPath *path)
     {
-      unsigned int moves_in_row = 0; // frame moves since the last accepted step
+      unsigned int postponed = 0; // frame moves put off in a row (below)
       double       ds    = parameters.first_step * eps();
       double       F_min = current.state.force;
       const double floor = parameters.min_gap * eps();
@@ -777,35 +780,6 @@ namespace gradcontact::fem
                 }
               continue;
             }
-          if (parameters.follow_edge)
-            {
-              // The step took the edge out of the frame's band: the step is redone from `current` moved to the
-              // frame of next's edge (twice in a row: the edge jumps, the step is halved instead).
-              const double s = frame_for(next.state.peak_radius);
-              if (std::abs(s - scale) > parameters.edge_band * scale)
-                {
-                  if (moves_in_row >= 2)
-                    {
-                      ++rejected;
-                      ds /= 2;
-                      continue;
-                    }
-                  try
-                    {
-                      current = move_frame(current, s);
-                    }
-                  catch (const std::exception &)
-                    {
-                      done();
-                      throw;
-                    }
-                  ++moves_in_row;
-                  if (path)
-                    ++path->frames;
-                  continue;
-                }
-            }
-          moves_in_row = 0;
           ++steps;
           if (target >= 0 && next.state.central_gap <= target)
             {
@@ -843,6 +817,44 @@ namespace gradcontact::fem
             ds = std::min(1.5 * ds, parameters.max_step * eps());
           else if (factorisations >= shrink_factorisations || iterations >= shrink_solves)
             ds *= 0.7;
+          if (parameters.follow_edge)
+            {
+              // The accepted state's edge has left the frame's band (its critical states were located in the old
+              // frame): it moves to the frame of its edge. Where the move flips the sign of dF/ds or dd/ds, a critical
+              // state lies within the mesh change of this state, which the next step locates in the old frame: the
+              // move waits for it (up to 4 steps).
+              const double target_frame = frame_for(current.state.peak_radius);
+              if (std::abs(target_frame - scale) > parameters.edge_band * scale)
+                {
+                  const double old_frame = scale;
+                  Solved       moved;
+                  unsigned int move_iterations = 0;
+                  try
+                    {
+                      moved = move_frame(current, target_frame, move_iterations);
+                    }
+                  catch (const std::exception &)
+                    {
+                      done();
+                      throw;
+                    }
+                  iterations_total += move_iterations;
+                  const bool flips = (current.state.force_slope < 0) != (moved.state.force_slope < 0) ||
+                                     (current.state.depth_slope > 0) != (moved.state.depth_slope > 0);
+                  if (flips && postponed < 4)
+                    {
+                      set_frame(old_frame);
+                      ++postponed;
+                    }
+                  else
+                    {
+                      current   = std::move(moved);
+                      postponed = 0;
+                      if (path)
+                        ++path->frames;
+                    }
+                }
+            }
         }
       done();
       return current;
@@ -891,7 +903,16 @@ namespace gradcontact::fem
           Solved       s;
           unsigned int iterations = 0;
           ++path.critical_evaluations;
-          if (!step_from(a, t, s, iterations))
+          bool solved = step_from(a, t, s, iterations);
+          if (!solved)
+            {
+              // From the bracket's other end, backward on its tangent's hyperplane (a trial from a failed at k = 0,
+              // lambda = 10, where the path passed its minimum of F in a step of 0.25 eps).
+              unsigned int more = 0;
+              solved = step_from(b, t - ds, s, more);
+              iterations += more;
+            }
+          if (!solved)
             {
               path.converged = false;
               path.message += "Newton did not converge at a critical state's trial (" + std::to_string(iterations) +

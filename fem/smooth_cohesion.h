@@ -45,12 +45,16 @@
 // s^k, volume s^3), so its surface flexibility is s^{-(1+k)} C at the nodes s r_i; a test checks this against FE
 // models built at two radii. With `follow_edge` the path keeps the mesh's finest cells (h_edge, at a) on the
 // contact edge r_e (the peak radius of the state, where the attraction is largest): it runs on the frame
-// s = max(r_e, smallest_frame a) / a and moves to a new frame when r_e has left the band |r_e - s a| <= edge_band s a. The move: the last state before the step that left the band is
+// s = max(r_e, smallest_frame a) / a and moves to a new frame when r_e has left the band |r_e - s a| <= edge_band s a.
+// The move: the accepted state whose edge left the band (its critical states already located in the old frame) is
 // interpolated onto the new frame's nodes (w beyond the old truncation radius L by its far-field decay
 // w(L) (L / r)^{1+k}), and Newton finds the new frame's state on the hyperplane of that state's tangent (a step of
-// zero arclength). The critical states are located within a frame only, so that the mesh change between frames (of
-// the order of the discretisation error) cannot be taken for a fold or a minimum. No new FE solve: a move costs
-// one factorisation.
+// zero arclength; where it does not converge, in up to 16 smaller moves). The critical states are located within a
+// frame only, so that the mesh change between frames (of the order of the discretisation error) cannot be taken for
+// a fold or a minimum; where a move would flip the sign of dF/ds or dd/ds (a critical state within that change) it
+// waits until the next step has passed it in the old frame. No new FE solve: a move costs a Newton solve from the
+// interpolated state (two factorisations, typically). The frame is state of the model: one model follows one path
+// at a time (as for the law).
 #ifndef GRADCONTACT_FEM_SMOOTH_COHESION_H
 #define GRADCONTACT_FEM_SMOOTH_COHESION_H
 
