@@ -8,6 +8,7 @@
 #include <analytic/adhesion.h>
 #include <analytic/maugis_dugdale.h>
 #include <fem/cohesive_zone.h>
+#include <fem/errors.h>
 #include <fem/smooth_cohesion.h>
 
 #include <algorithm>
@@ -28,17 +29,6 @@ namespace gradcontact::cases
   namespace
   {
     constexpr double pi = 3.14159265358979323846;
-
-    /// The Lennard-Jones map's path follows the contact edge (fem::SmoothCohesionParameters::follow_edge) on
-    /// fem::smooth_cohesion_settings' mesh, whose edge cells resolve the adhesive zone up to lambda = 5 (k = 0: 1.1e-6
-    /// off a mesh with those cells over the whole contact); the zone narrows like lambda^-2, so beyond lambda = 5 the
-    /// edge's cells are divided by (lambda / 5)^2, rounded up to a power of 2 (one model per power), and the band the
-    /// edge may move in before the next frame by its square root (the graded mesh's cells grow linearly away from the
-    /// edge, so that a band of a few edge cells keeps them within about twice the finest size).
-    double lennard_jones_edge_refinement(const double lambda)
-    {
-      return lambda <= 5 ? 1.0 : std::exp2(std::ceil(std::log2(lambda * lambda / 25 * (1 - 1e-12))));
-    }
 
     gradcontact::jkr::CriticalState jkr_critical(const gradcontact::Medium &m, const JkrProfile &profile,
                                                  const double dgamma, const gradcontact::Control control)
@@ -283,6 +273,18 @@ namespace gradcontact::cases
       return solution;
     }
   } // namespace
+
+
+
+  double lennard_jones_edge_refinement(const double lambda)
+  {
+    if (!(lambda > 0 && lambda <= lennard_jones_largest_lambda()))
+      fem::fail("lennard_jones_edge_refinement", "Tabor parameter lambda", lambda,
+           "(0, " + format(lennard_jones_largest_lambda()) + "]");
+    return lambda <= 5 ? 1.0 : std::exp2(std::ceil(std::log2(lambda * lambda / 25 * (1 - 1e-12))));
+  }
+
+  double lennard_jones_largest_lambda() { return 5 * std::sqrt(fem::max_edge_refinement); }
 
 
 

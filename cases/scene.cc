@@ -1,5 +1,6 @@
 #include "scene.h"
 
+#include "fe_cohesive.h"
 #include "report.h"
 
 #include <deal.II/base/utilities.h>
@@ -688,14 +689,15 @@ namespace gradcontact::cases
     if (s.adhesion.law == AdhesionParameters::Law::lennard_jones && s.map.parameter != MapParameters::Parameter::tabor_parameter)
       throw std::invalid_argument(where + "Adhesion/law = Lennard-Jones runs in Tabor-parameter maps only (Map/parameter "
                                   "= Tabor parameter, which gives its lambdas)");
-    // The edge's cells of the Lennard-Jones path shrink like lambda^-2 (cases/fe_cohesive.cc), to 1/64 of the mesh's
-    // at lambda = 40.
+    // The edge's cells of the Lennard-Jones path shrink like lambda^-2 (lennard_jones_edge_refinement).
     if (s.adhesion.law == AdhesionParameters::Law::lennard_jones)
       for (const double lambda : s.map.ratios)
-        if (!(lambda <= 40))
+        if (!(lambda <= lennard_jones_largest_lambda()))
           throw std::invalid_argument(where + "Map/ratios: lambda = " + std::to_string(lambda) +
-                                      " with Adhesion/law = Lennard-Jones; the valid range is (0, 40] (the adhesive "
-                                      "zone narrows like lambda^-2; the path at 10 takes about 15 minutes)");
+                                      " with Adhesion/law = Lennard-Jones; the valid range is (0, " +
+                                      format(lennard_jones_largest_lambda()) +
+                                      "] (the adhesive zone narrows like lambda^-2; the path at 10 takes about 15 "
+                                      "minutes)");
     if (s.references.fem && s.material.nu >= 0.5 &&
         s.discretization.formulation == DiscretizationParameters::Formulation::displacement)
       throw std::invalid_argument(where + "Material/nu = 0.5 with Discretization/formulation = displacement: the "

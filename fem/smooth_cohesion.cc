@@ -188,8 +188,9 @@ namespace gradcontact::fem
   {
     if (!(refinement >= 0.25 && refinement <= 16))
       fail("smooth_cohesion_settings", "refinement", refinement, "[0.25, 16]");
-    if (!(edge_refinement >= 1 && edge_refinement <= 64))
-      fail("smooth_cohesion_settings", "edge_refinement", edge_refinement, "[1, 64]");
+    if (!(edge_refinement >= 1 && edge_refinement <= max_edge_refinement))
+      fail("smooth_cohesion_settings", "edge_refinement", edge_refinement,
+           "[1, " + std::to_string(max_edge_refinement) + "]");
     if (!material.modulus)
       throw std::invalid_argument("smooth_cohesion_settings: the material has no modulus");
     Settings s = recommended_settings(contact_radius, *material.modulus, 1e-5);
@@ -309,24 +310,24 @@ namespace gradcontact::fem
       return std::max(edge / reference_radius, parameters.smallest_frame);
     }
 
-    /// w of the current frame at physical radius r: its interpolant, beyond the last face the far-field decay
-    /// w(L) (L / r)^{1+k}.
-    double value_at(const std::vector<double> &w, const double r) const
+    /// A surface field v of the current frame (its first n entries: w or the tangent's w) at the nodes of frame s:
+    /// its interpolant (find_face, face_value), beyond the last face the far-field decay v(L) (L / r)^{1+k}.
+    std::vector<double> interpolated(const std::vector<double> &v, const double s) const
     {
-      const double rho  = r / scale; // in the settings' mesh
-      const auto  &all  = flexibility.faces;
-      const auto   next = std::upper_bound(all.begin(), all.end(), rho,
-                                           [](const double x, const SurfaceFace &f) { return x < f.r0; });
-      const std::size_t i = next == all.begin() ? 0 : std::size_t(next - all.begin()) - 1;
-      const SurfaceFace &sf    = all[i];
-      const Face        &face  = faces[i];
-      std::vector<double> y(sf.r.size(), 0.0);
-      for (unsigned int a = 0; a < y.size(); ++a)
-        if (face.unknown[a] >= 0)
-          y[a] = w[face.unknown[a]];
-      if (rho <= sf.r1)
-        return lagrange(sf.r, y, rho);
-      return y.back() * std::pow(sf.r1 / rho, 1 + exponent);
+      std::vector<double> nodal(n_dofs, 0.0); // by global DoF, as face_value reads it; held DoFs stay 0
+      for (unsigned int i = 0; i < n; ++i)
+        nodal[flexibility.dofs[i]] = v[i];
+      const SurfaceFace  &last = flexibility.faces.back();
+      std::vector<double> result(n);
+      for (unsigned int i = 0; i < n; ++i)
+        {
+          const double rho = s * flexibility.r[i] / scale; // in the settings' mesh of the current frame
+          if (const SurfaceFace *face = find_face(flexibility.faces, rho))
+            result[i] = face_value(*face, 1, nodal, rho);
+          else
+            result[i] = face_value(last, 1, nodal, last.r1) * std::pow(last.r1 / rho, 1 + exponent);
+        }
+      return result;
     }
 
     /// `from` (a state of the current frame) moved to frame s: interpolated and solved on the hyperplane of its
@@ -362,18 +363,11 @@ namespace gradcontact::fem
     /// adds its linear solves to `iterations`.
     bool try_move(Solved &state, const double s, unsigned int &iterations)
     {
-      const Solved &from = state;
       Solved moved;
-      moved.x.assign(n + 1, 0.0);
-      moved.tangent.assign(n + 1, 0.0);
-      std::vector<double> w(from.x.begin(), from.x.begin() + n), t(from.tangent.begin(), from.tangent.begin() + n);
-      for (unsigned int i = 0; i < n; ++i)
-        {
-          moved.x[i]       = value_at(w, s * flexibility.r[i]);
-          moved.tangent[i] = value_at(t, s * flexibility.r[i]);
-        }
-      moved.x[n]       = from.x[n];
-      moved.tangent[n] = from.tangent[n];
+      moved.x       = interpolated(state.x, s);
+      moved.tangent = interpolated(state.tangent, s);
+      moved.x.push_back(state.x[n]); // d
+      moved.tangent.push_back(state.tangent[n]);
       set_frame(s);
       const double norm = std::sqrt(metric(moved.tangent, moved.tangent));
       for (double &v : moved.tangent)
@@ -673,17 +667,19 @@ namespace gradcontact::fem
       const double peak = std::pow(3.0, 1.0 / 6) * eps();
       s.contact_radius = 0;
       s.peak_radius    = 0;
+      // The outermost crossing of h = level, interpolated between Gauss points.
+      const auto crossing = [&last_r, &last_h](const double level, const double r, const double h, double &radius) {
+        if (last_r >= 0 && last_h <= level && h > level)
+          radius = last_r + (level - last_h) / (h - last_h) * (r - last_r);
+      };
       for (const Face &face : faces)
         for (const Point &p : face.points)
           {
             const double h = p.f - s.depth + surface_value(face, p, x);
             F -= law.stress(h) * p.weight;
             dF -= law.slope(h) * (surface_value(face, p, t) - s.depth_slope) * p.weight;
-            // The outermost crossing of h = eps, interpolated between Gauss points.
-            if (last_r >= 0 && last_h <= eps() && h > eps())
-              s.contact_radius = last_r + (eps() - last_h) / (h - last_h) * (p.r - last_r);
-            if (last_r >= 0 && last_h <= peak && h > peak)
-              s.peak_radius = last_r + (peak - last_h) / (h - last_h) * (p.r - last_r);
+            crossing(eps(), p.r, h, s.contact_radius);
+            crossing(peak, p.r, h, s.peak_radius);
             last_r = p.r;
             last_h = h;
           }
@@ -943,9 +939,10 @@ namespace gradcontact::fem
       return best;
     }
 
-    /// The first state, at start_gap eps, by Newton from the undeformed surface.
-    Solved first_state() const
+    /// The first state, at start_gap eps, by Newton from the undeformed surface, on the first frame.
+    Solved first_state()
     {
+      set_frame(parameters.follow_edge ? parameters.smallest_frame : 1.0);
       Solved       s;
       unsigned int iterations = 0;
       if (!at_gap(parameters.start_gap * eps(), s, iterations))
@@ -993,7 +990,6 @@ namespace gradcontact::fem
     path.flexibility_seconds = impl->flexibility.seconds;
     try
       {
-        impl->set_frame(impl->parameters.follow_edge ? impl->parameters.smallest_frame : 1.0);
         Impl::Solved first = impl->first_state();
         path.states.push_back(first.state);
         path.newton_iterations += first.state.newton_iterations;
@@ -1022,7 +1018,6 @@ namespace gradcontact::fem
               << "start_gap eps, eps = " << eps << ")";
         fail("SmoothCohesiveContact::state", "central gap", central_gap, range.str());
       }
-    impl->set_frame(impl->parameters.follow_edge ? impl->parameters.smallest_frame : 1.0);
     return impl->follow(impl->first_state(), central_gap, nullptr).state;
   }
 } // namespace gradcontact::fem

@@ -178,6 +178,8 @@ namespace gradcontact::fem
   /// SmoothCohesionParameters::follow_edge avoids.
   Settings smooth_cohesion_settings(const Material &material, double contact_radius, double refinement = 1,
                                     double edge_refinement = 1);
+  /// The largest edge_refinement of smooth_cohesion_settings.
+  inline constexpr double max_edge_refinement = 64;
 
   class SmoothCohesiveContact
   {
