@@ -1,12 +1,15 @@
+#include <analytic/adhesion.h>
 #include <analytic/errors.h>
 #include <analytic/maugis_dugdale.h>
 
 #include <boost/math/constants/constants.hpp>
+#include <boost/math/special_functions/beta.hpp>
 #include <boost/math/tools/minima.hpp>
 #include <boost/math/tools/toms748_solve.hpp>
 
 #include <cmath>
 #include <cstdint>
+#include <functional>
 #include <limits>
 
 namespace gradcontact::maugis_dugdale
@@ -128,5 +131,169 @@ namespace gradcontact::maugis_dugdale
         p.at_vanishing_contact = true;
       }
     return p;
+  }
+  namespace
+  {
+    /// The pieces of the graded state (header) that do not depend on a or c.
+    struct GradedTerms
+    {
+      double k, n, A, kappa, Q, cosk, K, sigma0, h0;
+
+      GradedTerms(const Medium &m, const PowerLaw &p, const Dugdale &law)
+        : k(m.k)
+        , n(p.n)
+        , A(p.A)
+        , kappa(gradcontact::kappa(p.n, m.k))
+        , Q(m.cN0 / std::pow(m.c0, m.k))
+        , cosk(std::cos(m.k * pi / 2))
+        , K(2 * cosk / ((1 - m.k) * Q))
+        , sigma0(law.sigma0)
+        , h0(law.dgamma / law.sigma0)
+      {}
+
+      /// B_v(p, q), the incomplete beta function (not normalised), given v and u = 1 - v each without
+      /// cancellation: near v = 1 (a << c) as B(p, q) - B_u(q, p).
+      static double B(const double p, const double q, const double v, const double u)
+      {
+        return v <= 0.5 ? boost::math::beta(p, q, v) : boost::math::beta(p, q) - boost::math::beta(q, p, u);
+      }
+
+      /// d, F and h(c) - h_0 for a > 0 and c = a (1 + t), t > 0.
+      GradedState at(const double a, const double t, double &excess) const
+      {
+        const double c = a * (1 + t);
+        const double u = 1 / ((1 + t) * (1 + t)); // a^2 / c^2
+        const double v = t * (2 + t) * u;         // 1 - a^2 / c^2 without cancellation
+        const double zone = sigma0 * K * std::pow(a * a * t * (2 + t), (1 - k) / 2); // sigma_0 K (c^2 - a^2)^{(1-k)/2}
+        GradedState  s;
+        s.radius      = a;
+        s.zone_radius = c;
+        s.depth       = kappa * A * std::pow(a, n) - zone;
+        s.force       = 2 * Q * (s.depth * std::pow(a, 1 + k) / (1 + k) - kappa * A * std::pow(a, 1 + k + n) / (1 + k + n)) -
+                  2 * cosk * sigma0 * c * c * B((3 - k) / 2, (1 + k) / 2, v, u) / (1 - k);
+        const double h = cosk / pi *
+                         (kappa * A * std::pow(c, n) * B((1 - k) / 2, (1 + k + n) / 2, v, u) -
+                          s.depth * B((1 - k) / 2, (1 + k) / 2, v, u) - sigma0 * K * std::pow(c, 1 - k) * B(1 - k, (1 + k) / 2, v, u));
+        excess = h - h0;
+        return s;
+      }
+    };
+
+    void check_graded(const char *function, const Medium &m, const PowerLaw &p, const Dugdale &law)
+    {
+      validate(function, m);
+      check::positive(function, "n", p.n);
+      check::positive(function, "A", p.A);
+      check::positive(function, "sigma0", law.sigma0);
+      check::positive(function, "dgamma", law.dgamma);
+    }
+
+    /// The root of `excess` (< 0 at lo, growing) on (lo, inf) by doubling and TOMS 748.
+    double grow_root(const char *function, const char *name, const double value,
+                     const std::function<double(double)> &excess, const double lo, double hi)
+    {
+      double f_hi = excess(hi);
+      while (!(f_hi >= 0))
+        {
+          hi *= 2;
+          if (hi > 1e150 || !std::isfinite(f_hi))
+            check::fail(function, name, value, "gives no closing cohesive zone");
+          f_hi = excess(hi);
+        }
+      std::uintmax_t iterations = 200;
+      const auto     bracket    = boost::math::tools::toms748_solve(excess, lo, hi, excess(lo), f_hi,
+                                                                    boost::math::tools::eps_tolerance<double>(52), iterations);
+      return (bracket.first + bracket.second) / 2;
+    }
+  } // namespace
+
+  GradedState state(const Medium &m, const PowerLaw &profile, const Dugdale &law, const double a)
+  {
+    check_graded("maugis_dugdale::state", m, profile, law);
+    check::positive("maugis_dugdale::state", "a", a);
+    const GradedTerms terms(m, profile, law);
+    const auto        excess = [&](const double t) {
+      if (t == 0)
+        return -terms.h0; // h(a) = 0 on the contact edge
+      double e = 0;
+      terms.at(a, t, e);
+      return e;
+    };
+    const double t = grow_root("maugis_dugdale::state", "a", a, excess, 0.0, 1.0);
+    double       e = 0;
+    return terms.at(a, t, e);
+  }
+
+  GradedState state(const Medium &m, const Paraboloid &profile, const Dugdale &law, const double a)
+  {
+    return state(m, as_power_law(profile), law, a);
+  }
+
+  GradedState vanishing_contact(const Medium &m, const PowerLaw &profile, const Dugdale &law)
+  {
+    check_graded("maugis_dugdale::vanishing_contact", m, profile, law);
+    const GradedTerms t(m, profile, law);
+    const double      open = 1 - t.cosk * boost::math::beta(1 - t.k, (1 + t.k) / 2) / pi;
+    const auto        excess = [&](const double c) {
+      return t.A * std::pow(c, t.n) + t.sigma0 * t.K * std::pow(c, 1 - t.k) * open - t.h0;
+    };
+    // The scale of c: where either term alone reaches h_0.
+    const double c_scale = std::min(std::pow(t.h0 / t.A, 1 / t.n), std::pow(t.h0 / (t.sigma0 * t.K * open), 1 / (1 - t.k)));
+    const double c       = grow_root("maugis_dugdale::vanishing_contact", "sigma0", law.sigma0, excess, 0.0, c_scale);
+    GradedState  s;
+    s.zone_radius = c;
+    s.depth       = -t.sigma0 * t.K * std::pow(c, 1 - t.k);
+    s.force       = -pi * c * c * t.sigma0;
+    return s;
+  }
+
+  GradedPullOff pull_off(const Medium &m, const PowerLaw &profile, const Dugdale &law, const Control control)
+  {
+    check_graded("maugis_dugdale::pull_off", m, profile, law);
+    if (!(2 * profile.n + m.k - 1 > 0))
+      check::fail("maugis_dugdale::pull_off", "n", profile.n, "gives no JKR pull-off to scale the search (2n + k - 1 <= 0)");
+    const double a_jkr = jkr::critical_state(m, profile, law.dgamma, Control::force).radius;
+    const auto   value = [&](const double ln_a) {
+      const GradedState s = state(m, profile, law, a_jkr * std::exp(ln_a));
+      return control == Control::force ? s.force : s.depth;
+    };
+    // A scan in ln a, then Brent around the smallest sample (as for k = 0 above).
+    const double lo = std::log(1e-6), hi = std::log(1e2);
+    const int    samples = 400;
+    int          best = 0;
+    double       best_value = std::numeric_limits<double>::max();
+    for (int i = 0; i <= samples; ++i)
+      {
+        const double v = value(lo + (hi - lo) * i / samples);
+        if (v < best_value)
+          best_value = v, best = i;
+      }
+    GradedPullOff     p;
+    const GradedState end = vanishing_contact(m, profile, law);
+    if (best == 0)
+      {
+        p.state                = end;
+        p.at_vanishing_contact = true;
+        p.exists               = control == Control::force;
+        return p;
+      }
+    if (best == samples)
+      check::fail("maugis_dugdale::pull_off", "sigma0", law.sigma0, "has no pull-off with a <= 100 a_JKR");
+    const double   step       = (hi - lo) / samples;
+    std::uintmax_t iterations = 200;
+    const auto     minimum    = boost::math::tools::brent_find_minima(value, lo + step * (best - 1), lo + step * (best + 1),
+                                                                      40, iterations);
+    p.state = state(m, profile, law, a_jkr * std::exp(minimum.first));
+    if (control == Control::force && end.force < p.state.force)
+      {
+        p.state                = end;
+        p.at_vanishing_contact = true;
+      }
+    return p;
+  }
+
+  GradedPullOff pull_off(const Medium &m, const Paraboloid &profile, const Dugdale &law, const Control control)
+  {
+    return pull_off(m, as_power_law(profile), law, control);
   }
 } // namespace gradcontact::maugis_dugdale

@@ -21,6 +21,8 @@
 #ifndef GRADCONTACT_ANALYTIC_MAUGIS_DUGDALE_H
 #define GRADCONTACT_ANALYTIC_MAUGIS_DUGDALE_H
 
+#include <analytic/material.h>
+#include <analytic/normal.h>
 #include <analytic/states.h>
 
 namespace gradcontact::maugis_dugdale
@@ -62,6 +64,63 @@ namespace gradcontact::maugis_dugdale
     double depth  = 0; ///< d = Delta * depth: (pi^2 dgamma^2 R / K^2)^{1/3}
   };
   Scales scales(double dgamma, double R, double E_star);
+
+  // --- the graded half-space, by the MDR ------------------------------------------------------------------------
+  //
+  // The same Dugdale law on E0 (z/c0)^k, for a power-law indenter f = A r^n (a paraboloid is n = 2, A = 1/(2R)),
+  // solved with the MDR relations of the chapter (9.11-9.13; notation of mdr.h: c_N(x) = cN0 (|x|/c0)^k,
+  // Q = cN0 / c0^k, g(x) = kappa(n, k) A |x|^n, 9.2 and 9.28). The same problem was solved in closed form by
+  // Willert, Facta Universitatis Ser. Mech. Eng. 16 (2018) 9-18; this is our own derivation, written out here.
+  //
+  // The foundation w1D(x) on 0 <= x <= c. The tension sigma_0 on a < r < c and nothing beyond c determine w1D on
+  // x > a by 9.13 alone (it integrates the pressure outward from x):
+  //   w1D(x) = -sigma_0 K (c^2 - x^2)^{(1-k)/2},  a < x < c,  K = 2 cos(k pi/2) / ((1 - k) Q),
+  // and 9.12 gives back p = -sigma_0 there (the integral is B((1-k)/2, (1+k)/2) / 2). On the contact w1D = d - g(x).
+  // A finite stress at the contact edge (Maugis' condition) makes w1D continuous at a:
+  //   d = g(a) - sigma_0 K (c^2 - a^2)^{(1-k)/2}.
+  // The force, 9.11, with v = 1 - a^2 / c^2 and B_v the incomplete beta function:
+  //   F = 2 Q [d a^{1+k} / (1+k) - kappa A a^{1+k+n} / (1+k+n)] - 2 cos(k pi/2) sigma_0 c^2 B_v((3-k)/2, (1+k)/2) / (1-k).
+  // The zone ends where the gap h(c) = f(c) - d + w(c) reaches h_0 = dgamma / sigma_0. With w(c) from 9.12 and
+  // the identity kappa B((1+k+n)/2, (1-k)/2) cos(k pi/2) = pi (so that h(a) = 0 on a contact edge), every term is
+  // an integral over [a, c] and no digits are lost as c -> a (large lambda):
+  //   h(c) = cos(k pi/2) / pi [kappa A c^n B_v((1-k)/2, (1+k+n)/2) - d B_v((1-k)/2, (1+k)/2)
+  //                            - sigma_0 K c^{1-k} B_v(1-k, (1+k)/2)].
+  // As a -> 0 (the contact vanishes, the zone remains): d = -sigma_0 K c^{1-k}, F = -pi c^2 sigma_0, and
+  //   A c^n + sigma_0 K c^{1-k} [1 - cos(k pi/2) B(1-k, (1+k)/2) / pi] = h_0.
+  // At k = 0 and n = 2 these are Maugis' equations above, and as sigma_0 -> inf with dgamma fixed the zone's jump
+  // sigma_0 K (c^2 - a^2)^{1/2 - k/2} tends to JKR's Delta_l(a) (9.46).
+
+  /// The Dugdale law: the tension sigma0 up to the separation h_0 = dgamma / sigma0.
+  struct Dugdale
+  {
+    double sigma0 = 0; ///< [Pa]
+    double dgamma = 0; ///< work of adhesion [J/m^2]
+  };
+
+  /// A dimensional state: contact radius a, zone end c, depth d, force F (tensile negative).
+  struct GradedState
+  {
+    double radius = 0, zone_radius = 0, depth = 0, force = 0;
+  };
+
+  /// The state of contact radius a > 0 (the zone's end c from h(c) = h_0 by TOMS 748 in c / a - 1).
+  GradedState state(const Medium &m, const PowerLaw &profile, const Dugdale &law, double a);
+  GradedState state(const Medium &m, const Paraboloid &profile, const Dugdale &law, double a);
+
+  /// The a -> 0 end of the contact branch (radius 0, the zone c remaining).
+  GradedState vanishing_contact(const Medium &m, const PowerLaw &profile, const Dugdale &law);
+
+  struct GradedPullOff
+  {
+    GradedState state;
+    bool        exists               = true;  ///< displacement control: d(a) has a minimum at a > 0
+    bool        at_vanishing_contact = false; ///< force control: the minimum of F is the a -> 0 end
+  };
+
+  /// The pull-off of `control`: the minimum of F(a) or d(a) over a in 1e-6..1e2 times the chapter's
+  /// force-controlled JKR radius (9.60; it needs 2n + k - 1 > 0), by a scan in ln a and Brent's method.
+  GradedPullOff pull_off(const Medium &m, const PowerLaw &profile, const Dugdale &law, Control control);
+  GradedPullOff pull_off(const Medium &m, const Paraboloid &profile, const Dugdale &law, Control control);
 } // namespace gradcontact::maugis_dugdale
 
 #endif
