@@ -1,6 +1,7 @@
 // Tests of the Dugdale cohesive-zone FE, fem/cohesive_zone.h. References: the Maugis-Dugdale solution at
-// k = 0 (analytic/maugis_dugdale.h, Maugis 1992; nothing of the FE), the DMT limit -2 pi dgamma R of a rigid
-// sphere, and the chapter's JKR critical states (analytic/adhesion.h, 9.55-9.56) at large lambda.
+// k = 0 (analytic/maugis_dugdale.h, Maugis 1992; nothing of the FE) and on the graded medium (the same header, by
+// the MDR), the DMT limit -2 pi dgamma R of a rigid sphere, and the chapter's JKR critical states
+// (analytic/adhesion.h, 9.55-9.56) at large lambda.
 #include <fem/cohesive_zone.h>
 #include <fem/modulus.h>
 
@@ -135,6 +136,40 @@ TEST_CASE("a cohesive zone thinner than the edge cells on the soft surface (k = 
   REQUIRE(s.consistent);
   CHECK(s.zone_radius - s.radius < 1e-4 * s.radius);
   CHECK(std::abs(deviation) < 2e-4);
+}
+
+TEST_CASE("cohesive zone on a graded medium is the MDR's Maugis-Dugdale state", "[fem]")
+{
+  // The sharp check of the FE on E0 (z/c0)^k, k != 0: the Maugis-Dugdale solution of the graded half-space
+  // (analytic/maugis_dugdale.h, solved by the MDR; at k = 0 Maugis' closed form to 1e-12), at the same sigma_0 and
+  // contact radius a = a_c,JKR. The law's range h_0 = q Delta_l(a_c,JKR): q = 1.2 a wide zone (the map's
+  // lambda = 0.3), q = 0.12 a thin one (lambda = 3). The soft surface (k = 0.5) is the FE's hardest: the gap's cusp
+  // |r - c|^{1-k} at the zone's end. Measured (c / a, F, d; degree 2, 6-15 s each): k = -0.5 4.3e-6, 1.1e-5,
+  // 5.3e-5; k = 0.5, q = 1.2: 1.3e-5, 4.3e-4, 9.9e-4 (degree 3: 1.3e-5, 7.5e-5, 1.3e-5 of d, the FE converging to
+  // it); q = 0.12: 1.3e-5, 1.0e-4, 4.5e-5.
+  struct Case
+  {
+    double k, q, zone, force, depth; // tolerances: c / a; F relative; d over |d_c,JKR|
+  };
+  for (const Case &t : {Case{-0.5, 1.2, 1.5e-5, 3e-5, 1.5e-4}, Case{-0.5, 0.12, 1.5e-5, 3e-5, 1.5e-4},
+                        Case{0.5, 1.2, 3e-5, 1e-3, 2.5e-3}, Case{0.5, 0.12, 3e-5, 2.5e-4, 1.5e-4}})
+    {
+      const auto   m   = gradcontact::medium(gradcontact::GradedHalfSpace{E0, c0, t.k, nu});
+      const auto   jkr = jkr_state(t.k);
+      const double h0  = t.q * gradcontact::jkr::delta_ell(m, dgamma, jkr.radius);
+      const md::Dugdale law{dgamma / h0, dgamma};
+      CohesiveContact contact(power_law_material(t.k), Profile::paraboloid(R), DugdaleLaw{law.sigma0, dgamma},
+                              test_settings(t.k, 2));
+      const CohesiveState &s   = contact.state(jkr.radius);
+      const auto           ref = md::state(m, gradcontact::Paraboloid{R}, law, jkr.radius);
+      const double zone = (s.zone_radius - ref.zone_radius) / ref.radius, force = s.force / ref.force - 1,
+                   depth = (s.depth - ref.depth) / std::abs(jkr.depth);
+      CAPTURE(t.k, t.q, ref.zone_radius / ref.radius, zone, force, depth, s.meshes, s.seconds);
+      REQUIRE(s.consistent);
+      CHECK(std::abs(zone) < t.zone);
+      CHECK(std::abs(force) < t.force);
+      CHECK(std::abs(depth) < t.depth);
+    }
 }
 
 TEST_CASE("cohesive zone on a graded medium tends to the rigid (DMT) pull-off at small lambda", "[slow]")
