@@ -10,6 +10,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <functional>
@@ -516,18 +517,20 @@ namespace gradcontact::batch
       return t;
     }
 
-    // The Maugis-Dugdale adhesion of a rigid paraboloid on a homogeneous half-space (Maugis, J. Colloid
-    // Interface Sci. 150 (1992) 243-269; analytic/maugis_dugdale.h): not the chapter's (JKR), the classical
-    // reference of the cohesive-zone FE; sigma_th is the Dugdale stress sigma_0, k must be 0.
+    // The Maugis-Dugdale adhesion of a rigid paraboloid (Maugis, J. Colloid Interface Sci. 150 (1992) 243-269;
+    // analytic/maugis_dugdale.h): not the chapter's (JKR), the reference of the cohesive-zone FE; sigma_th is the
+    // Dugdale stress sigma_0. At k = 0 Maugis' closed form and Tabor parameter, on the graded medium its MDR
+    // solution and the Tabor parameter generalised by the chapter's Delta_l (the same header).
     CaseTable maugis_dugdale_table()
     {
-      CaseTable t;
-      const auto E_star = [](const In &q) {
+      CaseTable  t;
+      const auto homogeneous = [](const In &q) {
         const GradedHalfSpace b = q.body();
         validate("maugis_dugdale", b);
-        if (b.k != 0)
-          throw DomainError("maugis_dugdale: material.k = " + check::format(b.k) +
-                            "; valid: 0 (the Maugis-Dugdale solution is that of a homogeneous half-space)");
+        return b.k == 0;
+      };
+      const auto E_star = [](const In &q) {
+        const GradedHalfSpace b = q.body();
         return b.E0 / (1 - b.nu * b.nu);
       };
       const auto lambda = [E_star](const In &q) {
@@ -536,31 +539,47 @@ namespace gradcontact::batch
         check::positive("maugis_dugdale", "geometry.R", q.R());
         return maugis_dugdale::tabor_parameter(q.sigma_th(), q.dgamma(), q.R(), E_star(q));
       };
-      const auto critical = [lambda, E_star](const In &q) {
+      const auto no_jump = [](const In &q, const std::string &where) {
+        return DomainError("maugis_dugdale: control = displacement has no jump " + where + " (sigma_th = " +
+                           check::format(q.sigma_th()) + "): the contact shrinks to nothing; valid: a larger sigma_th");
+      };
+      // The pull-off in SI units: radius, depth, force.
+      const auto critical = [=](const In &q) -> std::array<double, 3> {
+        if (!homogeneous(q))
+          {
+            check::positive("maugis_dugdale", "sigma_th", q.sigma_th());
+            check::positive("maugis_dugdale", "dgamma", q.dgamma());
+            check::positive("maugis_dugdale", "geometry.R", q.R());
+            const auto p = maugis_dugdale::pull_off(q.medium(), Paraboloid{q.R()},
+                                                    maugis_dugdale::Dugdale{q.sigma_th(), q.dgamma()}, q.control());
+            if (!p.exists)
+              throw no_jump(q, "on this graded medium");
+            return {p.state.radius, p.state.depth, p.state.force};
+          }
         const double l = lambda(q);
         if (!(l >= 1e-3 && l <= 1e3))
           throw DomainError("maugis_dugdale: sigma_th = " + check::format(q.sigma_th()) + " gives the Tabor parameter " +
                             check::format(l) + "; valid: a sigma_th with the Tabor parameter in [1e-3, 1e3]");
         const maugis_dugdale::PullOff p = maugis_dugdale::pull_off(l, q.control());
         if (!p.exists)
-          throw DomainError("maugis_dugdale: control = displacement has no jump at the Tabor parameter " +
-                            check::format(l) + " (sigma_th = " + check::format(q.sigma_th()) +
-                            "): the contact shrinks to nothing; valid: a larger sigma_th");
-        return std::make_pair(p.state, maugis_dugdale::scales(q.dgamma(), q.R(), E_star(q)));
+          throw no_jump(q, "at the Tabor parameter " + check::format(l));
+        const auto scale = maugis_dugdale::scales(q.dgamma(), q.R(), E_star(q));
+        return {p.state.A * scale.length, p.state.Delta * scale.depth, p.state.P * scale.force};
       };
-      t.closed_form["tabor_parameter"] = lambda;
-      t.closed_form["critical_force"] = [critical](const In &q) {
-        const auto [state, scale] = critical(q);
-        return state.P * scale.force;
+      t.closed_form["tabor_parameter"] = [=](const In &q) {
+        if (!homogeneous(q))
+          {
+            check::positive("maugis_dugdale", "sigma_th", q.sigma_th());
+            check::positive("maugis_dugdale", "dgamma", q.dgamma());
+            check::positive("maugis_dugdale", "geometry.R", q.R());
+            return maugis_dugdale::tabor_parameter(q.medium(), Paraboloid{q.R()},
+                                                   maugis_dugdale::Dugdale{q.sigma_th(), q.dgamma()});
+          }
+        return lambda(q);
       };
-      t.closed_form["critical_radius"] = [critical](const In &q) {
-        const auto [state, scale] = critical(q);
-        return state.A * scale.length;
-      };
-      t.closed_form["critical_depth"] = [critical](const In &q) {
-        const auto [state, scale] = critical(q);
-        return state.Delta * scale.depth;
-      };
+      t.closed_form["critical_radius"] = [critical](const In &q) { return critical(q)[0]; };
+      t.closed_form["critical_depth"]  = [critical](const In &q) { return critical(q)[1]; };
+      t.closed_form["critical_force"]  = [critical](const In &q) { return critical(q)[2]; };
       return t;
     }
 

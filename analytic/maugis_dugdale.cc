@@ -247,6 +247,43 @@ namespace gradcontact::maugis_dugdale
     return s;
   }
 
+  namespace
+  {
+    /// C Delta_l(a_c) of tabor_parameter: lambda h_0.
+    double tabor_length(const char *function, const Medium &m, const PowerLaw &profile, const double dgamma)
+    {
+      validate(function, m);
+      check::positive(function, "dgamma", dgamma);
+      if (!(2 * profile.n + m.k - 1 > 0))
+        check::fail(function, "n", profile.n, "has no JKR pull-off to define the Tabor parameter (2n + k - 1 <= 0)");
+      const double C   = std::cbrt((9 / (2 * pi)) / (std::pow(2 * pi, 1.5) * std::sqrt(9 * pi / 8)));
+      const double a_c = jkr::critical_state(m, profile, dgamma, Control::force).radius;
+      return C * jkr::delta_ell(m, dgamma, a_c);
+    }
+  } // namespace
+
+  double tabor_parameter(const Medium &m, const PowerLaw &profile, const Dugdale &law)
+  {
+    check::positive("maugis_dugdale::tabor_parameter", "sigma0", law.sigma0);
+    return tabor_length("maugis_dugdale::tabor_parameter", m, profile, law.dgamma) * law.sigma0 / law.dgamma;
+  }
+
+  double tabor_parameter(const Medium &m, const Paraboloid &profile, const Dugdale &law)
+  {
+    return tabor_parameter(m, as_power_law(profile), law);
+  }
+
+  double strength(const Medium &m, const PowerLaw &profile, const double dgamma, const double lambda)
+  {
+    check::positive("maugis_dugdale::strength", "lambda", lambda);
+    return dgamma * lambda / tabor_length("maugis_dugdale::strength", m, profile, dgamma);
+  }
+
+  double strength(const Medium &m, const Paraboloid &profile, const double dgamma, const double lambda)
+  {
+    return strength(m, as_power_law(profile), dgamma, lambda);
+  }
+
   GradedPullOff pull_off(const Medium &m, const PowerLaw &profile, const Dugdale &law, const Control control)
   {
     check_graded("maugis_dugdale::pull_off", m, profile, law);
@@ -259,7 +296,7 @@ namespace gradcontact::maugis_dugdale
     };
     // A scan in ln a, then Brent around the smallest sample (as for k = 0 above).
     const double lo = std::log(1e-6), hi = std::log(1e2);
-    const int    samples = 400;
+    const int    samples = 200; // 25 per decade
     int          best = 0;
     double       best_value = std::numeric_limits<double>::max();
     for (int i = 0; i <= samples; ++i)

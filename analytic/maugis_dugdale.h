@@ -117,6 +117,18 @@ namespace gradcontact::maugis_dugdale
     bool        at_vanishing_contact = false; ///< force control: the minimum of F is the a -> 0 end
   };
 
+  /// The Tabor parameter of the graded medium. Maugis' lambda (k = 0, paraboloid) is the ratio of the elastic
+  /// separation at the JKR contact edge to the range h_0. Written with the chapter's flat-punch pull-back at the
+  /// force-controlled JKR pull-off, Delta_l(a_c) (9.45; a_c of 9.55 or 9.60), which at k = 0 is sqrt(2 pi dgamma a_c /
+  /// E*) with a_c = (9 pi dgamma R^2 / (8 E*))^{1/3}, it is
+  ///   lambda = C Delta_l(a_c) / h_0,   C^3 = (9 / (2 pi)) / ((2 pi)^{3/2} (9 pi / 8)^{1/2})   (C = 0.3644),
+  /// and this defines lambda for every k and profile: the same physical ratio, Maugis' value at k = 0.
+  double tabor_parameter(const Medium &m, const PowerLaw &profile, const Dugdale &law);
+  double tabor_parameter(const Medium &m, const Paraboloid &profile, const Dugdale &law);
+  /// sigma_0 = dgamma / h_0 of the Tabor parameter lambda > 0 (the inverse of tabor_parameter).
+  double strength(const Medium &m, const PowerLaw &profile, double dgamma, double lambda);
+  double strength(const Medium &m, const Paraboloid &profile, double dgamma, double lambda);
+
   /// The pull-off of `control`: the minimum of F(a) or d(a) over a in 1e-6..1e2 times the chapter's
   /// force-controlled JKR radius (9.60; it needs 2n + k - 1 > 0), by a scan in ln a and Brent's method.
   GradedPullOff pull_off(const Medium &m, const PowerLaw &profile, const Dugdale &law, Control control);

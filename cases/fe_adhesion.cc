@@ -392,8 +392,9 @@ namespace gradcontact::cases
       }
 
       /// Adhesion/law = Dugdale: the pull-off of the cohesive-zone FE (fem/cohesive_zone.h) against the chapter's JKR
-      /// closed forms ("(JKR idealisation)": how far they are for this adhesive), and at k = 0 (paraboloid) against
-      /// Maugis-Dugdale, which holds for any Tabor parameter.
+      /// closed forms ("(JKR idealisation)": how far they are for this adhesive), and against Maugis-Dugdale, which
+      /// holds for any Tabor parameter (Maugis' closed form at k = 0 for the paraboloid, the MDR's on the graded
+      /// medium otherwise; a power-law modulus only).
       void cohesive_profile(const fem::Material &material, const fem::AdhesiveContact::SettingsFunction &settings,
                             LevelResult &lr)
       {
@@ -454,6 +455,20 @@ namespace gradcontact::cases
                           lambda, control == fem::AdhesionControl::force, true, c.state.force, c.state.depth, dgamma, l.R,
                           E_star, name + ", lambda = " + format(lambda) + level_tag, "FE",
                           std::min(s.tolerances.force, 1e-3), std::min(s.tolerances.depth, 1e-3), c.max_dofs, t))
+                      result.rows.push_back(*row);
+                  }
+                else if (s.material.modulus == MaterialParameters::Modulus::power_law)
+                  {
+                    // The graded medium: the MDR's Maugis-Dugdale solution (analytic/maugis_dugdale.h).
+                    const gradcontact::Medium medium = gradcontact::medium(
+                      gradcontact::GradedHalfSpace{s.material.E0, s.material.c0, s.material.k, s.material.nu});
+                    const JkrProfile profile = paraboloid ? JkrProfile{gradcontact::Paraboloid{l.R}}
+                                                          : JkrProfile{gradcontact::PowerLaw{l.n, l.A}};
+                    if (const auto row = graded_maugis_dugdale_row(
+                          medium, profile, sigma0, dgamma, control == fem::AdhesionControl::force, true, c.state.force,
+                          c.state.depth, name + level_tag, "FE", std::min(s.tolerances.force, 1e-3),
+                          std::min(s.tolerances.depth, 1e-3), c.max_dofs, t,
+                          c.at_vanishing_contact ? c.state.radius : 0))
                       result.rows.push_back(*row);
                   }
               }

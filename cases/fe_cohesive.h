@@ -3,15 +3,12 @@
 // h_0 = dgamma / sigma_0. Its pull-off force against the chapter's, over the Tabor parameter lambda and k, with
 // the thresholds a user reads ("within 1 % when lambda >= ...").
 //
-// The Tabor parameter of a graded medium. Maugis' lambda = sigma_0 (9 R / (2 pi dgamma E*^2))^{1/3} (k = 0)
-// is the ratio of the elastic separation at the JKR contact edge to the range h_0. Written with the chapter's
-// flat-punch pull-back at the force-controlled JKR pull-off, Delta_l(a_c) (9.45), which at k = 0 is
-// sqrt(2 pi dgamma a_c / E*) with a_c = (9 pi dgamma R^2 / (8 E*))^{1/3}, it is
-//   lambda = C Delta_l(a_c) / h_0,   C^3 = (9 / (2 pi)) / ((2 pi)^{3/2} (9 pi / 8)^{1/2}),
-// and this defines lambda for every k and profile (C = 0.3644): the same physical ratio, Maugis' value at k = 0.
+// The Tabor parameter of a graded medium: lambda = C Delta_l(a_c) / h_0 with the chapter's flat-punch pull-back
+// at the force-controlled JKR pull-off (analytic/maugis_dugdale.h, tabor_parameter): Maugis' lambda at k = 0.
 //
-// Sharp checks (rows of errors.csv): at k = 0 (paraboloid) the FE pull-off against the Maugis-Dugdale solution
-// (analytic/maugis_dugdale.h) at every lambda, within Tolerances/force; for every k the deviation from JKR
+// Sharp checks (rows of errors.csv): the FE pull-off against the Maugis-Dugdale solution at every lambda, within
+// Tolerances/force (analytic/maugis_dugdale.h: Maugis' closed form at k = 0 for the paraboloid, the MDR solution of
+// the graded medium otherwise); for every k the deviation from JKR
 // falls between the two largest lambda, and, for the paraboloid, the deviation from the DMT pull-off
 // -2 pi dgamma R (rigid sphere, independent of the elasticity) falls between the two smallest.
 #ifndef GRADCONTACT_CASES_FE_COHESIVE_H
@@ -33,9 +30,6 @@ namespace gradcontact::cases
   /// A profile of the chapter's JKR closed forms.
   using JkrProfile = std::variant<gradcontact::Paraboloid, gradcontact::PowerLaw>;
 
-  /// C of the header.
-  double tabor_constant();
-
   /// The Lennard-Jones map's path follows the contact edge (fem::SmoothCohesionParameters::follow_edge) on
   /// fem::smooth_cohesion_settings' mesh, whose edge cells resolve the adhesive zone up to lambda = 5 (k = 0: 5.1e-7
   /// off a mesh with those cells over the whole contact); the zone narrows like lambda^-2, so beyond lambda = 5 the
@@ -48,7 +42,7 @@ namespace gradcontact::cases
   double lennard_jones_largest_lambda();
 
   /// The Dugdale strength sigma_0 that gives the Tabor parameter `lambda` (header) for the medium, profile and
-  /// work of adhesion.
+  /// work of adhesion (maugis_dugdale::strength).
   double cohesive_strength(double lambda, const gradcontact::Medium &medium, const JkrProfile &profile, double dgamma);
 
   /// The sharp check of a Dugdale pull-off on the homogeneous half-space (paraboloid, k = 0): Maugis-Dugdale's
@@ -58,6 +52,24 @@ namespace gradcontact::cases
   std::optional<Row> maugis_dugdale_row(double lambda, bool force_control, bool fe_instability, double force, double depth,
                          double dgamma, double R, double E_star, const std::string &metric, const std::string &method,
                          double force_tolerance, double depth_tolerance, unsigned int dofs, double seconds);
+
+  /// The same check on the graded medium, for any k and profile: the Maugis-Dugdale solution of E0 (z/c0)^k by
+  /// the MDR (analytic/maugis_dugdale.h; Maugis' closed form at k = 0) at sigma_0 = `strength`. Where the FE's
+  /// force-controlled walk stopped at a vanishing contact (`vanishing_radius` > 0, its last radius), the MDR's state
+  /// at that radius: the walk's truncation (at k = -0.5, lambda = 0.05: 1.7e-4 in F) is not the discretisation's.
+  std::optional<Row> graded_maugis_dugdale_row(const gradcontact::Medium &medium, const JkrProfile &profile,
+                                               double strength, double dgamma, bool force_control, bool fe_instability,
+                                               double force, double depth, const std::string &metric,
+                                               const std::string &method, double force_tolerance,
+                                               double depth_tolerance, unsigned int dofs, double seconds,
+                                               double vanishing_radius = 0);
+
+  /// The smallest lambda from which the graded Maugis-Dugdale pull-off (force or displacement control) stays within
+  /// `threshold` of the chapter's JKR pull-off at every larger lambda up to 1e3 (no jump under displacement control
+  /// counts as 100 %): a scan of 4 lambdas per decade from 1e-2, then TOMS 748 on the last crossing. nullopt when
+  /// it is not within at 1e3; 1e-2 when it is within everywhere.
+  std::optional<double> graded_maugis_dugdale_threshold(const gradcontact::Medium &medium, const JkrProfile &profile,
+                                                        double dgamma, bool force_control, double threshold);
 
   /// The (k, lambda) points of a map that one job computes: those at positions j (k-major, lambdas ascending) with
   /// j % count == index; the counts of the run.

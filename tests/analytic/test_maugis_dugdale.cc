@@ -101,12 +101,20 @@ TEST_CASE("The maugis_dugdale eval case shall give Maugis' pull-off in SI units,
   CHECK_THAT(eval("critical_force", large), WithinRel(-1.5 * pi * dgamma * R, 1e-3));
   CHECK_THAT(eval("critical_radius", large), WithinRel(std::cbrt(9 * pi * dgamma * R * R / (8 * E_star)), 2e-3));
   CHECK_THAT(eval("critical_force", small), WithinRel(-2 * pi * dgamma * R, 1e-3));
-  // Displacement control at small lambda has no jump; a graded medium is not Maugis'.
+  // Displacement control at small lambda has no jump.
   CHECK_THROWS_WITH(eval("critical_depth", small, "displacement"),
                     Catch::Contains("control = displacement") && Catch::Contains("no jump"));
-  nlohmann::json graded = request("critical_force", large, "force");
+  // A graded medium: the MDR solution, at large sigma_th the chapter's JKR pull-off (9.55-9.56), and its Tabor
+  // parameter C Delta_l(a_c) / h_0 written out (Delta_l of 9.45 at the JKR radius a_c).
+  nlohmann::json graded = request("critical_force", 1e4 * large, "force");
   graded["material"]["k"] = 0.5;
-  CHECK_THROWS_WITH(batch::evaluate(batch::parse(graded)), Catch::Contains("material.k = 0.5") && Catch::Contains("0"));
+  const auto medium = gradcontact::medium(gradcontact::GradedHalfSpace{E, 1e-3, 0.5, nu});
+  const auto jkr    = gradcontact::jkr::critical_state(medium, gradcontact::Paraboloid{R}, dgamma, Control::force);
+  CHECK_THAT(batch::evaluate(batch::parse(graded)), WithinRel(jkr.force, 1e-4));
+  graded["quantity"] = "tabor_parameter";
+  const double C     = std::cbrt((9 / (2 * pi)) / (std::pow(2 * pi, 1.5) * std::sqrt(9 * pi / 8)));
+  CHECK_THAT(batch::evaluate(batch::parse(graded)),
+             WithinRel(C * gradcontact::jkr::delta_ell(medium, dgamma, jkr.radius) * 1e4 * large / dgamma, 1e-13));
   CHECK_THROWS_WITH(eval("critical_force", -1.0), Catch::Contains("sigma_th = -1"));
   CHECK_THROWS_WITH(eval("critical_force", 2e3 / unit), Catch::Contains("sigma_th") && Catch::Contains("[1e-3, 1e3]"));
 }
@@ -257,4 +265,21 @@ TEST_CASE("Maugis-Dugdale on a graded medium: bad input names the parameter", "[
   gradcontact::Medium bad = m;
   bad.k = 1.5;
   CHECK_THROWS_WITH(md::state(bad, gradcontact::Paraboloid{R}, md::Dugdale{1e6, dgamma}, 1e-5), Catch::Contains("k"));
+}
+
+TEST_CASE("The graded Tabor parameter is Maugis' at k = 0 and strength() inverts it", "[analytic]")
+{
+  // Maugis: lambda = sigma_0 (9 R / (2 pi dgamma E*^2))^{1/3}, which knows nothing of the chapter's Delta_l.
+  const double E_star = E0 / (1 - nu * nu);
+  for (const double lambda : {0.05, 1.0, 10.0})
+    CHECK_THAT(md::tabor_parameter(graded(0), gradcontact::Paraboloid{R}, md::Dugdale{strength(lambda), dgamma}),
+               WithinRel(md::tabor_parameter(strength(lambda), dgamma, R, E_star), 1e-13));
+  for (const double k : {-0.5, 0.5})
+    {
+      const gradcontact::PowerLaw tip{4, 2e9};
+      const double sigma0 = md::strength(graded(k), tip, dgamma, 3.0);
+      CHECK_THAT(md::tabor_parameter(graded(k), tip, md::Dugdale{sigma0, dgamma}), WithinRel(3.0, 1e-14));
+    }
+  CHECK_THROWS_WITH(md::strength(graded(0), gradcontact::Paraboloid{R}, dgamma, -1), Catch::Contains("lambda = -1"));
+  CHECK_THROWS_WITH(md::strength(graded(0), gradcontact::PowerLaw{0.4, 1}, dgamma, 1), Catch::Contains("n = 0.4"));
 }

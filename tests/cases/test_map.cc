@@ -294,6 +294,37 @@ TEST_CASE("The Tabor parameter of a graded medium shall be Maugis' at k = 0", "[
   CHECK_THROWS_WITH(cohesive_strength(-1, m, gradcontact::Paraboloid{R}, dgamma), Catch::Contains("lambda = -1"));
 }
 
+TEST_CASE("The graded Maugis-Dugdale threshold shall be where Maugis' closed form leaves JKR at k = 0", "[cases]")
+{
+  // Reference: bisection in lambda on Maugis' dimensionless pull-off (analytic/maugis_dugdale.h, k = 0 closed form)
+  // against JKR's -3/2 (force) and -5/6 (displacement; "no jump" counts as 100 %), written here.
+  const double E0 = 1e9, nu = 0.3, R = 5e-3, dgamma = 0.05;
+  const gradcontact::Medium m = gradcontact::medium(gradcontact::GradedHalfSpace{E0, 1e-3, 0, nu});
+  for (const bool force_control : {true, false})
+    for (const double t : {0.1, 0.01})
+      {
+        const auto deviation = [&](const double lambda) {
+          const auto p = gradcontact::maugis_dugdale::pull_off(lambda, force_control ? gradcontact::Control::force
+                                                                                     : gradcontact::Control::displacement);
+          return p.exists ? std::abs(p.state.P / (force_control ? -1.5 : -5.0 / 6) - 1) : 1.0;
+        };
+        double lo = 0.05, hi = 100; // deviation(lo) > t > deviation(hi), one crossing between
+        REQUIRE(deviation(lo) > t);
+        REQUIRE(deviation(hi) < t);
+        for (int i = 0; i < 60; ++i)
+          (deviation(std::sqrt(lo * hi)) > t ? lo : hi) = std::sqrt(lo * hi);
+        const auto at = graded_maugis_dugdale_threshold(m, gradcontact::Paraboloid{R}, dgamma, force_control, t);
+        REQUIRE(at);
+        // (Under displacement control the force sits at the flat minimum of d(a), known to ~1e-8 by either search:
+        // the crossing moves by ~1e-6.)
+        CHECK(*at == Approx(hi).epsilon(1e-5));
+      }
+  // Not within it up to lambda = 1000 (JKR's deviation there is about 1e-5); refusals.
+  CHECK_FALSE(graded_maugis_dugdale_threshold(m, gradcontact::Paraboloid{R}, dgamma, true, 1e-8));
+  CHECK_THROWS_WITH(graded_maugis_dugdale_threshold(m, gradcontact::Paraboloid{R}, dgamma, true, 0),
+                    Catch::Contains("threshold = 0"));
+}
+
 TEST_CASE("A Tabor-parameter map shall check Maugis-Dugdale at k = 0 and write the map", "[cases]")
 {
   const TemporaryFolder folder("gradcontact-cohesive-map");

@@ -19,6 +19,7 @@
 
 #include <analytic/adhesion.h>
 #include <analytic/material.h>
+#include <analytic/maugis_dugdale.h>
 
 #include <cmath>
 #include <iostream>
@@ -41,11 +42,10 @@ int main(int argc, char **argv)
       const auto jkr   = gradcontact::jkr::critical_state(medium, gradcontact::Paraboloid{R}, dgamma, control);
       const auto jkr_f = gradcontact::jkr::critical_state(medium, gradcontact::Paraboloid{R}, dgamma,
                                                           gradcontact::Control::force);
-      // The map's Tabor parameter: h_0 = C Delta_l(a_c) / lambda, C^3 = (9 / (2 pi)) / ((2 pi)^{3/2} (9 pi / 8)^{1/2}).
+      // The map's Tabor parameter (analytic/maugis_dugdale.h: C Delta_l(a_c) / h_0).
       constexpr double pi = 3.14159265358979323846;
-      const double C  = std::cbrt((9 / (2 * pi)) / (std::pow(2 * pi, 1.5) * std::sqrt(9 * pi / 8)));
-      const double h0 = C * gradcontact::jkr::delta_ell(medium, dgamma, jkr_f.radius) / lambda;
-      const DugdaleLaw law{dgamma / h0, dgamma};
+      const DugdaleLaw law{gradcontact::maugis_dugdale::strength(medium, gradcontact::Paraboloid{R}, dgamma, lambda), dgamma};
+      const double     h0 = law.range();
 
       const Material material{std::make_shared<PowerLawModulus>(E0, c0, k), nu};
       const auto settings = [&](const double a) {
