@@ -32,6 +32,34 @@ namespace gradcontact::maugis_dugdale
       if (lambda < 1e-3 || lambda > 1e3)
         check::fail(function, "lambda", lambda, "is outside [1e-3, 1e3]");
     }
+
+    /// Where value(t) is smallest over t in [lo, hi]: a scan of `samples` steps, then Brent around the smallest
+    /// sample. `first` / `last`: the smallest sample is an end (the caller reads what that means; `t` is then that
+    /// end).
+    struct ScanMinimum
+    {
+      double t     = 0;
+      bool   first = false, last = false;
+    };
+    ScanMinimum scan_minimum(const std::function<double(double)> &value, const double lo, const double hi,
+                             const int samples)
+    {
+      int    best       = 0;
+      double best_value = std::numeric_limits<double>::max();
+      for (int i = 0; i <= samples; ++i)
+        {
+          const double v = value(lo + (hi - lo) * i / samples);
+          if (v < best_value)
+            best_value = v, best = i;
+        }
+      if (best == 0 || best == samples)
+        return {best == 0 ? lo : hi, best == 0, best == samples};
+      const double   step       = (hi - lo) / samples;
+      std::uintmax_t iterations = 200;
+      return {boost::math::tools::brent_find_minima(value, lo + step * (best - 1), lo + step * (best + 1), 40, iterations)
+                .first,
+              false, false};
+    }
   } // namespace
 
   double tabor_parameter(const double sigma0, const double dgamma, const double R, const double E_star)
@@ -98,19 +126,10 @@ namespace gradcontact::maugis_dugdale
       return control == Control::force ? s.P : s.Delta;
     };
     // A scan in ln A, then Brent around the smallest sample.
-    const double lo = std::log(1e-6), hi = std::log(1e2);
-    const int    n  = 400;
-    int          best = 0;
-    double       best_value = std::numeric_limits<double>::max();
-    for (int i = 0; i <= n; ++i)
-      {
-        const double v = value(lo + (hi - lo) * i / n);
-        if (v < best_value)
-          best_value = v, best = i;
-      }
-    PullOff p;
-    const State end = vanishing_contact(lambda);
-    if (best == 0)
+    const ScanMinimum minimum = scan_minimum(value, std::log(1e-6), std::log(1e2), 400);
+    PullOff           p;
+    const State       end = vanishing_contact(lambda);
+    if (minimum.first)
       {
         // The minimum is the A -> 0 end (force control) or there is none inside (displacement control).
         p.state                = end;
@@ -118,13 +137,9 @@ namespace gradcontact::maugis_dugdale
         p.exists               = control == Control::force;
         return p;
       }
-    if (best == n)
+    if (minimum.last)
       check::fail("maugis_dugdale::pull_off", "lambda", lambda, "has no pull-off with A <= 100");
-    const double   step       = (hi - lo) / n;
-    std::uintmax_t iterations = 200;
-    const auto     minimum    = boost::math::tools::brent_find_minima(value, lo + step * (best - 1), lo + step * (best + 1),
-                                                                      40, iterations);
-    p.state = state(lambda, std::exp(minimum.first));
+    p.state = state(lambda, std::exp(minimum.t));
     if (control == Control::force && end.P < p.state.P)
       {
         p.state                = end;
@@ -294,33 +309,20 @@ namespace gradcontact::maugis_dugdale
       const GradedState s = state(m, profile, law, a_jkr * std::exp(ln_a));
       return control == Control::force ? s.force : s.depth;
     };
-    // A scan in ln a, then Brent around the smallest sample (as for k = 0 above).
-    const double lo = std::log(1e-6), hi = std::log(1e2);
-    const int    samples = 200; // 25 per decade
-    int          best = 0;
-    double       best_value = std::numeric_limits<double>::max();
-    for (int i = 0; i <= samples; ++i)
-      {
-        const double v = value(lo + (hi - lo) * i / samples);
-        if (v < best_value)
-          best_value = v, best = i;
-      }
+    // A scan in ln a (25 samples per decade), then Brent around the smallest sample.
+    const ScanMinimum minimum = scan_minimum(value, std::log(1e-6), std::log(1e2), 200);
     GradedPullOff     p;
     const GradedState end = vanishing_contact(m, profile, law);
-    if (best == 0)
+    if (minimum.first)
       {
         p.state                = end;
         p.at_vanishing_contact = true;
         p.exists               = control == Control::force;
         return p;
       }
-    if (best == samples)
+    if (minimum.last)
       check::fail("maugis_dugdale::pull_off", "sigma0", law.sigma0, "has no pull-off with a <= 100 a_JKR");
-    const double   step       = (hi - lo) / samples;
-    std::uintmax_t iterations = 200;
-    const auto     minimum    = boost::math::tools::brent_find_minima(value, lo + step * (best - 1), lo + step * (best + 1),
-                                                                      40, iterations);
-    p.state = state(m, profile, law, a_jkr * std::exp(minimum.first));
+    p.state = state(m, profile, law, a_jkr * std::exp(minimum.t));
     if (control == Control::force && end.force < p.state.force)
       {
         p.state                = end;
