@@ -493,13 +493,8 @@ namespace gradcontact::cases
        << " the contact shrinks to nothing without a jump "
           "(no minimum of d, small lambda) the chapter's displacement-controlled instability does not exist: "
           "\"none\", counted as a deviation of 100 %.\n\n";
-    thresholds_md << "## Where the chapter's JKR pull-off force holds\n\n| k | control |";
-    for (const double t : s.map.thresholds)
-      thresholds_md << " within " << percent(t) << " when lambda |";
-    thresholds_md << "\n|---|---|";
-    for (std::size_t i = 0; i < s.map.thresholds.size(); ++i)
-      thresholds_md << "---|";
-    thresholds_md << '\n';
+    thresholds_md << "## Where the chapter's JKR pull-off force holds\n\n"
+                  << threshold_table_head({"k", "control"}, s.map.thresholds, "when lambda");
 
     std::map<std::string, std::vector<Series>> plots;
     for (const double k : ks)
@@ -794,13 +789,8 @@ namespace gradcontact::cases
                   "which the FE pull-offs above are checked against (errors.csv): the smallest lambda from which its "
                   "pull-off stays within the threshold of the chapter's JKR pull-off up to lambda = 1000 (4 lambdas per "
                   "decade from 0.01, then the crossing by TOMS 748; no jump under displacement control counts as 100 %). "
-                  "k of the FE map marked *.\n\n| k | control |";
-        for (const double t : s.map.thresholds)
-          mdr_md << " within " << percent(t) << " when lambda |";
-        mdr_md << "\n|---|---|";
-        for (std::size_t i = 0; i < s.map.thresholds.size(); ++i)
-          mdr_md << "---|";
-        mdr_md << '\n';
+                  "k of the FE map marked *.\n\n"
+               << threshold_table_head({"k", "control"}, s.map.thresholds, "when lambda");
         std::map<std::string, Series> curves;
         for (const double k : dense)
           {

@@ -578,14 +578,8 @@ namespace gradcontact::cases
            << " a). The slip direction's departure from x is the force-weighted sum |Q_y| / sum |Q| over the slipping "
               "nodes, largest over the steps.\n\n";
         md << "## Where the chapter's tangential theory holds\n\nThe " << tuple << " of the map where the coupling's effect on a "
-              "quantity is within each threshold (the chapter's decoupled theory holds there up to the FE floor).\n\n| "
-              "quantity | chapter |";
-        for (const double t : s.map.thresholds)
-          md << " within " << percent(t) << " at |";
-        md << "\n|---|---|";
-        for (std::size_t i = 0; i < s.map.thresholds.size(); ++i)
-          md << "---|";
-        md << '\n';
+              "quantity is within each threshold (the chapter's decoupled theory holds there up to the FE floor).\n\n"
+           << threshold_table_head({"quantity", "chapter"}, s.map.thresholds, "at");
         for (const MapQuantity &q : map_quantities())
           {
             md << "| " << q.name << " | " << q.chapter << " |";

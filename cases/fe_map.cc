@@ -658,6 +658,18 @@ namespace gradcontact::cases
     return o.str();
   }
 
+  std::string threshold_table_head(const std::vector<std::string> &columns, const std::vector<double> &thresholds,
+                                   const std::string &when)
+  {
+    std::string head = "|", rule = "|";
+    for (const std::string &c : columns)
+      head += " " + c + " |", rule += "---|";
+    for (const double t : thresholds)
+      head += " within " + percent(t) + " " + when + " |", rule += "---|";
+    return head + "\n" + rule + "\n";
+  }
+
+
   std::string friction_threshold_cell(const std::vector<double> &mus, const std::vector<double> &deviations,
                                       const std::optional<double> full_stick, const double threshold)
   {
@@ -766,13 +778,10 @@ namespace gradcontact::cases
     thresholds_md << "## Where " << (of_indenter   ? "the rigid indenter's closed forms hold"
                                      : of_friction ? "the frictionless closed forms hold"
                                                    : "the power law holds")
-                  << "\n\n| k |" << (of_friction ? " nu |" : "") << " quantity |";
-    for (const double t : s.map.thresholds)
-      thresholds_md << " within " << percent(t) << " when " << x << " |";
-    thresholds_md << "\n|---|" << (of_friction ? "---|" : "") << "---|";
-    for (std::size_t i = 0; i < s.map.thresholds.size(); ++i)
-      thresholds_md << "---|";
-    thresholds_md << '\n';
+                  << "\n\n"
+                  << threshold_table_head(of_friction ? std::vector<std::string>{"k", "nu", "quantity"}
+                                                      : std::vector<std::string>{"k", "quantity"},
+                                          s.map.thresholds, "when " + x);
     if (of_friction)
       largest_md << "## The largest effect of friction\n\nOver the map's mu" << (s.map.full_stick ? " and full stick" : "")
                  << ": the largest |FE(mu) / FE(frictionless) - 1| and the stick radius c/a at the largest finite mu.\n\n"

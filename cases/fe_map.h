@@ -45,6 +45,10 @@ namespace gradcontact::cases
   /// A threshold as map.md writes it: 0.01 -> "1 %".
   std::string percent(double t);
 
+  /// The head of a threshold table of map.md: "| c1 | c2 | within 1 % <when> | ... |" and its rule line.
+  std::string threshold_table_head(const std::vector<std::string> &columns, const std::vector<double> &thresholds,
+                                   const std::string &when);
+
   SceneResult run_map_scene(const Scene &scene, const std::filesystem::path &folder, bool verbose);
 } // namespace gradcontact::cases
 
