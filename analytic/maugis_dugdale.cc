@@ -299,6 +299,11 @@ namespace gradcontact::maugis_dugdale
     return strength(m, as_power_law(profile), dgamma, lambda);
   }
 
+  GradedState vanishing_contact(const Medium &m, const Paraboloid &profile, const Dugdale &law)
+  {
+    return vanishing_contact(m, as_power_law(profile), law);
+  }
+
   GradedPullOff pull_off(const Medium &m, const PowerLaw &profile, const Dugdale &law, const Control control)
   {
     check_graded("maugis_dugdale::pull_off", m, profile, law);

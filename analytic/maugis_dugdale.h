@@ -109,6 +109,7 @@ namespace gradcontact::maugis_dugdale
 
   /// The a -> 0 end of the contact branch (radius 0, the zone c remaining).
   GradedState vanishing_contact(const Medium &m, const PowerLaw &profile, const Dugdale &law);
+  GradedState vanishing_contact(const Medium &m, const Paraboloid &profile, const Dugdale &law);
 
   struct GradedPullOff
   {

@@ -325,6 +325,28 @@ TEST_CASE("The graded Maugis-Dugdale threshold shall be where Maugis' closed for
                     Catch::Contains("threshold = 0"));
 }
 
+TEST_CASE("A graded Maugis-Dugdale row shall read a jump that one side alone finds by its depth", "[cases]")
+{
+  // Where d(a) is flat as the contact vanishes (small lambda), the FE can find a minimum of d that the reference
+  // does not (measured: the power-law tip n = 4 at k = 0, lambda = 0.3, 5.5e-5 from the vanishing depth): the row
+  // then compares depths. The reference's own states (analytic/maugis_dugdale.h) give the depths here.
+  namespace md = gradcontact::maugis_dugdale;
+  const gradcontact::Medium   m = gradcontact::medium(gradcontact::GradedHalfSpace{2e9, 3e-4, 0, 0.3});
+  const gradcontact::PowerLaw tip{4, 2e9};
+  const double                dgamma = 0.05, sigma0 = md::strength(m, tip, dgamma, 0.3);
+  REQUIRE_FALSE(md::pull_off(m, tip, md::Dugdale{sigma0, dgamma}, gradcontact::Control::displacement).exists);
+  const double end = md::vanishing_contact(m, tip, md::Dugdale{sigma0, dgamma}).depth;
+  const auto   row = [&](const double depth) {
+    return graded_maugis_dugdale_row(m, tip, sigma0, dgamma, false, true, -0.01, depth, "test", "FE", 1e-3, 1e-3, 0, 0);
+  };
+  REQUIRE(row(end * (1 + 5.5e-5)));
+  CHECK(row(end * (1 + 5.5e-5))->pass);
+  CHECK(row(end * (1 + 5.5e-5))->metric.find("Maugis-Dugdale none") != std::string::npos);
+  CHECK_FALSE(row(end * 0.99)->pass); // a jump 1 % from the vanishing depth is a real disagreement
+  // Neither side has a jump: nothing to compare.
+  CHECK_FALSE(graded_maugis_dugdale_row(m, tip, sigma0, dgamma, false, false, -0.01, end, "test", "FE", 1e-3, 1e-3, 0, 0));
+}
+
 TEST_CASE("A Tabor-parameter map shall check Maugis-Dugdale at k = 0 and write the map", "[cases]")
 {
   const TemporaryFolder folder("gradcontact-cohesive-map");
