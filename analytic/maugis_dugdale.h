@@ -1,6 +1,6 @@
 // gradcontact/analytic: the Maugis-Dugdale adhesive contact of a rigid sphere (paraboloid f = r^2/(2R)) with
-// a homogeneous elastic half-space (k = 0): the classical reference of the cohesive-zone FE
-// (fem/cohesive_zone.h). Not part of the chapter, which assumes JKR.
+// a homogeneous elastic half-space (k = 0), and of a power-law tip with the graded half-space (below, by the
+// MDR): the references of the cohesive-zone FE (fem/cohesive_zone.h). Not part of the chapter, which assumes JKR.
 //
 // Maugis, J. Colloid Interface Sci. 150 (1992) 243-269, in the notation of Johnson and Greenwood,
 // J. Colloid Interface Sci. 192 (1997) 326-333. The Dugdale law: a tension sigma_0 acts where the gap is
@@ -114,7 +114,7 @@ namespace gradcontact::maugis_dugdale
   struct GradedPullOff
   {
     GradedState state;
-    bool        exists               = true;  ///< displacement control: d(a) has a minimum at a > 0
+    bool        exists               = true;  ///< displacement control: d(a)'s smallest value lies at a > 0 (not at the vanishing contact)
     bool        at_vanishing_contact = false; ///< force control: the minimum of F is the a -> 0 end
   };
 

@@ -401,14 +401,15 @@ namespace gradcontact::cases
         const double dgamma     = ad.work_of_adhesion;
         const bool   paraboloid = l.type == Type::paraboloid;
         double       sigma0     = ad.cohesive_strength;
+        const auto   medium_of_scene = [&] {
+          return gradcontact::medium(
+            gradcontact::GradedHalfSpace{s.material.E0, s.material.c0, s.material.k, s.material.nu});
+        };
+        const auto jkr_profile = [&] {
+          return paraboloid ? JkrProfile{gradcontact::Paraboloid{l.R}} : JkrProfile{gradcontact::PowerLaw{l.n, l.A}};
+        };
         if (ad.tabor_parameter > 0.)
-          {
-            const gradcontact::Medium medium = gradcontact::medium(
-              gradcontact::GradedHalfSpace{s.material.E0, s.material.c0, s.material.k, s.material.nu});
-            const JkrProfile profile = paraboloid ? JkrProfile{gradcontact::Paraboloid{l.R}}
-                                                  : JkrProfile{gradcontact::PowerLaw{l.n, l.A}};
-            sigma0 = cohesive_strength(ad.tabor_parameter, medium, profile, dgamma);
-          }
+          sigma0 = cohesive_strength(ad.tabor_parameter, medium_of_scene(), jkr_profile(), dgamma);
         fem::CohesiveContact model(material, *fe_profile_of(l), fem::DugdaleLaw{sigma0, dgamma}, settings);
         double start = ad.initial_radius > 0. ? ad.initial_radius : l.a;
         for (const auto control : {fem::AdhesionControl::force, fem::AdhesionControl::displacement})
@@ -458,19 +459,20 @@ namespace gradcontact::cases
                       result.rows.push_back(*row);
                   }
                 else if (s.material.modulus == MaterialParameters::Modulus::power_law)
-                  {
-                    // The graded medium: the MDR's Maugis-Dugdale solution (analytic/maugis_dugdale.h).
-                    const gradcontact::Medium medium = gradcontact::medium(
-                      gradcontact::GradedHalfSpace{s.material.E0, s.material.c0, s.material.k, s.material.nu});
-                    const JkrProfile profile = paraboloid ? JkrProfile{gradcontact::Paraboloid{l.R}}
-                                                          : JkrProfile{gradcontact::PowerLaw{l.n, l.A}};
-                    if (const auto row = graded_maugis_dugdale_row(
-                          medium, profile, sigma0, dgamma, control == fem::AdhesionControl::force, true, c.state.force,
-                          c.state.depth, name + level_tag, "FE", std::min(s.tolerances.force, 1e-3),
-                          std::min(s.tolerances.depth, 1e-3), c.max_dofs, t,
-                          c.at_vanishing_contact ? c.state.radius : 0))
-                      result.rows.push_back(*row);
-                  }
+                  try
+                    {
+                      // The graded medium: the MDR's Maugis-Dugdale solution (analytic/maugis_dugdale.h).
+                      if (const auto row = graded_maugis_dugdale_row(
+                            medium_of_scene(), jkr_profile(), sigma0, dgamma, control == fem::AdhesionControl::force,
+                            true, c.state.force, c.state.depth, name + level_tag, "FE",
+                            std::min(s.tolerances.force, 1e-3), std::min(s.tolerances.depth, 1e-3), c.max_dofs, t))
+                        result.rows.push_back(*row);
+                    }
+                  catch (const std::exception &e)
+                    {
+                      result.rows.push_back(failed("critical state (" + control_name(control) + ")", "FE (Dugdale)",
+                                                   "Maugis-Dugdale on the graded medium (MDR)", e.what()));
+                    }
               }
             catch (const std::runtime_error &e)
               {

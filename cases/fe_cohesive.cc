@@ -384,24 +384,8 @@ namespace gradcontact::cases
                                                const bool fe_instability, const double force, const double depth,
                                                const std::string &metric, const std::string &method,
                                                const double force_tolerance, const double depth_tolerance,
-                                               const unsigned int dofs, const double seconds,
-                                               const double vanishing_radius)
+                                               const unsigned int dofs, const double seconds)
   {
-    if (force_control && vanishing_radius > 0)
-      {
-        // The FE's walk stopped at the vanishing contact (c / a beyond fem::CohesiveParameters::max_zone_ratio / 1.5):
-        // its pull-off is the state there, checked against the MDR's state at that radius.
-        const auto md = std::visit(
-          [&](const auto &p) {
-            return gradcontact::maugis_dugdale::state(medium, p, gradcontact::maugis_dugdale::Dugdale{strength, dgamma},
-                                                      vanishing_radius);
-          },
-          profile);
-        return dugdale_reference_row("Maugis-Dugdale on the graded medium (MDR), its state at the FE's last radius",
-                                     true, md.force, md.depth, md.depth, true, fe_instability, force, depth,
-                                     metric + " (the FE's contact vanished at a = " + format(vanishing_radius) + " m)",
-                                     method, force_tolerance, depth_tolerance, dofs, seconds);
-      }
     const auto md  = graded_pull_off(medium, profile, strength, dgamma, force_control);
     const auto end = std::visit(
       [&](const auto &p) {
@@ -650,11 +634,19 @@ namespace gradcontact::cases
                       result.rows.push_back(*row);
                   }
                 else if (!smooth)
-                  if (const auto row = graded_maugis_dugdale_row(
-                        medium, profile, p.strength, dgamma, force_control, !(p.vanishing && !force_control), p.force,
-                        p.depth, metric, "FE cohesive", s.tolerances.force, s.tolerances.depth, p.dofs, p.seconds,
-                        p.vanishing ? p.radius : 0))
-                    result.rows.push_back(*row);
+                  try
+                    {
+                      if (const auto row = graded_maugis_dugdale_row(
+                            medium, profile, p.strength, dgamma, force_control, !(p.vanishing && !force_control),
+                            p.force, p.depth, metric, "FE cohesive", s.tolerances.force, s.tolerances.depth, p.dofs,
+                            p.seconds))
+                        result.rows.push_back(*row);
+                    }
+                  catch (const std::exception &e)
+                    {
+                      result.rows.push_back(failed(force_control ? "pull-off force" : "critical depth", "FE cohesive",
+                                                   "Maugis-Dugdale on the graded medium (MDR)", metric + ": " + e.what()));
+                    }
               }
             for (const auto &[x, error] : solution.path_errors)
               result.rows.push_back(failed("F(d) path", "FE " + law_name, "-",
@@ -734,6 +726,12 @@ namespace gradcontact::cases
           }
         md << '\n';
       }
+    // A shard's report is partial and discarded: its points are in the cache, no map or plot is drawn for it.
+    if (shard.count > 1)
+      {
+        result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        return result;
+      }
     // Maugis-Dugdale as dense curves on the force plot: the MDR solution at every k of a Dugdale map; Maugis' at
     // k = 0 beside a Lennard-Jones map of the paraboloid.
     if (!smooth)
@@ -750,12 +748,19 @@ namespace gradcontact::cases
               for (int i = 0; i <= 40; ++i)
                 {
                   const double lambda = lambdas.front() * std::pow(lambdas.back() / lambdas.front(), i / 40.0);
-                  const auto   p      = graded_pull_off(medium, profile, cohesive_strength(lambda, medium, profile, dgamma),
-                                                        dgamma, force_control);
-                  if (p.exists)
+                  try
                     {
-                      curve.x.push_back(lambda);
-                      curve.y.push_back(p.state.force / jkr.force);
+                      const auto p = graded_pull_off(medium, profile, cohesive_strength(lambda, medium, profile, dgamma),
+                                                     dgamma, force_control);
+                      if (p.exists)
+                        {
+                          curve.x.push_back(lambda);
+                          curve.y.push_back(p.state.force / jkr.force);
+                        }
+                    }
+                  catch (const std::exception &)
+                    {
+                      // a lambda the solution refuses: a gap in the drawn curve (the rows report the points)
                     }
                 }
               plots["pull-off force"].push_back(curve);
@@ -782,12 +787,6 @@ namespace gradcontact::cases
           plots["pull-off force"].push_back(curve);
         }
 
-    // A shard's report is partial and discarded: its points are in the cache, no map or plot is drawn for it.
-    if (shard.count > 1)
-      {
-        result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-        return result;
-      }
     // The thresholds of the Maugis-Dugdale solution of the graded medium (MDR) for every k from -0.9 to 0.9: the same
     // question answered by the theory the FE matches, at the resolution the FE map cannot afford.
     std::ostringstream mdr_md;
@@ -821,10 +820,18 @@ namespace gradcontact::cases
                        << control_name(force_control) << " |";
                 for (const double t : s.map.thresholds)
                   {
-                    const auto at = graded_maugis_dugdale_threshold(medium, profile, dgamma, force_control, t);
-                    mdr_md << " " << (!at ? "not within it up to 1000" : *at <= 1e-2 ? "at every lambda from 0.01"
-                                                                                      : ">= " + format(*at))
-                           << " |";
+                    std::optional<double> at;
+                    try
+                      {
+                        at = graded_maugis_dugdale_threshold(medium, profile, dgamma, force_control, t);
+                        mdr_md << " " << (!at ? "not within it up to 1000" : *at <= 1e-2 ? "at every lambda from 0.01"
+                                                                                          : ">= " + format(*at))
+                               << " |";
+                      }
+                    catch (const std::exception &e)
+                      {
+                        mdr_md << " - (" << e.what() << ") |"; // e.g. no JKR pull-off for this tip at this k
+                      }
                     mdr_csv << k << ',' << control_name(force_control) << ',' << t << ','
                             << (at ? *at : std::numeric_limits<double>::quiet_NaN()) << '\n';
                     const std::string name  = control_name(force_control) + ", within " + percent(t);

@@ -6,11 +6,12 @@
 // The Tabor parameter of a graded medium: lambda = C Delta_l(a_c) / h_0 with the chapter's flat-punch pull-back
 // at the force-controlled JKR pull-off (analytic/maugis_dugdale.h, tabor_parameter): Maugis' lambda at k = 0.
 //
-// Sharp checks (rows of errors.csv): the FE pull-off against the Maugis-Dugdale solution at every lambda, within
-// Tolerances/force (analytic/maugis_dugdale.h: Maugis' closed form at k = 0 for the paraboloid, the MDR solution of
-// the graded medium otherwise); for every k the deviation from JKR
-// falls between the two largest lambda, and, for the paraboloid, the deviation from the DMT pull-off
-// -2 pi dgamma R (rigid sphere, independent of the elasticity) falls between the two smallest.
+// Sharp checks (rows of errors.csv): the FE pull-off against the Maugis-Dugdale solution at every lambda
+// (analytic/maugis_dugdale.h: Maugis' closed form at k = 0 for the paraboloid, the MDR solution of the graded medium
+// otherwise), the force within Tolerances/force, the critical depth under displacement control within
+// Tolerances/depth; for every k the deviation from JKR falls between the two largest lambda, and, for the paraboloid,
+// the deviation from the DMT pull-off -2 pi dgamma R (rigid sphere, independent of the elasticity) falls between
+// the two smallest.
 #ifndef GRADCONTACT_CASES_FE_COHESIVE_H
 #define GRADCONTACT_CASES_FE_COHESIVE_H
 
@@ -54,15 +55,14 @@ namespace gradcontact::cases
                          double force_tolerance, double depth_tolerance, unsigned int dofs, double seconds);
 
   /// The same check on the graded medium, for any k and profile: the Maugis-Dugdale solution of E0 (z/c0)^k by
-  /// the MDR (analytic/maugis_dugdale.h; Maugis' closed form at k = 0) at sigma_0 = `strength`. Where the FE's
-  /// force-controlled walk stopped at a vanishing contact (`vanishing_radius` > 0, its last radius), the MDR's state
-  /// at that radius: the walk's truncation (at k = -0.5, lambda = 0.05: 1.7e-4 in F) is not the discretisation's.
+  /// the MDR (analytic/maugis_dugdale.h; Maugis' closed form at k = 0) at sigma_0 = `strength`. Where only one side
+  /// has a displacement-controlled jump, its depth against the other's where the contact vanishes. Throws the
+  /// solution's DomainError (e.g. a tip with 2n + k - 1 <= 0).
   std::optional<Row> graded_maugis_dugdale_row(const gradcontact::Medium &medium, const JkrProfile &profile,
                                                double strength, double dgamma, bool force_control, bool fe_instability,
                                                double force, double depth, const std::string &metric,
                                                const std::string &method, double force_tolerance,
-                                               double depth_tolerance, unsigned int dofs, double seconds,
-                                               double vanishing_radius = 0);
+                                               double depth_tolerance, unsigned int dofs, double seconds);
 
   /// The smallest lambda from which the graded Maugis-Dugdale pull-off (force or displacement control) stays within
   /// `threshold` of the chapter's JKR pull-off at every larger lambda up to 1e3 (no jump under displacement control
