@@ -60,6 +60,33 @@ namespace gradcontact::maugis_dugdale
                 .first,
               false, false};
     }
+
+    /// The pull-off from scan_minimum's result: the vanishing contact `end` where the scan's smallest sample is the
+    /// first (force control: its pull-off; displacement control: no jump), else the state at the minimum, replaced by
+    /// `end` under force control when F is lower there. `force` reads a state's force; `at` builds the state at t;
+    /// `beyond` throws where the smallest sample is the last.
+    template <class PullOffType, class StateType, class Force, class At, class Beyond>
+    PullOffType finish_pull_off(const ScanMinimum &minimum, const StateType &end, const Control control, Force force,
+                                At at, Beyond beyond)
+    {
+      PullOffType p;
+      if (minimum.first)
+        {
+          p.state                = end;
+          p.at_vanishing_contact = true;
+          p.exists               = control == Control::force;
+          return p;
+        }
+      if (minimum.last)
+        beyond();
+      p.state = at(minimum.t);
+      if (control == Control::force && force(end) < force(p.state))
+        {
+          p.state                = end;
+          p.at_vanishing_contact = true;
+        }
+      return p;
+    }
   } // namespace
 
   double tabor_parameter(const double sigma0, const double dgamma, const double R, const double E_star)
@@ -126,26 +153,11 @@ namespace gradcontact::maugis_dugdale
       return control == Control::force ? s.P : s.Delta;
     };
     // A scan in ln A, then Brent around the smallest sample.
-    const ScanMinimum minimum = scan_minimum(value, std::log(1e-6), std::log(1e2), 400);
-    PullOff           p;
-    const State       end = vanishing_contact(lambda);
-    if (minimum.first)
-      {
-        // The minimum is the A -> 0 end (force control) or there is none inside (displacement control).
-        p.state                = end;
-        p.at_vanishing_contact = true;
-        p.exists               = control == Control::force;
-        return p;
-      }
-    if (minimum.last)
-      check::fail("maugis_dugdale::pull_off", "lambda", lambda, "has no pull-off with A <= 100");
-    p.state = state(lambda, std::exp(minimum.t));
-    if (control == Control::force && end.P < p.state.P)
-      {
-        p.state                = end;
-        p.at_vanishing_contact = true;
-      }
-    return p;
+    // The minimum at the A -> 0 end: the pull-off there (force control) or none inside (displacement control).
+    return finish_pull_off<PullOff>(
+      scan_minimum(value, std::log(1e-6), std::log(1e2), 400), vanishing_contact(lambda), control,
+      [](const State &s) { return s.P; }, [&](const double t) { return state(lambda, std::exp(t)); },
+      [&] { check::fail("maugis_dugdale::pull_off", "lambda", lambda, "has no pull-off with A <= 100"); });
   }
   namespace
   {
@@ -315,25 +327,11 @@ namespace gradcontact::maugis_dugdale
       return control == Control::force ? s.force : s.depth;
     };
     // A scan in ln a (25 samples per decade), then Brent around the smallest sample.
-    const ScanMinimum minimum = scan_minimum(value, std::log(1e-6), std::log(1e2), 200);
-    GradedPullOff     p;
-    const GradedState end = vanishing_contact(m, profile, law);
-    if (minimum.first)
-      {
-        p.state                = end;
-        p.at_vanishing_contact = true;
-        p.exists               = control == Control::force;
-        return p;
-      }
-    if (minimum.last)
-      check::fail("maugis_dugdale::pull_off", "sigma0", law.sigma0, "has no pull-off with a <= 100 a_JKR");
-    p.state = state(m, profile, law, a_jkr * std::exp(minimum.t));
-    if (control == Control::force && end.force < p.state.force)
-      {
-        p.state                = end;
-        p.at_vanishing_contact = true;
-      }
-    return p;
+    return finish_pull_off<GradedPullOff>(
+      scan_minimum(value, std::log(1e-6), std::log(1e2), 200), vanishing_contact(m, profile, law), control,
+      [](const GradedState &s) { return s.force; },
+      [&](const double t) { return state(m, profile, law, a_jkr * std::exp(t)); },
+      [&] { check::fail("maugis_dugdale::pull_off", "sigma0", law.sigma0, "has no pull-off with a <= 100 a_JKR"); });
   }
 
   GradedPullOff pull_off(const Medium &m, const Paraboloid &profile, const Dugdale &law, const Control control)
