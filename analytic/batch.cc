@@ -533,10 +533,15 @@ namespace gradcontact::batch
         const GradedHalfSpace b = q.body();
         return b.E0 / (1 - b.nu * b.nu);
       };
-      const auto lambda = [E_star](const In &q) {
+      // The law and the sphere: sigma_th, dgamma and geometry.R, each > 0.
+      const auto law = [](const In &q) {
         check::positive("maugis_dugdale", "sigma_th", q.sigma_th());
         check::positive("maugis_dugdale", "dgamma", q.dgamma());
         check::positive("maugis_dugdale", "geometry.R", q.R());
+        return maugis_dugdale::Dugdale{q.sigma_th(), q.dgamma()};
+      };
+      const auto lambda = [E_star, law](const In &q) {
+        law(q);
         return maugis_dugdale::tabor_parameter(q.sigma_th(), q.dgamma(), q.R(), E_star(q));
       };
       const auto no_jump = [](const In &q, const std::string &where) {
@@ -547,11 +552,7 @@ namespace gradcontact::batch
       const auto critical = [=](const In &q) -> std::array<double, 3> {
         if (!homogeneous(q))
           {
-            check::positive("maugis_dugdale", "sigma_th", q.sigma_th());
-            check::positive("maugis_dugdale", "dgamma", q.dgamma());
-            check::positive("maugis_dugdale", "geometry.R", q.R());
-            const auto p = maugis_dugdale::pull_off(q.medium(), Paraboloid{q.R()},
-                                                    maugis_dugdale::Dugdale{q.sigma_th(), q.dgamma()}, q.control());
+            const auto p = maugis_dugdale::pull_off(q.medium(), Paraboloid{q.R()}, law(q), q.control());
             if (!p.exists)
               throw no_jump(q, "on this graded medium");
             return {p.state.radius, p.state.depth, p.state.force};
@@ -569,11 +570,7 @@ namespace gradcontact::batch
       t.closed_form["tabor_parameter"] = [=](const In &q) {
         if (!homogeneous(q))
           {
-            check::positive("maugis_dugdale", "sigma_th", q.sigma_th());
-            check::positive("maugis_dugdale", "dgamma", q.dgamma());
-            check::positive("maugis_dugdale", "geometry.R", q.R());
-            return maugis_dugdale::tabor_parameter(q.medium(), Paraboloid{q.R()},
-                                                   maugis_dugdale::Dugdale{q.sigma_th(), q.dgamma()});
+            return maugis_dugdale::tabor_parameter(q.medium(), Paraboloid{q.R()}, law(q));
           }
         return lambda(q);
       };

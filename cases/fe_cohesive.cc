@@ -39,6 +39,14 @@ namespace gradcontact::cases
                         profile);
     }
 
+    /// The profile as the tip A r^n of the graded Maugis-Dugdale functions (a paraboloid is n = 2).
+    gradcontact::PowerLaw as_tip(const JkrProfile &profile)
+    {
+      if (const auto *sphere = std::get_if<gradcontact::Paraboloid>(&profile))
+        return gradcontact::as_power_law(*sphere);
+      return std::get<gradcontact::PowerLaw>(profile);
+    }
+
     /// One pull-off of the map.
     struct Point
     {
@@ -295,8 +303,7 @@ namespace gradcontact::cases
   {
     if (!(lambda > 0) || !std::isfinite(lambda))
       throw std::invalid_argument("cohesive_strength: Tabor parameter lambda = " + format(lambda) + " must be in (0, inf)");
-    return std::visit([&](const auto &p) { return gradcontact::maugis_dugdale::strength(medium, p, dgamma, lambda); },
-                      profile);
+    return gradcontact::maugis_dugdale::strength(medium, as_tip(profile), dgamma, lambda);
   }
 
 
@@ -341,13 +348,10 @@ namespace gradcontact::cases
                                                                const JkrProfile &profile, const double strength,
                                                                const double dgamma, const bool force_control)
     {
-      return std::visit(
-        [&](const auto &p) {
-          return gradcontact::maugis_dugdale::pull_off(medium, p, gradcontact::maugis_dugdale::Dugdale{strength, dgamma},
-                                                       force_control ? gradcontact::Control::force
-                                                                     : gradcontact::Control::displacement);
-        },
-        profile);
+      return gradcontact::maugis_dugdale::pull_off(medium, as_tip(profile),
+                                                   gradcontact::maugis_dugdale::Dugdale{strength, dgamma},
+                                                   force_control ? gradcontact::Control::force
+                                                                 : gradcontact::Control::displacement);
     }
 
     /// |F_c / F_c,JKR - 1| of the graded Maugis-Dugdale pull-off at lambda (1 where there is no jump).
@@ -387,12 +391,8 @@ namespace gradcontact::cases
                                                const unsigned int dofs, const double seconds)
   {
     const auto md  = graded_pull_off(medium, profile, strength, dgamma, force_control);
-    const auto end = std::visit(
-      [&](const auto &p) {
-        return gradcontact::maugis_dugdale::vanishing_contact(medium, p,
-                                                              gradcontact::maugis_dugdale::Dugdale{strength, dgamma});
-      },
-      profile);
+    const auto end =
+      gradcontact::maugis_dugdale::vanishing_contact(medium, as_tip(profile), gradcontact::maugis_dugdale::Dugdale{strength, dgamma});
     return dugdale_reference_row("Maugis-Dugdale on the graded medium (MDR)", md.exists, md.state.force,
                                  md.state.depth, end.depth, force_control, fe_instability, force, depth, metric, method,
                                  force_tolerance, depth_tolerance, dofs, seconds);

@@ -245,11 +245,12 @@ TEST_CASE("Maugis-Dugdale on a graded medium tends to the chapter's JKR at large
       const md::Dugdale weak{strength(1e-3) * std::pow(a_jkr / c0, k), dgamma};
       CHECK_THAT(md::pull_off(m, sphere, weak, Control::force).state.force, WithinRel(-2 * pi * dgamma * R, 2e-3));
       CHECK_FALSE(md::pull_off(m, sphere, weak, Control::displacement).exists);
-      // The vanishing contact: the tension sigma_0 on the disc c, whose centre is lifted by 9.39 (written out).
+      // The vanishing contact: the tension sigma_0 on the disc c (its resultant), whose centre is lifted as the
+      // chapter's uniform pressure -sigma_0 lowers it (9.39, normal.h).
       const auto end = md::vanishing_contact(m, gradcontact::PowerLaw{2, 1 / (2 * R)}, weak);
       CHECK_THAT(end.force, WithinRel(-pi * end.zone_radius * end.zone_radius * weak.sigma0, 1e-14));
-      CHECK_THAT(end.depth, WithinRel(-2 * std::pow(c0, k) * std::cos(k * pi / 2) * weak.sigma0 *
-                                        std::pow(end.zone_radius, 1 - k) / (m.cN0 * (1 - k)),
+      CHECK_THAT(end.depth, WithinRel(gradcontact::centre_displacement(
+                                        m, gradcontact::UniformPressure{end.zone_radius, -weak.sigma0}),
                                       1e-13));
     }
 }
