@@ -496,20 +496,37 @@ namespace gradcontact::fem
             if (load.cohesion.active() && load.cohesion.radius < a * (1 - node_tolerance))
               fail("AxisymmetricSolver::run (cohesion)", "radius", load.cohesion.radius,
                    "[a, L) with a = " + std::to_string(a) + " (the cohesive zone starts at the contact edge)");
-            Vector<double>      reaction1, reaction2;
-            std::vector<double> g1(m, 1.0), g2(m);
+            // u1 and the profile's part are kept (indenter_basis); a cohesion adds u_t: u_z = 0 on the contact
+            // under its tension, so u2 = u_f + u_t (linear: the same as one solve with both, to round-off).
+            std::vector<double> g2(m);
             for (unsigned int i = 0; i < m; ++i)
               g2[i] = -load.profile(contact_r[i], a);
-            const Vector<double> u1 = system.solve(true, g1, no_load, reaction1, result.time.factorize);
-            double               unused;
-            const Vector<double> b2   = cohesion_load(load.cohesion);
-            const Vector<double> u2   = system.solve(true, g2, b2, reaction2, unused);
-            const auto           edge = contact_dofs.back();
-            const double         d    = -reaction2[edge] / reaction1[edge];
+            if (!indenter_basis || indenter_basis->profile_values != g2)
+              {
+                auto basis = std::make_unique<IndenterBasis>();
+                basis->profile_values = g2;
+                basis->u1  = system.solve(true, std::vector<double>(m, 1.0), no_load, basis->reaction1,
+                                          result.time.factorize);
+                double unused;
+                basis->u_f = system.solve(true, g2, no_load, basis->reaction_f, unused);
+                indenter_basis = std::move(basis);
+              }
+            const IndenterBasis &basis = *indenter_basis;
+            Vector<double> u2 = basis.u_f, reaction2 = basis.reaction_f;
+            const Vector<double> b2 = cohesion_load(load.cohesion);
+            if (load.cohesion.active())
+              {
+                Vector<double> reaction_t;
+                double         unused;
+                u2 += system.solve(true, std::vector<double>(m, 0.0), b2, reaction_t, unused);
+                reaction2 += reaction_t;
+              }
+            const auto   edge = contact_dofs.back();
+            const double d    = -reaction2[edge] / basis.reaction1[edge];
             state.u = u2;
-            state.u.add(d, u1);
+            state.u.add(d, basis.u1);
             state.reaction = reaction2;
-            state.reaction.add(d, reaction1);
+            state.reaction.add(d, basis.reaction1);
             for (unsigned int i = 0; i < m; ++i)
               state.g[i] = d - load.profile(contact_r[i], a);
             state.work   = b2 * state.u;

@@ -215,6 +215,15 @@ namespace gradcontact::fem
     std::vector<double>                          surface_vertex_r; ///< vertices on z = 0, ascending
     /// (column, A column) per modified surface DoF, load independent (TrialSet).
     std::map<dealii::types::global_dof_index, std::pair<dealii::Vector<double>, dealii::Vector<double>>> columns;
+    /// The radius-controlled indenter's load-independent parts, u = d u1 + u_f + u_t: u1 (u_z = 1 on the contact),
+    /// u_f (u_z = -f(r) there) of the last profile, kept so that further runs with the same profile and another
+    /// cohesion (a cohesive zone's end searched on one mesh) cost one back substitution, for u_t.
+    struct IndenterBasis
+    {
+      std::vector<double>    profile_values; ///< -f(r) at the contact DoFs (the key)
+      dealii::Vector<double> u1, reaction1, u_f, reaction_f;
+    };
+    std::unique_ptr<IndenterBasis> indenter_basis;
     Timings                                      setup_time;
   };
 } // namespace gradcontact::fem

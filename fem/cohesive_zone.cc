@@ -104,8 +104,8 @@ namespace gradcontact::fem
 
 
 
-  CohesiveState CohesiveContact::solve_on_mesh(const double a, const double c_hint, const bool refined, double &c_found,
-                                               double &g_hint)
+  CohesiveState CohesiveContact::solve_on_mesh(const double a, const double c_hint, const bool refined,
+                                               const bool find_root, double &c_found, double &g_hint)
   {
     const auto start = std::chrono::steady_clock::now();
     Settings   s     = settings(a);
@@ -174,53 +174,81 @@ namespace gradcontact::fem
       ++state.zone_solves;
       return mean_gap(last) - h0;
     };
+    // The state of zone end c with its samples (the window, then the gap inside the zone and beyond it): its g.
+    const std::vector<double> inside{0.25, 0.5, 0.75}, beyond{1.05, 1.3, 1.6};
+    Result     at_state;
+    const auto solve_state = [&](const double c) {
+      load.cohesion.radius = c;
+      OutputRequest out    = window(c);
+      for (const double t : inside)
+        out.displacement_radii.push_back(a + t * (c - a));
+      for (const double t : beyond)
+        if (t * c < reach)
+          out.displacement_radii.push_back(t * c);
+      at_state = solver.run(load, out);
+      ++state.zone_solves;
+      state.zone_radius = c;
+      state.depth       = at_state.depth;
+      state.force       = at_state.force;
+      return mean_gap(at_state) - h0;
+    };
 
-    // Bracket: g(a) = -h_0; step c - a up from the hint until g > 0.
-    g_hint = std::numeric_limits<double>::quiet_NaN();
-    double hi = std::max(c_hint, a * 1.01), g_hi = g(hi);
-    if (hi == c_hint)
-      g_hint = g_hi / h0;
+    // On a refined mesh the state is the one at c_hint (the point it is refined toward, where h(c) is accurate),
+    // and the mesh's own root is searched only when asked (a first refined mesh: the next point; later ones are
+    // placed by secants through G). Bracket: g(a) = -h_0, and g(c_hint) or g stepped up from the hint until > 0.
+    g_hint     = std::numeric_limits<double>::quiet_NaN();
+    c_found    = std::numeric_limits<double>::quiet_NaN();
+    double lo = a, g_lo = -h0, hi = std::max(c_hint, a * 1.01), g_hi = 0;
+    if (refined)
+      {
+        hi = c_hint;
+        g_hi = solve_state(c_hint);
+        g_hint = g_hi / h0;
+        if (!find_root)
+          return finish_state(state, at_state, a, start);
+        // The next point from the tangent of g at c_hint (one more solve, a difference over 1e-3 (c - a)): g is
+        // smooth in c on one mesh (the tension is integrated on the faces split at c) and most accurate at the
+        // point the mesh is refined toward. Taken when it stays within half the zone of the point; else the root.
+        const double step  = 1e-3 * (c_hint - a);
+        const double slope = (g(c_hint + step) - g_hi) / step;
+        const double next  = c_hint - g_hi / slope;
+        if (slope > 0 && std::isfinite(next) && std::abs(next - c_hint) <= 0.5 * (c_hint - a) && next < reach)
+          {
+            c_found = next;
+            return finish_state(state, at_state, a, start);
+          }
+        if (g_hi < 0)
+          lo = c_hint, g_lo = g_hi, hi = std::min(a + 1.5 * (c_hint - a), reach), g_hi = g(hi);
+      }
+    else
+      g_hi = g(hi);
     while (g_hi < 0)
       {
         if (hi >= reach)
           {
             c_found = std::numeric_limits<double>::infinity(); // beyond this near field
-            return state;
+            return refined ? finish_state(state, at_state, a, start) : state;
           }
+        lo = hi, g_lo = g_hi;
         hi   = std::min(a + 1.5 * (hi - a), reach);
         g_hi = g(hi);
-      }
-    double lo = a, g_lo = -h0;
-    if (hi > c_hint * 1.0000001 && c_hint > a * (1 + 1e-9))
-      {
-        // The hint was too small: it is the better lower end.
-        const double g_at_hint = g(c_hint);
-        g_hint                 = g_at_hint / h0;
-        if (g_at_hint < 0)
-          lo = c_hint, g_lo = g_at_hint;
       }
     std::uintmax_t iterations = 60;
     const auto     root       = boost::math::tools::toms748_solve(g, lo, hi, g_lo, g_hi,
                                                                   boost::math::tools::eps_tolerance<double>(40), iterations);
     c_found = 0.5 * (root.first + root.second);
+    if (!refined)
+      solve_state(c_found);
+    return finish_state(state, at_state, a, start);
+  }
 
-    // The state at its zone end (on a refined mesh the point it is refined toward, where h(c) is accurate) with
-    // its samples: the gap inside the zone and beyond it.
-    const double c = refined ? c_hint : c_found;
-    load.cohesion.radius = c;
-    OutputRequest out = window(c);
-    const std::vector<double> inside{0.25, 0.5, 0.75}, beyond{1.05, 1.3, 1.6};
-    for (const double t : inside)
-      out.displacement_radii.push_back(a + t * (c - a));
-    for (const double t : beyond)
-      if (t * c < reach)
-        out.displacement_radii.push_back(t * c);
-    out.displacement_radii.push_back(c);
-    last = solver.run(load, out);
-    ++state.zone_solves;
-    state.zone_radius = c;
-    state.depth       = last.depth;
-    state.force       = last.force;
+
+
+  CohesiveState CohesiveContact::finish_state(CohesiveState &state, const Result &last, const double a,
+                                              const std::chrono::steady_clock::time_point start) const
+  {
+    // The checks of the samples beyond the window: 0 <= h <= h_0 inside the zone, h >= h_0 beyond it.
+    const double h0 = law.range(), c = state.zone_radius;
     std::ostringstream msg;
     msg << last.message;
     for (const Sample &w : last.displacement)
@@ -257,9 +285,15 @@ namespace gradcontact::fem
     // the last two points (the mesh's own root is off by its resolution away from p).
     double p_previous = std::numeric_limits<double>::quiet_NaN(), g_previous = 0;
     CohesiveState previous; // the state at p_previous
+    double        root_offset = 0;     // |c - p| of the last mesh whose root was searched
+    bool          force_root  = false;
     for (unsigned int pass = 0; pass < 16; ++pass)
       {
-        CohesiveState s = solve_on_mesh(a, hint, refined, c, g);
+        // The mesh's own root: on unrefined meshes, on the first refined one (the next point), and where the
+        // secant failed (force_root); otherwise only G at the point.
+        const bool    find_root = !refined || std::isnan(p_previous) || force_root;
+        CohesiveState s         = solve_on_mesh(a, hint, refined, find_root, c, g);
+        force_root              = false;
         s.meshes += total.meshes;
         s.zone_solves += total.zone_solves;
         s.seconds += total.seconds;
@@ -293,14 +327,22 @@ namespace gradcontact::fem
               }
             return solved.emplace(a, total).first->second;
           }
+        if (!std::isnan(c))
+          root_offset = std::abs(c - hint);
         double next = c;
         if (refined && !std::isnan(p_previous) && g != g_previous)
           {
             const double secant = hint - g * (hint - p_previous) / (g - g_previous);
-            // Kept within the distance of the last two points and the mesh's root from the hint.
-            const double span = 2 * std::max(std::abs(hint - p_previous), std::abs(c - hint));
+            // Kept within the distance of the last two points and of the last mesh root from its point.
+            const double span = 2 * std::max(std::abs(hint - p_previous), root_offset);
             if (std::isfinite(secant) && secant > a && std::abs(secant - hint) <= span)
               next = secant;
+          }
+        if (std::isnan(next))
+          {
+            // No secant step and no root: the same point again, with this mesh's root.
+            force_root = true;
+            continue;
           }
         if (refined)
           p_previous = hint, g_previous = g, previous = s;

@@ -14,8 +14,9 @@
 // a, the Maugis condition that the stress is finite there. The zone's end c is the root of
 //   g(c) = h(c) - h_0 = f(c) - d(c) + w(c; c) - h_0,
 // g(a) = -h_0 < 0; c is not a node: the tension is integrated exactly on the faces split at c
-// (fem/surface_trace.h). Each evaluation of g is two back-substitutions with the factorisation of the mesh. The
-// force is that of the contact pressure minus pi c^2 sigma_0.
+// (fem/surface_trace.h). Each evaluation of g is one back-substitution with the factorisation of the mesh (the
+// solver keeps the indenter's unit-depth and profile solutions; the tension's is the only new one). The force is that
+// of the contact pressure minus pi c^2 sigma_0.
 //
 // The zone end. At the traction jump the gap opens like sign(r - c) |r - c|^{1-k} (k = 0: (r - c) ln|r - c|): on
 // the soft surface of k > 0 the FE gap at the point c converges only like (cell width)^{1-k}, and a zone much
@@ -23,8 +24,10 @@
 // that into errors of several 1e-3 in F. So h(c) is the mean gap over the window c +- `gap_window` (c - a), where
 // the odd term cancels, and each refined mesh is refined toward one point p (SurfaceRefinement: `zone_cells` cells
 // across its window, then `zone_refinements` levels toward p) and g is taken at p, where it is accurate: the zone
-// end is the root of G(p) = g_{mesh(p)}(p), found from a first mesh without refinement by the root on the mesh
-// refined toward its c, then secants, until |G(p)| <= `zone_tolerance` h_0 (measured at k = 0.5, lambda = 10,
+// end is the root of G(p) = g_{mesh(p)}(p), found from a first mesh without refinement (its root of g) or the zone
+// ratio of the nearest solved state, then one tangent step of g on the first refined mesh (g at p and at
+// p + 1e-3 (p - a); the mesh's root of g when that step leaves p +- (p - a) / 2), then secants through G, until
+// |G(p)| <= `zone_tolerance` h_0 (each later mesh costs one solve of g; measured at k = 0.5, lambda = 10,
 // a = a_JKR: F within 7e-5 of JKR, the windows 3e-4..1e-2 (c - a) and 16..64 cells within 8e-5 of each other;
 // one mesh per p without the mean moved F by 5e-3).
 //
@@ -44,6 +47,7 @@
 #include <fem/adhesion.h>
 #include <fem/axisymmetric_solver.h>
 
+#include <chrono>
 #include <functional>
 #include <map>
 #include <string>
@@ -67,7 +71,10 @@ namespace gradcontact::fem
     unsigned int zone_cells       = 32;   ///< surface cells across that window (at least)
     double       zone_tolerance   = 1e-4; ///< accepted |h(c) / h_0 - 1| on the mesh refined toward c
     double       near_field_margin = 2.0; ///< the near field reaches at least this times c
-    double       radius_tolerance = 1e-4; ///< relative accuracy of the critical radius (Brent in ln a)
+    /// Relative accuracy of the critical radius (Brent in ln a). At a minimum F_c and d_c move by its square; a_c
+    /// itself is no better than the FE's flat minimum allows (k = 0, lambda = 1, displacement control: 1.2e-2 from
+    /// the MDR's at either 1e-4 or 1e-3, which saves 4-6 states per search).
+    double       radius_tolerance = 1e-3;
     double       stencil_ratio    = 1.25; ///< first step of the bracketing walk (then growing by the golden ratio)
     double       max_zone_ratio   = 200;  ///< c / a beyond which the contact counts as vanished
     unsigned int max_states       = 80;   ///< FE states per critical search
@@ -115,9 +122,13 @@ namespace gradcontact::fem
     const std::map<double, CohesiveState> &states() const { return solved; }
 
   private:
-    /// One mesh, refined toward c_hint when `refined`: the root c_found of g (searched from c_hint), g(c_hint) / h_0
-    /// (NaN when not evaluated), and the state at c_hint (refined) or at c_found (not refined).
-    CohesiveState solve_on_mesh(double a, double c_hint, bool refined, double &c_found, double &g_hint);
+    /// One mesh, refined toward c_hint when `refined`: the root c_found of g (searched from c_hint; unrefined meshes
+    /// always, refined ones when `find_root`, else NaN), g(c_hint) / h_0 (NaN when not evaluated), and the state at
+    /// c_hint (refined) or at c_found (not refined).
+    CohesiveState solve_on_mesh(double a, double c_hint, bool refined, bool find_root, double &c_found, double &g_hint);
+    /// The gap checks of the header on the samples of `last` (the state's own solve), its time since `start`.
+    CohesiveState finish_state(CohesiveState &state, const Result &last, double a,
+                               std::chrono::steady_clock::time_point start) const;
     double        predicted_zone_ratio(double a) const;
 
     const Material                   material;

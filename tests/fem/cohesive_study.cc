@@ -197,6 +197,9 @@ int main(int argc, char **argv)
               std::cout << " h(c + " << j << " W/5)/h0-1=" << (load.profile(cj, a) - rj.depth + rj.displacement.front().value) / h0 - 1
                         << " F/F_jkr-1=" << rj.force / jkr.force - 1;
             }
+          std::cout << "time mesh=" << r.time.mesh << " setup=" << r.time.setup << " assemble=" << r.time.assemble
+                    << " factorize=" << r.time.factorize << " solve=" << r.time.solve << " post=" << r.time.postprocess
+                    << '\n';
           std::cout << "fixed (c-a)/a=" << (c - a) / a << " levels=" << refinement.levels << " dofs=" << solver.n_dofs() << " d=" << r.depth
                     << " F=" << r.force << " h(c)/h0-1=" << h / h0 - 1 << " F/F_jkr-1=" << r.force / jkr.force - 1
                     << '\n';
@@ -222,6 +225,13 @@ int main(int argc, char **argv)
       print("critical", c.state);
       std::cout << "states=" << c.states_solved << " seconds=" << c.seconds << " vanishing=" << c.at_vanishing_contact
                 << '\n';
+      // The same pull-off by the MDR (analytic/maugis_dugdale.h), the independent reference.
+      const auto mdr = gradcontact::maugis_dugdale::pull_off(medium, gradcontact::Paraboloid{R},
+                                                             gradcontact::maugis_dugdale::Dugdale{law.strength, dgamma},
+                                                             control);
+      std::cout << "mdr: F/F_mdr-1=" << c.state.force / mdr.state.force - 1
+                << " d/d_mdr-1=" << c.state.depth / mdr.state.depth - 1
+                << " a/a_mdr-1=" << c.state.radius / mdr.state.radius - 1 << " exists=" << mdr.exists << '\n';
       return 0;
     }
   catch (const std::exception &e)
