@@ -24,7 +24,7 @@
 // E = E0 z / c0 the Gibson medium 9.42). Eliminating q gives back a(u, v); at the discrete solution
 // U.AU = a(u, u) + \int q div u r = the strain energy, so the energy check, the reactions and every
 // surface quantity below are the same expressions on the displacement DoFs of the larger system.
-// UMFPACK factorises the indefinite matrix (pivoting). Boundary conditions: u_r = 0 on the axis (r = 0);
+// UMFPACK's LU factorises the indefinite matrix (pivoting; fem/direct_system.h). Boundary conditions: u_r = 0 on the axis (r = 0);
 // u = 0 on the truncation boundary at L; on z = 0 either traction free, a prescribed pressure, or the
 // rigid indenter. The cells touching z = 0 are integrated with a Gauss-Jacobi rule exact for z^s times a
 // polynomial when E ~ z^s there (fem/gauss_jacobi.h).
@@ -55,7 +55,7 @@
 // M p = R with M the r-weighted mass matrix of the contact line.
 //
 // Everything that does not depend on the load (mesh, DoFs, constraints, sparsity, stiffness matrix and
-// the UMFPACK factorisations) is built once, in the constructor or on first use, and reused by every
+// the factorisations) is built once, in the constructor or on first use, and reused by every
 // call of run().
 #ifndef GRADCONTACT_FEM_AXISYMMETRIC_SOLVER_H
 #define GRADCONTACT_FEM_AXISYMMETRIC_SOLVER_H

@@ -3,9 +3,18 @@
 //   A u = b + R,  u_i = g_i on P (prescribed solves) or R = 0 (free solves),
 // R the reactions, non-zero on P only. P is eliminated symmetrically: a copy of A has the rows and
 // columns of P zeroed and its diagonal kept, the right-hand side is b - A g_ext off P and
-// A_ii g_i on P. Both matrices are factorised (UMFPACK) on first use and kept, so every further load
-// case costs one back substitution. A is condensed with the model's homogeneous constraints (hanging
-// nodes, axis, far field): the rows of constrained DoFs carry their diagonal entry only.
+// A_ii g_i on P. Both matrices are factorised on first use and kept, so every further load case costs
+// one back substitution. A is condensed with the model's homogeneous constraints (hanging nodes, axis,
+// far field): the rows of constrained DoFs carry their diagonal entry only.
+//
+// The factorisation. The displacement formulation's matrices are symmetric positive definite: a supernodal
+// Cholesky factorisation (CHOLMOD, SuiteSparse; Chen, Davis, Hager and Rajamanickam, ACM TOMS 35 (2008) 22), its
+// solve followed by one step of iterative refinement in the matrix (the residual's correction; the LU's own
+// refinement did the same). Measured against UMFPACK's LU on the flat punch: the same errors at k = 0 and 0.5; at
+// k = -0.5 (truncation at L / a = 1e16) F moves by 1e-8 (its error 3.88e-7 with the LU, 3.95e-7..4.02e-7 with 0-4
+// refinement steps: round-off of that far field); factorisation 2x and solves 3x faster. A matrix that is not
+// positive definite (the mixed formulation's saddle point) is factorised by UMFPACK's LU instead (Davis, ACM TOMS 30
+// (2004) 196), with its default refinement.
 //
 // The energy check of fem/discretization.h compares u.Au, over the unconstrained DoFs, with the work
 // of the loads.
@@ -18,7 +27,6 @@
 #include <deal.II/dofs/dof_handler.h>
 #include <deal.II/lac/affine_constraints.h>
 #include <deal.II/lac/full_matrix.h>
-#include <deal.II/lac/sparse_direct.h>
 #include <deal.II/lac/sparse_matrix.h>
 #include <deal.II/lac/sparsity_pattern.h>
 #include <deal.II/lac/vector.h>
@@ -31,6 +39,11 @@ namespace gradcontact::fem
   class DirectSystem
   {
   public:
+    DirectSystem();
+    ~DirectSystem();
+    DirectSystem(DirectSystem &&) noexcept;
+    DirectSystem &operator=(DirectSystem &&) noexcept;
+
     /// The sparsity of `dof_handler` under `constraints` (kept by reference: it must outlive this). With the rings
     /// of a condensed far field (fem/far_field.h; kept), their truncation-boundary DoFs are coupled to each other
     /// and assemble adds the exterior's stiffness.
@@ -76,23 +89,28 @@ namespace gradcontact::fem
                                  dealii::Vector<double> &reaction, double &factorize_seconds);
 
     /// The block of A^{-1} on `rows` (unconstrained DoFs, no two alike): result(i, j) = u_{rows[i]} under a unit
-    /// load at rows[j], no DoF prescribed (a surface flexibility). A supernodal Cholesky factorisation (CHOLMOD,
-    /// SuiteSparse; Chen, Davis, Hager and Rajamanickam, ACM TOMS 35 (2008) 22) solves for the unit loads in blocks
-    /// of columns with dense (BLAS-3) triangular solves: measured 20x faster than one UMFPACK back substitution
-    /// per row. A matrix that is not positive definite (the mixed formulation) falls back to those back
-    /// substitutions.
+    /// load at rows[j], no DoF prescribed (a surface flexibility). The Cholesky factor of A solves for the unit
+    /// loads in blocks of columns with dense (BLAS-3) triangular solves: measured 20x faster than one UMFPACK back
+    /// substitution per row. A matrix that is not positive definite (the mixed formulation) falls back to those
+    /// back substitutions.
     dealii::FullMatrix<double> inverse_block(const std::vector<dealii::types::global_dof_index> &rows);
 
     /// u.Au over the unconstrained DoFs (the constrained rows of A hold dummy diagonal entries).
     double energy(const dealii::Vector<double> &u) const;
 
+    /// Whether the factorisation of the free (prescribe = false) or eliminated matrix is the Cholesky one (false
+    /// before it is made).
+    bool cholesky(bool prescribe) const;
+
   private:
-    const dealii::SparseDirectUMFPACK &factorization(bool prescribe, double &seconds);
+    /// The factorisation of one matrix: Cholesky, or LU when it is not positive definite (header).
+    class Factorization;
+    const Factorization &factorization(bool prescribe, double &seconds);
 
     const dealii::AffineConstraints<double>     *constraints = nullptr;
     dealii::SparsityPattern                      sparsity_pattern;
     dealii::SparseMatrix<double>                 stiffness, eliminated;
-    std::unique_ptr<dealii::SparseDirectUMFPACK> free_solver, prescribed_solver;
+    std::unique_ptr<Factorization>               free_solver, prescribed_solver;
     std::vector<dealii::types::global_dof_index> prescribed;
     std::unique_ptr<FarFieldRings>               far_field;
     Exterior                                     exterior;
