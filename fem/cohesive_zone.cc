@@ -434,10 +434,15 @@ namespace gradcontact::fem
       }
     if (!result.at_vanishing_contact)
       {
+        // Brent's tolerance is relative to |x|: in x = ln a + shift, |x| is about 1 over the bracket, so that the
+        // tolerance is radius_tolerance in ln a whatever the unit of length (in x = ln a it was |ln a| times
+        // larger: 1.2e-2 for a ~ 5e-6 m, 1.5e-4 off the MDR's F_c at k = -0.5, lambda = 10).
+        const double   shift      = 1 - 0.5 * (left + right);
         const int      bits       = static_cast<int>(std::ceil(-std::log2(parameters.radius_tolerance))) + 1;
         std::uintmax_t iterations = parameters.max_states;
-        const auto     minimum    = boost::math::tools::brent_find_minima(value, left, right, bits, iterations);
-        result.state              = state(std::exp(minimum.first));
+        const auto     minimum    = boost::math::tools::brent_find_minima(
+          [&](const double x) { return value(x - shift); }, left + shift, right + shift, bits, iterations);
+        result.state = state(std::exp(minimum.first - shift));
       }
     result.states_solved = solved.size() - before;
     for (const auto &[r, st] : solved)
