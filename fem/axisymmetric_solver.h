@@ -131,7 +131,7 @@ namespace gradcontact::fem
     /// Solves one load case, reusing everything load independent.
     Result run(const LoadCase &load, const OutputRequest &outputs = {});
 
-    /// The flexibility of the free surface (one back substitution per surface DoF, with the factorisation of A
+    /// The flexibility of the free surface (DirectSystem::inverse_block: block solves with the Cholesky factor of A
     /// that run() shares). Throws std::logic_error when a surface z-DoF is constrained other than to zero.
     SurfaceFlexibility surface_flexibility();
 

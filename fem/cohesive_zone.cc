@@ -227,7 +227,10 @@ namespace gradcontact::fem
         if (hi >= reach)
           {
             c_found = std::numeric_limits<double>::infinity(); // beyond this near field
-            return refined ? finish_state(state, at_state, a, start) : state;
+            if (refined)
+              return finish_state(state, at_state, a, start);
+            state.seconds = seconds_since(start);
+            return state;
           }
         lo = hi, g_lo = g_hi;
         hi   = std::min(a + 1.5 * (hi - a), reach);
@@ -281,8 +284,9 @@ namespace gradcontact::fem
     bool          refined = !std::isnan(ratio); // a first pass without refinement finds c
     CohesiveState total;
     double        c = 0, g = 0;
-    // The root of G(p) = g_{mesh(p)}(p) (header): the first step is the root of g on the mesh, then secants through
-    // the last two points (the mesh's own root is off by its resolution away from p).
+    // The root of G(p) = g_{mesh(p)}(p) (header): the first step is the tangent step of g on the first refined mesh
+    // (or its root of g), then secants through the last two points (the mesh's own root is off by its resolution away
+    // from p).
     double p_previous = std::numeric_limits<double>::quiet_NaN(), g_previous = 0;
     CohesiveState previous; // the state at p_previous
     double        root_offset = 0;     // |c - p| of the last mesh whose root was searched

@@ -71,9 +71,8 @@ namespace gradcontact::fem
     unsigned int zone_cells       = 32;   ///< surface cells across that window (at least)
     double       zone_tolerance   = 1e-4; ///< accepted |h(c) / h_0 - 1| on the mesh refined toward c
     double       near_field_margin = 2.0; ///< the near field reaches at least this times c
-    /// Relative accuracy of the critical radius (Brent in ln a). At a minimum F_c and d_c move by its square; a_c
-    /// itself is no better than the FE's flat minimum allows (k = 0, lambda = 1, displacement control: 1.2e-2 from
-    /// the MDR's at either 1e-4 or 1e-3, which saves 4-6 states per search).
+    /// Accuracy of the critical radius in ln a (Brent). At a minimum F_c and d_c move by its square; a_c itself is
+    /// no better than the FE's flat minimum allows (k = 0, lambda = 1, displacement control: 1.2e-2 from the MDR's).
     double       radius_tolerance = 1e-3;
     double       stencil_ratio    = 1.25; ///< first step of the bracketing walk (then growing by the golden ratio)
     double       max_zone_ratio   = 200;  ///< c / a beyond which the contact counts as vanished
@@ -122,9 +121,9 @@ namespace gradcontact::fem
     const std::map<double, CohesiveState> &states() const { return solved; }
 
   private:
-    /// One mesh, refined toward c_hint when `refined`: the root c_found of g (searched from c_hint; unrefined meshes
-    /// always, refined ones when `find_root`, else NaN), g(c_hint) / h_0 (NaN when not evaluated), and the state at
-    /// c_hint (refined) or at c_found (not refined).
+    /// One mesh, refined toward c_hint when `refined`: c_found, the root of g (searched from c_hint) on unrefined
+    /// meshes, on refined ones when `find_root` the tangent step from c_hint (the root where that step fails), else
+    /// NaN; g(c_hint) / h_0 (NaN when not evaluated); the state at c_hint (refined) or at c_found (not refined).
     CohesiveState solve_on_mesh(double a, double c_hint, bool refined, bool find_root, double &c_found, double &g_hint);
     /// The gap checks of the header on the samples of `last` (the state's own solve), its time since `start`.
     CohesiveState finish_state(CohesiveState &state, const Result &last, double a,

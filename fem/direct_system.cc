@@ -34,6 +34,10 @@ namespace gradcontact::fem
         // default, UMFPACK 0.69 s).
         common.nmethods           = 1;
         common.method[0].ordering = CHOLMOD_AMD;
+        // Supernodal always: its LL^T stops at the first pivot <= 0. CHOLMOD's automatic choice takes the simplicial
+        // LDL^T for small matrices, which without pivoting only stops at an exactly zero pivot and would factorise a
+        // small indefinite matrix (the mixed formulation's) unstably instead of leaving it to the LU.
+        common.supernodal = CHOLMOD_SUPERNODAL;
       }
       ~CholmodCommon() { cholmod_finish(&common); }
       CholmodCommon(const CholmodCommon &) = delete;
@@ -146,7 +150,8 @@ namespace gradcontact::fem
         }
       Sp[n] = static_cast<int>(k);
       factor = cholmod_analyze(S, c);
-      const bool positive_definite = factor && cholmod_factorize(S, factor, c) && c->status == CHOLMOD_OK;
+      const bool positive_definite =
+        factor && cholmod_factorize(S, factor, c) && c->status == CHOLMOD_OK && factor->is_ll;
       cholmod_free_sparse(&S, c);
       if (!positive_definite && factor)
         cholmod_free_factor(&factor, c);
@@ -160,10 +165,8 @@ namespace gradcontact::fem
 
 
 
-  DirectSystem::DirectSystem()                                    = default;
-  DirectSystem::~DirectSystem()                                   = default;
-  DirectSystem::DirectSystem(DirectSystem &&) noexcept            = default;
-  DirectSystem &DirectSystem::operator=(DirectSystem &&) noexcept = default;
+  DirectSystem::DirectSystem()  = default;
+  DirectSystem::~DirectSystem() = default;
 
   bool DirectSystem::cholesky(const bool prescribe) const
   {

@@ -40,9 +40,7 @@ namespace gradcontact::fem
   {
   public:
     DirectSystem();
-    ~DirectSystem();
-    DirectSystem(DirectSystem &&) noexcept;
-    DirectSystem &operator=(DirectSystem &&) noexcept;
+    ~DirectSystem(); // not copied or moved (its matrices hold a pointer to its sparsity pattern)
 
     /// The sparsity of `dof_handler` under `constraints` (kept by reference: it must outlive this). With the rings
     /// of a condensed far field (fem/far_field.h; kept), their truncation-boundary DoFs are coupled to each other

@@ -4,7 +4,7 @@
 //
 // Methods (DistributedSolverParameters::Method):
 //  - direct: MUMPS through Trilinos Amesos (Amesos_Mumps; Debian's Trilinos 13.2 has it), the default:
-//    it reproduces the serial UMFPACK answer to round-off on the ill-conditioned graded systems;
+//    it reproduces the serial direct answer to round-off on the ill-conditioned graded systems;
 //  - amg_cg: CG preconditioned by Trilinos ML (smoothed aggregation, Chebyshev smoother, the constant
 //    modes of every displacement component as near-null space), stopped at ||b - A u|| <= relative_tolerance
 //    ||b||. The graded E (orders of magnitude of cell size, E -> 0 or infinity at z = 0) degrades it: measured

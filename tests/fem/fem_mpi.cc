@@ -9,7 +9,7 @@
 // a_error and F_error. expect_tol=t fails the run when the punch's F_error (or a_error and F_error under control)
 // exceeds t. Mesh keys default to recommended_mesh_parameters(a, k) except layer (the z-only surface halvings,
 // which p4est cannot do: default 1, none). compare=1 (radius control): process 0 also runs the serial
-// AxisymmetricSolver (UMFPACK) and the program fails (exit 1) unless force and depth agree within compare_tol
+// AxisymmetricSolver (sparse direct, fem/direct_system.h) and the program fails (exit 1) unless force and depth agree within compare_tol
 // relative. Prints one line of key=value pairs (process 0).
 #include <fem/axisymmetric_solver.h>
 #include <fem/distributed_solver.h>
@@ -145,7 +145,7 @@ int main(int argc, char **argv)
         }
       if (args.has("compare") && num("compare", 0) != 0)
         {
-          // The serial reference on process 0 (the others wait): same mesh, same operator, UMFPACK.
+          // The serial reference on process 0 (the others wait): same mesh, same operator, sparse direct.
           const double tolerance = num("compare_tol", 1e-10);
           if (root)
             {

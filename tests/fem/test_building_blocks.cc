@@ -225,24 +225,74 @@ TEST_CASE("The surface trace shall evaluate, integrate and recover polynomials o
 
 
 
+namespace
+{
+  /// Laplace + shift mass of FE_Q(2) on a 3 x 3 grid (49 DoFs), no constraints, assembled into `system`.
+  struct SmallSystem
+  {
+    dealii::Triangulation<2>          tria;
+    const dealii::FESystem<2>         fe{dealii::FE_Q<2>(2), 1};
+    dealii::DoFHandler<2>             dofs;
+    dealii::AffineConstraints<double> constraints;
+    DirectSystem                      system;
+
+    explicit SmallSystem(const double shift)
+    {
+      dealii::GridGenerator::subdivided_hyper_cube(tria, 3);
+      dofs.reinit(tria);
+      dofs.distribute_dofs(fe);
+      constraints.close();
+      system.reinit(dofs, constraints);
+      const dealii::QGauss<2>      quadrature(3);
+      dealii::SparseMatrix<double> mass(system.sparsity());
+      dealii::MatrixCreator::create_laplace_matrix(dofs, quadrature, system.matrix());
+      dealii::MatrixCreator::create_mass_matrix(dofs, quadrature, mass);
+      system.matrix().add(shift, mass);
+    }
+  };
+} // namespace
+
+
+
+TEST_CASE("The direct system shall factorise a positive definite matrix by Cholesky and an indefinite one by LU",
+          "[fem]")
+{
+  // Laplace + s mass of FE_Q(2) on a 3 x 3 grid (49 DoFs: small enough for CHOLMOD's automatic choice to be the
+  // simplicial LDL^T, which does not stop at negative pivots): s = 1 is positive definite, s = -30 indefinite (the
+  // discrete Neumann eigenvalues 0, 9.9, 19.7, 39.5, ... shifted by -30). Each free solve against a dense one.
+  const double shift = GENERATE(1.0, -30.0);
+  SmallSystem  small(shift);
+  DirectSystem &system = small.system;
+  system.set_prescribed_dofs({});
+
+  const unsigned int     n = small.dofs.n_dofs();
+  dealii::Vector<double> b(n);
+  for (unsigned int i = 0; i < n; ++i)
+    b[i] = std::cos(2.0 * i);
+  dealii::Vector<double> reaction;
+  double                 seconds = 0;
+  const dealii::Vector<double> u = system.solve(false, {}, b, reaction, seconds);
+  CAPTURE(shift, n);
+  CHECK(system.cholesky(false) == (shift > 0));
+
+  dealii::FullMatrix<double> A(n, n);
+  A.copy_from(system.matrix());
+  A.gauss_jordan();
+  dealii::Vector<double> reference(n);
+  A.vmult(reference, b);
+  for (unsigned int i = 0; i < n; ++i)
+    CHECK_THAT(u[i], WithinRel(reference[i], 1e-9) || WithinAbs(0.0, 1e-12 * reference.linfty_norm()));
+}
+
+
+
 TEST_CASE("The direct system shall impose prescribed values and agree with a dense solve of the reduced system",
           "[fem]")
 {
   // A = Laplace + mass (SPD) of FE_Q(2) on a 3 x 3 grid, no constraints; P = the DoFs on x = 0.
-  dealii::Triangulation<2> tria;
-  dealii::GridGenerator::subdivided_hyper_cube(tria, 3);
-  const dealii::FESystem<2> fe(dealii::FE_Q<2>(2), 1);
-  dealii::DoFHandler<2>     dofs(tria);
-  dofs.distribute_dofs(fe);
-  dealii::AffineConstraints<double> constraints;
-  constraints.close();
-  DirectSystem system;
-  system.reinit(dofs, constraints);
-  const dealii::QGauss<2> quadrature(3);
-  dealii::SparseMatrix<double> mass(system.sparsity());
-  dealii::MatrixCreator::create_laplace_matrix(dofs, quadrature, system.matrix());
-  dealii::MatrixCreator::create_mass_matrix(dofs, quadrature, mass);
-  system.matrix().add(1.0, mass);
+  SmallSystem                  small(1.0);
+  const dealii::DoFHandler<2> &dofs   = small.dofs;
+  DirectSystem                &system = small.system;
 
   const unsigned int              n = dofs.n_dofs();
   std::vector<dealii::Point<2>>   support(n);
