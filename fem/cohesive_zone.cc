@@ -105,7 +105,8 @@ namespace gradcontact::fem
 
 
   CohesiveState CohesiveContact::solve_on_mesh(const double a, const double c_hint, const bool refined,
-                                               const bool find_root, double &c_found, double &g_hint)
+                                               const std::function<bool(double)> &root_wanted, double &c_found,
+                                               double &g_hint)
   {
     const auto start = std::chrono::steady_clock::now();
     Settings   s     = settings(a);
@@ -204,12 +205,13 @@ namespace gradcontact::fem
         hi = c_hint;
         g_hi = solve_state(c_hint);
         g_hint = g_hi / h0;
-        if (!find_root)
+        if (!root_wanted(g_hint))
           return finish_state(state, at_state, a, start);
-        // The next point from the tangent of g at c_hint (one more solve, a difference over 1e-3 (c - a)): g is
-        // smooth in c on one mesh (the tension is integrated on the faces split at c) and most accurate at the
-        // point the mesh is refined toward. Taken when it stays within half the zone of the point; else the root.
-        const double step  = 1e-3 * (c_hint - a);
+        // The next point from the tangent of g at c_hint (one more solve, a difference over the gap window's half
+        // width): g is smooth in c on one mesh (the tension is integrated on the faces split at c) and most accurate
+        // at the point the mesh is refined toward. Taken when it stays within half the zone of the point; else the
+        // root.
+        const double step  = parameters.gap_window * (c_hint - a);
         const double slope = (g(c_hint + step) - g_hi) / step;
         const double next  = c_hint - g_hi / slope;
         if (slope > 0 && std::isfinite(next) && std::abs(next - c_hint) <= 0.5 * (c_hint - a) && next < reach)
@@ -289,15 +291,31 @@ namespace gradcontact::fem
     // from p).
     double p_previous = std::numeric_limits<double>::quiet_NaN(), g_previous = 0;
     CohesiveState previous; // the state at p_previous
-    double        root_offset = 0;     // |c - p| of the last mesh whose root was searched
-    bool          force_root  = false;
+    double        root_offset = 0; // |c - p| of the last mesh whose root was searched
+    // The secant step through the last two points (NaN when there is none, or it leaves the distance of the last
+    // two points and of the last mesh root from its point).
+    const auto secant_step = [&](const double g_now) {
+      if (std::isnan(p_previous) || g_now == g_previous)
+        return std::numeric_limits<double>::quiet_NaN();
+      const double secant = hint - g_now * (hint - p_previous) / (g_now - g_previous);
+      const double span   = 2 * std::max(std::abs(hint - p_previous), root_offset);
+      return (std::isfinite(secant) && secant > a && std::abs(secant - hint) <= span) ?
+               secant :
+               std::numeric_limits<double>::quiet_NaN();
+    };
+    // Accepted: |G| within the tolerance, a first refined mesh alone only within 1 % of it.
+    const auto accepted = [&](const double g_now) {
+      return std::abs(g_now) <= parameters.zone_tolerance &&
+             (!std::isnan(p_previous) || std::abs(g_now) <= 1e-2 * parameters.zone_tolerance);
+    };
+    // A refined mesh searches its own root (or tangent step) when it is the first one, or when its G is neither
+    // accepted nor followed by a secant step; otherwise it only evaluates G at its point.
+    const auto root_wanted = [&](const double g_now) {
+      return std::isnan(p_previous) || (!accepted(g_now) && std::isnan(secant_step(g_now)));
+    };
     for (unsigned int pass = 0; pass < 16; ++pass)
       {
-        // The mesh's own root: on unrefined meshes, on the first refined one (the next point), and where the
-        // secant failed (force_root); otherwise only G at the point.
-        const bool    find_root = !refined || std::isnan(p_previous) || force_root;
-        CohesiveState s         = solve_on_mesh(a, hint, refined, find_root, c, g);
-        force_root              = false;
+        CohesiveState s = solve_on_mesh(a, hint, refined, root_wanted, c, g);
         s.meshes += total.meshes;
         s.zone_solves += total.zone_solves;
         s.seconds += total.seconds;
@@ -319,8 +337,7 @@ namespace gradcontact::fem
         // The root between the last two points: d, F and c interpolated linearly in G (their FE states are on two
         // meshes), so that F(a) is smooth where its minimum is flat (k = 0, lambda = 0.5: a_c moved by 9e-3 with the
         // state at p itself); a first refined mesh stands alone only within 1 % of the tolerance.
-        if (refined && std::abs(g) <= parameters.zone_tolerance &&
-            (!std::isnan(p_previous) || std::abs(g) <= 1e-2 * parameters.zone_tolerance))
+        if (refined && accepted(g))
           {
             const double t = std::isnan(p_previous) ? 0 : g / (g - g_previous);
             if (std::isfinite(t) && std::abs(t) <= 1)
@@ -334,19 +351,11 @@ namespace gradcontact::fem
         if (!std::isnan(c))
           root_offset = std::abs(c - hint);
         double next = c;
-        if (refined && !std::isnan(p_previous) && g != g_previous)
+        if (refined)
           {
-            const double secant = hint - g * (hint - p_previous) / (g - g_previous);
-            // Kept within the distance of the last two points and of the last mesh root from its point.
-            const double span = 2 * std::max(std::abs(hint - p_previous), root_offset);
-            if (std::isfinite(secant) && secant > a && std::abs(secant - hint) <= span)
+            const double secant = secant_step(g);
+            if (!std::isnan(secant))
               next = secant;
-          }
-        if (std::isnan(next))
-          {
-            // No secant step and no root: the same point again, with this mesh's root.
-            force_root = true;
-            continue;
           }
         if (refined)
           p_previous = hint, g_previous = g, previous = s;

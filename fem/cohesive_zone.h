@@ -26,7 +26,7 @@
 // across its window, then `zone_refinements` levels toward p) and g is taken at p, where it is accurate: the zone
 // end is the root of G(p) = g_{mesh(p)}(p), found from a first mesh without refinement (its root of g) or the zone
 // ratio of the nearest solved state, then one tangent step of g on the first refined mesh (g at p and at
-// p + 1e-3 (p - a); the mesh's root of g when that step leaves p +- (p - a) / 2), then secants through G, until
+// p + gap_window (p - a); the mesh's root of g when that step leaves p +- (p - a) / 2), then secants through G, until
 // |G(p)| <= `zone_tolerance` h_0 (each later mesh costs one solve of g; measured at k = 0.5, lambda = 10,
 // a = a_JKR: F within 7e-5 of JKR, the windows 3e-4..1e-2 (c - a) and 16..64 cells within 8e-5 of each other;
 // one mesh per p without the mean moved F by 5e-3).
@@ -122,9 +122,11 @@ namespace gradcontact::fem
 
   private:
     /// One mesh, refined toward c_hint when `refined`: c_found, the root of g (searched from c_hint) on unrefined
-    /// meshes, on refined ones when `find_root` the tangent step from c_hint (the root where that step fails), else
-    /// NaN; g(c_hint) / h_0 (NaN when not evaluated); the state at c_hint (refined) or at c_found (not refined).
-    CohesiveState solve_on_mesh(double a, double c_hint, bool refined, bool find_root, double &c_found, double &g_hint);
+    /// meshes, on refined ones when root_wanted(g(c_hint) / h_0) the tangent step from c_hint (the root where that
+    /// step fails), else NaN; g(c_hint) / h_0 (NaN when not evaluated); the state at c_hint (refined) or at c_found
+    /// (not refined).
+    CohesiveState solve_on_mesh(double a, double c_hint, bool refined, const std::function<bool(double)> &root_wanted,
+                                double &c_found, double &g_hint);
     /// The gap checks of the header on the samples of `last` (the state's own solve), its time since `start`.
     CohesiveState finish_state(CohesiveState &state, const Result &last, double a,
                                std::chrono::steady_clock::time_point start) const;
