@@ -2,6 +2,7 @@
 
 #include "fe_map.h"
 #include "fe_scene.h"
+#include "mpi_session.h"
 
 #include <analytic/material.h>
 #include <analytic/normal.h>
@@ -359,7 +360,7 @@ namespace gradcontact::cases
       throw std::invalid_argument("run_coulomb_map: scene " + s.file + " is not a Coulomb 3D map");
     const auto  start  = std::chrono::steady_clock::now();
     SceneResult result = started(s, folder);
-    const bool  root   = dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
+    const bool  root   = dealii::Utilities::MPI::this_mpi_process(mpi_world()) == 0;
 
     // The panels: every k and nu, and Holl's ratio where it is a Poisson ratio below 1/2, each at every mu of
     // Map/ratios (Tangential/friction coefficient when empty); the mu of one body share its surface compliance.
@@ -417,8 +418,8 @@ namespace gradcontact::cases
                     medium, tangential::SphereSlip{c.R, mu}, a,
                     amplitude * mu * gradcontact::force(medium, Paraboloid{c.R}, a));
                   if (!surface)
-                    surface = prepare_coulomb_sphere(MPI_COMM_WORLD, c);
-                  panel.result = run_coulomb_sphere(MPI_COMM_WORLD, c, *surface);
+                    surface = prepare_coulomb_sphere(mpi_world(), c);
+                  panel.result = run_coulomb_sphere(mpi_world(), c, *surface);
                   if (!panel.result.fe.converged || !panel.result.decoupled.converged)
                     panel.error = !panel.result.fe.converged ? panel.result.fe.message
                                                              : "decoupled path: " + panel.result.decoupled.message;

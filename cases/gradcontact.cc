@@ -14,9 +14,11 @@
 //          "nu":0.3},"geometry":{"R":0.01},"a":1e-4}' | gradcontact eval
 //   gradcontact run cases/default
 //
-// Errors are reported here, at the boundary: what() on stderr and a non-zero exit code. MPI is initialised
-// here (a singleton process without mpirun) for the scenes of the distributed 3D model (cases/fe_coulomb_3d.h).
+// Errors are reported here, at the boundary: what() on stderr and a non-zero exit code. MPI starts here when
+// an MPI launcher started the process, else only when a scene of the distributed 3D model needs it
+// (cases/mpi_session.h: starting it costs a singleton process about 0.35 s).
 #include "command_line.h"
+#include "mpi_session.h"
 
 #include <deal.II/base/mpi.h>
 
@@ -27,8 +29,7 @@
 
 int main(int argc, char **argv)
 {
-  // as many threads as before: deal.II's default for one process
-  dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, dealii::numbers::invalid_unsigned_int);
+  gradcontact::cases::MpiSession mpi(argc, argv);
   try
     {
       return gradcontact::cases::command_line(std::vector<std::string>(argv + 1, argv + argc), std::cout);

@@ -2,7 +2,7 @@
 // the closed form and its timings, for the measurements of fem/README.md. Not a test.
 //
 //   fem_study load=punch k=0 p=3 h_edge=1e-5 h_surface=0.25 h_far=3 g=1.15 L=1e8 layer=1e-10 R1=4
-//             edge_refinements=0 global=0 repeat=1
+//             edge_refinements=0 global=0
 // load = punch | paraboloid | cone | power (n=, A=) | pressure; pointwise=1 prints p(r) per sample;
 // layers=N layer_depth=D/a: N layers with the exact layer means of the power law over [0, D a], uniform, or
 // with layer_kind=geometric layer_first=t1/a geometric ones (first thickness t1, ratio from D, N);
