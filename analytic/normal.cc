@@ -3,9 +3,11 @@
 #include <analytic/special_functions.h>
 
 #include <boost/math/constants/constants.hpp>
+#include <boost/math/special_functions/beta.hpp>
 #include <boost/math/special_functions/cos_pi.hpp>
 
 #include <cmath>
+#include <limits>
 
 namespace gradcontact
 {
@@ -49,14 +51,17 @@ namespace gradcontact
   {
     check::positive("kappa", "n", n);
     check::open_interval("kappa", "k", k, -1., 1.);
-    // kappa = Gamma(n/2 + 1) Gamma((1+k)/2) / Gamma((1+k+n)/2) from the log-gammas in long double: in
-    // double, kappa, whose difference from 1 the displacement near the edge takes as k -> 1, loses up to
-    // 1e-13 (measured on the references). glibc's lgammal_r (reentrant, all arguments positive) costs about
-    // a quarter of Boost's beta promoted to long double, which was most of a cone or power-law request whose
-    // (n, k) changes from call to call; the sum of three log-gammas of at most a few units keeps about 1e-18
-    // absolute, so kappa stays correctly rounded to double (worst 1.2e-16 against 50 digits for n in
-    // [0.05, 100], k in (-1, 1)). n and k stay the same over the calls of a prepared request or of a root
-    // search for the contact radius: the last value is kept, per thread.
+    // kappa = n/2 B(n/2, (1+k)/2) = Gamma(n/2 + 1) Gamma((1+k)/2) / Gamma((1+k+n)/2) (9.29), in long double:
+    // in double, kappa, whose difference from 1 the displacement near the edge takes as k -> 1, loses up to
+    // 1e-13 (measured on the references). For n <= 200 from three log-gammas (glibc's reentrant lgammal_r, all
+    // arguments positive; about 0.3 us): their sum keeps about 1e-18 absolute while the log-gammas stay below
+    // a few hundred, and kappa is within 1.3e-16 (about one ulp) of 50 digits for n in [0.05, 300], k in
+    // (-1, 1). Above, the log-gammas grow like n log n and so would the error of their difference (5e-14 at
+    // n = 1e5): Boost's beta promoted to long double (about 1 us) keeps it. n and k stay the same over the
+    // calls of a prepared request or of a root search for the contact radius: the last value is kept, per
+    // thread.
+    static_assert(std::numeric_limits<long double>::digits >= 64,
+                  "kappa needs the 64-bit mantissa of x87 long double (or wider)");
     struct Last
     {
       double n, k, kappa;
@@ -64,10 +69,20 @@ namespace gradcontact
     thread_local Last last{std::nan(""), std::nan(""), 0.};
     if (n == last.n && k == last.k)
       return last.kappa;
-    const long double x = n / 2., y = (1. + k) / 2.;
-    int sign = 0; // every argument is positive: the sign is +1
-    last = {n, k,
-            static_cast<double>(std::exp(lgammal_r(x + 1.L, &sign) + lgammal_r(y, &sign) - lgammal_r(x + y, &sign)))};
+    const long double x = n / 2.L, y = (1.L + k) / 2.L;
+    constexpr double  log_gamma_limit = 200.;
+    if (n <= log_gamma_limit)
+      {
+        int sign = 0; // every argument is positive: the sign is +1
+        last     = {n, k,
+                    static_cast<double>(
+                      std::exp(lgammal_r(x + 1.L, &sign) + lgammal_r(y, &sign) - lgammal_r(x + y, &sign)))};
+      }
+    else
+      {
+        using promoted = boost::math::policies::policy<boost::math::policies::promote_double<true>>;
+        last           = {n, k, static_cast<double>(x * boost::math::beta(x, y, promoted()))};
+      }
     return last.kappa;
   }
 

@@ -358,9 +358,9 @@ namespace gradcontact::cases
     require_kind(s, SceneKind::map, "run_coulomb_map");
     if (s.map.parameter != MapParameters::Parameter::coulomb_3d)
       throw std::invalid_argument("run_coulomb_map: scene " + s.file + " is not a Coulomb 3D map");
+    const bool  root   = dealii::Utilities::MPI::this_mpi_process(mpi_world()) == 0; // MPI's start not timed
     const auto  start  = std::chrono::steady_clock::now();
     SceneResult result = started(s, folder);
-    const bool  root   = dealii::Utilities::MPI::this_mpi_process(mpi_world()) == 0;
 
     // The panels: every k and nu, and Holl's ratio where it is a Poisson ratio below 1/2, each at every mu of
     // Map/ratios (Tangential/friction coefficient when empty); the mu of one body share its surface compliance.

@@ -29,9 +29,9 @@
 
 int main(int argc, char **argv)
 {
-  gradcontact::cases::MpiSession mpi(argc, argv);
   try
     {
+      gradcontact::cases::MpiSession mpi(argc, argv);
       return gradcontact::cases::command_line(std::vector<std::string>(argv + 1, argv + argc), std::cout);
     }
   catch (const std::exception &e)

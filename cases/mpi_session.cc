@@ -25,9 +25,9 @@ namespace gradcontact::cases
   {
     if (current != nullptr)
       throw std::logic_error("MpiSession: a program has one MPI session");
-    current = this;
     if (launched_by_mpi())
       start();
+    current = this; // after a start that may throw: no session is left registered by a failed constructor
   }
 
   MpiSession::~MpiSession()

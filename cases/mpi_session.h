@@ -46,6 +46,7 @@ namespace gradcontact::cases
 
   /// MPI_COMM_WORLD, with MPI started by the program's MpiSession if it is not yet. Throws std::runtime_error
   /// when MPI is not running and no MpiSession exists (a program that links the cases library without one).
+  /// Called from the main thread (MPI is started by one thread, as MPI_Init requires).
   MPI_Comm mpi_world();
 } // namespace gradcontact::cases
 

@@ -14,7 +14,10 @@
 #include <fem/mesh.h>
 #include <fem/mesh_3d.h>
 
+#include <exception>
+#include <iostream>
 #include <map>
+#include <set>
 #include <stdexcept>
 #include <string>
 
@@ -37,7 +40,27 @@ namespace gradcontact::fem::testing
         }
     }
 
-    bool has(const std::string &key) const { return values.count(key) != 0; }
+    /// Names the arguments that no query read (a misspelt key such as h_egde=..., or one of another mode) on
+    /// stderr: the run used the defaults for them. Not while an error unwinds (its keys were not all read yet).
+    ~StudyArguments()
+    {
+      if (std::uncaught_exceptions() > 0)
+        return;
+      std::string unused;
+      for (const auto &entry : values)
+        if (queried.count(entry.first) == 0)
+          unused += " " + entry.first;
+      if (!unused.empty())
+        std::cerr << tool << ": warning: argument(s) not used in this run:" << unused << '\n';
+    }
+    StudyArguments(const StudyArguments &)            = delete;
+    StudyArguments &operator=(const StudyArguments &) = delete;
+
+    bool has(const std::string &key) const
+    {
+      queried.insert(key);
+      return values.count(key) != 0;
+    }
 
     std::string text(const std::string &key, const std::string &fallback = "") const
     {
@@ -143,6 +166,7 @@ namespace gradcontact::fem::testing
   private:
     std::string                        tool;
     std::map<std::string, std::string> values;
+    mutable std::set<std::string>      queried; ///< every key asked for (has, text, num, count, apply)
   };
 } // namespace gradcontact::fem::testing
 
