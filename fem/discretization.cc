@@ -73,12 +73,13 @@ namespace gradcontact::fem
     // The threshold between the two measured settings: degree 3 reaches 3.8e-7..2.1e-6.
     constexpr double degree_3_limit = 1e-6;
     // Degree 2 on the same mesh (fem_study p=2, flat punch / paraboloid / cone / power law n = 4): force within
-    // 2.4e-5..5.6e-5 for -0.9 <= s <= 0.5 with 20k-70k DoFs, a third to a half of degree 3's time; at s = 0.9
-    // (surface map) 7.6e-4, so larger s keep degree 3. Asked for 2e-4 or more, a case need not pay for 1e-6.
-    constexpr double degree_2_limit = 2e-4, degree_2_max_exponent = 0.5;
+    // 2.3e-5..5.7e-5 for -0.5 <= s <= 0.5 with 30k-70k DoFs, a third to a half of degree 3's time, 2.9e-5 at
+    // s = -0.9 with the condensed far field; the flat punch at s = 0.9 (surface map) 7.6e-4, so larger s, and the
+    // unmeasured s < -0.9, keep degree 3. Asked for 2e-4 or more, a case need not pay for 1e-6.
+    constexpr double degree_2_limit = 2e-4, degree_2_min_exponent = -0.9, degree_2_max_exponent = 0.5;
     Settings settings;
     settings.mesh = recommended_mesh_parameters(contact_radius, s, std::min(force_tolerance / 10, 1e-8));
-    if (force_tolerance >= degree_2_limit && s <= degree_2_max_exponent)
+    if (force_tolerance >= degree_2_limit && s >= degree_2_min_exponent && s <= degree_2_max_exponent)
       settings.discretization.degree = 2;
     if (force_tolerance < degree_3_limit)
       {

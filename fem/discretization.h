@@ -76,8 +76,9 @@ namespace gradcontact::fem
 
   /// The cheapest settings measured for a modulus E ~ z^s at the surface (s = surface_exponent: k for
   /// the power law, 0 for a layered or finite-surface modulus) and a wanted relative force error
-  /// (fem/README.md, "Accuracy and cost"). force_tolerance >= 2e-4 and s <= 0.5: degree 2 on the mesh of degree
-  /// 3 (2.4e-5 .. 5.6e-5 for -0.9 <= s <= 0.5). force_tolerance >= 1e-6: degree 3, h_edge = 1e-5 a, rings
+  /// (fem/README.md, "Accuracy and cost"). force_tolerance >= 2e-4 and -0.9 <= s <= 0.5: degree 2 on the mesh of
+  /// degree 3 (flat punch and paraboloid 2.4e-5 .. 5.7e-5 for k = -0.5, 0, 0.5; measured for the power law only,
+  /// at nu = 0.3). force_tolerance >= 1e-6: degree 3, h_edge = 1e-5 a, rings
   /// g = 1.15 (flat punch 3.8e-7 / 7.9e-7 / 2.1e-6 for k = -0.5 / 0 / 0.5). Below: degree 4,
   /// h_edge = 1e-6 a, h_far = 4 a, g = 1.3 (k = 0: 5.2e-8 in about 2 s; k = -0.5: 1.1e-7 in 6 s; k = 0.5
   /// stays near 1e-6, limited by the u_z ~ z^{1-k} surface layer, unless use_surface_map), and z-halvings
