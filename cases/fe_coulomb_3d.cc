@@ -358,9 +358,10 @@ namespace gradcontact::cases
     require_kind(s, SceneKind::map, "run_coulomb_map");
     if (s.map.parameter != MapParameters::Parameter::coulomb_3d)
       throw std::invalid_argument("run_coulomb_map: scene " + s.file + " is not a Coulomb 3D map");
-    const bool  root   = dealii::Utilities::MPI::this_mpi_process(mpi_world()) == 0; // MPI's start not timed
-    const auto  start  = std::chrono::steady_clock::now();
-    SceneResult result = started(s, folder);
+    const MPI_Comm    world  = mpi_world(); // MPI's start (when this is the first distributed scene) not timed
+    const bool        root   = dealii::Utilities::MPI::this_mpi_process(world) == 0;
+    const auto        start  = std::chrono::steady_clock::now();
+    SceneResult       result = started(s, folder);
 
     // The panels: every k and nu, and Holl's ratio where it is a Poisson ratio below 1/2, each at every mu of
     // Map/ratios (Tangential/friction coefficient when empty); the mu of one body share its surface compliance.
@@ -418,8 +419,8 @@ namespace gradcontact::cases
                     medium, tangential::SphereSlip{c.R, mu}, a,
                     amplitude * mu * gradcontact::force(medium, Paraboloid{c.R}, a));
                   if (!surface)
-                    surface = prepare_coulomb_sphere(mpi_world(), c);
-                  panel.result = run_coulomb_sphere(mpi_world(), c, *surface);
+                    surface = prepare_coulomb_sphere(world, c);
+                  panel.result = run_coulomb_sphere(world, c, *surface);
                   if (!panel.result.fe.converged || !panel.result.decoupled.converged)
                     panel.error = !panel.result.fe.converged ? panel.result.fe.message
                                                              : "decoupled path: " + panel.result.decoupled.message;

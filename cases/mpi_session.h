@@ -36,7 +36,6 @@ namespace gradcontact::cases
 
     /// Starts MPI if it is not yet.
     void start();
-    bool started() const { return mpi != nullptr; }
 
   private:
     int                                                      &argc;

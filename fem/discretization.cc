@@ -81,7 +81,7 @@ namespace gradcontact::fem
     settings.mesh = recommended_mesh_parameters(contact_radius, s, std::min(force_tolerance / 10, 1e-8));
     if (force_tolerance >= degree_2_limit && s >= degree_2_min_exponent && s <= degree_2_max_exponent)
       settings.discretization.degree = 2;
-    if (force_tolerance < degree_3_limit)
+    else if (force_tolerance < degree_3_limit)
       {
         settings.discretization.degree = 4;
         settings.mesh.h_edge           = 1e-6;
