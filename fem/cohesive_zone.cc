@@ -91,15 +91,30 @@ namespace gradcontact::fem
 
   double CohesiveContact::predicted_zone_ratio(const double a) const
   {
-    // c / a of the nearest solved radius (in ln a); NaN when none.
-    double best = std::numeric_limits<double>::quiet_NaN(), distance = std::numeric_limits<double>::max();
-    for (const auto &[r, s] : solved)
-      if (std::abs(std::log(r / a)) < distance)
-        {
-          distance = std::abs(std::log(r / a));
-          best     = s.zone_radius / r;
-        }
-    return best;
+    // c / a from the two solved radii nearest in ln a: ln(c / a - 1) linear in ln a through them (the zone's width
+    // changes smoothly along the path, by a factor 17 between a = 0.12 and 1.25 a_JKR at k = 0.5, lambda = 0.1);
+    // the nearest one's c / a when only one is solved; NaN when none.
+    const double s = std::log(a);
+    std::pair<double, double> nearest{std::numeric_limits<double>::max(), 0}, second = nearest; // (distance, radius)
+    for (const auto &[r, st] : solved)
+      {
+        const std::pair<double, double> candidate{std::abs(std::log(r) - s), r};
+        if (candidate < nearest)
+          second = nearest, nearest = candidate;
+        else if (candidate < second)
+          second = candidate;
+      }
+    if (solved.empty())
+      return std::numeric_limits<double>::quiet_NaN();
+    const auto width = [&](const double r) { return std::log(solved.at(r).zone_radius / r - 1); };
+    const double r1 = nearest.second, ratio1 = solved.at(r1).zone_radius / r1;
+    if (solved.size() < 2 || !(ratio1 > 1) || !(solved.at(second.second).zone_radius > second.second))
+      return ratio1;
+    const double r2 = second.second, s1 = std::log(r1), s2 = std::log(r2);
+    const double w  = width(r1) + (width(r1) - width(r2)) * (s - s1) / (s1 - s2);
+    const double ratio = 1 + std::exp(w);
+    // Trusted as far as the zone's width is: within a factor 4 of the nearest state's.
+    return std::isfinite(ratio) ? std::clamp(ratio, 1 + (ratio1 - 1) / 4, 1 + 4 * (ratio1 - 1)) : ratio1;
   }
 
 
@@ -370,6 +385,32 @@ namespace gradcontact::fem
 
 
 
+  CohesiveState CohesiveContact::parabolic_vertex(const AdhesionControl control, const CohesiveState &best)
+  {
+    // The solved states next to `best` on each side in s = ln a (Brent's last bracket).
+    const auto at = solved.find(best.radius);
+    if (at == solved.end() || at == solved.begin() || std::next(at) == solved.end())
+      return best;
+    const auto   objective = [control](const CohesiveState &st) { return control == AdhesionControl::force ? st.force : st.depth; };
+    const auto  &left = std::prev(at)->second, &right = std::next(at)->second;
+    const double s0 = std::log(left.radius), s1 = std::log(best.radius), s2 = std::log(right.radius);
+    const double v0 = objective(left), v1 = objective(best), v2 = objective(right);
+    // The vertex of the parabola through the three (Numerical Recipes' form of successive parabolic
+    // interpolation: s1 - ((s1-s0)^2 (v1-v2) - (s1-s2)^2 (v1-v0)) / (2 ((s1-s0)(v1-v2) - (s1-s2)(v1-v0)))).
+    const double p = (s1 - s0) * (v1 - v2), q = (s1 - s2) * (v1 - v0);
+    const double denominator = 2 * (p - q);
+    if (!(v1 <= v0 && v1 <= v2) || !(std::abs(denominator) > 0))
+      return best;
+    const double vertex = s1 - ((s1 - s0) * p - (s1 - s2) * q) / denominator;
+    // Only inside the bracket and not within the search's resolution of `best` (critical_state's radius rule).
+    if (!(vertex > s0 && vertex < s2) || std::abs(vertex - s1) <= 0.1 * parameters.radius_tolerance)
+      return best;
+    const CohesiveState &candidate = state(std::exp(vertex));
+    return objective(candidate) <= v1 ? candidate : best;
+  }
+
+
+
   CohesiveCriticalState CohesiveContact::critical_state(const AdhesionControl control, const double a0)
   {
     if (!(a0 > 0) || !std::isfinite(a0))
@@ -377,6 +418,21 @@ namespace gradcontact::fem
     const auto         start  = std::chrono::steady_clock::now();
     const std::size_t  before = solved.size();
     CohesiveCriticalState result;
+    // The radius of s = ln a: a solved one within a tenth of the search's resolution is taken instead (Brent's
+    // parabolic steps land next to the bracket's middle, already solved): moving s by less than
+    // radius_tolerance / 10 changes the value by less than what the search resolves near its minimum.
+    const auto radius = [&](const double s) {
+      const double a     = std::exp(s);
+      const auto   above = solved.lower_bound(a);
+      const auto   near  = [&](const auto it) {
+        return std::abs(std::log(it->first) - s) <= 0.1 * parameters.radius_tolerance;
+      };
+      if (above != solved.end() && near(above))
+        return above->first;
+      if (above != solved.begin() && near(std::prev(above)))
+        return std::prev(above)->first;
+      return a;
+    };
     const auto value = [&](const double s) {
       if (solved.size() - before >= parameters.max_states)
         {
@@ -384,7 +440,7 @@ namespace gradcontact::fem
           msg << "CohesiveContact::critical_state: no minimum after " << parameters.max_states << " states";
           throw std::runtime_error(msg.str());
         }
-      const CohesiveState &st = state(std::exp(s));
+      const CohesiveState &st = state(radius(s));
       return control == AdhesionControl::force ? st.force : st.depth;
     };
     const auto vanished = [&](const double s) {
@@ -403,7 +459,9 @@ namespace gradcontact::fem
     const double     q      = std::log(parameters.stencil_ratio);
     double left = std::log(a0) - q, mid = std::log(a0), right = std::log(a0) + q;
     double s_vanished = -std::numeric_limits<double>::infinity();
-    double v_left = value(left), v_mid = value(mid), v_right = value(right);
+    // The right end only when the walk does not go left at once (the pull-off radius is mostly below the JKR start).
+    double       v_mid = value(mid), v_left = value(left);
+    double       v_right = v_left < v_mid ? std::numeric_limits<double>::infinity() : value(right);
     while (!(v_mid <= v_left && v_mid <= v_right))
       {
         if (v_left < v_mid)
@@ -455,7 +513,8 @@ namespace gradcontact::fem
         std::uintmax_t iterations = parameters.max_states;
         const auto     minimum    = boost::math::tools::brent_find_minima(
           [&](const double x) { return value(x - shift); }, left + shift, right + shift, bits, iterations);
-        result.state = state(std::exp(minimum.first - shift));
+        result.state = state(radius(minimum.first - shift));
+        result.state = parabolic_vertex(control, result.state);
       }
     result.states_solved = solved.size() - before;
     for (const auto &[r, st] : solved)

@@ -215,13 +215,25 @@ int main(int argc, char **argv)
       };
       if (mode == "state")
         {
-          print("state", contact.state(args.num("x", 1) * jkr.radius));
+          const CohesiveState &st = contact.state(args.num("x", 1) * jkr.radius);
+          print("state", st);
+          // The same state by the MDR (analytic/maugis_dugdale.h), the independent reference.
+          const auto mdr = gradcontact::maugis_dugdale::state(medium, gradcontact::Paraboloid{R},
+                                                              gradcontact::maugis_dugdale::Dugdale{law.strength, dgamma},
+                                                              st.radius);
+          std::cout << "mdr: F/F_mdr-1=" << st.force / mdr.force - 1 << " d/d_mdr-1=" << st.depth / mdr.depth - 1
+                    << " c/c_mdr-1=" << st.zone_radius / mdr.zone_radius - 1 << " (c-a)/a=" << (mdr.zone_radius - st.radius) / st.radius << '\n';
           return 0;
         }
       const auto c = contact.critical_state(force_control ? AdhesionControl::force : AdhesionControl::displacement,
                                             jkr.radius);
       for (const auto &[a, s] : contact.states())
-        print("path", s);
+        {
+          print("path", s);
+          const auto m = gradcontact::maugis_dugdale::state(medium, gradcontact::Paraboloid{R},
+                                                            gradcontact::maugis_dugdale::Dugdale{law.strength, dgamma}, a);
+          std::cout << "  mdr: F/F_mdr-1=" << s.force / m.force - 1 << " d/d_mdr-1=" << s.depth / m.depth - 1 << '\n';
+        }
       print("critical", c.state);
       std::cout << "states=" << c.states_solved << " seconds=" << c.seconds << " vanishing=" << c.at_vanishing_contact
                 << '\n';
