@@ -260,6 +260,9 @@ namespace gradcontact::fem
       flexibility = solver.surface_flexibility();
       n_dofs      = solver.n_dofs();
       n           = flexibility.dofs.size();
+      flexibility_transpose.copy_transposed(flexibility.matrix);
+      flexibility_blas.reinit(n, n); // its operator= copies into a matrix of the same size
+      flexibility_blas = flexibility.matrix;
       if (n == 0 || flexibility.r.front() > node_tolerance * settings.mesh.contact_radius)
         throw std::logic_error("SmoothCohesiveContact: no free surface z-DoF on the axis");
 
@@ -426,7 +429,8 @@ namespace gradcontact::fem
     std::vector<double> residual(const std::vector<double> &x, const Constraint &constraint) const
     {
       const double        d = x[n];
-      std::vector<double> b(n, 0.0), R(n + 1);
+      std::vector<double>    R(n + 1);
+      dealii::Vector<double> b(n), Cb(n);
       for (const Face &face : faces)
         for (const Point &p : face.points)
           {
@@ -435,13 +439,9 @@ namespace gradcontact::fem
               if (face.unknown[a] >= 0)
                 b[face.unknown[a]] -= sigma * p.basis[a] * p.weight;
           }
+      flexibility_blas.vmult(Cb, b); // BLAS dgemv: a sixth of the path's time as a plain loop
       for (unsigned int i = 0; i < n; ++i)
-        {
-          double Cb = 0;
-          for (unsigned int j = 0; j < n; ++j)
-            Cb += flexibility.matrix(i, j) * b[j];
-          R[i] = x[i] - compliance * Cb;
-        }
+        R[i] = x[i] - compliance * Cb[i];
       R[n] = -constraint.value;
       for (unsigned int i = 0; i <= n; ++i)
         R[n] += constraint.row[i] * x[i];
@@ -455,7 +455,10 @@ namespace gradcontact::fem
     {
       const double               d = x[n];
       std::vector<double>        s(n, 0.0);
-      dealii::FullMatrix<double> CB(n, n); // C B', column by column from the face-local blocks of B'
+      // (C B')^T, row ic = column ic of C B' from the face-local blocks of B': each product C(i, ia) local(a, c) is
+      // read from the row ia of C^T and added to the row ic, both contiguous (down the columns of C it took a
+      // quarter of the path's time); the sums are the same, in the same order.
+      dealii::FullMatrix<double> CBt(n, n);
       for (const Face &face : faces)
         {
           const unsigned int         m = face.unknown.size();
@@ -477,19 +480,27 @@ namespace gradcontact::fem
                 if (face.unknown[c] >= 0 && local(a, c) != 0)
                   {
                     const unsigned int ia = face.unknown[a], ic = face.unknown[c];
+                    const double       lac = local(a, c);
+                    const double      *C_ia = &flexibility_transpose(ia, 0);
+                    double            *out  = &CBt(ic, 0);
                     for (unsigned int i = 0; i < n; ++i)
-                      CB(i, ic) += compliance * flexibility.matrix(i, ia) * local(a, c);
+                      out[i] += compliance * C_ia[i] * lac;
                   }
         }
       J.reinit(n + 1, n + 1);
+      // LAPACKFullMatrix stores by columns: filled column by column.
+      for (unsigned int j = 0; j < n; ++j)
+        {
+          const double *column = &CBt(j, 0);
+          for (unsigned int i = 0; i < n; ++i)
+            J(i, j) = (i == j ? 1.0 : 0.0) - column[i];
+        }
       for (unsigned int i = 0; i < n; ++i)
         {
-          double Cs = 0;
+          const double *row = &flexibility.matrix(i, 0);
+          double        Cs  = 0;
           for (unsigned int j = 0; j < n; ++j)
-            {
-              J(i, j) = (i == j ? 1.0 : 0.0) - CB(i, j);
-              Cs += flexibility.matrix(i, j) * s[j];
-            }
+            Cs += row[j] * s[j];
           J(i, n) = -compliance * Cs;
         }
       for (unsigned int i = 0; i <= n; ++i)
@@ -962,6 +973,10 @@ namespace gradcontact::fem
     mutable unsigned long                  factorisations_done = 0; ///< every Jacobian factorised, failed trials too
     unsigned int                           n_dofs = 0; ///< of the FE model behind the flexibility
     SurfaceFlexibility                     flexibility;
+    /// C^T: the Jacobian's product C B' runs along its rows (memory order), not down the columns of C.
+    dealii::FullMatrix<double>             flexibility_transpose;
+    dealii::LAPACKFullMatrix<double>       flexibility_blas; ///< C for the residual's product C b
+
     unsigned int                           n = 0;
     std::vector<Face>                      faces;
   };
