@@ -8,6 +8,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdint>
+#include <iterator>
 #include <limits>
 #include <sstream>
 #include <stdexcept>
@@ -111,10 +112,17 @@ namespace gradcontact::fem
     if (solved.size() < 2 || !(ratio1 > 1) || !(solved.at(second.second).zone_radius > second.second))
       return ratio1;
     const double r2 = second.second, s1 = std::log(r1), s2 = std::log(r2);
-    const double w  = width(r1) + (width(r1) - width(r2)) * (s - s1) / (s1 - s2);
+    // Two states closer than the search's resolution (a vertex next to Brent's point) give a slope of their noise.
+    if (std::abs(s1 - s2) < parameters.radius_tolerance)
+      return ratio1;
+    const double w     = width(r1) + (width(r1) - width(r2)) * (s - s1) / (s1 - s2);
     const double ratio = 1 + std::exp(w);
-    // Trusted as far as the zone's width is: within a factor 4 of the nearest state's.
-    return std::isfinite(ratio) ? std::clamp(ratio, 1 + (ratio1 - 1) / 4, 1 + 4 * (ratio1 - 1)) : ratio1;
+    // Trusted as far as the zone's width is: within a factor 4 of the nearest state's, and never beyond the ratio
+    // at which the contact counts as vanished (the near field grows with it).
+    if (!std::isfinite(ratio))
+      return ratio1;
+    return std::min(std::clamp(ratio, 1 + (ratio1 - 1) / 4, 1 + 4 * (ratio1 - 1)),
+                    std::max(ratio1, parameters.max_zone_ratio));
   }
 
 
@@ -387,16 +395,18 @@ namespace gradcontact::fem
 
   CohesiveState CohesiveContact::parabolic_vertex(const AdhesionControl control, const CohesiveState &best)
   {
-    // The solved states next to `best` on each side in s = ln a (Brent's last bracket).
+    // The solved states next to `best` on each side in s = ln a (Brent's last bracket, or states solved before).
     const auto at = solved.find(best.radius);
     if (at == solved.end() || at == solved.begin() || std::next(at) == solved.end())
       return best;
-    const auto   objective = [control](const CohesiveState &st) { return control == AdhesionControl::force ? st.force : st.depth; };
+    const auto objective = [control](const CohesiveState &st) {
+      return control == AdhesionControl::force ? st.force : st.depth;
+    };
     const auto  &left = std::prev(at)->second, &right = std::next(at)->second;
     const double s0 = std::log(left.radius), s1 = std::log(best.radius), s2 = std::log(right.radius);
     const double v0 = objective(left), v1 = objective(best), v2 = objective(right);
-    // The vertex of the parabola through the three (Numerical Recipes' form of successive parabolic
-    // interpolation: s1 - ((s1-s0)^2 (v1-v2) - (s1-s2)^2 (v1-v0)) / (2 ((s1-s0)(v1-v2) - (s1-s2)(v1-v0)))).
+    // The vertex of the parabola through the three (successive parabolic interpolation; Press, Teukolsky, Vetterling
+    // and Flannery, Numerical Recipes, 3rd ed. (2007), eq. 10.3.1).
     const double p = (s1 - s0) * (v1 - v2), q = (s1 - s2) * (v1 - v0);
     const double denominator = 2 * (p - q);
     if (!(v1 <= v0 && v1 <= v2) || !(std::abs(denominator) > 0))
@@ -405,8 +415,16 @@ namespace gradcontact::fem
     // Only inside the bracket and not within the search's resolution of `best` (critical_state's radius rule).
     if (!(vertex > s0 && vertex < s2) || std::abs(vertex - s1) <= 0.1 * parameters.radius_tolerance)
       return best;
-    const CohesiveState &candidate = state(std::exp(vertex));
-    return objective(candidate) <= v1 ? candidate : best;
+    try
+      {
+        const CohesiveState &candidate = state(std::exp(vertex));
+        // Brent's result stands where the vertex's state is no lower or fails its checks.
+        return objective(candidate) <= v1 && (candidate.consistent || !best.consistent) ? candidate : best;
+      }
+    catch (const std::runtime_error &)
+      {
+        return best; // no zone end found at the vertex: Brent's result stands
+      }
   }
 
 
@@ -418,20 +436,23 @@ namespace gradcontact::fem
     const auto         start  = std::chrono::steady_clock::now();
     const std::size_t  before = solved.size();
     CohesiveCriticalState result;
-    // The radius of s = ln a: a solved one within a tenth of the search's resolution is taken instead (Brent's
-    // parabolic steps land next to the bracket's middle, already solved): moving s by less than
-    // radius_tolerance / 10 changes the value by less than what the search resolves near its minimum.
+    // The radius of s = ln a: the nearest solved one when it lies within a tenth of the search's resolution (Brent
+    // begins at the bracket's right end, already solved, and after a walk to the left its first golden-section
+    // step falls on the walk's middle, solved too): moving s by less than radius_tolerance / 10 changes the value
+    // by less than what the search resolves near its minimum.
     const auto radius = [&](const double s) {
-      const double a     = std::exp(s);
-      const auto   above = solved.lower_bound(a);
-      const auto   near  = [&](const auto it) {
-        return std::abs(std::log(it->first) - s) <= 0.1 * parameters.radius_tolerance;
+      const double a = std::exp(s);
+      double       nearest = a, distance = 0.1 * parameters.radius_tolerance;
+      const auto   above   = solved.lower_bound(a);
+      const auto   consider = [&](const double r) {
+        if (std::abs(std::log(r) - s) <= distance)
+          nearest = r, distance = std::abs(std::log(r) - s);
       };
-      if (above != solved.end() && near(above))
-        return above->first;
-      if (above != solved.begin() && near(std::prev(above)))
-        return std::prev(above)->first;
-      return a;
+      if (above != solved.end())
+        consider(above->first);
+      if (above != solved.begin())
+        consider(std::prev(above)->first);
+      return nearest;
     };
     const auto value = [&](const double s) {
       if (solved.size() - before >= parameters.max_states)
@@ -446,7 +467,7 @@ namespace gradcontact::fem
     const auto vanished = [&](const double s) {
       try
         {
-          const CohesiveState &st = state(std::exp(s));
+          const CohesiveState &st = state(radius(s));
           return st.zone_radius / st.radius > parameters.max_zone_ratio / 1.5;
         }
       catch (const ZoneBeyondReach &)
@@ -488,7 +509,7 @@ namespace gradcontact::fem
               {
                 // The last state on the path before the contact vanishes.
                 result.at_vanishing_contact = true;
-                result.state                = state(std::exp(mid));
+                result.state                = state(radius(mid));
                 break;
               }
             left   = next;

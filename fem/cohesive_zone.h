@@ -25,7 +25,7 @@
 // the odd term cancels, and each refined mesh is refined toward one point p (SurfaceRefinement: `zone_cells` cells
 // across its window, then `zone_refinements` levels toward p) and g is taken at p, where it is accurate: the zone
 // end is the root of G(p) = g_{mesh(p)}(p), found from a first mesh without refinement (its root of g) or the zone
-// ratio of the nearest solved state, then one tangent step of g on the first refined mesh (g at p and at
+// ratio predicted from the two nearest solved states, then one tangent step of g on the first refined mesh (g at p and at
 // p + gap_window (p - a); the mesh's root of g when that step leaves p +- (p - a) / 2), then secants through G, until
 // |G(p)| <= `zone_tolerance` h_0 (each later mesh costs one solve of g; measured at k = 0.5, lambda = 10,
 // a = a_JKR: F within 7e-5 of JKR, the windows 3e-4..1e-2 (c - a) and 16..64 cells within 8e-5 of each other;
@@ -35,7 +35,8 @@
 // it, through the force- and displacement-controlled instabilities, where F(d) is not). Pull-off under force
 // control is the minimum of F(a), under displacement control the minimum of d(a): a Brent search in ln a on a
 // bracket found by stepping from a0 (each point its own meshes), then one state at the vertex of the parabola
-// through the three best (the state's other quantities, a_c and d_c or F_c, are first order in the radius). A walk that reaches a = a_min (the contact
+// through Brent's best state and its solved neighbours (the state's other quantities, a_c and d_c or F_c, are first
+// order in the radius). A walk that reaches a = a_min (the contact
 // vanishing, c / a > `max_zone_ratio`) stops: under force control the minimum is then at the vanishing contact
 // (DMT-like, small Tabor parameter), under displacement control there is no interior minimum (the contact
 // shrinks to nothing without a jump); the state says so (`at_vanishing_contact`).
@@ -72,10 +73,11 @@ namespace gradcontact::fem
     unsigned int zone_cells       = 32;   ///< surface cells across that window (at least)
     double       zone_tolerance   = 1e-4; ///< accepted |h(c) / h_0 - 1| on the mesh refined toward c
     double       near_field_margin = 2.0; ///< the near field reaches at least this times c
-    /// Brent's resolution of the critical radius in ln a; the parabola's vertex through its last three states
-    /// follows (parabolic_vertex). a_c itself is no better than the FE's flat minimum allows (k = 0, lambda = 1,
-    /// displacement control: 1.2e-2 from the MDR's). Measured with the vertex, 1e-2 against 1e-3 (k = 0.5,
-    /// lambda = 0.3; k = 0, lambda = 0.5, force control): F_c, d_c and a_c as close to the MDR, 2-3 states fewer.
+    /// Brent's resolution of the critical radius in ln a; the state at the parabola's vertex through its best
+    /// state and that state's solved neighbours follows (parabolic_vertex). a_c itself is no better than the FE's
+    /// flat minimum allows (k = 0, lambda = 1, displacement control: 1.2e-2 from the MDR's). Measured with the
+    /// vertex, 1e-2 against 1e-3 (k = 0.5, lambda = 0.3; k = 0, lambda = 0.5, force control): F_c, d_c and a_c as
+    /// close to the MDR, 2-3 states fewer.
     double       radius_tolerance = 1e-2;
     double       stencil_ratio    = 1.25; ///< first step of the bracketing walk (then growing by the golden ratio)
     double       max_zone_ratio   = 200;  ///< c / a beyond which the contact counts as vanished

@@ -86,6 +86,37 @@ TEST_CASE("cohesive zone at k = 0 is Maugis-Dugdale (force control)", "[fem]")
   CHECK(std::abs(c.state.force / sc.force + 2) > 0.1);
 }
 
+TEST_CASE("cohesive pull-off: a coarse search resolution still places the critical state (parabola vertex)", "[fem]")
+{
+  // Brent stops within radius_tolerance of the minimiser in ln a; F_c is then good to its square, but a_c and d_c
+  // only to its first power. The state at the vertex of the parabola through the best state and its solved
+  // neighbours is good to its square as well: here the resolution is 0.1 (the largest allowed) and a_c, d_c must
+  // still be within 5e-3 of Maugis (measured with cohesive_study's scales, k = 0, lambda = 0.5: a_c 2.0e-3, d_c
+  // 3.0e-3, F 1.1e-6, 9 states; at 1e-2: 1.9e-4, 2.5e-4, 3.0e-6, 12 states).
+  const double lambda = 0.5;
+  const auto   sc     = md::scales(dgamma, R, E_star);
+  const auto   ref    = md::pull_off(lambda, gradcontact::Control::force);
+  CohesiveParameters coarse;
+  coarse.radius_tolerance = 0.1;
+  CohesiveContact contact(power_law_material(0), Profile::paraboloid(R), DugdaleLaw{maugis_strength(lambda), dgamma},
+                          test_settings(0, 2), coarse);
+  const auto c = contact.critical_state(AdhesionControl::force, 1.1 * ref.state.A * sc.length);
+  CAPTURE(c.state.radius / sc.length / ref.state.A - 1, c.state.depth / sc.depth / ref.state.Delta - 1,
+          c.state.force / sc.force / ref.state.P - 1, c.states_solved, c.seconds);
+  REQUIRE(c.state.consistent);
+  CHECK_THAT(c.state.force / sc.force, WithinRel(ref.state.P, 2e-5));
+  CHECK_THAT(c.state.radius / sc.length, WithinRel(ref.state.A, 5e-3));
+  CHECK_THAT(c.state.depth / sc.depth, WithinRel(ref.state.Delta, 5e-3));
+  // No radius solved twice: the search's radii lie at least a tenth of its resolution apart in ln a.
+  double previous = 0;
+  for (const auto &[a, st] : contact.states())
+    {
+      if (previous > 0)
+        CHECK(std::log(a / previous) > 0.1 * coarse.radius_tolerance);
+      previous = a;
+    }
+}
+
 TEST_CASE("cohesive zone at k = 0 is Maugis-Dugdale (displacement control)", "[fem]")
 {
   // Measured (degree 2, lambda = 1): d_c 1.9e-5; F at the minimum of d(a) 6.4e-4 (the minimum is flat and F moves
