@@ -558,6 +558,15 @@ namespace gradcontact::fem
       bool                     refactor       = !current.J;
       unsigned int             factorisations = 0;
       unsigned int limit = parameters.max_newton;
+      // The converged state at x, with the Jacobian factorised there (its bordered solve gives the tangent).
+      const auto converged_at_x = [&]() {
+        solved.x                       = x;
+        solved.tangent                 = current.u;
+        solved.jacobian                = std::move(current);
+        solved.state.newton_iterations = iterations;
+        solved.state.factorisations    = factorisations;
+        return true;
+      };
       for (iterations = 1; iterations <= limit; ++iterations)
         {
           dealii::Vector<double> delta(n + 1);
@@ -612,12 +621,7 @@ namespace gradcontact::fem
                   limit    = std::max(limit, iterations + 1);
                   continue;
                 }
-              solved.x                       = x;
-              solved.tangent                 = current.u;
-              solved.jacobian                = std::move(current);
-              solved.state.newton_iterations = iterations;
-              solved.state.factorisations    = factorisations;
-              return true;
+              return converged_at_x();
             }
           // Line search on |R|_inf.
           const double norm  = max_norm(R);
@@ -644,16 +648,7 @@ namespace gradcontact::fem
                 {
                   // No descent from the Jacobian at x: converged as far as round-off lets |R| fall (measured at k = 0,
                   // lambda = 10: |R| 2.2e-14 |x|, the update 1.2e-12 eps, just above newton_tolerance), else failed.
-                  if (norm <= roundoff_residual * std::max(max_norm(x), eps()))
-                    {
-                      solved.x                       = x;
-                      solved.tangent                 = current.u;
-                      solved.jacobian                = std::move(current);
-                      solved.state.newton_iterations = iterations;
-                      solved.state.factorisations    = factorisations;
-                      return true;
-                    }
-                  return false;
+                  return norm <= roundoff_residual * std::max(max_norm(x), eps()) && converged_at_x();
                 }
               refactor = true; // the older Jacobian's direction does not descend: a new one at x
             }
