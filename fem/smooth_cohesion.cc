@@ -264,9 +264,10 @@ namespace gradcontact::fem
       flexibility = solver.surface_flexibility();
       n_dofs      = solver.n_dofs();
       n           = flexibility.dofs.size();
-      flexibility_transpose.copy_transposed(flexibility.matrix);
-      flexibility_blas.reinit(n, n); // its operator= copies into a matrix of the same size
-      flexibility_blas = flexibility.matrix;
+      // C is held once, by columns (LAPACK's order): the Jacobian reads its columns, the residual multiplies by BLAS.
+      C.reinit(n, n); // LAPACKFullMatrix's operator= copies into a matrix of the same size
+      C                  = flexibility.matrix;
+      flexibility.matrix = dealii::FullMatrix<double>();
       if (n == 0 || flexibility.r.front() > node_tolerance * settings.mesh.contact_radius)
         throw std::logic_error("SmoothCohesiveContact: no free surface z-DoF on the axis");
 
@@ -443,7 +444,7 @@ namespace gradcontact::fem
               if (face.unknown[a] >= 0)
                 b[face.unknown[a]] -= sigma * p.basis[a] * p.weight;
           }
-      flexibility_blas.vmult(Cb, b); // BLAS dgemv: a sixth of the path's time as a plain loop
+      C.vmult(Cb, b); // BLAS dgemv: a sixth of the path's time as a plain loop
       for (unsigned int i = 0; i < n; ++i)
         R[i] = x[i] - compliance * Cb[i];
       R[n] = -constraint.value;
@@ -457,12 +458,12 @@ namespace gradcontact::fem
     /// constraint.
     void jacobian(const std::vector<double> &x, const Constraint &constraint, dealii::LAPACKFullMatrix<double> &J) const
     {
-      const double               d = x[n];
-      std::vector<double>        s(n, 0.0);
-      // (C B')^T, row ic = column ic of C B' from the face-local blocks of B': each product C(i, ia) local(a, c) is
-      // read from the row ia of C^T and added to the row ic, both contiguous (down the columns of C it took a
-      // quarter of the path's time); the sums are the same, in the same order.
-      dealii::FullMatrix<double> CBt(n, n);
+      const double           d = x[n];
+      dealii::Vector<double> s(n), Cs(n);
+      // Column ic of J's block I - C B' from the face-local blocks of B': each product C(i, ia) local(a, c) is read
+      // down the column ia of C and subtracted down the column ic of J, both contiguous in LAPACK's order (across
+      // the rows of a row-major C it took a quarter of the path's time).
+      J.reinit(n + 1, n + 1);
       for (const Face &face : faces)
         {
           const unsigned int         m = face.unknown.size();
@@ -484,28 +485,18 @@ namespace gradcontact::fem
                 if (face.unknown[c] >= 0 && local(a, c) != 0)
                   {
                     const unsigned int ia = face.unknown[a], ic = face.unknown[c];
-                    const double       lac = local(a, c);
-                    const double      *C_ia = &flexibility_transpose(ia, 0);
-                    double            *out  = &CBt(ic, 0);
+                    const double       lac  = local(a, c);
+                    const double      *C_ia = &C(0, ia);
+                    double            *J_ic = &J(0, ic);
                     for (unsigned int i = 0; i < n; ++i)
-                      out[i] += compliance * C_ia[i] * lac;
+                      J_ic[i] -= compliance * C_ia[i] * lac;
                   }
         }
-      J.reinit(n + 1, n + 1);
-      // LAPACKFullMatrix stores by columns: filled column by column.
-      for (unsigned int j = 0; j < n; ++j)
-        {
-          const double *column = &CBt(j, 0);
-          for (unsigned int i = 0; i < n; ++i)
-            J(i, j) = (i == j ? 1.0 : 0.0) - column[i];
-        }
+      C.vmult(Cs, s);
       for (unsigned int i = 0; i < n; ++i)
         {
-          const double *row = &flexibility.matrix(i, 0);
-          double        Cs  = 0;
-          for (unsigned int j = 0; j < n; ++j)
-            Cs += row[j] * s[j];
-          J(i, n) = -compliance * Cs;
+          J(i, i) += 1.0;
+          J(i, n) = -compliance * Cs[i];
         }
       for (unsigned int i = 0; i <= n; ++i)
         J(n, i) = constraint.row[i];
@@ -985,10 +976,7 @@ namespace gradcontact::fem
     mutable unsigned long                  factorisations_done = 0; ///< every Jacobian factorised, failed trials too
     unsigned int                           n_dofs = 0; ///< of the FE model behind the flexibility
     SurfaceFlexibility                     flexibility;
-    /// C^T: the Jacobian's product C B' runs along its rows (memory order), not down the columns of C.
-    dealii::FullMatrix<double>             flexibility_transpose;
-    dealii::LAPACKFullMatrix<double>       flexibility_blas; ///< C for the residual's product C b
-
+    dealii::LAPACKFullMatrix<double>       C; ///< the surface flexibility (flexibility.matrix, moved here)
     unsigned int                           n = 0;
     std::vector<Face>                      faces;
   };
