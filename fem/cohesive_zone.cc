@@ -95,27 +95,28 @@ namespace gradcontact::fem
     // c / a from the two solved radii nearest in ln a: ln(c / a - 1) linear in ln a through them (the zone's width
     // changes smoothly along the path, by a factor 17 between a = 0.12 and 1.25 a_JKR at k = 0.5, lambda = 0.1);
     // the nearest one's c / a when only one is solved; NaN when none.
-    const double s = std::log(a);
-    std::pair<double, double> nearest{std::numeric_limits<double>::max(), 0}, second = nearest; // (distance, radius)
+    const double         s = std::log(a);
+    const CohesiveState *first = nullptr, *second = nullptr; // the nearest and the next nearest in ln a
+    double               d1 = std::numeric_limits<double>::max(), d2 = d1;
     for (const auto &[r, st] : solved)
       {
-        const std::pair<double, double> candidate{std::abs(std::log(r) - s), r};
-        if (candidate < nearest)
-          second = nearest, nearest = candidate;
-        else if (candidate < second)
-          second = candidate;
+        const double distance = std::abs(std::log(r) - s);
+        if (distance < d1)
+          second = first, d2 = d1, first = &st, d1 = distance;
+        else if (distance < d2)
+          second = &st, d2 = distance;
       }
-    if (solved.empty())
+    if (!first)
       return std::numeric_limits<double>::quiet_NaN();
-    const auto width = [&](const double r) { return std::log(solved.at(r).zone_radius / r - 1); };
-    const double r1 = nearest.second, ratio1 = solved.at(r1).zone_radius / r1;
-    if (solved.size() < 2 || !(ratio1 > 1) || !(solved.at(second.second).zone_radius > second.second))
+    const double ratio1 = first->zone_radius / first->radius;
+    if (!second || !(ratio1 > 1) || !(second->zone_radius > second->radius))
       return ratio1;
-    const double r2 = second.second, s1 = std::log(r1), s2 = std::log(r2);
+    const auto   width = [](const CohesiveState *st) { return std::log(st->zone_radius / st->radius - 1); };
+    const double s1 = std::log(first->radius), s2 = std::log(second->radius);
     // Two states closer than the search's resolution (a vertex next to Brent's point) give a slope of their noise.
     if (std::abs(s1 - s2) < parameters.radius_tolerance)
       return ratio1;
-    const double w     = width(r1) + (width(r1) - width(r2)) * (s - s1) / (s1 - s2);
+    const double w     = width(first) + (width(first) - width(second)) * (s - s1) / (s1 - s2);
     const double ratio = 1 + std::exp(w);
     // Trusted as far as the zone's width is: within a factor 4 of the nearest state's, and never beyond the ratio
     // at which the contact counts as vanished (the near field grows with it).

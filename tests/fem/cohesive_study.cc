@@ -213,17 +213,26 @@ int main(int argc, char **argv)
                   << " dofs=" << s.n_dofs << " s=" << s.seconds << " consistent=" << s.consistent << " " << s.message
                   << '\n';
       };
+      // The same state by the MDR (analytic/maugis_dugdale.h), the independent reference.
+      const auto compare = [&](const std::string &prefix, const CohesiveState &st) {
+        try
+          {
+            const auto m = gradcontact::maugis_dugdale::state(
+              medium, gradcontact::Paraboloid{R}, gradcontact::maugis_dugdale::Dugdale{law.strength, dgamma}, st.radius);
+            std::cout << prefix << "mdr: F/F_mdr-1=" << st.force / m.force - 1 << " d/d_mdr-1=" << st.depth / m.depth - 1
+                      << " c/c_mdr-1=" << st.zone_radius / m.zone_radius - 1
+                      << " (c_mdr-a)/a=" << (m.zone_radius - st.radius) / st.radius << '\n';
+          }
+        catch (const std::exception &e)
+          {
+            std::cout << prefix << "mdr: " << e.what() << '\n'; // e.g. no closing zone next to the vanishing contact
+          }
+      };
       if (mode == "state")
         {
           const CohesiveState &st = contact.state(args.num("x", 1) * jkr.radius);
           print("state", st);
-          // The same state by the MDR (analytic/maugis_dugdale.h), the independent reference.
-          const auto mdr = gradcontact::maugis_dugdale::state(medium, gradcontact::Paraboloid{R},
-                                                              gradcontact::maugis_dugdale::Dugdale{law.strength, dgamma},
-                                                              st.radius);
-          std::cout << "mdr: F/F_mdr-1=" << st.force / mdr.force - 1 << " d/d_mdr-1=" << st.depth / mdr.depth - 1
-                    << " c/c_mdr-1=" << st.zone_radius / mdr.zone_radius - 1
-                    << " (c_mdr-a)/a=" << (mdr.zone_radius - st.radius) / st.radius << '\n';
+          compare("", st);
           return 0;
         }
       const auto c = contact.critical_state(force_control ? AdhesionControl::force : AdhesionControl::displacement,
@@ -231,17 +240,7 @@ int main(int argc, char **argv)
       for (const auto &[a, s] : contact.states())
         {
           print("path", s);
-          try
-            {
-              const auto m = gradcontact::maugis_dugdale::state(
-                medium, gradcontact::Paraboloid{R}, gradcontact::maugis_dugdale::Dugdale{law.strength, dgamma}, a);
-              std::cout << "  mdr: F/F_mdr-1=" << s.force / m.force - 1 << " d/d_mdr-1=" << s.depth / m.depth - 1
-                        << '\n';
-            }
-          catch (const std::exception &e)
-            {
-              std::cout << "  mdr: " << e.what() << '\n'; // e.g. no closing zone next to the vanishing contact
-            }
+          compare("  ", s);
         }
       print("critical", c.state);
       std::cout << "states=" << c.states_solved << " seconds=" << c.seconds << " vanishing=" << c.at_vanishing_contact
