@@ -506,10 +506,14 @@ namespace gradcontact::fem
     return f;
   }
 
-  FESystem<2> axisymmetric_element(const unsigned int degree, const Formulation formulation)
+  template <int dim>
+  FESystem<dim> displacement_pressure_element(const unsigned int degree, const Formulation formulation)
   {
     if (formulation == Formulation::mixed)
-      return FESystem<2>(FE_Q<2>(degree), 2, FE_Q<2>(degree - 1), 1);
-    return FESystem<2>(FE_Q<2>(degree), 2);
+      return FESystem<dim>(FE_Q<dim>(degree), dim, FE_Q<dim>(degree - 1), 1);
+    return FESystem<dim>(FE_Q<dim>(degree), dim);
   }
+
+  template FESystem<2> displacement_pressure_element<2>(unsigned int, Formulation);
+  template FESystem<3> displacement_pressure_element<3>(unsigned int, Formulation);
 } // namespace gradcontact::fem

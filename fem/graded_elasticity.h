@@ -252,9 +252,16 @@ namespace gradcontact::fem
   /// Validates the discretisation, then the material for the formulation it resolves to (which it returns).
   Formulation checked_formulation(const Material &material, const DiscretizationParameters &discretization);
 
-  /// The element of the axisymmetric (mode 0) model: (u_r, u_z) in FE_Q(p), plus q in FE_Q(p - 1) for the
-  /// mixed formulation (Taylor-Hood).
-  dealii::FESystem<2> axisymmetric_element(unsigned int degree, Formulation formulation);
+  /// The element of the models whose displacement has `dim` components (the axisymmetric (u_r, u_z), the
+  /// Cartesian 3D (u_x, u_y, u_z)): u in FE_Q(p)^dim, plus q in FE_Q(p - 1) for the mixed formulation (Taylor-Hood).
+  template <int dim>
+  dealii::FESystem<dim> displacement_pressure_element(unsigned int degree, Formulation formulation);
+
+  /// The element of the axisymmetric (mode 0) model.
+  inline dealii::FESystem<2> axisymmetric_element(const unsigned int degree, const Formulation formulation)
+  {
+    return displacement_pressure_element<2>(degree, formulation);
+  }
 
   /// The homogeneous constraints every load of the axisymmetric model shares, added to `constraints`
   /// (which the caller has cleared, and reinit'ed on the relevant DoFs in parallel) and closed:

@@ -37,6 +37,15 @@ namespace gradcontact::fem
     {
       return (prescribed[0] ? 1u : 0u) | (prescribed[1] ? 2u : 0u) | (prescribed[2] ? 4u : 0u);
     }
+
+    /// CG cannot solve the mixed formulation's saddle point (indefinite); MUMPS' LU can.
+    void require_direct_when_mixed(const DistributedSolverParameters &solver, const Formulation formulation)
+    {
+      if (formulation == Formulation::mixed && solver.method != DistributedSolverParameters::Method::direct)
+        throw std::invalid_argument("HalfSpace3DSolver: DistributedSolverParameters::method = amg_cg with the mixed "
+                                    "formulation (an indefinite saddle point, which CG cannot solve); use method = "
+                                    "direct");
+    }
   } // namespace
 
 
@@ -59,15 +68,13 @@ namespace gradcontact::fem
                                        const DiscretizationParameters &discretization_,
                                        const DistributedSolverParameters &solver_)
     : communicator(require_mpi(communicator_, "HalfSpace3DSolver"))
-    , material((material_.validate(), material_))
+    , material(material_)
     , mesh_parameters((mesh_.validate(), mesh_))
-    , discretization((discretization_.validate(),
-                      require_displacement_formulation(discretization_, material_.nu, "HalfSpace3DSolver"),
-                      require_clamped_far_field(discretization_, "HalfSpace3DSolver"),
-                      discretization_))
-    , solver_parameters((solver_.validate(), solver_))
+    , formulation(checked_formulation(material_, discretization_))
+    , discretization((require_clamped_far_field(discretization_, "HalfSpace3DSolver"), discretization_))
+    , solver_parameters((solver_.validate(), require_direct_when_mixed(solver_, formulation), solver_))
     , triangulation(communicator)
-    , fe(FE_Q<3>(discretization_.degree), 3)
+    , fe(displacement_pressure_element<3>(discretization_.degree, formulation))
     , dof_handler(triangulation)
     , mapping(discretization_.degree)
   {
@@ -83,10 +90,13 @@ namespace gradcontact::fem
     constraints.clear();
     constraints.reinit(relevant);
     DoFTools::make_hanging_node_constraints(dof_handler, constraints);
+    // (the mixed formulation's pressure, the last component, is free on every boundary)
+    const FEValuesExtractors::Vector displacement(0);
     VectorTools::interpolate_boundary_values(mapping, dof_handler, boundary_id::far_field,
-                                             Functions::ZeroFunction<3>(3), constraints);
+                                             Functions::ZeroFunction<3>(fe.n_components()), constraints,
+                                             fe.component_mask(displacement));
     VectorTools::interpolate_boundary_values(mapping, dof_handler, boundary_id::symmetry_plane,
-                                             Functions::ZeroFunction<3>(3), constraints,
+                                             Functions::ZeroFunction<3>(fe.n_components()), constraints,
                                              fe.component_mask(FEValuesExtractors::Scalar(1)));
     constraints.close();
 
@@ -101,8 +111,11 @@ namespace gradcontact::fem
             {
               cell->face(f)->get_dof_indices(face_dofs);
               for (unsigned int i = 0; i < face_dofs.size(); ++i)
-                if (!constraints.is_constrained(face_dofs[i]))
-                  found[fe.face_system_to_component_index(i, f).first].insert(face_dofs[i]);
+                {
+                  const unsigned int c = fe.face_system_to_component_index(i, f).first;
+                  if (c < 3 && !constraints.is_constrained(face_dofs[i]))
+                    found[c].insert(face_dofs[i]);
+                }
             }
     for (unsigned int c = 0; c < 3; ++c)
       contact_dofs[c].assign(found[c].begin(), found[c].end());
@@ -269,10 +282,12 @@ namespace gradcontact::fem
               cell->face(f)->get_dof_indices(face_dofs);
               for (unsigned int i = 0; i < face_dofs.size(); ++i)
                 {
+                  const unsigned int c = fe.face_system_to_component_index(i, f).first;
+                  if (c >= 3) // the mixed formulation's pressure: eliminated with the interior
+                    continue;
                   const Point<3> &x = support.at(face_dofs[i]);
                   if (std::hypot(x[0], x[1]) <= radius + tolerance)
-                    local.emplace_back(x[0], x[1], fe.face_system_to_component_index(i, f).first, face_dofs[i],
-                                       constraints.is_constrained(face_dofs[i]));
+                    local.emplace_back(x[0], x[1], c, face_dofs[i], constraints.is_constrained(face_dofs[i]));
                 }
             }
     std::vector<Entry> all;

@@ -11,6 +11,11 @@
 //   a(u, v) = \int [lambda div u div v + 2 mu eps(u) : eps(v)] dV,  lambda, mu from E(z) and nu,
 // with the cell integrals of fem/graded_elasticity.h (CartesianStrain: Gauss in the bulk, Gauss-Jacobi
 // across the cells on z = 0 where E ~ z^s). u = 0 on the far field (r = L and z = L).
+// With DiscretizationParameters::formulation = mixed (or automatic at nu >= 0.45) the element is Taylor-Hood,
+// (u, q) in FE_Q(p)^3 x FE_Q(p - 1), q = lambda div u, the same mixed blocks as the axisymmetric model
+// (fem/graded_elasticity.h): the only formulation that has nu = 1/2 (the incompressible, decoupled pairing of a
+// homogeneous body, k = 0). The saddle point needs the direct solver; the pressure is free on every boundary and
+// is eliminated with the interior in the surface compliance.
 //
 // Loads (FlatPunch3D): a rigid flat punch on the contact disc r <= a. Each displacement component is
 // either prescribed (u_c = value on the disc) or free (no traction in c on the disc), e.g.
@@ -84,7 +89,8 @@ namespace gradcontact::fem
   {
   public:
     /// Builds the distributed mesh, DoFs, the free constraints and the stiffness (collective). Throws
-    /// std::invalid_argument on bad input and std::runtime_error when MPI is not initialised.
+    /// std::invalid_argument on bad input (nu = 1/2 with the displacement formulation, amg_cg with the mixed one)
+    /// and std::runtime_error when MPI is not initialised.
     HalfSpace3DSolver(MPI_Comm communicator, const Material &material, const HalfSpaceMesh3DParameters &mesh,
                       const DiscretizationParameters &discretization,
                       const DistributedSolverParameters &solver = {});
@@ -120,6 +126,7 @@ namespace gradcontact::fem
     MPI_Comm                          communicator;
     const Material                    material;
     const HalfSpaceMesh3DParameters   mesh_parameters;
+    const Formulation                 formulation; ///< displacement or mixed (resolved)
     const DiscretizationParameters    discretization;
     const DistributedSolverParameters solver_parameters;
 

@@ -14,7 +14,8 @@
 // normal-tangential coupling, expect_coupling=X; cycle=1 with expect_closure=X; vtu=PREFIX: the surface state of every
 // step for ParaView, PREFIX-<i>.vtu and PREFIX.pvd; compare_friction=1: the normal loading with friction against the
 // axisymmetric frictional model, expect_friction=X). Punches: mossakovskii=1 (k = 0, load=all): the bonded punch's F_z
-// over the frictionless one against Mossakovskii's ratio, expect_bonded=X; coulomb_punch=1 (load=all): the same
+// over the frictionless one against Mossakovskii's ratio, expect_bonded=X; closed_form=1 (k = 0): the normal and
+// tangential punches against Boussinesq's and Mindlin's forces, expect_closed=X; coulomb_punch=1 (load=all): the same
 // punches through the Coulomb solver (mu = inf and 0), expect_coulomb_punch=X. serial=1 (with np > 1): process 0 also runs the 3D model on MPI_COMM_SELF, and the
 // program fails unless every force agrees within serial_tol relative. compare=1: process 0 runs the
 // axisymmetric model (normal punch: F_z) and the Fourier mode-1 model (tangential punch: F_x) on the
@@ -64,11 +65,13 @@ namespace
     return meridian;
   }
 
-  /// The meridian references' discretisation (degree 3: their error well below the 3D model's).
-  DiscretizationParameters meridian_discretization()
+  /// The meridian references' discretisation (degree 3: their error well below the 3D model's), in the 3D model's
+  /// formulation (the mixed one at nu = 1/2).
+  DiscretizationParameters meridian_discretization(const Formulation formulation)
   {
     DiscretizationParameters d;
-    d.degree = 3;
+    d.degree      = 3;
+    d.formulation = formulation;
     return d;
   }
 } // namespace
@@ -116,7 +119,7 @@ int main(int argc, char **argv)
               if (root)
                 {
                   const MeshParameters meridian = meridian_of(mesh, k);
-                  const DiscretizationParameters reference_disc = meridian_discretization();
+                  const DiscretizationParameters reference_disc = meridian_discretization(disc.formulation);
                   AxisymmetricSolver axisymmetric(material, meridian, reference_disc);
                   LoadCase           load;
                   load.type    = LoadType::indenter;
@@ -243,7 +246,7 @@ int main(int argc, char **argv)
               double reference[2] = {0, 0};
               if (root)
                 {
-                  const DiscretizationParameters reference_disc = meridian_discretization();
+                  const DiscretizationParameters reference_disc = meridian_discretization(disc.formulation);
                   UnilateralContactSolver axisymmetric(material, meridian_of(mesh, k), reference_disc, 1.3 * a);
                   UnilateralLoad load;
                   load.indenter             = Indenter::of(Profile::paraboloid(R), a);
@@ -311,12 +314,16 @@ int main(int argc, char **argv)
                         r.coupling_force_z, r.coupling_loading, r.coupling_branch, r.coupling_energy, r.coupling_stick,
                         r.decoupled.force_z_deviation, r.decoupled.loading_deviation, r.decoupled.branch_deviation,
                         r.decoupled.energy / r.energy_theory - 1);
-          // expect_coupling=X (a decoupled pairing): the FE model equals its decoupled self within X.
+          // expect_coupling=X (a decoupled pairing): the FE model equals its decoupled self within X. The stick radius
+          // moves by whole rings: a node on the stick-slip boundary that flips under the discrete body's residual
+          // coupling (the mixed element's at nu = 1/2 about 2e-5 of F_x) moves it by one ring (twice the bracket's
+          // half-width), which is below the zone's resolution; only a larger move counts.
+          const double stick_beyond_ring = r.coupling_stick - 2 * r.fe.stick_resolution; // NaN: not measured
           if (study.decoupled_reference)
             fails("expect_coupling",
                   worst_of({std::abs(r.coupling_force_z), r.coupling_loading, r.coupling_branch, std::abs(r.coupling_energy),
-                            r.coupling_stick}),
-                  "the coupling's largest effect");
+                            std::isnan(stick_beyond_ring) ? stick_beyond_ring : std::max(0.0, stick_beyond_ring)}),
+                  "the coupling's largest effect (the stick radius beyond one ring)");
           if (study.decoupled_reference && !r.decoupled.converged)
             {
               if (root)
@@ -427,7 +434,8 @@ int main(int argc, char **argv)
       if (num("mossakovskii", 0) != 0 && root)
         {
           const double ratio = results["bonded"].force[2] / results["normal"].force[2];
-          const double exact = (1 - nu) * std::log(3 - 4 * nu) / (1 - 2 * nu);
+          // (its limit at nu = 1/2 is 1: the incompressible body decouples, the bonded punch is the frictionless one)
+          const double exact = nu == 0.5 ? 1.0 : (1 - nu) * std::log(3 - 4 * nu) / (1 - 2 * nu);
           std::printf("mossakovskii: F_z bonded / frictionless %.10f, (1 - nu) ln(3 - 4 nu) / (1 - 2 nu) = %.10f, "
                       "relative difference %.3e\n",
                       ratio, exact, std::abs(ratio / exact - 1));
@@ -435,6 +443,34 @@ int main(int argc, char **argv)
           if (expect > 0 && !(std::abs(ratio / exact - 1) <= expect))
             {
               std::printf("FAILED: the bonded punch is more than %.1e off Mossakovskii's ratio\n", expect);
+              failed = 1;
+            }
+        }
+      // closed_form=1 (k = 0): the punches against the homogeneous half-space's closed forms, the normal punch
+      // F_z = 2 a E d / (1 - nu^2) (Boussinesq; the chapter's 9.16 at k = 0) and the tangential punch (u_x = delta,
+      // u_y = 0, u_z free) F_x = 8 G a delta / (2 - nu) = 4 E a delta / ((1 + nu)(2 - nu)) (Mindlin, J. Appl. Mech. 16
+      // (1949) 259-268: the traction F / (2 pi a sqrt(a^2 - r^2)) along x moves the disc rigidly in x and leaves no
+      // normal traction, so it is exact for this load at every nu). The body is truncated at L (u = 0 there), which
+      // stiffens it by O(a / L); expect_closed=X bounds the largest relative difference.
+      if (num("closed_form", 0) != 0 && k != 0)
+        throw std::invalid_argument("fem3d: closed_form=1 needs k = 0 (the homogeneous half-space)");
+      if (num("closed_form", 0) != 0 && root)
+        {
+          double worst = 0;
+          const auto check = [&](const char *what, const double fe3d, const double exact) {
+            const double difference = std::abs(fe3d / exact - 1);
+            worst                   = std::max(worst, difference);
+            std::printf("closed form %s: 3D %.12e exact %.12e relative difference %.3e\n", what, fe3d, exact, difference);
+          };
+          if (results.count("normal"))
+            check("normal punch F_z (Boussinesq)", results["normal"].force[2], 2 * a * E0 * d / (1 - nu * nu));
+          if (results.count("tangential"))
+            check("tangential punch F_x (Mindlin)", results["tangential"].force[0],
+                  4 * E0 * a * d / ((1 + nu) * (2 - nu)));
+          const double expect = num("expect_closed", 0);
+          if (expect > 0 && !(worst <= expect))
+            {
+              std::printf("FAILED: a punch is more than %.1e off its closed form\n", expect);
               failed = 1;
             }
         }
@@ -478,7 +514,7 @@ int main(int argc, char **argv)
             {
               // The meridian models of the same cylinder r <= L, z <= L.
               const MeshParameters meridian = meridian_of(mesh, k);
-              const DiscretizationParameters reference_disc = meridian_discretization();
+              const DiscretizationParameters reference_disc = meridian_discretization(disc.formulation);
               const double expect   = num("expect", 0);
               const auto   report   = [&](const char *what, const double fe3d, const double reference) {
                 const double difference = std::abs(fe3d / reference - 1);
@@ -498,7 +534,10 @@ int main(int argc, char **argv)
                   load.depth = d;
                   report("normal punch F_z", results["normal"].force[2], axisymmetric.run(load).force);
                 }
-              if (results.count("tangential"))
+              if (results.count("tangential") && resolve_formulation(disc, nu) == Formulation::mixed)
+                std::printf("compare tangential punch F_x: not compared (the Fourier mode-1 model has no mixed "
+                            "formulation; closed_form=1 checks it against Mindlin at k = 0)\n");
+              else if (results.count("tangential"))
                 {
                   FourierMode1Solver mode1(material, meridian, reference_disc);
                   report("tangential punch F_x", results["tangential"].force[0],
