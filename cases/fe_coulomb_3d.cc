@@ -1,6 +1,7 @@
 #include "fe_coulomb_3d.h"
 
 #include "fe_map.h"
+#include "fe_model.h"
 #include "fe_scene.h"
 #include "mpi_session.h"
 
@@ -363,7 +364,8 @@ namespace gradcontact::cases
     const auto        start  = std::chrono::steady_clock::now();
     SceneResult       result = started(s, folder);
 
-    // The panels: every k and nu, and Holl's ratio where it is a Poisson ratio below 1/2, each at every mu of
+    // The panels: every k and nu, and Holl's ratio where it is a Poisson ratio (k >= 0; 1/2 at k = 0, with the
+    // mixed formulation), each at every mu of
     // Map/ratios (Tangential/friction coefficient when empty); the mu of one body share its surface compliance.
     std::vector<CoulombPanel> panels;
     const std::vector<double> ks  = s.map.exponents.empty() ? std::vector<double>{s.material.k} : s.map.exponents;
@@ -375,7 +377,7 @@ namespace gradcontact::cases
       {
         for (const double nu : nus)
           bodies.emplace_back(k, nu);
-        if (s.map.holl_ratio && k > 0 && std::none_of(nus.begin(), nus.end(), [k](const double nu) {
+        if (s.map.holl_ratio && k >= 0 && std::none_of(nus.begin(), nus.end(), [k](const double nu) {
               return std::abs(nu - 1. / (2. + k)) <= 1e-12;
             }))
           bodies.emplace_back(k, 1. / (2. + k));
@@ -400,6 +402,8 @@ namespace gradcontact::cases
         c.mesh.inner_ring_width        = 0.025; // the stick-slip boundary resolved anywhere in the contact
         c.candidates                   = 1.15;
         c.discretization.degree        = s.discretization.degree;
+        // nu = 1/2 (Holl's ratio at k = 0) has only the mixed formulation; the others keep the scene's.
+        c.discretization.formulation = nu >= 0.5 ? fem::Formulation::mixed : fe_formulation(s);
         c.normal_steps = c.tangential_steps = s.tangential.load_steps;
         c.cycle               = true;
         c.decoupled_reference = true;

@@ -525,8 +525,8 @@ namespace gradcontact::cases
     prm.declare_entry("k values", "", Patterns::List(Patterns::Double(-1., 1.), 0, 20),
                       "The exponents k of the map, -1 < k < 1; empty: Material/k.");
     prm.declare_entry("nu values", "", Patterns::List(Patterns::Double(0., 0.5), 0, 20),
-                      "Friction coefficient map: the Poisson ratios, [0, 0.5) (0.5 with the mixed formulation); empty: "
-                      "Material/nu.");
+                      "Friction coefficient and Coulomb 3D maps: the Poisson ratios, [0, 0.5] (0.5 with the mixed "
+                      "formulation, which the Coulomb 3D map takes there by itself); empty: Material/nu.");
     prm.declare_entry("Holl ratio", "true", Patterns::Bool(),
                       "Friction coefficient map: also nu = 1/(2 + k) where it is <= 1/2 (the decoupled pairing: pressure "
                       "causes no radial displacement, so friction must change nothing; the map's sharp check).");
@@ -770,10 +770,6 @@ namespace gradcontact::cases
         if (s.tangential.holl_ratio)
           throw std::invalid_argument(where + "Map/parameter = Coulomb 3D: use Map/Holl ratio, not Tangential/Holl "
                                       "ratio (the map runs every nu of Map/nu values)");
-        for (const double nu : s.map.poisson_ratios)
-          if (!(nu < 0.5))
-            throw std::invalid_argument(where + "Map/nu values: " + format(nu) + " must be below 0.5 for Map/parameter = "
-                                        "Coulomb 3D (the 3D model is displacement-only)");
         if (!(s.load.a > 0.) || !(s.load.R > s.load.a))
           throw std::invalid_argument(where + "Map/parameter = Coulomb 3D needs 0 < Load/a < Load/R (Load/a = " +
                                       format(s.load.a) + ", Load/R = " + format(s.load.R) + ")");
