@@ -161,7 +161,8 @@ namespace gradcontact::fem
     if (A.m() > static_cast<types::global_dof_index>(std::numeric_limits<MUMPS_INT>::max()))
       throw std::invalid_argument("inverse_on_rows: " + std::to_string(A.m()) + " rows exceed MUMPS' 32-bit indices");
 
-    // The locally owned rows' entries (1-based, MUMPS' convention), gathered on process 0.
+    // The locally owned rows' entries (1-based, MUMPS' convention), each process its own: MUMPS' distributed
+    // assembled input (ICNTL(18) = 3), so no process holds the whole matrix.
     std::vector<MUMPS_INT> irn, jcn;
     std::vector<double>    values;
     // (Epetra's row views: deal.II's row iterator clears a cache of the matrix's width for every row.)
@@ -182,19 +183,6 @@ namespace gradcontact::fem
               values.push_back(entries[j]);
             }
       }
-    const std::vector<std::vector<MUMPS_INT>> all_irn = Utilities::MPI::gather(communicator, irn, 0),
-                                              all_jcn = Utilities::MPI::gather(communicator, jcn, 0);
-    const std::vector<std::vector<double>>    all_values = Utilities::MPI::gather(communicator, values, 0);
-    irn.clear();
-    jcn.clear();
-    values.clear();
-    if (root)
-      for (unsigned int p = 0; p < all_irn.size(); ++p)
-        {
-          irn.insert(irn.end(), all_irn[p].begin(), all_irn[p].end());
-          jcn.insert(jcn.end(), all_jcn[p].begin(), all_jcn[p].end());
-          values.insert(values.end(), all_values[p].begin(), all_values[p].end());
-        }
 
     std::vector<MUMPS_INT> schur_rows(m);
     for (unsigned int k = 0; k < m; ++k)
@@ -224,15 +212,15 @@ namespace gradcontact::fem
     id.icntl[2]  = -1;
     id.icntl[3]  = 0;
     id.icntl[4]  = 0;  // assembled matrix
-    id.icntl[17] = 0;  // ICNTL(18): centralised on the host
+    id.icntl[17] = 3;  // ICNTL(18): distributed, pattern and entries given at the analysis by every process
     id.icntl[18] = 1;  // ICNTL(19): the Schur complement, centralised on the host
+    id.n       = static_cast<MUMPS_INT>(A.m());
+    id.nnz_loc = static_cast<MUMPS_INT8>(values.size());
+    id.irn_loc = irn.data();
+    id.jcn_loc = jcn.data();
+    id.a_loc   = values.data();
     if (root)
       {
-        id.n             = static_cast<MUMPS_INT>(A.m());
-        id.nnz           = static_cast<MUMPS_INT8>(values.size());
-        id.irn           = irn.data();
-        id.jcn           = jcn.data();
-        id.a             = values.data();
         id.size_schur    = static_cast<MUMPS_INT>(m);
         id.listvar_schur = schur_rows.data();
         id.schur         = schur.data();

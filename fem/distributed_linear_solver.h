@@ -87,8 +87,9 @@ namespace gradcontact::fem
   /// The block of A^{-1} on the unknowns `rows` (global indices, the same list on every process), on every process:
   /// result(k, l) = (A^{-1})_{rows[k], rows[l]}. A^{-1} restricted to them is the inverse of the Schur complement
   /// S = A_rr - A_ro A_oo^{-1} A_or, which MUMPS forms while it factorises A_oo (ICNTL(19), MUMPS users' guide
-  /// 5.5, section 5.14), so the block costs one factorisation instead of a solve per row. The matrix is gathered
-  /// on process 0 (MUMPS' centralised input); every process of A's communicator takes part in the factorisation.
+  /// 5.5, section 5.14), so the block costs one factorisation instead of a solve per row. Every process hands MUMPS
+  /// its own rows (distributed assembled input, ICNTL(18) = 3) and takes part in the factorisation; the block comes
+  /// back on process 0 and is broadcast.
   /// Throws std::runtime_error with MUMPS' error code when it fails, std::invalid_argument for an empty or repeated
   /// row. A must be symmetric positive definite on `rows` (S is inverted by Cholesky).
   dealii::FullMatrix<double> inverse_on_rows(const dealii::TrilinosWrappers::SparseMatrix &A,
