@@ -53,6 +53,9 @@ namespace gradcontact::cases
     bool         cycle            = false; ///< unloading to -delta_A and reloading to delta_A
     /// Also run the path without the normal-tangential coupling (fem::without_coupling) and compare.
     bool         decoupled_reference = false;
+    /// Also run the path of the chapter's idealisation on the same discrete body: decoupled and with every
+    /// tangential force along x (fem::without_coupling of fem::along_load, Cattaneo-Mindlin's assumption), and compare.
+    bool         idealised_reference = false;
 
     /// Throws std::invalid_argument naming the member, its value and the valid range.
     void validate() const;
@@ -61,7 +64,7 @@ namespace gradcontact::cases
   struct CoulombSphereStep
   {
     std::string         phase; ///< normal, loading, unloading, reloading
-    bool                decoupled = false; ///< a step of the path without the coupling
+    std::string         reference; ///< empty: a step of the FE model; else the reference path's ("decoupled", "idealised")
     fem::CoulombState3D state; ///< stored without the per-node vectors
     fem::ZoneShape3D    shape;
     double theory_force_x = std::numeric_limits<double>::quiet_NaN(); ///< 9.80 or 9.84 at delta
@@ -110,6 +113,13 @@ namespace gradcontact::cases
     double coupling_branch  = nan; ///< max |F_x - F_x(decoupled)| / F_x(decoupled, delta_A) over the branches
     double coupling_energy  = nan; ///< loop area / decoupled loop area - 1
     double coupling_stick   = nan; ///< max over tangential steps and rays |c_ray - c_ray(decoupled)| / a(d)
+    /// With idealised_reference: the path on fem::without_coupling(fem::along_load(C)) against the chapter (at a
+    /// decoupled pairing, the FE's discretisation and truncation alone), and the decoupled path against it: the
+    /// effect of the slip direction that Cattaneo-Mindlin fixes along x (needs decoupled_reference).
+    CoulombPath idealised;
+    double direction_loading = nan; ///< max |F_x(decoupled) / F_x(idealised) - 1| over the loading steps
+    double direction_branch  = nan; ///< max |F_x(decoupled) - F_x(idealised)| / F_x(idealised, delta_A), branches
+    double direction_energy  = nan; ///< decoupled loop area / idealised loop area - 1
   };
 
   /// The surface compliance of a case's body (k, nu, mesh, candidates): what the paths of every friction

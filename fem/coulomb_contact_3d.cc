@@ -335,6 +335,33 @@ namespace gradcontact::fem
 
 
 
+  SurfaceCompliance3D along_load(const SurfaceCompliance3D &surface)
+  {
+    SurfaceCompliance3D restricted;
+    restricted.nodes = surface.nodes;
+    restricted.area  = surface.area;
+    std::vector<int> kept; // the unknowns of `surface` that stay, in their order
+    std::vector<int> renumbered(surface.C.m(), -1);
+    for (const auto &k : surface.unknown)
+      for (const unsigned int c : {0u, 2u})
+        renumbered[k[c]] = 0;
+    for (unsigned int l = 0; l < surface.C.m(); ++l)
+      if (renumbered[l] == 0)
+        {
+          renumbered[l] = kept.size();
+          kept.push_back(l);
+        }
+    for (const auto &k : surface.unknown)
+      restricted.unknown.push_back({{renumbered[k[0]], -1, renumbered[k[2]]}});
+    restricted.C.reinit(kept.size(), kept.size());
+    for (unsigned int i = 0; i < kept.size(); ++i)
+      for (unsigned int j = 0; j < kept.size(); ++j)
+        restricted.C(i, j) = surface.C(kept[i], kept[j]);
+    return restricted;
+  }
+
+
+
   ZoneShape3D zone_shape(const SurfaceCompliance3D &surface, const CoulombState3D &state)
   {
     const unsigned int n = surface.nodes.size();
@@ -415,11 +442,15 @@ namespace gradcontact::fem
       throw std::invalid_argument("write_surface_vtu: the state has " + std::to_string(state.status.size()) +
                                   " nodes, the surface " + std::to_string(n));
     // The half body and its mirror image (the nodes on y = 0 once).
+    // (by the coordinate: a compliance along_load has no y unknown anywhere)
+    double largest = 0;
+    for (const Point<2> &x : surface.nodes)
+      largest = std::max(largest, x.norm());
     std::vector<std::pair<unsigned int, double>> points; // (node, sign of y)
     for (unsigned int i = 0; i < n; ++i)
       {
         points.emplace_back(i, 1.0);
-        if (surface.unknown[i][1] >= 0) // off the symmetry plane
+        if (surface.nodes[i][1] > 1e-9 * largest) // off the symmetry plane
           points.emplace_back(i, -1.0);
       }
     std::ofstream out(filename);

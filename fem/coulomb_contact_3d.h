@@ -139,6 +139,16 @@ namespace gradcontact::fem
   /// that the difference from it is the coupling's effect alone.
   SurfaceCompliance3D without_coupling(const SurfaceCompliance3D &surface);
 
+  /// The surface compliance without the y force unknowns: every node's tangential force is along x (Q_y = 0) and
+  /// only its x displacement sticks, as on the symmetry plane. With a load in x this is Cattaneo-Mindlin's
+  /// assumption (Mindlin, J. Appl. Mech. 16 (1949) 259-268): the tangential traction everywhere parallel to the
+  /// load. In the half-space their traction q_x = mu p(a) - mu p(c) gives a rigid u_x and u_y = 0 inside c, so it
+  /// solves the contact problem restricted to Q_y = 0 exactly, and with without_coupling at a decoupled pairing the
+  /// FE model restricted so converges to 9.80-9.86; what it does not satisfy is Coulomb's slip direction in the
+  /// annulus (the slip there has a y part). The free-direction model against this one is that approximation's
+  /// effect.
+  SurfaceCompliance3D along_load(const SurfaceCompliance3D &surface);
+
   /// Writes the surface state to `filename` (VTK XML unstructured grid, one vertex per node, the half body
   /// mirrored to the whole disc by y -> -y) for ParaView: point data status (0 separated, 1 stick, 2 slip), the
   /// nodal forces Q (Q_x, Q_y, P), the mean tractions Q / area (shear) and P / area (pressure), u and this step's

@@ -11,7 +11,8 @@
 // 9.24, 9.80, 9.81, 9.84, 9.86; a decoupled pairing at a large L), expect_theory=X (F_z and loading F_x),
 // expect_branch=X (/ F_A), expect_energy=X (loop area and friction work), expect_stick_zone=X (/ a, beyond the node
 // bracket), expect_round=X (the rays' spread beyond their brackets); decoupled=1: the same path without the
-// normal-tangential coupling, expect_coupling=X; cycle=1 with expect_closure=X; vtu=PREFIX: the surface state of every
+// normal-tangential coupling, expect_coupling=X; idealised=1 (with decoupled=1): also decoupled with every tangential
+// force along x (Cattaneo-Mindlin's assumption), expect_idealised=X; cycle=1 with expect_closure=X; vtu=PREFIX: the surface state of every
 // step for ParaView, PREFIX-<i>.vtu and PREFIX.pvd; compare_friction=1: the normal loading with friction against the
 // axisymmetric frictional model, expect_friction=X). Punches: mossakovskii=1 (k = 0, load=all): the bonded punch's F_z
 // over the frictionless one against Mossakovskii's ratio, expect_bonded=X; closed_form=1 (k = 0): the normal and
@@ -149,6 +150,7 @@ int main(int argc, char **argv)
           study.tangential_steps = args.count("tangential_steps", 10);
           study.cycle            = num("cycle", 0) != 0;
           study.decoupled_reference = num("decoupled", 0) != 0;
+          study.idealised_reference = num("idealised", 0) != 0;
           const double mu        = study.mu;
           // mu = 0 or tangential_steps = 0: the normal loading only (frictionless with mu = 0).
           study.delta = mu == 0 || study.tangential_steps == 0 ? 0.0 : num("delta", 1.0) * mu * d_max;
@@ -159,7 +161,7 @@ int main(int argc, char **argv)
           const auto print = [&](const gradcontact::cases::CoulombSphereStep &step, const SurfaceCompliance3D &C) {
             if (!root)
               return;
-            if (!vtu.empty() && !step.decoupled)
+            if (!vtu.empty() && step.reference.empty())
               {
                 vtu_files.push_back(vtu + "-" + std::to_string(vtu_files.size()) + ".vtu");
                 write_surface_vtu(C, step.state, vtu_files.back());
@@ -167,7 +169,7 @@ int main(int argc, char **argv)
             const CoulombState3D &st = step.state;
             std::printf("%s%s d/d_max=%.4f delta/(mu d)=%.4f Fz=%.10e Fx=%.10e contact=%u stick=%u slip=%u "
                         "iterations=%u%s%s",
-                        step.decoupled ? "decoupled " : "", step.phase.c_str(), st.depth / d_max, st.delta / (std::max(mu, 1e-300) * d_max), st.force_z,
+                        step.reference.empty() ? "" : (step.reference + " ").c_str(), step.phase.c_str(), st.depth / d_max, st.delta / (std::max(mu, 1e-300) * d_max), st.force_z,
                         st.force_x, st.n_contact, st.n_stick, st.n_slip, st.iterations,
                         st.converged ? "" : " NOT CONVERGED: ", st.message.c_str());
             const auto &x = step.shape.stick;
@@ -329,6 +331,31 @@ int main(int argc, char **argv)
               if (root)
                 std::printf("FAILED: decoupled path: %s\n", r.decoupled.message.c_str());
               failed = 1;
+            }
+          // idealised=1 (with decoupled=1): the path of the chapter's idealisation on the same body (decoupled, every
+          // tangential force along x: Cattaneo-Mindlin's assumption) against the chapter, expect_idealised=X (loading
+          // F_x, branches / F_A, loop area): at a decoupled pairing the FE's own error; and the decoupled path against it,
+          // the effect of the free slip direction.
+          if (study.idealised_reference)
+            {
+              const gradcontact::cases::CoulombPath &p = r.idealised;
+              if (root)
+                std::printf("idealised (decoupled, forces along x) against the chapter: F_z %.3e, loading F_x %.3e, branches "
+                            "%.3e (/ F_A), loop area %.3e, friction work %.3e; the free slip direction (decoupled against "
+                            "idealised): loading F_x %.3e, branches %.3e, loop area %.3e; sum |Q_y| / sum |Q| %.3e\n",
+                            p.force_z_deviation, p.loading_deviation, p.branch_deviation, p.energy / r.energy_theory - 1,
+                            p.friction_work / r.energy_theory - 1, r.direction_loading, r.direction_branch,
+                            r.direction_energy, r.decoupled.slip_force_y);
+              fails("expect_idealised",
+                    worst_of({std::abs(p.force_z_deviation), p.loading_deviation, p.branch_deviation,
+                              std::abs(p.energy / r.energy_theory - 1)}),
+                    "the idealised path's largest difference from the chapter");
+              if (!p.converged)
+                {
+                  if (root)
+                    std::printf("FAILED: idealised path: %s\n", p.message.c_str());
+                  failed = 1;
+                }
             }
           if (study.cycle && r.fe.converged)
             {

@@ -161,3 +161,57 @@ TEST_CASE("zone_shape shall refuse a state of another surface", "[fem]")
   state.nodal_force.assign(3, {{0, 0, 1}});
   CHECK_THROWS_WITH(zone_shape(surface, state), Catch::Contains("3 nodes") && Catch::Contains("109"));
 }
+
+TEST_CASE("The compliance along the load shall keep the x and z blocks and leave every node's force along x",
+          "[fem]")
+{
+  // A Winkler foundation whose nodes also move in y under a force in x and back (C_xy = C_yx = 0.5 c_t at each
+  // node off the symmetry plane): with the y forces free a sticking node needs Q_y != 0 to keep u_y = 0; along the
+  // load (Cattaneo-Mindlin's assumption) Q_y = 0, only u_x sticks, and each node is again the spring c_t with its
+  // slider: Q_x = min(delta / c_t, mu P).
+  const double        ct = 2.0, cn = 1.0, mu = 0.3, R = 10.0, d = 0.055;
+  SurfaceCompliance3D s = winkler(ct, cn);
+  for (const auto &u : s.unknown)
+    if (u[1] >= 0)
+      s.C(u[0], u[1]) = s.C(u[1], u[0]) = 0.5 * ct;
+  const SurfaceCompliance3D x = along_load(s);
+  REQUIRE(x.nodes.size() == s.nodes.size());
+  REQUIRE(x.C.m() == 2 * s.nodes.size());
+  unsigned int same = 0;
+  for (unsigned int i = 0; i < s.nodes.size(); ++i)
+    {
+      CHECK(x.unknown[i][1] == -1);
+      for (unsigned int j = 0; j < s.nodes.size(); ++j)
+        for (const unsigned int a : {0u, 2u})
+          for (const unsigned int b : {0u, 2u})
+            same += x.C(x.unknown[i][a], x.unknown[j][b]) == s.C(s.unknown[i][a], s.unknown[j][b]);
+    }
+  CHECK(same == 4 * s.nodes.size() * s.nodes.size());
+
+  CoulombParameters parameters;
+  parameters.mu = mu;
+  const auto P  = [&](const dealii::Point<2> &p) { return std::max(0.0, d - p.norm_square() / (2 * R)) / cn; };
+  const double delta = 0.6 * mu * ct * P(dealii::Point<2>(0, 0));
+  double       Fx    = 0;
+  for (const auto &p : s.nodes)
+    Fx += 2 * std::min(delta / ct, mu * P(p));
+
+  CoulombContact3D along(x, Profile::paraboloid(R), parameters);
+  REQUIRE(along.step_depth(d, 0.0).converged);
+  const CoulombState3D loaded = along.step_depth(d, delta);
+  REQUIRE(loaded.converged);
+  CHECK_THAT(loaded.force_x, Catch::Matchers::WithinRel(Fx, 1e-12));
+  for (const auto &q : loaded.nodal_force)
+    CHECK(q[1] == 0);
+
+  // The same surface with the y forces free: the sticking nodes carry Q_y, and F_x is another.
+  CoulombContact3D free(s, Profile::paraboloid(R), parameters);
+  REQUIRE(free.step_depth(d, 0.0).converged);
+  const CoulombState3D coupled = free.step_depth(d, delta);
+  REQUIRE(coupled.converged);
+  double largest_y = 0;
+  for (const auto &q : coupled.nodal_force)
+    largest_y = std::max(largest_y, std::abs(q[1]));
+  CHECK(largest_y > 1e-3 * mu * P(dealii::Point<2>(0, 0)));
+  CHECK(std::abs(coupled.force_x / Fx - 1) > 1e-3);
+}
