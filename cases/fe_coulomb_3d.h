@@ -13,8 +13,10 @@
 //    tangential::dissipated_energy states it for a rigid sphere on one graded body), and the same rule on the
 //    closed-form loop, which measures the rule's own error.
 // The closed forms assume the decoupling of the normal and tangential problems (exact for k = 0 with nu = 1/2
-// and for Holl's ratio nu = 1/(2 + k)) and the half-space (the FE body is truncated at L): elsewhere the
-// differences are what friction's coupling does, the map's content (cases/validation/map_coulomb_3d_sphere.prm).
+// and for Holl's ratio nu = 1/(2 + k)), Cattaneo-Mindlin's tangential traction along the load (not exact: the
+// slip in the annulus has a y part; the idealised reference, fem::along_load, takes the assumption onto the FE body)
+// and the half-space (the FE body is truncated at L): elsewhere the differences are what friction's coupling does,
+// the map's content (cases/validation/map_coulomb_3d_sphere.prm).
 #ifndef GRADCONTACT_CASES_FE_COULOMB_3D_H
 #define GRADCONTACT_CASES_FE_COULOMB_3D_H
 
@@ -149,15 +151,17 @@ namespace gradcontact::cases
                      const std::function<void(const CoulombSphereStep &, const fem::SurfaceCompliance3D &)> &on_step = {});
 
   /// The map of Map/parameter = Coulomb 3D into `folder`: for every k of Map/k values and nu of Map/nu values (and
-  /// Holl's ratio nu = 1/(2 + k) for k > 0 with Map/Holl ratio) and every mu of Map/ratios (Tangential/friction
+  /// Holl's ratio nu = 1/(2 + k) for k >= 0 with Map/Holl ratio) and every mu of Map/ratios (Tangential/friction
   /// coefficient when empty; the mu of one body share its surface compliance), the case above with the sphere of Load/R, the mesh
   /// graded toward Load/a (4 sectors, h_edge = a/100, rings of at most a/40 inside the contact, candidate nodes
   /// within 1.15 a, L = Discretization/far field or 1000 a for k >= 0 and 1e5 a for k < 0), loaded to the chapter's depth of contact radius a, then to the chapter's delta_A of F_A =
   /// Tangential/amplitude mu F_N and one cycle, in Tangential/load steps, with the decoupled reference. The map
   /// (map.md, map.csv, map-<quantity>.png) is the coupling's effect (the FE model against its decoupled self);
-  /// the decoupled path against the chapter is the FE's floor. errors.csv: the sharp checks at Holl's ratio
-  /// (decoupled: the coupling vanishes, and the FE meets 9.24, 9.80, 9.84, 9.86 within Tolerances/force), and
-  /// a failed row for every path that did not converge.
+  /// the decoupled path against the chapter is the FE's floor, split into the idealised path (also along_load)
+  /// against the chapter and the decoupled path against the idealised one (the slip direction's effect).
+  /// errors.csv: the sharp checks at Holl's ratio (decoupled: the coupling vanishes, and the FE and its idealised
+  /// path meet 9.24, 9.80, 9.84, 9.86 within Tolerances/force), and a failed row for every path that did not
+  /// converge. Holl's ratio at k = 0 is nu = 1/2, run with the mixed formulation.
   SceneResult run_coulomb_map(const Scene &scene, const std::filesystem::path &folder, bool verbose);
 } // namespace gradcontact::cases
 
