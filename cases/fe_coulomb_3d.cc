@@ -665,6 +665,46 @@ namespace gradcontact::cases
             first = false;
           }
         md << "); a threshold below three times it is not read.\n";
+
+        // The other half of the chapter's idealisation: Cattaneo-Mindlin's slip along the load, on the decoupled body.
+        md << "\n## Cattaneo-Mindlin's slip direction |FE decoupled / FE idealised - 1|\n\nEven where the problems "
+              "decouple, 9.80-9.86 assume the tangential traction along the load; Coulomb's law turns it with the slip "
+              "in the annulus. The decoupled model against the same model with every tangential force along x "
+              "(fem::along_load) is that assumption's effect (a difference on one mesh, in which its FE error largely "
+              "cancels; its mesh convergence: fem/README.md, \"3D model\"). The "
+           << tuple << " of the map (Holl's ratio included) where it is within each threshold:\n\n"
+           << threshold_table_head({"quantity", "chapter"}, s.map.thresholds, "at");
+        struct DirectionQuantity
+        {
+          const char *name, *chapter;
+          double (*effect)(const CoulombSphereResult &);
+        };
+        const DirectionQuantity direction[] = {
+          {"tangential force", "F_x(delta) on loading (9.80)", [](const CoulombSphereResult &r) { return r.direction_loading; }},
+          {"hysteresis loop", "F_x(delta) on unloading and reloading (9.84), / F_A",
+           [](const CoulombSphereResult &r) { return r.direction_branch; }},
+          {"dissipated energy", "the loop area (9.86)", [](const CoulombSphereResult &r) { return r.direction_energy; }}};
+        for (const DirectionQuantity &q : direction)
+          {
+            md << "| " << q.name << " | " << q.chapter << " |";
+            for (const double t : s.map.thresholds)
+              {
+                std::string within, outside;
+                for (const CoulombPanel &p : panels)
+                  if (p.error.empty())
+                    {
+                      const std::string point = "(" + format(p.k) + ", " + format(p.nu) +
+                                                (multiple_mu ? ", " + format(p.mu) : "") + ")";
+                      std::string &list = std::abs(q.effect(p.result)) <= t ? within : outside;
+                      list += (list.empty() ? "" : ", ") + point;
+                    }
+                md << " " << (outside.empty() ? "every " + tuple + " of the map"
+                              : within.empty() ? "none of the map (" + outside + " outside)"
+                                               : within + "; not " + outside)
+                   << " |";
+              }
+            md << '\n';
+          }
         std::ofstream(folder / "map.md") << md.str();
         if (s.outputs.plots)
           {
