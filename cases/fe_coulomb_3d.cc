@@ -27,6 +27,20 @@
 
 namespace gradcontact::cases
 {
+  std::string to_string(const CoulombPathKind kind)
+  {
+    switch (kind)
+      {
+        case CoulombPathKind::decoupled:
+          return "decoupled";
+        case CoulombPathKind::idealised:
+          return "idealised";
+        case CoulombPathKind::fe:
+          break;
+      }
+    return "fe";
+  }
+
   void CoulombSphereCase::validate() const
   {
     const std::string where = "CoulombSphereCase";
@@ -128,7 +142,7 @@ namespace gradcontact::cases
     const auto on_branch = [&](const double u) { return std::clamp(u, -u_A, u_A); };
 
     // One loading path on the compliance `C`.
-    const auto run_path = [&](const fem::SurfaceCompliance3D &C, const std::string &reference) {
+    const auto run_path = [&](const fem::SurfaceCompliance3D &C, const CoulombPathKind kind) {
       CoulombPath            path;
       fem::CoulombParameters friction;
       friction.mu = c.mu_normal;
@@ -140,7 +154,7 @@ namespace gradcontact::cases
       const auto step = [&](const std::string &phase, const double d, const double delta, const Branch branch) {
         CoulombSphereStep s;
         s.phase     = phase;
-        s.reference = reference;
+        s.path      = kind;
         s.state = contact.step_depth(d, delta);
         s.shape = fem::zone_shape(C, s.state);
         // The work of friction in the step: mu P |s| of every slipping node (P constant and the slip one-way within
@@ -288,10 +302,10 @@ namespace gradcontact::cases
                 worse(*stick, std::abs(x[i].shape.stick[ray].radius() - y[i].shape.stick[ray].radius()) / a);
         }
     };
-    result.fe = run_path(surface, "");
+    result.fe = run_path(surface, CoulombPathKind::fe);
     if (c.decoupled_reference)
       {
-        result.decoupled = run_path(fem::without_coupling(surface), "decoupled");
+        result.decoupled = run_path(fem::without_coupling(surface), CoulombPathKind::decoupled);
         const std::vector<CoulombSphereStep> &x = result.fe.steps, &y = result.decoupled.steps;
         if (x.size() >= c.normal_steps && y.size() >= c.normal_steps)
           result.coupling_force_z =
@@ -301,7 +315,7 @@ namespace gradcontact::cases
       }
     if (c.idealised_reference)
       {
-        result.idealised = run_path(fem::without_coupling(fem::along_load(surface)), "idealised");
+        result.idealised = run_path(fem::without_coupling(fem::along_load(surface)), CoulombPathKind::idealised);
         against(result.decoupled, result.idealised, result.direction_loading, result.direction_branch, nullptr);
         result.direction_energy = result.decoupled.energy / result.idealised.energy - 1;
       }
@@ -360,6 +374,25 @@ namespace gradcontact::cases
          [](const CoulombSphereResult &r) { return r.decoupled.stick_deviation; },
          [](const CoulombSphereResult &r) { return r.fe.stick_deviation; }}};
       return q;
+    }
+
+    /// One cell of a threshold table: the panels (Holl's ratio with `with_holl`) whose |effect| is within t, and
+    /// those outside.
+    std::string threshold_cell(const std::vector<CoulombPanel> &panels, const double t,
+                               const std::function<double(const CoulombSphereResult &)> &effect, const bool with_holl,
+                               const bool multiple_mu, const std::string &tuple)
+    {
+      std::string within, outside;
+      for (const CoulombPanel &p : panels)
+        if (p.error.empty() && (with_holl || !p.holl))
+          {
+            std::string &list = std::abs(effect(p.result)) <= t ? within : outside;
+            list += (list.empty() ? "(" : ", (") + format(p.k) + ", " + format(p.nu) +
+                    (multiple_mu ? ", " + format(p.mu) : "") + ")";
+          }
+      return outside.empty() ? "every " + tuple + " of the map"
+             : within.empty() ? "none of the map (" + outside + " outside)"
+                              : within + "; not " + outside;
     }
 
     std::string panel_name(const CoulombPanel &p)
@@ -441,9 +474,13 @@ namespace gradcontact::cases
                   if (!surface)
                     surface = prepare_coulomb_sphere(world, c);
                   panel.result = run_coulomb_sphere(world, c, *surface);
-                  if (!panel.result.fe.converged || !panel.result.decoupled.converged)
-                    panel.error = !panel.result.fe.converged ? panel.result.fe.message
-                                                             : "decoupled path: " + panel.result.decoupled.message;
+                  const CoulombSphereResult &r = panel.result;
+                  if (!r.fe.converged)
+                    panel.error = r.fe.message;
+                  else if (!r.decoupled.converged)
+                    panel.error = "decoupled path: " + r.decoupled.message;
+                  else if (!r.idealised.converged)
+                    panel.error = "idealised path: " + r.idealised.message;
                 }
               catch (const std::exception &e)
                 {
@@ -560,7 +597,7 @@ namespace gradcontact::cases
         md << "## The coupling's effect |FE / FE decoupled - 1|\n\n| k | nu | mu |";
         for (const MapQuantity &q : map_quantities())
           md << " " << q.name << " |";
-        md << " FE floor: F_x (9.80), loop area (9.86) | of which the slip direction: F_x, loop area | stick zone "
+        md << " FE floor: F_x (9.80), loop area (9.86) | slip direction's effect: F_x, loop area | stick zone "
               "spread / a | slip direction sum|Q_y|/sum|Q| | DoFs | s | memory MiB |\n|---|---|---|";
         for (std::size_t i = 0; i < map_quantities().size() + 7; ++i)
           md << "---|";
@@ -639,21 +676,7 @@ namespace gradcontact::cases
                     md << " below the FE resolution (" << format(resolution[q.name]) << ") |";
                     continue;
                   }
-                std::vector<std::string> within, outside;
-                for (const CoulombPanel &p : panels)
-                  if (p.error.empty() && !p.holl)
-                    (std::abs(q.coupling(p.result)) <= t ? within : outside)
-                      .push_back("(" + format(p.k) + ", " + format(p.nu) + (multiple_mu ? ", " + format(p.mu) : "") + ")");
-                const auto join = [](const std::vector<std::string> &v) {
-                  std::string out;
-                  for (const std::string &x : v)
-                    out += (out.empty() ? "" : ", ") + x;
-                  return out;
-                };
-                md << " " << (outside.empty() ? "every " + tuple + " of the map"
-                              : within.empty() ? "none of the map (" + join(outside) + " outside)"
-                                               : join(within) + "; not " + join(outside))
-                   << " |";
+                md << " " << threshold_cell(panels, t, q.coupling, false, multiple_mu, tuple) << " |";
               }
             md << '\n';
           }
@@ -688,21 +711,7 @@ namespace gradcontact::cases
           {
             md << "| " << q.name << " | " << q.chapter << " |";
             for (const double t : s.map.thresholds)
-              {
-                std::string within, outside;
-                for (const CoulombPanel &p : panels)
-                  if (p.error.empty())
-                    {
-                      const std::string point = "(" + format(p.k) + ", " + format(p.nu) +
-                                                (multiple_mu ? ", " + format(p.mu) : "") + ")";
-                      std::string &list = std::abs(q.effect(p.result)) <= t ? within : outside;
-                      list += (list.empty() ? "" : ", ") + point;
-                    }
-                md << " " << (outside.empty() ? "every " + tuple + " of the map"
-                              : within.empty() ? "none of the map (" + outside + " outside)"
-                                               : within + "; not " + outside)
-                   << " |";
-              }
+              md << " " << threshold_cell(panels, t, q.effect, true, multiple_mu, tuple) << " |";
             md << '\n';
           }
         std::ofstream(folder / "map.md") << md.str();

@@ -63,10 +63,20 @@ namespace gradcontact::cases
     void validate() const;
   };
 
+  /// Which model a path runs on the same surface compliance.
+  enum class CoulombPathKind
+  {
+    fe,        ///< the FE model (coupled, free slip directions)
+    decoupled, ///< fem::without_coupling
+    idealised  ///< fem::without_coupling of fem::along_load (the chapter's assumptions)
+  };
+  /// "fe", "decoupled", "idealised".
+  std::string to_string(CoulombPathKind kind);
+
   struct CoulombSphereStep
   {
     std::string         phase; ///< normal, loading, unloading, reloading
-    std::string         reference; ///< empty: a step of the FE model; else the reference path's ("decoupled", "idealised")
+    CoulombPathKind     path = CoulombPathKind::fe; ///< the model of the path the step belongs to
     fem::CoulombState3D state; ///< stored without the per-node vectors
     fem::ZoneShape3D    shape;
     double theory_force_x = std::numeric_limits<double>::quiet_NaN(); ///< 9.80 or 9.84 at delta

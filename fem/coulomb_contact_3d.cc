@@ -342,9 +342,20 @@ namespace gradcontact::fem
     restricted.area  = surface.area;
     std::vector<int> kept; // the unknowns of `surface` that stay, in their order
     std::vector<int> renumbered(surface.C.m(), -1);
-    for (const auto &k : surface.unknown)
+    if (surface.unknown.size() != surface.nodes.size() || surface.C.m() != surface.C.n())
+      throw std::invalid_argument("along_load: the surface has " + std::to_string(surface.nodes.size()) + " nodes, " +
+                                  std::to_string(surface.unknown.size()) + " unknown triples and a " +
+                                  std::to_string(surface.C.m()) + " x " + std::to_string(surface.C.n()) + " compliance");
+    for (std::size_t i = 0; i < surface.unknown.size(); ++i)
       for (const unsigned int c : {0u, 2u})
-        renumbered[k[c]] = 0;
+        {
+          const int k = surface.unknown[i][c];
+          if (k < 0 || k >= static_cast<int>(surface.C.m()))
+            throw std::invalid_argument("along_load: node " + std::to_string(i) + ", component " + std::to_string(c) +
+                                        ": unknown " + std::to_string(k) + " outside [0, " +
+                                        std::to_string(surface.C.m()) + ")");
+          renumbered[k] = 0;
+        }
     for (unsigned int l = 0; l < surface.C.m(); ++l)
       if (renumbered[l] == 0)
         {

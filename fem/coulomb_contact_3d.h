@@ -49,7 +49,8 @@ namespace gradcontact::fem
   struct SurfaceCompliance3D
   {
     std::vector<dealii::Point<2>> nodes; ///< (x, y) on z = 0, y >= 0, physical units
-    /// index of component c of node i among the unknowns, or -1 (u_y on the symmetry plane)
+    /// index of component c of node i among the unknowns, or -1: u_y on the symmetry plane (and everywhere in a
+    /// compliance along_load), whose force Q_y is then zero and whose slip is along x
     std::vector<std::array<int, 3>> unknown;
     dealii::FullMatrix<double>      C;    ///< u_k = sum_l C(k, l) F_l over the unknowns
     std::vector<double>             area; ///< \int_{z=0} phi_i dA of each node's shape function (half body)

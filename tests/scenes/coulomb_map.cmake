@@ -3,7 +3,8 @@
 # Holl's ratio 0.4, the sharp checks of errors.csv), far field L = 30 a (truncation (a/L)^1.5 ~ 6e-3), 4 steps
 # per quarter cycle; every path converges, the sharp checks pass (Tolerances/force = 5e-2: the truncation at 30 a and 4 steps; the tight sharp check is
 # fem3d:coulomb_sphere_holl_pairing_equals_9.80_to_9.86), map.md reads the
-# coupling's effect, and the coupling at Holl's ratio (the map's resolution) is below 1e-4 in map.csv.
+# coupling's effect and Cattaneo-Mindlin's slip direction's, map.csv holds a number for the slip direction's effect and
+# the idealised floor at every point, and the coupling at Holl's ratio (the map's resolution) is below 1e-4 there.
 # Variables: GRADCONTACT (the executable), SCENE, REPORTS (a scratch folder).
 foreach(v GRADCONTACT SCENE REPORTS)
   if(NOT DEFINED ${v})
@@ -39,6 +40,16 @@ string(REPLACE "," ";" header "${header}")
 list(FIND header "holl" holl_column)
 list(FIND header "tangential_force_coupling" coupling_column)
 list(FIND header "error" error_column)
+# the slip direction's effect and the idealised floor: measured (finite) at every point
+set(measured_columns)
+foreach(name tangential_force_direction dissipated_energy_direction tangential_force_idealised_floor
+             dissipated_energy_idealised_floor)
+  list(FIND header "${name}" column)
+  if(column EQUAL -1)
+    message(FATAL_ERROR "map.csv has no column ${name}")
+  endif()
+  list(APPEND measured_columns ${column})
+endforeach()
 set(holl_rows 0)
 foreach(row IN LISTS rows)
   if(row MATCHES "^k,")
@@ -49,6 +60,12 @@ foreach(row IN LISTS rows)
   if(NOT error STREQUAL "\"\"")
     message(FATAL_ERROR "a map point failed: ${row}")
   endif()
+  foreach(column IN LISTS measured_columns)
+    list(GET fields ${column} value)
+    if(NOT value MATCHES "^-?[0-9]")
+      message(FATAL_ERROR "map.csv column ${column} is '${value}', not a number: ${row}")
+    endif()
+  endforeach()
   list(GET fields ${holl_column} holl)
   if(holl EQUAL 1)
     math(EXPR holl_rows "${holl_rows} + 1")
