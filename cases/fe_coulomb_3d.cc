@@ -729,6 +729,41 @@ namespace gradcontact::cases
                 write_plot(folder, stem, s.info.name + ": the coupling's effect on the " + name, "nu",
                            "|FE / FE decoupled - 1|", series, false, true);
               }
+            // The slip direction's effect over nu, Holl's ratio included (map-slip_direction-<quantity>.png).
+            for (const DirectionQuantity &q : direction)
+              {
+                std::map<std::pair<double, double>, std::vector<std::pair<double, double>>> points; // (k, mu): (nu, |effect|)
+                double lo = std::numeric_limits<double>::infinity(), hi = -lo;
+                for (const CoulombPanel &p : panels)
+                  if (p.error.empty())
+                    {
+                      points[{p.k, p.mu}].emplace_back(p.nu, std::max(std::abs(q.effect(p.result)), 1e-16));
+                      lo = std::min(lo, p.nu);
+                      hi = std::max(hi, p.nu);
+                    }
+                if (points.empty())
+                  continue;
+                std::vector<Series> series;
+                for (auto &[key, xy] : points)
+                  {
+                    std::sort(xy.begin(), xy.end());
+                    Series curve;
+                    curve.title       = "k = " + format(key.first) + (multiple_mu ? ", mu = " + format(key.second) : "");
+                    curve.linespoints = true;
+                    for (const auto &[x, y] : xy)
+                      {
+                        curve.x.push_back(x);
+                        curve.y.push_back(y);
+                      }
+                    series.push_back(curve);
+                  }
+                for (const double t : s.map.thresholds)
+                  series.push_back(Series{percent(t), {lo, hi}, {t, t}, false, false});
+                std::string stem = std::string("map-slip_direction-") + q.name;
+                std::replace(stem.begin(), stem.end(), ' ', '_');
+                write_plot(folder, stem, s.info.name + ": Cattaneo-Mindlin's slip direction, effect on the " + q.name, "nu",
+                           "|FE decoupled / FE idealised - 1|", series, false, true);
+              }
           }
       }
     result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

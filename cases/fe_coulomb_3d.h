@@ -168,7 +168,8 @@ namespace gradcontact::cases
   /// Tangential/amplitude mu F_N and one cycle, in Tangential/load steps, with the decoupled reference. The map
   /// (map.md, map.csv, map-<quantity>.png) is the coupling's effect (the FE model against its decoupled self);
   /// the decoupled path against the chapter is the FE's floor, split into the idealised path (also along_load)
-  /// against the chapter and the decoupled path against the idealised one (the slip direction's effect).
+  /// against the chapter and the decoupled path against the idealised one (the slip direction's effect, its own
+  /// threshold table and map-slip_direction-<quantity>.png).
   /// errors.csv: the sharp checks at Holl's ratio (decoupled: the coupling vanishes, and the FE and its idealised
   /// path meet 9.24, 9.80, 9.84, 9.86 within Tolerances/force), and a failed row for every path that did not
   /// converge. Holl's ratio at k = 0 is nu = 1/2, run with the mixed formulation.
