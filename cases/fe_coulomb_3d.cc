@@ -341,13 +341,16 @@ namespace gradcontact::cases
     };
 
     /// A quantity of the map: its name, the coupling's effect, the FE floor (the decoupled path against the
-    /// chapter) and the FE model against the chapter, of a panel.
+    /// chapter) and the FE model against the chapter, of a panel; for the tangential quantities also the slip
+    /// direction's effect (decoupled against idealised) and the idealised path against the chapter (null otherwise).
     struct MapQuantity
     {
       std::string name, chapter;
       double (*coupling)(const CoulombSphereResult &);
       double (*floor)(const CoulombSphereResult &);
       double (*direct)(const CoulombSphereResult &);
+      double (*direction)(const CoulombSphereResult &) = nullptr;
+      double (*idealised)(const CoulombSphereResult &) = nullptr;
     };
 
     double energy_deviation(const CoulombPath &p, const CoulombSphereResult &r) { return p.energy / r.energy_theory - 1; }
@@ -361,14 +364,20 @@ namespace gradcontact::cases
          [](const CoulombSphereResult &r) { return r.fe.force_z_deviation; }},
         {"tangential force", "F_x(delta) on loading (9.80)", [](const CoulombSphereResult &r) { return r.coupling_loading; },
          [](const CoulombSphereResult &r) { return r.decoupled.loading_deviation; },
-         [](const CoulombSphereResult &r) { return r.fe.loading_deviation; }},
+         [](const CoulombSphereResult &r) { return r.fe.loading_deviation; },
+         [](const CoulombSphereResult &r) { return r.direction_loading; },
+         [](const CoulombSphereResult &r) { return r.idealised.loading_deviation; }},
         {"hysteresis loop", "F_x(delta) on unloading and reloading (9.84), / F_A",
          [](const CoulombSphereResult &r) { return r.coupling_branch; },
          [](const CoulombSphereResult &r) { return r.decoupled.branch_deviation; },
-         [](const CoulombSphereResult &r) { return r.fe.branch_deviation; }},
+         [](const CoulombSphereResult &r) { return r.fe.branch_deviation; },
+         [](const CoulombSphereResult &r) { return r.direction_branch; },
+         [](const CoulombSphereResult &r) { return r.idealised.branch_deviation; }},
         {"dissipated energy", "the loop area (9.86)", [](const CoulombSphereResult &r) { return r.coupling_energy; },
          [](const CoulombSphereResult &r) { return energy_deviation(r.decoupled, r); },
-         [](const CoulombSphereResult &r) { return energy_deviation(r.fe, r); }},
+         [](const CoulombSphereResult &r) { return energy_deviation(r.fe, r); },
+         [](const CoulombSphereResult &r) { return r.direction_energy; },
+         [](const CoulombSphereResult &r) { return energy_deviation(r.idealised, r); }},
         {"stick radius", "c (9.80) and b (9.81) along +x, -x, +y, / a",
          [](const CoulombSphereResult &r) { return r.coupling_stick; },
          [](const CoulombSphereResult &r) { return r.decoupled.stick_deviation; },
@@ -393,6 +402,45 @@ namespace gradcontact::cases
       return outside.empty() ? "every " + tuple + " of the map"
              : within.empty() ? "none of the map (" + outside + " outside)"
                               : within + "; not " + outside;
+    }
+
+    /// The plot `stem` of |effect| over nu, one curve per (k, mu) (Holl's ratio with `with_holl`), the thresholds
+    /// drawn across the nu of the curves.
+    void write_nu_plot(const std::filesystem::path &folder, const std::string &stem, const std::string &title,
+                       const std::string &ylabel, const std::vector<CoulombPanel> &panels,
+                       const std::function<double(const CoulombSphereResult &)> &effect, const bool with_holl,
+                       const bool multiple_mu, const std::vector<double> &thresholds)
+    {
+      std::map<std::pair<double, double>, std::vector<std::pair<double, double>>> points; // (k, mu): (nu, |effect|)
+      double lo = std::numeric_limits<double>::infinity(), hi = -lo;
+      for (const CoulombPanel &p : panels)
+        if (p.error.empty() && (with_holl || !p.holl))
+          {
+            points[{p.k, p.mu}].emplace_back(p.nu, std::max(std::abs(effect(p.result)), 1e-16));
+            lo = std::min(lo, p.nu);
+            hi = std::max(hi, p.nu);
+          }
+      if (points.empty())
+        return;
+      std::vector<Series> series;
+      for (auto &[key, xy] : points)
+        {
+          std::sort(xy.begin(), xy.end());
+          Series curve;
+          curve.title       = "k = " + format(key.first) + (multiple_mu ? ", mu = " + format(key.second) : "");
+          curve.linespoints = true;
+          for (const auto &[x, y] : xy)
+            {
+              curve.x.push_back(x);
+              curve.y.push_back(y);
+            }
+          series.push_back(curve);
+        }
+      for (const double t : thresholds)
+        series.push_back(Series{percent(t), {lo, hi}, {t, t}, false, false});
+      std::string file = stem;
+      std::replace(file.begin(), file.end(), ' ', '_');
+      write_plot(folder, file, title, "nu", ylabel, series, false, true);
     }
 
     std::string panel_name(const CoulombPanel &p)
@@ -565,9 +613,15 @@ namespace gradcontact::cases
             std::replace(n.begin(), n.end(), ' ', '_');
             csv << ',' << n << "_coupling," << n << "_floor," << n << "_fe";
           }
-        csv << ",tangential_force_direction,hysteresis_loop_direction,dissipated_energy_direction,"
-               "tangential_force_idealised_floor,hysteresis_loop_idealised_floor,dissipated_energy_idealised_floor,"
-               "stick_bracket_half_width,stick_spread,stick_spread_decoupled,slip_force_y,slip_force_y_decoupled,"
+        for (const char *suffix : {"_direction", "_idealised_floor"})
+          for (const MapQuantity &q : map_quantities())
+            if (q.direction)
+              {
+                std::string n = q.name;
+                std::replace(n.begin(), n.end(), ' ', '_');
+                csv << ',' << n << suffix;
+              }
+        csv << ",stick_bracket_half_width,stick_spread,stick_spread_decoupled,slip_force_y,slip_force_y_decoupled,"
                "closure,error\n";
         std::ostringstream md;
         md << "# " << s.info.name << ": where the chapter's tangential theory holds (3D Coulomb contact)\n\n"
@@ -602,8 +656,6 @@ namespace gradcontact::cases
         for (std::size_t i = 0; i < map_quantities().size() + 7; ++i)
           md << "---|";
         md << '\n';
-        std::map<std::string, std::vector<Series>> plots;
-        std::map<std::pair<double, double>, std::map<std::string, Series>> by_k; // per (k, mu): curves over nu
         for (const CoulombPanel &p : panels)
           {
             const CoulombSphereResult &r = p.result;
@@ -613,9 +665,12 @@ namespace gradcontact::cases
                 << r.fe.max_iterations << ',' << r.fe.normal_slip;
             for (const MapQuantity &q : map_quantities())
               csv << ',' << q.coupling(r) << ',' << q.floor(r) << ',' << q.direct(r);
-            csv << ',' << r.direction_loading << ',' << r.direction_branch << ',' << r.direction_energy << ','
-                << r.idealised.loading_deviation << ',' << r.idealised.branch_deviation << ','
-                << energy_deviation(r.idealised, r);
+            for (const MapQuantity &q : map_quantities())
+              if (q.direction)
+                csv << ',' << q.direction(r);
+            for (const MapQuantity &q : map_quantities())
+              if (q.idealised)
+                csv << ',' << q.idealised(r);
             csv << ',' << r.fe.stick_resolution << ',' << r.fe.out_of_round << ',' << r.decoupled.out_of_round << ','
                 << r.fe.slip_force_y << ',' << r.decoupled.slip_force_y << ',' << r.fe.closure << ',' << csv_quote(p.error)
                 << '\n';
@@ -638,15 +693,6 @@ namespace gradcontact::cases
                    << format(r.decoupled.slip_force_y) << " decoupled) |";
               }
             md << " " << r.dofs << " | " << format(r.seconds) << " | " << format(r.memory_mb) << " |\n";
-            if (p.error.empty() && !p.holl)
-              for (const MapQuantity &q : map_quantities())
-                {
-                  Series &curve = by_k[{p.k, p.mu}][q.name];
-                  curve.title       = "k = " + format(p.k) + (multiple_mu ? ", mu = " + format(p.mu) : "");
-                  curve.linespoints = true;
-                  curve.x.push_back(p.nu);
-                  curve.y.push_back(std::max(std::abs(q.coupling(r)), 1e-16));
-                }
           }
         md << "\nA stick-zone spread is the largest difference of the stick radius between the rays +x, -x and +y "
               "(a disc: 0, up to the node spacing there, "
@@ -697,74 +743,27 @@ namespace gradcontact::cases
               "cancels; its mesh convergence: fem/README.md, \"3D model\"). The "
            << tuple << " of the map (Holl's ratio included) where it is within each threshold:\n\n"
            << threshold_table_head({"quantity", "chapter"}, s.map.thresholds, "at");
-        struct DirectionQuantity
-        {
-          const char *name, *chapter;
-          double (*effect)(const CoulombSphereResult &);
-        };
-        const DirectionQuantity direction[] = {
-          {"tangential force", "F_x(delta) on loading (9.80)", [](const CoulombSphereResult &r) { return r.direction_loading; }},
-          {"hysteresis loop", "F_x(delta) on unloading and reloading (9.84), / F_A",
-           [](const CoulombSphereResult &r) { return r.direction_branch; }},
-          {"dissipated energy", "the loop area (9.86)", [](const CoulombSphereResult &r) { return r.direction_energy; }}};
-        for (const DirectionQuantity &q : direction)
-          {
-            md << "| " << q.name << " | " << q.chapter << " |";
-            for (const double t : s.map.thresholds)
-              md << " " << threshold_cell(panels, t, q.effect, true, multiple_mu, tuple) << " |";
-            md << '\n';
-          }
+        for (const MapQuantity &q : map_quantities())
+          if (q.direction)
+            {
+              md << "| " << q.name << " | " << q.chapter << " |";
+              for (const double t : s.map.thresholds)
+                md << " " << threshold_cell(panels, t, q.direction, true, multiple_mu, tuple) << " |";
+              md << '\n';
+            }
         std::ofstream(folder / "map.md") << md.str();
         if (s.outputs.plots)
-          {
-            for (const auto &[k, curves] : by_k)
-              for (const auto &[name, curve] : curves)
-                plots[name].push_back(curve);
-            for (auto &[name, series] : plots)
-              {
-                for (const double t : s.map.thresholds)
-                  series.push_back(Series{percent(t), {nus.front(), nus.back()}, {t, t}, false, false});
-                std::string stem = "map-" + name;
-                std::replace(stem.begin(), stem.end(), ' ', '_');
-                write_plot(folder, stem, s.info.name + ": the coupling's effect on the " + name, "nu",
-                           "|FE / FE decoupled - 1|", series, false, true);
-              }
-            // The slip direction's effect over nu, Holl's ratio included (map-slip_direction-<quantity>.png).
-            for (const DirectionQuantity &q : direction)
-              {
-                std::map<std::pair<double, double>, std::vector<std::pair<double, double>>> points; // (k, mu): (nu, |effect|)
-                double lo = std::numeric_limits<double>::infinity(), hi = -lo;
-                for (const CoulombPanel &p : panels)
-                  if (p.error.empty())
-                    {
-                      points[{p.k, p.mu}].emplace_back(p.nu, std::max(std::abs(q.effect(p.result)), 1e-16));
-                      lo = std::min(lo, p.nu);
-                      hi = std::max(hi, p.nu);
-                    }
-                if (points.empty())
-                  continue;
-                std::vector<Series> series;
-                for (auto &[key, xy] : points)
-                  {
-                    std::sort(xy.begin(), xy.end());
-                    Series curve;
-                    curve.title       = "k = " + format(key.first) + (multiple_mu ? ", mu = " + format(key.second) : "");
-                    curve.linespoints = true;
-                    for (const auto &[x, y] : xy)
-                      {
-                        curve.x.push_back(x);
-                        curve.y.push_back(y);
-                      }
-                    series.push_back(curve);
-                  }
-                for (const double t : s.map.thresholds)
-                  series.push_back(Series{percent(t), {lo, hi}, {t, t}, false, false});
-                std::string stem = std::string("map-slip_direction-") + q.name;
-                std::replace(stem.begin(), stem.end(), ' ', '_');
-                write_plot(folder, stem, s.info.name + ": Cattaneo-Mindlin's slip direction, effect on the " + q.name, "nu",
-                           "|FE decoupled / FE idealised - 1|", series, false, true);
-              }
-          }
+          for (const MapQuantity &q : map_quantities())
+            {
+              write_nu_plot(folder, "map-" + q.name, s.info.name + ": the coupling's effect on the " + q.name,
+                            "|FE / FE decoupled - 1|", panels, q.coupling, false, multiple_mu, s.map.thresholds);
+              // the slip direction's effect, Holl's ratio included
+              if (q.direction)
+                write_nu_plot(folder, "map-slip_direction-" + q.name,
+                              s.info.name + ": Cattaneo-Mindlin's slip direction, effect on the " + q.name,
+                              "|FE decoupled / FE idealised - 1|", panels, q.direction, true, multiple_mu,
+                              s.map.thresholds);
+            }
       }
     result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     return result;
