@@ -41,7 +41,7 @@ namespace
 } // namespace
 
 TEST_CASE("The normal reference of a paraboloid under force control shall be at the contact radius of that force",
-          "[cases]")
+          "[cases][quick]")
 {
   const Scene s = scene_with(with_material({"Load/type=paraboloid", "Load/R=0.01", "Load/control=force",
                                             "Load/force=0.02"}));
@@ -60,7 +60,7 @@ TEST_CASE("The normal reference of a paraboloid under force control shall be at 
   CHECK(closed.label() == "closed form");
 }
 
-TEST_CASE("The adhesive reference of a cone shall be the JKR power law n = 1", "[cases]")
+TEST_CASE("The adhesive reference of a cone shall be the JKR power law n = 1", "[cases][quick]")
 {
   const Scene s = scene_with(
     with_material({"Load/type=cone", "Load/tan theta=0.2", "Adhesion/work of adhesion=0.05"}));
@@ -77,7 +77,7 @@ TEST_CASE("The adhesive reference of a cone shall be the JKR power law n = 1", "
   CHECK_THROWS_WITH(closed.get("critical_force"), Contains("control: missing"));
 }
 
-TEST_CASE("The tangential reference shall carry the scene's sphere and friction to any case", "[cases]")
+TEST_CASE("The tangential reference shall carry the scene's sphere and friction to any case", "[cases][quick]")
 {
   const Scene s = scene_with(with_material({"Load/type=paraboloid", "Load/R=0.01", "Load/a=1e-4",
                                             "Tangential/friction coefficient=0.4"}));
@@ -103,7 +103,7 @@ TEST_CASE("The tangential reference shall carry the scene's sphere and friction 
 
 TEST_CASE("A reference for a scene whose modulus is not the power law shall say it uses the power-law "
           "idealisation",
-          "[cases]")
+          "[cases][quick]")
 {
   const AnalyticReference power(scene_with(with_material({"Load/type=flat punch"})), batch::Method::closed_form,
                                 AnalyticReference::Problem::normal);

@@ -17,7 +17,7 @@ using namespace gradcontact::cases;
 using Catch::Matchers::Contains;
 using Catch::Matchers::StartsWith;
 
-TEST_CASE("Every command shall print its own usage on --help and exit with 0", "[cases]")
+TEST_CASE("Every command shall print its own usage on --help and exit with 0", "[cases][quick]")
 {
   const std::vector<std::string> names = command_names();
   REQUIRE(names == std::vector<std::string>{"eval", "run", "sweep", "figures", "bench", "stress"});
@@ -39,7 +39,7 @@ TEST_CASE("Every command shall print its own usage on --help and exit with 0", "
   CHECK_THAT(out.str(), StartsWith("usage: gradcontact bench"));
 }
 
-TEST_CASE("The usage shall list every command, and an unknown command shall be an error naming it", "[cases]")
+TEST_CASE("The usage shall list every command, and an unknown command shall be an error naming it", "[cases][quick]")
 {
   std::ostringstream out;
   CHECK(command_line({"--help"}, out) == 0);
@@ -52,7 +52,7 @@ TEST_CASE("The usage shall list every command, and an unknown command shall be a
 
 TEST_CASE("The command line shall start MPI at once only under an MPI launcher, and refuse a distributed model "
           "without MPI by name",
-          "[cases]")
+          "[cases][quick]")
 {
   // The variables by which Open MPI, PMIx, MPICH/Hydra and Slurm's PMI mark the processes they start.
   const std::vector<std::string> launcher_variables{"OMPI_COMM_WORLD_SIZE", "PMIX_RANK", "PMI_RANK", "PMI_SIZE",

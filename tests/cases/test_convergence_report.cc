@@ -33,7 +33,7 @@ namespace
   constexpr double order_tolerance = 1e-12;
 } // namespace
 
-TEST_CASE("The observed order shall be the exponent of error ~ h^p over the last three levels", "[cases]")
+TEST_CASE("The observed order shall be the exponent of error ~ h^p over the last three levels", "[cases][quick]")
 {
   const double p = GENERATE(1., 2., 3.5);
   CAPTURE(p);
@@ -44,7 +44,7 @@ TEST_CASE("The observed order shall be the exponent of error ~ h^p over the last
   CHECK_THAT(observed_order(levels), WithinRel(p, order_tolerance));
 }
 
-TEST_CASE("Fewer than three levels with an error shall have no observed order", "[cases]")
+TEST_CASE("Fewer than three levels with an error shall have no observed order", "[cases][quick]")
 {
   CHECK(std::isnan(observed_order(levels_of_order(2., 2))));
   std::vector<Level> levels = levels_of_order(2., 3);
@@ -52,7 +52,7 @@ TEST_CASE("Fewer than three levels with an error shall have no observed order", 
   CHECK(std::isnan(observed_order(levels)));
 }
 
-TEST_CASE("The convergence report shall have one row per quantity and level, with its order", "[cases]")
+TEST_CASE("The convergence report shall have one row per quantity and level, with its order", "[cases][quick]")
 {
   const testing::TemporaryFolder folder("gradcontact-convergence");
   const std::vector<ConvergenceSeries> series = {{"force", 1., levels_of_order(2., 3)},

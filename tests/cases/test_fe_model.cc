@@ -23,7 +23,7 @@ namespace
   }
 } // namespace
 
-TEST_CASE("A layered-modulus scene shall get the surface mesh of exponent 0 and the far field of k", "[cases]")
+TEST_CASE("A layered-modulus scene shall get the surface mesh of exponent 0 and the far field of k", "[cases][quick]")
 {
   const double k = GENERATE(-0.5, 0.5);
   const Scene s = scene_with({"Material/modulus=layered", "Material/k=" + text(k)});
@@ -49,7 +49,7 @@ TEST_CASE("A layered-modulus scene shall get the surface mesh of exponent 0 and 
   CHECK(at_a.mesh.surface_layer_thickness == fem::recommended_settings(a, 0., tol).mesh.surface_layer_thickness);
 }
 
-TEST_CASE("A power-law scene shall get the mesh of its exponent k", "[cases]")
+TEST_CASE("A power-law scene shall get the mesh of its exponent k", "[cases][quick]")
 {
   const double k = GENERATE(-0.5, 0.5);
   const Scene s = scene_with({"Material/k=" + text(k)});
@@ -62,7 +62,7 @@ TEST_CASE("A power-law scene shall get the mesh of its exponent k", "[cases]")
   CHECK(model.settings.mesh.far_field_size == expected.far_field_size);
 }
 
-TEST_CASE("The FE model shall honour Discretization/far field, degree, formulation and the refinement level", "[cases]")
+TEST_CASE("The FE model shall honour Discretization/far field, degree, formulation and the refinement level", "[cases][quick]")
 {
   const Scene s = scene_with({"Discretization/far field=1e6", "Discretization/refinements=0,2",
                               "Discretization/degree=2", "Discretization/formulation=mixed"});
@@ -79,7 +79,7 @@ TEST_CASE("The FE model shall honour Discretization/far field, degree, formulati
         fem::recommended_settings(plain.load.a, plain.material.k, plain.discretization.force_tolerance).mesh.far_field_size);
 }
 
-TEST_CASE("The candidate's FE model shall keep Discretization/far field and the finest refinement", "[cases]")
+TEST_CASE("The candidate's FE model shall keep Discretization/far field and the finest refinement", "[cases][quick]")
 {
   const Scene s = scene_with({"Candidate/profile=r^2/(2*0.01)", "Candidate/force=1", "Discretization/far field=1e6",
                               "Discretization/refinements=0,2", "Material/modulus=layered"});
@@ -93,7 +93,7 @@ TEST_CASE("The candidate's FE model shall keep Discretization/far field and the 
         fem::recommended_settings(s.load.a, 0., s.discretization.force_tolerance).mesh.surface_layer_thickness);
 }
 
-TEST_CASE("The FE load shall follow Load/type and Load/control", "[cases]")
+TEST_CASE("The FE load shall follow Load/type and Load/control", "[cases][quick]")
 {
   CHECK(fe_model(scene_with({"Load/type=flat punch", "Load/depth=2e-6"}), 0).load.type == fem::LoadType::flat_punch);
   CHECK(fe_model(scene_with({"Load/type=flat punch", "Load/depth=2e-6"}), 0).load.depth == 2e-6);
@@ -106,7 +106,7 @@ TEST_CASE("The FE load shall follow Load/type and Load/control", "[cases]")
         fem::LoadType::indenter_depth);
 }
 
-TEST_CASE("Discretization/formulation shall reach the FE model", "[cases]")
+TEST_CASE("Discretization/formulation shall reach the FE model", "[cases][quick]")
 {
   const auto [name, formulation] =
     GENERATE(std::make_pair(std::string("displacement"), fem::Formulation::displacement),

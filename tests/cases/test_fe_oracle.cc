@@ -73,7 +73,7 @@ TEST_CASE("The FE oracle shall answer force, depth, pressure and displacement wi
 }
 
 TEST_CASE("The FE oracle shall refuse what it cannot answer, naming the entry, its value and the valid range",
-          "[cases]")
+          "[cases][quick]")
 {
   FeOracle oracle;
   const json good = paraboloid("force", 1e9, 1e-3, 0, 1e-4, 1e-2);
@@ -122,7 +122,7 @@ TEST_CASE("The FE oracle shall refuse what it cannot answer, naming the entry, i
   CHECK(oracle.states_solved() == 0); // every refusal before any solve
 }
 
-TEST_CASE("gradcontact eval shall answer FE and closed-form requests in order, with ids and errors", "[cases]")
+TEST_CASE("gradcontact eval shall answer FE and closed-form requests in order, with ids and errors", "[cases][quick]")
 {
   json fe = with_fe(paraboloid("force", 1e9, 1e-3, 0, 1e-4, 1e-2), 1e-5);
   fe["id"] = "fe";

@@ -20,7 +20,7 @@ namespace fs = std::filesystem;
 using testing::TemporaryFolder;
 
 TEST_CASE("gradcontact figures shall draw Fig. 9.14 and its k = 0 curve shall be the classical stretch factor",
-          "[cases]")
+          "[cases][quick]")
 {
   const TemporaryFolder reports("gradcontact-figure");
   REQUIRE(figures({"cases/figures/fig_9_14_stretch_factor.json", "--reports", reports.path().string()}) == 0);
@@ -124,7 +124,7 @@ namespace
   }
 } // namespace
 
-TEST_CASE("gradcontact figures shall pass points that lie on their closed form and tabulate each one", "[cases]")
+TEST_CASE("gradcontact figures shall pass points that lie on their closed form and tabulate each one", "[cases][quick]")
 {
   const TemporaryFolder folder("gradcontact-figure-check");
   const Checked c = draw_punch(folder, punch_figure(0.9, radii, exact_values()));
@@ -142,7 +142,7 @@ TEST_CASE("gradcontact figures shall pass points that lie on their closed form a
   CHECK(index.find("[punch.md](punch.md)") != std::string::npos);
 }
 
-TEST_CASE("gradcontact figures shall fail on a point beyond its tolerance", "[cases]")
+TEST_CASE("gradcontact figures shall fail on a point beyond its tolerance", "[cases][quick]")
 {
   const TemporaryFolder folder("gradcontact-figure-wrong");
   std::vector<double> y = exact_values();
@@ -156,7 +156,7 @@ TEST_CASE("gradcontact figures shall fail on a point beyond its tolerance", "[ca
   CHECK(c.rows[2][7] == "true");
 }
 
-TEST_CASE("gradcontact figures shall fail on a point outside the drawn range of its curve", "[cases]")
+TEST_CASE("gradcontact figures shall fail on a point outside the drawn range of its curve", "[cases][quick]")
 {
   const TemporaryFolder folder("gradcontact-figure-truncated");
   // the curve drawn to r = 0.6 a only: the exact point at r = 0.8 a has no curve under it
@@ -169,7 +169,7 @@ TEST_CASE("gradcontact figures shall fail on a point outside the drawn range of 
   CHECK(c.rows[2][8].find("outside the drawn range") != std::string::npos);
 }
 
-TEST_CASE("gradcontact figures shall refuse a check tolerance outside (0, 1), naming it", "[cases]")
+TEST_CASE("gradcontact figures shall refuse a check tolerance outside (0, 1), naming it", "[cases][quick]")
 {
   const TemporaryFolder folder("gradcontact-figure-tolerance");
   const fs::path file = folder.path() / "punch.json";
@@ -297,7 +297,7 @@ namespace
 // (No brackets in a test name: ctest's discovery reads them as a CMake bracket argument and merges the names.)
 TEST_CASE("gradcontact figures shall refuse an fe_adhesion pressure radius r/a outside 0 <= r/a < 1, naming the "
           "parameter, its value and the valid range",
-          "[cases]")
+          "[cases][quick]")
 {
   const TemporaryFolder folder("gradcontact-figure-adhesive-pressure");
   // (the bad radius as written, its position in the list)
@@ -316,7 +316,7 @@ TEST_CASE("gradcontact figures shall refuse an fe_adhesion pressure radius r/a o
 }
 
 TEST_CASE("gradcontact figures shall refuse an fe_adhesion pressure profile that is asked inconsistently",
-          "[cases]")
+          "[cases][quick]")
 {
   const TemporaryFolder folder("gradcontact-figure-adhesive-profile");
   SECTION("r and pressure without pressure_radii")

@@ -20,7 +20,7 @@ using namespace gradcontact::cases;
 namespace fs = std::filesystem;
 using testing::TemporaryFolder;
 
-TEST_CASE("The threshold of a map shall be where a power-law decay of the deviation crosses it", "[cases]")
+TEST_CASE("The threshold of a map shall be where a power-law decay of the deviation crosses it", "[cases][quick]")
 {
   // |deviation| = 0.3 (ratio)^-0.5 crosses 1e-2 at ratio (0.3/1e-2)^2 = 900, between 100 and 1000: the
   // log-log interpolation is exact for a power law.
@@ -47,7 +47,7 @@ TEST_CASE("The threshold of a map shall be where a power-law decay of the deviat
   CHECK_THROWS_WITH(threshold_ratio({1, 2}, {0.1}, 0.01), Catch::Contains("2 ratios and 1 deviations"));
 }
 
-TEST_CASE("A coating map shall read its threshold toward a/H -> 0", "[cases]")
+TEST_CASE("A coating map shall read its threshold toward a/H -> 0", "[cases][quick]")
 {
   // |deviation| = 0.3 (a/H)^0.5 (a coating is the power law as a/H -> 0): within 1e-2 when
   // a/H <= (1e-2 / 0.3)^2 = 1/900.
@@ -91,7 +91,7 @@ TEST_CASE("A map scene shall check the power law itself and write the map, its t
   CHECK(std::abs(force_deviation(thick)) < std::abs(force_deviation(thin)));
 }
 
-TEST_CASE("A map scene with a load it cannot map shall be an error naming the entries", "[cases]")
+TEST_CASE("A map scene with a load it cannot map shall be an error naming the entries", "[cases][quick]")
 {
   const TemporaryFolder folder("gradcontact-map-bad");
   const fs::path scene = folder.path() / "bad_map.prm";
@@ -101,7 +101,7 @@ TEST_CASE("A map scene with a load it cannot map shall be an error naming the en
                                                   Catch::Contains("constant pressure"));
 }
 
-TEST_CASE("An error-function scene shall name its entries, values and ranges when they are bad", "[cases]")
+TEST_CASE("An error-function scene shall name its entries, values and ranges when they are bad", "[cases][quick]")
 {
   using testing::scene_with;
   const std::vector<std::string> erf{"Material/modulus=error function", "Material/k=0", "Material/erf width=1e-5"};
@@ -123,7 +123,7 @@ TEST_CASE("An error-function scene shall name its entries, values and ranges whe
   CHECK(scene_with({"Map/parameter=erf width", "Map/ratios=1", "Material/k=0"}).kind == SceneKind::map);
 }
 
-TEST_CASE("The load-displacement exponent of a map shall be exact for power-law deviations", "[cases]")
+TEST_CASE("The load-displacement exponent of a map shall be exact for power-law deviations", "[cases][quick]")
 {
   // With 1 + dF = (a/w)^beta and 1 + da = (a/w)^gamma, ln d = n (1 - gamma) ln(a/w) + const and
   // ln F = (n + 1)/n ln d + beta ln(a/w): N = (n + 1)/n + beta / (n (1 - gamma)) on every interval.
@@ -213,7 +213,7 @@ TEST_CASE("An indenter-modulus map at k = 0 shall be Hertz's two elastic bodies"
     CHECK(errors[i][9] == "pass");
 }
 
-TEST_CASE("A friction map shall read its threshold toward mu -> 0 and read full stick on its own", "[cases]")
+TEST_CASE("A friction map shall read its threshold toward mu -> 0 and read full stick on its own", "[cases][quick]")
 {
   // |deviation| = 0.02 mu (the linear regime of full slip) crosses 1e-3 at mu = 0.05; full stick is read apart.
   const std::vector<double> mus{0.01, 0.1, 0.3, 1};
@@ -279,7 +279,7 @@ TEST_CASE("A friction map shall check the frictionless FE and Holl's ratio, and 
   CHECK(md.find("## The largest effect of friction") != std::string::npos);
 }
 
-TEST_CASE("The Tabor parameter of a graded medium shall be Maugis' at k = 0", "[cases]")
+TEST_CASE("The Tabor parameter of a graded medium shall be Maugis' at k = 0", "[cases][quick]")
 {
   // Maugis: lambda = sigma_0 (9 R / (2 pi dgamma E*^2))^{1/3}, from a path that knows nothing of the chapter's
   // Delta_l or its critical radius.
@@ -294,7 +294,7 @@ TEST_CASE("The Tabor parameter of a graded medium shall be Maugis' at k = 0", "[
   CHECK_THROWS_WITH(cohesive_strength(-1, m, gradcontact::Paraboloid{R}, dgamma), Catch::Contains("lambda = -1"));
 }
 
-TEST_CASE("The graded Maugis-Dugdale threshold shall be where Maugis' closed form leaves JKR at k = 0", "[cases]")
+TEST_CASE("The graded Maugis-Dugdale threshold shall be where Maugis' closed form leaves JKR at k = 0", "[cases][quick]")
 {
   // Reference: bisection in lambda on Maugis' dimensionless pull-off (analytic/maugis_dugdale.h, k = 0 closed form)
   // against JKR's -3/2 (force) and -5/6 (displacement; "no jump" counts as 100 %), written here.
@@ -325,7 +325,7 @@ TEST_CASE("The graded Maugis-Dugdale threshold shall be where Maugis' closed for
                     Catch::Contains("threshold = 0"));
 }
 
-TEST_CASE("A graded Maugis-Dugdale row shall read a jump that one side alone finds by its depth", "[cases]")
+TEST_CASE("A graded Maugis-Dugdale row shall read a jump that one side alone finds by its depth", "[cases][quick]")
 {
   // Where d(a) is flat as the contact vanishes (small lambda), the FE can find a minimum of d that the reference
   // does not (measured: the power-law tip n = 4 at k = 0, lambda = 0.3, 5.5e-5 from the vanishing depth): the row
@@ -400,7 +400,7 @@ TEST_CASE("A Tabor-parameter map shall check Maugis-Dugdale at k = 0 and write t
                     Catch::Contains("--map-shard '2/2'"));
 }
 
-TEST_CASE("A Coulomb 3D map shall read the shipped scene and name the entries it cannot take", "[cases]")
+TEST_CASE("A Coulomb 3D map shall read the shipped scene and name the entries it cannot take", "[cases][quick]")
 {
   const Scene shipped = read_scene("cases/validation/map_coulomb_3d_sphere.prm", {});
   CHECK(shipped.kind == SceneKind::map);

@@ -39,7 +39,7 @@ namespace
   }
 } // namespace
 
-TEST_CASE("The temporaries of finished processes shall be removed, those of running ones kept", "[cases]")
+TEST_CASE("The temporaries of finished processes shall be removed, those of running ones kept", "[cases][quick]")
 {
   const TemporaryFolder reports("gradcontact-reports");
   const fs::path killed = temporary_sibling(reports.path() / "scene_a", finished_process());
@@ -64,7 +64,7 @@ TEST_CASE("The temporaries of finished processes shall be removed, those of runn
   CHECK(fs::exists(hidden / "errors.csv"));
 }
 
-TEST_CASE("A temporary of another host shall be kept (a shared reports folder)", "[cases]")
+TEST_CASE("A temporary of another host shall be kept (a shared reports folder)", "[cases][quick]")
 {
   const TemporaryFolder reports("gradcontact-reports");
   const fs::path here = temporary_sibling(reports.path() / "scene", finished_process());
@@ -77,7 +77,7 @@ TEST_CASE("A temporary of another host shall be kept (a shared reports folder)",
   CHECK(fs::exists(other_host));
 }
 
-TEST_CASE("gradcontact run shall remove a killed run's temporary report folder", "[cases]")
+TEST_CASE("gradcontact run shall remove a killed run's temporary report folder", "[cases][quick]")
 {
   const TemporaryFolder folder("gradcontact-run");
   const fs::path reports = folder.path() / "reports";
@@ -93,7 +93,7 @@ TEST_CASE("gradcontact run shall remove a killed run's temporary report folder",
     CHECK(entry.path().filename().string().find(".tmp") == std::string::npos);
 }
 
-TEST_CASE("A failed writer shall leave neither a report nor a temporary", "[cases]")
+TEST_CASE("A failed writer shall leave neither a report nor a temporary", "[cases][quick]")
 {
   const TemporaryFolder reports("gradcontact-reports");
   const fs::path target = reports.path() / "scene";
@@ -106,7 +106,7 @@ TEST_CASE("A failed writer shall leave neither a report nor a temporary", "[case
   CHECK(fs::is_empty(reports.path()));
 }
 
-TEST_CASE("Runs that write the same report at once shall each succeed and leave one whole report", "[cases]")
+TEST_CASE("Runs that write the same report at once shall each succeed and leave one whole report", "[cases][quick]")
 {
   const TemporaryFolder reports("gradcontact-concurrent");
   const fs::path target = reports.path() / "scene";
@@ -160,7 +160,7 @@ TEST_CASE("Runs that write the same report at once shall each succeed and leave 
     CHECK(entry.path().filename() == "scene");
 }
 
-TEST_CASE("Two gradcontact runs of the same scene into one reports folder at once shall both pass", "[cases]")
+TEST_CASE("Two gradcontact runs of the same scene into one reports folder at once shall both pass", "[cases][quick]")
 {
   const TemporaryFolder folder("gradcontact-two-runs");
   const fs::path reports = folder.path() / "reports";

@@ -8,7 +8,7 @@ using namespace gradcontact::cases;
 using Catch::Matchers::Contains;
 using testing::scene_with;
 
-TEST_CASE("The scene kind shall follow the entries that are set", "[cases]")
+TEST_CASE("The scene kind shall follow the entries that are set", "[cases][quick]")
 {
   CHECK(scene_with({}).kind == SceneKind::normal);
   CHECK(scene_with({"References/fem=false"}).kind == SceneKind::analytic);
@@ -21,7 +21,7 @@ TEST_CASE("The scene kind shall follow the entries that are set", "[cases]")
   CHECK(scene_with({"Adhesion/tensile strength=1e6"}).kind == SceneKind::normal);
 }
 
-TEST_CASE("Adhesion shall take precedence over a candidate, and the FE switch shall not hide a candidate", "[cases]")
+TEST_CASE("Adhesion shall take precedence over a candidate, and the FE switch shall not hide a candidate", "[cases][quick]")
 {
   CHECK(scene_with({"Load/type=paraboloid", "Adhesion/work of adhesion=0.05", "Candidate/profile=r^2/0.02",
                     "Candidate/force=1"})
@@ -30,7 +30,7 @@ TEST_CASE("Adhesion shall take precedence over a candidate, and the FE switch sh
         SceneKind::candidate);
 }
 
-TEST_CASE("Contradicting entries shall be an error naming the file and the entries", "[cases]")
+TEST_CASE("Contradicting entries shall be an error naming the file and the entries", "[cases][quick]")
 {
   REQUIRE_THROWS_WITH(scene_with({"Tangential/study=stiffness", "Adhesion/work of adhesion=0.05"}),
                       Contains("defaults.prm") && Contains("Tangential/study is set and the scene is adhesive") &&

@@ -17,7 +17,7 @@ using Catch::Matchers::Contains;
 using testing::scene_with;
 using testing::TemporaryFolder;
 
-TEST_CASE("A unilateral candidate shall be a candidate scene, and its entries shall be checked together", "[cases]")
+TEST_CASE("A unilateral candidate shall be a candidate scene, and its entries shall be checked together", "[cases][quick]")
 {
   CHECK(scene_with({"Load/contact=unilateral", "Load/control=depth", "Candidate/profile=r^2/0.02",
                     "Candidate/force=1"})

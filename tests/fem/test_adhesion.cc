@@ -79,7 +79,7 @@ TEST_CASE("The fitting code: the energy release rate and the stiffness slope of 
   CHECK_THAT(G, WithinRel(1e-14 * st.stiffness_slope / (4 * pi * a), 1e-12));
 }
 
-TEST_CASE("The FE flat-punch pull-off force and depth agree with 9.51-9.52", "[fem]")
+TEST_CASE("The FE flat-punch pull-off force and depth agree with 9.51-9.52", "[fem][quick]")
 {
   const double    k = GENERATE(-0.5, 0.0, 0.5);
   const double    a = 1e-4;
@@ -124,7 +124,7 @@ TEST_CASE("The FE paraboloid pull-off reproduces 9.55-9.56 and, at k = 0, JKR", 
     }
 }
 
-TEST_CASE("The FE adhesion model rejects bad input with the parameter named", "[fem]")
+TEST_CASE("The FE adhesion model rejects bad input with the parameter named", "[fem][quick]")
 {
   AdhesiveContact sphere(power_law_material(0.), Profile::paraboloid(R), test_settings(0.));
   CHECK_THROWS_WITH(sphere.critical_state(0., AdhesionControl::force, 1e-4),

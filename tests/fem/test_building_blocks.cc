@@ -70,7 +70,7 @@ namespace
 
 
 TEST_CASE("The graded cell integrand shall give no energy to rigid modes and positive energy otherwise",
-          "[fem]")
+          "[fem][quick]")
 {
   // Cells away from the axis (r in [0.5, 1.5]), E = E0 (z/c0)^k; the faces on z = 0 carry the id
   // `contact`, so the surface cells use the Gauss-Jacobi rule for k != 0.
@@ -137,7 +137,7 @@ TEST_CASE("The graded cell integrand shall give no energy to rigid modes and pos
 
 
 TEST_CASE("The surface trace shall evaluate, integrate and recover polynomials of the face degree exactly",
-          "[fem]")
+          "[fem][quick]")
 {
   // Three quadratic faces on [0, 0.5], [0.5, 1.2], [1.2, 2] with their midpoints; DoF i of component 0
   // is node i (shared vertices share a DoF).
@@ -255,7 +255,7 @@ namespace
 
 
 TEST_CASE("The direct system shall factorise a positive definite matrix by Cholesky and an indefinite one by LU",
-          "[fem]")
+          "[fem][quick]")
 {
   // Laplace + s mass of FE_Q(2) on a 3 x 3 grid (49 DoFs: small enough for CHOLMOD's automatic choice to be the
   // simplicial LDL^T, which does not stop at negative pivots): s = 1 is positive definite, s = -30 indefinite (the
@@ -287,7 +287,7 @@ TEST_CASE("The direct system shall factorise a positive definite matrix by Chole
 
 
 TEST_CASE("The direct system shall impose prescribed values and agree with a dense solve of the reduced system",
-          "[fem]")
+          "[fem][quick]")
 {
   // A = Laplace + mass (SPD) of FE_Q(2) on a 3 x 3 grid, no constraints; P = the DoFs on x = 0.
   SmallSystem                  small(1.0);
@@ -350,7 +350,7 @@ TEST_CASE("The direct system shall impose prescribed values and agree with a den
   CHECK(v.l2_norm() > 0);
 }
 
-TEST_CASE("A damaged cached near-field mesh shall be detected and made again", "[fem]")
+TEST_CASE("A damaged cached near-field mesh shall be detected and made again", "[fem][quick]")
 {
   namespace fs = std::filesystem;
   const fs::path cache = fs::temp_directory_path() / ("gradcontact-cache-test-" + std::to_string(::getpid()));

@@ -147,7 +147,7 @@ TEST_CASE("cohesive zone on a graded medium tends to the chapter JKR at large la
   CHECK(deviation[1] < 0.05);
 }
 
-TEST_CASE("a cohesive zone thinner than the edge cells on the soft surface (k = 0.5) has the JKR force", "[fem]")
+TEST_CASE("a cohesive zone thinner than the edge cells on the soft surface (k = 0.5) has the JKR force", "[fem][quick]")
 {
   // The Tabor map's lambda = 10 (cases/fe_cohesive.h: C Delta_l(a_c) / h_0) at k = 0.5: c - a = 2.1e-5 a, about two
   // edge cells (h_edge = 1e-5 a). At a = a_c,JKR the force is the chapter's JKR force up to the finite range, which
@@ -220,7 +220,7 @@ TEST_CASE("cohesive zone on a graded medium tends to the rigid (DMT) pull-off at
   CHECK(deviation[1] < 0.02);
 }
 
-TEST_CASE("cohesive zone: bad input names the parameter", "[fem]")
+TEST_CASE("cohesive zone: bad input names the parameter", "[fem][quick]")
 {
   const auto settings = test_settings(0, 2);
   CHECK_THROWS_WITH(CohesiveContact(power_law_material(0), Profile::paraboloid(R), DugdaleLaw{0, dgamma}, settings),

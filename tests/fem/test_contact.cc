@@ -255,7 +255,7 @@ TEST_CASE("Depth and force control shall find the contact radius on one mesh and
     }
 }
 
-TEST_CASE("The VTU output shall hold one patch of (p+1)^2 points per cell", "[fem]")
+TEST_CASE("The VTU output shall hold one patch of (p+1)^2 points per cell", "[fem][quick]")
 {
   MeshParameters mesh = recommended_mesh_parameters(a, 0.0);
   mesh.h_edge         = 1e-2;
@@ -289,7 +289,7 @@ TEST_CASE("The VTU output shall hold one patch of (p+1)^2 points per cell", "[fe
 
 TEST_CASE("The layered modulus shall converge to the pointwise one with the observed order in the "
           "number of layers N",
-          "[verification]")
+          "[verification][quick]")
 {
   // k = 0.5 (E vanishes at the surface), N uniform layers over 0 <= z <= a with exact layer averages,
   // below a the pointwise field. The error is the layering error alone: layered minus pointwise force
@@ -331,7 +331,7 @@ TEST_CASE("Geometric layers shall converge to the pointwise modulus with the obs
 }
 
 TEST_CASE("LayeredModulus::geometric_to_depth shall end at the depth and reject a first layer too thick",
-          "[fem]")
+          "[fem][quick]")
 {
   // Requirement: the ratio solves t1 (q^N - 1)/(q - 1) = D (checked by summing the layers, an independent
   // path), N t1 = D gives uniform layers, and t1 > D/N is a clear error naming the parameter.
@@ -394,7 +394,7 @@ TEST_CASE("The convergence-study helper shall tabulate h and p refinement with f
 
 
 TEST_CASE("The contact sign check shall flag tensile zones, not the sign changes of single nodal forces",
-          "[fem]")
+          "[fem][quick]")
 {
   using gradcontact::fem::min_relative_contact_force;
   // Hand-made nodal forces, centre first; the expected values are worked out by hand from the rule in
@@ -413,7 +413,7 @@ TEST_CASE("The contact sign check shall flag tensile zones, not the sign changes
 
 
 TEST_CASE("A near-field mesh that gmsh collapses shall be refused with the parameters that caused it",
-          "[fem]")
+          "[fem][quick]")
 {
   // Measured: h_edge = 1e-6 with h_surface = 0.5 gives 12 zero-area cells at (a, 0); before the check
   // UMFPACK stopped on a singular matrix with deal.II's generic message.

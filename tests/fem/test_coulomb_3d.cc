@@ -55,7 +55,7 @@ namespace
   }
 } // namespace
 
-TEST_CASE("Coulomb contact on a Winkler foundation shall give every node its spring-and-slider answer", "[fem]")
+TEST_CASE("Coulomb contact on a Winkler foundation shall give every node its spring-and-slider answer", "[fem][quick]")
 {
   const double ct = 2.0, cn = 1.0, mu = 0.3, R = 10.0, d = 0.055; // contact for r^2 / 20 < d: r < 1.049
   const SurfaceCompliance3D surface = winkler(ct, cn);
@@ -130,7 +130,7 @@ TEST_CASE("Coulomb contact on a Winkler foundation shall give every node its spr
     }
 }
 
-TEST_CASE("The decoupled compliance shall keep the normal and tangential blocks and drop the rest", "[fem]")
+TEST_CASE("The decoupled compliance shall keep the normal and tangential blocks and drop the rest", "[fem][quick]")
 {
   SurfaceCompliance3D s = winkler(2.0, 1.0);
   const unsigned int  n = s.C.m();
@@ -153,7 +153,7 @@ TEST_CASE("The decoupled compliance shall keep the normal and tangential blocks 
   CHECK(dropped == 2 * normals * (n - normals));
 }
 
-TEST_CASE("zone_shape shall refuse a state of another surface", "[fem]")
+TEST_CASE("zone_shape shall refuse a state of another surface", "[fem][quick]")
 {
   const SurfaceCompliance3D surface = winkler(1.0, 1.0);
   CoulombState3D            state;
@@ -163,7 +163,7 @@ TEST_CASE("zone_shape shall refuse a state of another surface", "[fem]")
 }
 
 TEST_CASE("The compliance along the load shall keep the x and z blocks and leave every node's force along x",
-          "[fem]")
+          "[fem][quick]")
 {
   // A Winkler foundation whose nodes also move in y under a force in x and back (C_xy = C_yx = 0.5 c_t at each
   // node off the symmetry plane): with the y forces free a sticking node needs Q_y != 0 to keep u_y = 0; along the

@@ -122,7 +122,7 @@ TEST_CASE("With the condensed far field the flat punch reaches (9.16) with L = 1
   REQUIRE(std::abs(r0.force / F_ref - 1) > 1e3 * std::abs(r.force / F_ref - 1));
 }
 
-TEST_CASE("With the condensed far field depth control of the paraboloid reaches (9.26)", "[fem]")
+TEST_CASE("With the condensed far field depth control of the paraboloid reaches (9.26)", "[fem][quick]")
 {
   const double k = -0.5;
   Material     mat{std::make_shared<PowerLawModulus>(E0, c0, k), nu};
@@ -168,7 +168,7 @@ TEST_CASE("The mode-1 solver with the condensed far field gives the tangential p
                       Contains("far_field = condensed") && Contains("given triangulation"));
 }
 
-TEST_CASE("use_condensed_far_field applies to a power law of depth only", "[fem]")
+TEST_CASE("use_condensed_far_field applies to a power law of depth only", "[fem][quick]")
 {
   Settings st;
   st.mesh = recommended_mesh_parameters(a, -0.5, 1e-6);
@@ -199,7 +199,7 @@ TEST_CASE("use_condensed_far_field applies to a power law of depth only", "[fem]
 
 TEST_CASE("The condensed far field refuses too few rings, a modulus that is no power law there and the mixed "
           "formulation",
-          "[fem]")
+          "[fem][quick]")
 {
   MeshParameters mesh = recommended_mesh_parameters(a, 0.0, 1e-6);
   SECTION("one ring")

@@ -82,7 +82,7 @@ namespace
 
 
 
-TEST_CASE("The Gauss-Jacobi rule shall integrate x^s times polynomials of degree 2n-1 exactly", "[fem]")
+TEST_CASE("The Gauss-Jacobi rule shall integrate x^s times polynomials of degree 2n-1 exactly", "[fem][quick]")
 {
   const double       s = GENERATE(-0.5, 0.0, 0.5, -0.9);
   const unsigned int n = GENERATE(1u, 3u, 6u);
@@ -98,7 +98,7 @@ TEST_CASE("The Gauss-Jacobi rule shall integrate x^s times polynomials of degree
     }
 }
 
-TEST_CASE("The layered modulus shall hold the exact layer averages of the power law", "[fem]")
+TEST_CASE("The layered modulus shall hold the exact layer averages of the power law", "[fem][quick]")
 {
   const double k    = GENERATE(-0.5, 0.5);
   auto         base = std::make_shared<PowerLawModulus>(E0, c0, k);
@@ -117,7 +117,7 @@ TEST_CASE("The layered modulus shall hold the exact layer averages of the power 
     }
 }
 
-TEST_CASE("The solver shall reject bad input with a message naming the parameter", "[fem]")
+TEST_CASE("The solver shall reject bad input with a message naming the parameter", "[fem][quick]")
 {
   auto message_of = [](auto &&f) -> std::string {
     try
@@ -162,7 +162,7 @@ TEST_CASE("The solver shall reject bad input with a message naming the parameter
 
 TEST_CASE("The solver shall reproduce the flat-punch force (9.16) and the paraboloid (9.26) "
           "under contact-radius control",
-          "[fem]")
+          "[fem][quick]")
 {
   const double k = GENERATE(0.0, 0.5, -0.5);
   AxisymmetricSolver solver(power_law(k), recommended_mesh_parameters(a, k), default_discretization());

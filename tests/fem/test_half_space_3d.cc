@@ -32,7 +32,7 @@
 using namespace gradcontact::fem;
 
 TEST_CASE("The 3D cell integrand shall give no energy to rigid modes and the closed-form energy to a uniaxial strain",
-          "[fem]")
+          "[fem][quick]")
 {
   const double k = GENERATE(-0.5, 0.0, 0.5);
   CAPTURE(k);
@@ -88,7 +88,7 @@ TEST_CASE("The 3D cell integrand shall give no energy to rigid modes and the clo
 
 
 
-TEST_CASE("The 3D half-space mesh shall be the half cylinder with the contact disc and named boundaries", "[fem]")
+TEST_CASE("The 3D half-space mesh shall be the half cylinder with the contact disc and named boundaries", "[fem][quick]")
 {
   HalfSpaceMesh3DParameters p;
   p.contact_radius = 2e-4;

@@ -71,7 +71,7 @@ constexpr double mixed_punch_tolerance    = 2.5e-6;
 constexpr double mixed_pressure_tolerance = 1.6e-5;
 
 TEST_CASE("The mixed formulation shall give Boussinesq's punch force and Hertz's pressure at nu = 0.5 (k = 0)",
-          "[fem]")
+          "[fem][quick]")
 {
   const double nu = 0.5;
   Material     material{std::make_shared<PowerLawModulus>(E0, c0, 0.0), nu};
@@ -296,7 +296,7 @@ TEST_CASE("The mixed formulation shall give the Winkler response of the Gibson m
 
 
 
-TEST_CASE("Bad input to the mixed formulation and the Gibson medium shall throw, naming the parameter", "[fem]")
+TEST_CASE("Bad input to the mixed formulation and the Gibson medium shall throw, naming the parameter", "[fem][quick]")
 {
   const MeshParameters mesh = recommended_mesh_parameters(a, 0.0);
   const auto           power_law = [](const double k, const double nu) {

@@ -197,7 +197,7 @@ TEST_CASE("At k = 0 the tangential flat punch shall have Mindlin's stiffness 8 G
 }
 
 TEST_CASE("The mode-1 solver shall reject bad input with a message naming the parameter, value and range",
-          "[fem]")
+          "[fem][quick]")
 {
   auto p = [](const double r, const double b) { return r < b ? std::sqrt(1 - r * r / (b * b)) : 0.0; };
   CHECK_THAT(message_of([&] { TangentialLoad::partial_slip(p, 0.0, a, 0.5 * a); }),
@@ -363,7 +363,7 @@ TEST_CASE("The mode-1 tangential stiffness shall converge at the energy rate 2p 
 
 TEST_CASE("On a coarse mesh at k = 0.5 (the decoupled pairing nu = 1/(2+k)) the mode-1 solver shall give K_T "
           "(9.78)-(9.79), the unloading branch of an oscillation (9.83) and its dissipated energy (9.86)",
-          "[fem]")
+          "[fem][quick]")
 {
   // The verification and slow tests hold these at k = 0 or on fine meshes; this is their fast guard at
   // k != 0, for the pairing where the theory is exact (rigid on graded, nu = 1/(2+k): no normal-tangential

@@ -156,7 +156,7 @@ namespace
 
 
 
-TEST_CASE("The real gradings shall hold their exact averages", "[fem]")
+TEST_CASE("The real gradings shall hold their exact averages", "[fem][quick]")
 {
   // Shifted power law: the closed form (primitives in long double: they cancel to 1e-4 over [0, 1e-6 a]),
   // and, where it is accurate (z1 > 0: geometric pieces), the composite Gauss rule of the base class. From
@@ -203,7 +203,7 @@ TEST_CASE("The real gradings shall hold their exact averages", "[fem]")
   REQUIRE(table.discontinuities().empty());
 }
 
-TEST_CASE("The real gradings shall reject bad input with a message naming the parameter", "[fem]")
+TEST_CASE("The real gradings shall reject bad input with a message naming the parameter", "[fem][quick]")
 {
   CHECK_THROWS_WITH(ShiftedPowerLawModulus(E0, c0, 0.5, -1.0), Catch::Contains("z0 = -1"));
   CHECK_THROWS_WITH(ShiftedPowerLawModulus(E0, c0, 1.5, a), Catch::Contains("k = 1.5") && Catch::Contains("(-1, 1]"));
@@ -216,7 +216,7 @@ TEST_CASE("The real gradings shall reject bad input with a message naming the pa
   CHECK_THROWS_WITH(TabulatedModulus({0}, {1e9}), Catch::Contains("z.size() = 1") && Catch::Contains("[2, inf)"));
 }
 
-TEST_CASE("A modulus table shall survive a CSV round trip and name the file and line of a bad row", "[fem]")
+TEST_CASE("A modulus table shall survive a CSV round trip and name the file and line of a bad row", "[fem][quick]")
 {
   namespace fs = std::filesystem;
   const fs::path dir = fs::temp_directory_path() / ("gradcontact-table-test-" + std::to_string(::getpid()));
@@ -257,7 +257,7 @@ TEST_CASE("A modulus table shall survive a CSV round trip and name the file and 
 
 TEST_CASE("A shifted power law with z0 >> a shall approach Sneddon's punch on its surface modulus with the "
           "depth moment of Boussinesq's energy",
-          "[fem]")
+          "[fem][quick]")
 {
   // All runs on one cheap mesh, against its own homogeneous run (k = 0: E = E0 exactly), which removes the
   // discretisation error (degree 3, h_edge = 1e-5 a gives the same c1 to 3e-4). L of the deep z^{-0.5},
@@ -412,7 +412,7 @@ TEST_CASE("A table sampled from a shifted power law shall converge to it like th
   CHECK(order <= order_max);
 }
 
-TEST_CASE("A two-row table of a linear E shall give the FE force of that E", "[fem]")
+TEST_CASE("A two-row table of a linear E shall give the FE force of that E", "[fem][quick]")
 {
   // E0 (z + z0) / c0 (the shifted power law with k = 1), rows at 0 and L: the table equals it at every
   // quadrature point up to rounding.
@@ -425,7 +425,7 @@ TEST_CASE("A two-row table of a linear E shall give the FE force of that E", "[f
 }
 
 
-TEST_CASE("The error-function grading shall hold its values and exact averages and reject bad input", "[fem]")
+TEST_CASE("The error-function grading shall hold its values and exact averages and reject bad input", "[fem][quick]")
 {
   // E_b = E0, E_s = 3 E0 (a stiff skin) and E0 / 4 (a soft one), w = 2 a.
   const double E_s = GENERATE(3 * E0, E0 / 4);

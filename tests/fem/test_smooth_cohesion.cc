@@ -45,7 +45,7 @@ namespace
   }
 } // namespace
 
-TEST_CASE("Lennard-Jones law: zero at eps, largest at 3^(1/6) eps, work dgamma, slope", "[fem]")
+TEST_CASE("Lennard-Jones law: zero at eps, largest at 3^(1/6) eps, work dgamma, slope", "[fem][quick]")
 {
   const LennardJonesLaw law{dgamma, 2e-3};
   REQUIRE(std::abs(law.stress(law.separation)) <= 1e-15 * law.max_stress());
@@ -88,7 +88,7 @@ TEST_CASE("Lennard-Jones law: zero at eps, largest at 3^(1/6) eps, work dgamma, 
 }
 
 TEST_CASE("Lennard-Jones FE: a rigid sphere's path is the Derjaguin integral, pull-off -2 pi dgamma R for every k",
-          "[fem]")
+          "[fem][quick]")
 {
   // E0 = 1e10 against adhesive stresses of 0.1 (repulsion up to ~10 at the path's end): the surface moves by
   // ~1e-11 of eps, so the FE path must be the rigid one: F(d) = -2 pi R Phi(-d) exactly for the paraboloid, its
@@ -404,7 +404,7 @@ TEST_CASE("Surface flexibility (CHOLMOD, and UMFPACK for the mixed formulation) 
     }
 }
 
-TEST_CASE("Lennard-Jones FE: bad input names the parameter", "[fem]")
+TEST_CASE("Lennard-Jones FE: bad input names the parameter", "[fem][quick]")
 {
   CHECK_THROWS_WITH((LennardJonesLaw{0, 1}.validate()), Catch::Matchers::Contains("work of adhesion"));
   CHECK_THROWS_WITH((LennardJonesLaw{1, -1}.validate()), Catch::Matchers::Contains("separation"));

@@ -46,7 +46,7 @@ namespace
   }
 } // namespace
 
-TEST_CASE("The surface map's dPhi/dzeta and tangential shift equal central differences of Phi", "[fem]")
+TEST_CASE("The surface map's dPhi/dzeta and tangential shift equal central differences of Phi", "[fem][quick]")
 {
   const double s = GENERATE(0.2, 0.5, 0.9);
   const PowerLawModulus modulus(E0, c0, s);
@@ -93,7 +93,7 @@ TEST_CASE("The surface map's dPhi/dzeta and tangential shift equal central diffe
   REQUIRE_THAT(std::pow(phi(map2, x1), 1 - s) / std::pow(phi(map2, x0), 1 - s), WithinRel(2.0, 1e-9));
 }
 
-TEST_CASE("The surface map refuses what it cannot map, naming the parameter", "[fem]")
+TEST_CASE("The surface map refuses what it cannot map, naming the parameter", "[fem][quick]")
 {
   // Off, or a modulus finite at the surface: the identity.
   const PowerLawModulus half(E0, c0, 0.5), homogeneous(E0, c0, 0.0), negative(E0, c0, -0.5), gibson(E0, c0, 1.0);

@@ -89,7 +89,7 @@ TEST_CASE("The unilateral solver shall find the radius-controlled contact disc a
 
 TEST_CASE("A concave punch shall touch on an annulus below the complete-contact depth (9.35) and on the disc "
           "above it, there with the force of the complete-contact solution",
-          "[fem]")
+          "[fem][quick]")
 {
   const double k = GENERATE(-0.5, 0.5);
   CAPTURE(k);
@@ -148,7 +148,7 @@ TEST_CASE("A concave punch shall touch on an annulus below the complete-contact 
   CHECK_THAT(threshold, WithinRel(d0_min, 2e-2));
 }
 
-TEST_CASE("The unilateral solver shall refuse bad input with the parameter, its value and the range", "[fem]")
+TEST_CASE("The unilateral solver shall refuse bad input with the parameter, its value and the range", "[fem][quick]")
 {
   const Settings s = small_settings(a, 0.);
   CHECK_THROWS_WITH(UnilateralContactSolver(material_of(0), s.mesh, s.discretization, -a),
@@ -162,7 +162,9 @@ TEST_CASE("The unilateral solver shall refuse bad input with the parameter, its 
   CHECK_THROWS_WITH(load.validate(), Catch::Contains("force") && Catch::Contains("(0, inf)"));
 }
 
-TEST_CASE("The unilateral force at a given depth shall converge under uniform refinement", "[verification]")
+// A convergence study to 104k DoFs: label slow (./vv test --all); the default tier keeps the radius-controlled disc and
+// the paraboloid's h-convergence under contact-radius control.
+TEST_CASE("The unilateral force at a given depth shall converge under uniform refinement", "[slow]")
 {
   // Paraboloid, k = 0, degree 1, the mesh graded toward the closed form's radius (9.26 at the given depth):
   // the force error against 9.26 over global refinements 0, 1, 2.
