@@ -229,8 +229,10 @@ TEST_CASE("A friction map shall read its threshold toward mu -> 0 and read full 
   CHECK(friction_threshold_cell({}, {}, 0.05, 0.1) == "at full stick");
 }
 
+// Label slow (./vv test --all): the default tier keeps friction's sharp check at Holl's ratio (tests/fem) and the
+// other map kinds' pipeline.
 TEST_CASE("A friction map shall check the frictionless FE and Holl's ratio, and write the map of (k, nu, mu)",
-          "[cases]")
+          "[slow]")
 {
   // k = 0.5, nu = 0.2 and Holl's ratio 0.4: at 0.4 friction changes nothing (exact: the sharp-check rows pass); at
   // 0.2 full stick raises the force at the depth.
@@ -347,7 +349,9 @@ TEST_CASE("A graded Maugis-Dugdale row shall read a jump that one side alone fin
   CHECK_FALSE(graded_maugis_dugdale_row(m, tip, sigma0, dgamma, false, false, -0.01, end, "test", "FE", 1e-3, 1e-3, 0, 0));
 }
 
-TEST_CASE("A Tabor-parameter map shall check Maugis-Dugdale at k = 0 and write the map", "[cases]")
+// Label slow (./vv test --all): the default tier keeps the cohesive zone's Maugis-Dugdale checks (tests/fem) and the
+// Dugdale example scenes.
+TEST_CASE("A Tabor-parameter map shall check Maugis-Dugdale at k = 0 and write the map", "[slow]")
 {
   const TemporaryFolder folder("gradcontact-cohesive-map");
   const fs::path scene = folder.path() / "cohesive_map.prm";

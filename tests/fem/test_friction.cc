@@ -206,7 +206,7 @@ TEST_CASE("At full stick a sphere's force at a depth shall be kappa(nu) times th
 
 TEST_CASE("A frictional paraboloid on a power-law medium shall load self-similarly, F ~ d^{(3+k)/2}, as the load "
           "steps shrink",
-          "[fem]")
+          "[slow]")
 {
   // E(lambda z) = lambda^k E(z) and f(lambda r) = lambda^2 f(r): a state at depth d scaled by lambda^2 in d and
   // lambda in r is a state, with friction too (the stick condition compares increments, which scale alike).

@@ -246,7 +246,8 @@ TEST_CASE("Lennard-Jones FE at k = -0.5 and 0: from DMT toward the chapter's JKR
   }
 }
 
-TEST_CASE("Lennard-Jones FE: pull-off on a finer mesh", "[fem]")
+// Label slow (./vv test --all): the default tier keeps the Lennard-Jones path from DMT toward JKR on the coarser mesh.
+TEST_CASE("Lennard-Jones FE: pull-off on a finer mesh", "[slow]")
 {
   const double              E0 = 1, k = -0.5;
   const Material            material = power_law_material(E0, k);

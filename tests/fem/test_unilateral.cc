@@ -240,7 +240,9 @@ namespace
   };
 } // namespace
 
-TEST_CASE("Two graded bodies of one k and c0 shall press like the chapter's equivalent medium (9.4)", "[fem]")
+// Label slow (./vv test --all): the default tier keeps the elastic indenter's approach to the rigid one and the
+// indenter-modulus map's Hertz check of two elastic bodies.
+TEST_CASE("Two graded bodies of one k and c0 shall press like the chapter's equivalent medium (9.4)", "[slow]")
 {
   // Body 1 (the half-space): E0, nu1 = 0.2; body 2 (the indenter, carrying the paraboloid): E02 = E0 / 4,
   // nu2 = 0.45, both E0i (z/c0)^k. By (9.4) the compliances (1 - nu_i^2) / (h_N(k, nu_i) E0i) add, so at the
