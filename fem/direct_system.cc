@@ -3,9 +3,8 @@
 
 #include <deal.II/dofs/dof_tools.h>
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
-#include <deal.II/lac/sparse_direct.h>
-
 #include <cholmod.h>
+#include <umfpack.h>
 
 #include <algorithm>
 #include <chrono>
@@ -43,6 +42,83 @@ namespace gradcontact::fem
       CholmodCommon(const CholmodCommon &) = delete;
       CholmodCommon &operator=(const CholmodCommon &) = delete;
     };
+
+    /// UMFPACK's sparse LU (Davis, ACM TOMS 30 (2004) 196) of a square matrix that is not positive definite (the mixed
+    /// formulation's saddle point), with its controls set here: the unsymmetric strategy (a column ordering and threshold
+    /// partial pivoting over the whole column, where the symmetric strategy prefers the diagonal, which the saddle
+    /// point's pressure block lacks), rows scaled by their largest entry, and no refinement of its own: the caller
+    /// refines against its own residual until the backward error stops falling (DirectSystem::solve).
+    class UmfpackLU
+    {
+    public:
+      explicit UmfpackLU(const SparseMatrix<double> &A)
+        : n(A.m())
+      {
+        // Compressed columns of A: column j holds A(i, j) for every row i with an entry in column j, rows ascending.
+        std::vector<SuiteSparse_long> count(n + 1, 0);
+        for (unsigned int i = 0; i < n; ++i)
+          for (auto entry = A.begin(i); entry != A.end(i); ++entry)
+            ++count[entry->column() + 1];
+        Ap.assign(count.begin(), count.end());
+        for (unsigned int j = 0; j < n; ++j)
+          Ap[j + 1] += Ap[j];
+        Ai.resize(Ap[n]);
+        Ax.resize(Ap[n]);
+        std::vector<SuiteSparse_long> next(Ap.begin(), Ap.end() - 1);
+        for (unsigned int i = 0; i < n; ++i) // rows in ascending order: each column's rows come out sorted
+          for (auto entry = A.begin(i); entry != A.end(i); ++entry)
+            {
+              const auto k = next[entry->column()]++;
+              Ai[k]        = i;
+              Ax[k]        = entry->value();
+            }
+        umfpack_dl_defaults(control);
+        control[UMFPACK_STRATEGY] = UMFPACK_STRATEGY_UNSYMMETRIC;
+        control[UMFPACK_SCALE]    = UMFPACK_SCALE_MAX;
+        control[UMFPACK_IRSTEP]   = 0;
+        double info[UMFPACK_INFO];
+        void  *symbolic = nullptr;
+        check(umfpack_dl_symbolic(n, n, Ap.data(), Ai.data(), Ax.data(), &symbolic, control, info), "symbolic");
+        const SuiteSparse_long status = umfpack_dl_numeric(Ap.data(), Ai.data(), Ax.data(), symbolic, &numeric,
+                                                           control, info);
+        umfpack_dl_free_symbolic(&symbolic);
+        check(status, "numeric");
+      }
+
+      ~UmfpackLU()
+      {
+        if (numeric)
+          umfpack_dl_free_numeric(&numeric);
+      }
+
+      UmfpackLU(const UmfpackLU &) = delete;
+      UmfpackLU &operator=(const UmfpackLU &) = delete;
+
+      /// x <- A^{-1} x.
+      void solve(Vector<double> &x) const
+      {
+        Vector<double> b(x);
+        double         info[UMFPACK_INFO];
+        check(umfpack_dl_solve(UMFPACK_A, Ap.data(), Ai.data(), Ax.data(), x.begin(), b.begin(), numeric, control, info),
+              "solve");
+      }
+
+    private:
+      /// A failed UMFPACK step (a singular matrix included: its solve would divide by zero) is an error naming the step.
+      static void check(const SuiteSparse_long status, const char *step)
+      {
+        if (status != UMFPACK_OK)
+          throw std::runtime_error(std::string("DirectSystem: UMFPACK's ") + step + " step failed (status " +
+                                   std::to_string(status) + (status == UMFPACK_WARNING_singular_matrix ?
+                                                               ": the matrix is singular)" : ")"));
+      }
+
+      SuiteSparse_long              n;
+      std::vector<SuiteSparse_long> Ap, Ai;
+      std::vector<double>           Ax;
+      double                        control[UMFPACK_CONTROL];
+      void                         *numeric = nullptr;
+    };
   } // namespace
 
 
@@ -54,10 +130,7 @@ namespace gradcontact::fem
     explicit Factorization(const SparseMatrix<double> &A)
     {
       if (!factorize_cholesky(A))
-        {
-          lu = std::make_unique<SparseDirectUMFPACK>();
-          lu->initialize(A);
-        }
+        lu = std::make_unique<UmfpackLU>(A);
     }
 
     ~Factorization()
@@ -71,7 +144,7 @@ namespace gradcontact::fem
 
     bool cholesky() const { return factor != nullptr; }
 
-    /// x <- A^{-1} x (no refinement: DirectSystem::solve refines the Cholesky solves).
+    /// x <- A^{-1} x (no refinement: DirectSystem::solve refines).
     void solve(Vector<double> &x) const
     {
       if (lu)
@@ -160,7 +233,7 @@ namespace gradcontact::fem
 
     mutable CholmodCommon                workspace;
     cholmod_factor                      *factor = nullptr;
-    std::unique_ptr<SparseDirectUMFPACK> lu;
+    std::unique_ptr<UmfpackLU>           lu;
   };
 
 
@@ -257,13 +330,15 @@ namespace gradcontact::fem
     const Factorization &direct = factorization(false, unused);
     if (!direct.cholesky())
       {
-        // Not positive definite: one back substitution of the LU factorisation per row.
-        Vector<double> u(n);
+        // Not positive definite: one refined solve of the LU factorisation per row.
+        Vector<double> u(n), unit(n);
         for (unsigned int j = 0; j < m; ++j)
           {
-            u          = 0;
-            u[rows[j]] = 1;
-            direct.solve(u); // the unconstrained rows read below need no distribution of the constraints
+            unit          = 0;
+            unit[rows[j]] = 1;
+            u             = unit;
+            direct.solve(u);
+            refine(direct, stiffness, unit, u); // the unconstrained rows read below need no distribution of the constraints
             for (unsigned int i = 0; i < m; ++i)
               result(i, j) = u[rows[i]];
           }
@@ -282,6 +357,62 @@ namespace gradcontact::fem
             result(i, first + j) = block[static_cast<std::size_t>(j) * n + rows[i]];
       }
     return result;
+  }
+
+
+
+  namespace
+  {
+    /// The normwise backward error of u as a solution of A u = b: |b - A u|_inf / (|A|_inf |u|_inf + |b|_inf)
+    /// (Rigal and Gaches; Higham, Accuracy and Stability of Numerical Algorithms, 2nd ed., thm. 7.1), with the
+    /// residual r = b - A u.
+    double normwise_backward_error(const SparseMatrix<double> &A, const double A_norm, const Vector<double> &b,
+                          const Vector<double> &u, Vector<double> &r)
+    {
+      A.residual(r, u, b);
+      const double scale = A_norm * u.linfty_norm() + b.linfty_norm();
+      return scale > 0 ? r.linfty_norm() / scale : 0.0;
+    }
+
+    /// Refinement stops at this backward error, a few ulps: the solve is then as good as the data.
+    constexpr double refinement_target = 16 * std::numeric_limits<double>::epsilon();
+    /// At most this many refinement steps; a step that does not halve the backward error ends refinement.
+    constexpr unsigned int max_refinement_steps = 10;
+  } // namespace
+
+
+
+  void DirectSystem::refine(const Factorization &direct, const SparseMatrix<double> &A, const Vector<double> &rhs,
+                            Vector<double> &u) const
+  {
+    // Iterative refinement in working precision (Higham, ch. 12): u += A^{-1} (rhs - A u). It makes the solve backward
+    // stable where the factorisation's pivots are not (an ill-conditioned saddle point whose LU depends on the
+    // rounding of the BLAS kernel), and costs one back substitution per step. The Cholesky solves take one step
+    // always, as they did before the loop.
+    const double   A_norm = A.linfty_norm();
+    Vector<double> r(u.size());
+    double         omega = normwise_backward_error(A, A_norm, rhs, u, r);
+    for (unsigned int step = 0; step < max_refinement_steps && (omega > refinement_target || (step == 0 && direct.cholesky()));
+         ++step)
+      {
+        Vector<double> correction(r);
+        direct.solve(correction);
+        Vector<double> candidate(u);
+        candidate += correction;
+        Vector<double> r_candidate(u.size());
+        const double   omega_candidate = normwise_backward_error(A, A_norm, rhs, candidate, r_candidate);
+        const bool     improved        = omega_candidate < omega;
+        if (improved || (step == 0 && direct.cholesky()))
+          {
+            u.swap(candidate);
+            r.swap(r_candidate);
+          }
+        const bool halved = omega_candidate <= 0.5 * omega;
+        omega             = std::min(omega, omega_candidate);
+        if (!halved)
+          break;
+      }
+    last_backward_error = omega;
   }
 
 
@@ -306,14 +437,7 @@ namespace gradcontact::fem
       }
     u = rhs;
     direct.solve(u);
-    if (direct.cholesky())
-      {
-        // One step of iterative refinement: u += A^{-1} (rhs - A u).
-        Vector<double> correction(n);
-        (prescribe ? eliminated : stiffness).residual(correction, u, rhs);
-        direct.solve(correction);
-        u += correction;
-      }
+    refine(direct, prescribe ? eliminated : stiffness, rhs, u);
     constraints->distribute(u);
 
     reaction.reinit(n);

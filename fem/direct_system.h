@@ -8,13 +8,15 @@
 // far field): the rows of constrained DoFs carry their diagonal entry only.
 //
 // The factorisation. The displacement formulation's matrices are symmetric positive definite: a supernodal
-// Cholesky factorisation (CHOLMOD, SuiteSparse; Chen, Davis, Hager and Rajamanickam, ACM TOMS 35 (2008) 22), its
-// solve followed by one step of iterative refinement in the matrix (the residual's correction; the LU's own
-// refinement did the same). Measured against UMFPACK's LU on the flat punch: the same errors at k = 0 and 0.5; at
-// k = -0.5 (truncation at L / a = 1e16) F moves by 1e-8 (its error 3.88e-7 with the LU, 3.95e-7..4.02e-7 with 0-4
-// refinement steps: round-off of that far field); factorisation 2x and solves 3x faster. A matrix that is not
-// positive definite (the mixed formulation's saddle point) is factorised by UMFPACK's LU instead (Davis, ACM TOMS 30
-// (2004) 196), with its default refinement.
+// Cholesky factorisation (CHOLMOD, SuiteSparse; Chen, Davis, Hager and Rajamanickam, ACM TOMS 35 (2008) 22). A matrix
+// that is not positive definite (the mixed formulation's saddle point) is factorised by UMFPACK's LU instead (Davis,
+// ACM TOMS 30 (2004) 196) with the unsymmetric strategy: threshold partial pivoting over whole columns, not the
+// symmetric strategy's preference for the diagonal, which the saddle point's pressure block lacks.
+//
+// Every solve is refined against the true residual (DirectSystem::refine): u += A^{-1}(b - A u) until the normwise
+// backward error |b - A u| / (|A| |u| + |b|) reaches a few ulps or stops halving (the Cholesky solves take at least
+// one step). So a solve is backward stable even where the factorisation's pivots are not, and its answer does not
+// depend on the rounding of the BLAS kernel the machine picks.
 //
 // The energy check of fem/discretization.h compares u.Au, over the unconstrained DoFs, with the work
 // of the loads.
@@ -93,6 +95,9 @@ namespace gradcontact::fem
     /// back substitutions.
     dealii::FullMatrix<double> inverse_block(const std::vector<dealii::types::global_dof_index> &rows);
 
+    /// The normwise backward error of the last solve after its refinement (DirectSystem::refine).
+    double backward_error() const { return last_backward_error; }
+
     /// u.Au over the unconstrained DoFs (the constrained rows of A hold dummy diagonal entries).
     double energy(const dealii::Vector<double> &u) const;
 
@@ -104,6 +109,9 @@ namespace gradcontact::fem
     /// The factorisation of one matrix: Cholesky, or LU when it is not positive definite (header).
     class Factorization;
     const Factorization &factorization(bool prescribe, double &seconds);
+    /// Iterative refinement of u against A u = rhs with the factorisation of A.
+    void refine(const Factorization &direct, const dealii::SparseMatrix<double> &A, const dealii::Vector<double> &rhs,
+                dealii::Vector<double> &u) const;
 
     const dealii::AffineConstraints<double>     *constraints = nullptr;
     dealii::SparsityPattern                      sparsity_pattern;
@@ -112,6 +120,7 @@ namespace gradcontact::fem
     std::vector<dealii::types::global_dof_index> prescribed;
     std::unique_ptr<FarFieldRings>               far_field;
     Exterior                                     exterior;
+    mutable double                               last_backward_error = 0;
   };
 } // namespace gradcontact::fem
 
