@@ -14,7 +14,7 @@
 // symmetric strategy's preference for the diagonal, which the saddle point's pressure block lacks.
 //
 // Every solve is refined against the true residual (DirectSystem::refine): u += A^{-1}(b - A u) until the normwise
-// backward error |b - A u| / (|A| |u| + |b|) reaches a few ulps or stops halving (the Cholesky solves take at least
+// backward error |b - A u| / (|A| |u| + |b|) reaches 1e-13 or stops halving (the Cholesky solves take at least
 // one step). So a solve is backward stable even where the factorisation's pivots are not, and its answer does not
 // depend on the rounding of the BLAS kernel the machine picks.
 //
