@@ -47,7 +47,7 @@ namespace gradcontact::fem
     /// formulation's saddle point), with its controls set here: the unsymmetric strategy (a column ordering and threshold
     /// partial pivoting over the whole column, where the symmetric strategy prefers the diagonal, which the saddle
     /// point's pressure block lacks), rows scaled by their largest entry, and no refinement of its own: the caller
-    /// refines against its own residual until the backward error stops falling (DirectSystem::solve).
+    /// refines against its own residual until the backward error stops falling (DirectSystem::refine).
     class UmfpackLU
     {
     public:
@@ -99,7 +99,8 @@ namespace gradcontact::fem
       {
         Vector<double> b(x);
         double         info[UMFPACK_INFO];
-        check(umfpack_dl_solve(UMFPACK_A, Ap.data(), Ai.data(), Ax.data(), x.begin(), b.begin(), numeric, control, info),
+        check(umfpack_dl_solve(UMFPACK_A, Ap.data(), Ai.data(), Ax.data(), x.begin(), b.begin(), numeric, control,
+                               info),
               "solve");
       }
 
@@ -343,7 +344,8 @@ namespace gradcontact::fem
             unit[rows[j]] = 1;
             u             = unit;
             direct.solve(u);
-            refine(direct, stiffness, unit, u); // the unconstrained rows read below need no distribution of the constraints
+            // the unconstrained rows read below need no distribution of the constraints
+            refine(direct, stiffness, unit, u);
             for (unsigned int i = 0; i < m; ++i)
               result(i, j) = u[rows[i]];
           }
@@ -372,7 +374,7 @@ namespace gradcontact::fem
     /// (Rigal and Gaches; Higham, Accuracy and Stability of Numerical Algorithms, 2nd ed., thm. 7.1), with the
     /// residual r = b - A u.
     double normwise_backward_error(const SparseMatrix<double> &A, const double A_norm, const Vector<double> &b,
-                          const Vector<double> &u, Vector<double> &r)
+                                   const Vector<double> &u, Vector<double> &r)
     {
       A.residual(r, u, b);
       const double scale = A_norm * u.linfty_norm() + b.linfty_norm();
@@ -393,32 +395,28 @@ namespace gradcontact::fem
   {
     // Iterative refinement in working precision (Higham, ch. 12): u += A^{-1} (rhs - A u). It makes the solve backward
     // stable where the factorisation's pivots are not (an ill-conditioned saddle point whose LU depends on the
-    // rounding of the BLAS kernel), and costs one back substitution per step. The Cholesky solves take one step
-    // always, as they did before the loop.
-    const double   A_norm = direct.matrix_norm();
-    Vector<double> r(u.size());
-    double         omega = normwise_backward_error(A, A_norm, rhs, u, r);
-    for (unsigned int step = 0; step < max_refinement_steps && (omega > refinement_target || (step == 0 && direct.cholesky()));
-         ++step)
+    // rounding of the BLAS kernel), and costs one back substitution per step. A Cholesky solve takes its first step
+    // always.
+    Vector<double> r(u.size()), r_candidate(u.size());
+    double         omega = normwise_backward_error(A, direct.matrix_norm(), rhs, u, r);
+    for (unsigned int step = 0; step < max_refinement_steps; ++step)
       {
-        Vector<double> correction(r);
-        direct.solve(correction);
-        Vector<double> candidate(u);
-        candidate += correction;
-        Vector<double> r_candidate(u.size());
-        const double   omega_candidate = normwise_backward_error(A, A_norm, rhs, candidate, r_candidate);
-        const bool     improved        = omega_candidate < omega;
-        if (improved || (step == 0 && direct.cholesky()))
-          {
-            u.swap(candidate);
-            r.swap(r_candidate);
-          }
+        const bool forced = step == 0 && direct.cholesky();
+        if (omega <= refinement_target && !forced)
+          return;
+        Vector<double> candidate(r);
+        direct.solve(candidate);
+        candidate += u;
+        const double omega_candidate = normwise_backward_error(A, direct.matrix_norm(), rhs, candidate, r_candidate);
+        if (!(omega_candidate < omega) && !forced)
+          return; // no better: keep u
+        u.swap(candidate);
+        r.swap(r_candidate);
         const bool halved = omega_candidate <= 0.5 * omega;
-        omega             = std::min(omega, omega_candidate);
+        omega             = omega_candidate;
         if (!halved)
-          break;
+          return;
       }
-    last_backward_error = omega;
   }
 
 

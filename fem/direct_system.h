@@ -95,9 +95,6 @@ namespace gradcontact::fem
     /// back substitutions.
     dealii::FullMatrix<double> inverse_block(const std::vector<dealii::types::global_dof_index> &rows);
 
-    /// The normwise backward error of the last solve after its refinement (DirectSystem::refine).
-    double backward_error() const { return last_backward_error; }
-
     /// u.Au over the unconstrained DoFs (the constrained rows of A hold dummy diagonal entries).
     double energy(const dealii::Vector<double> &u) const;
 
@@ -120,7 +117,6 @@ namespace gradcontact::fem
     std::vector<dealii::types::global_dof_index> prescribed;
     std::unique_ptr<FarFieldRings>               far_field;
     Exterior                                     exterior;
-    mutable double                               last_backward_error = 0;
   };
 } // namespace gradcontact::fem
 

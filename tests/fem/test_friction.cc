@@ -109,8 +109,8 @@ namespace
                 smooth.pressure[0].value, rough.iterations, rough.stick_nodes, rough.slip_inward_nodes,
                 rough.slip_outward_nodes);
         CHECK(rough.reliable);
-        // Measured: force 1.1e-7 / 8.2e-7, edge 2.5e-5 / 1.7e-5 (inside the vertex bracket), max |q| / p(0) 1.3e-4 /
-        // 3.8e-6 (k = 0.25 / 0.5; the same for mu = 0.3 and full stick).
+        // Decoupled: friction leaves the force to the active-set search's round-off, the edge within the vertex
+        // bracket, and a shear that is the discrete body's residual coupling only.
         CHECK_THAT(rough.force, WithinRel(smooth.force, 3e-6));
         CHECK_THAT(rough.outer_edge, WithinRel(smooth.outer_edge, 1e-4));
         CHECK(q_max < 5e-4 * smooth.pressure[0].value);
