@@ -1,4 +1,5 @@
 #include "bench.h"
+#include "accuracy_bench.h"
 #include "fe_bench.h"
 #include "fe_oracle.h"
 #include "report.h"
@@ -35,7 +36,7 @@ namespace gradcontact::cases
       fs::path references = fs::path(GRADCONTACT_SOURCE_DIR) / "tests/data/references.jsonl";
       int repeat = 5;
       std::size_t numerical_stride = 5; // numerical MDR on every 5th row of a family (ms per row)
-      std::string part = "all";         // analytic | fe | peer | oracle | all
+      std::string part = "all";         // analytic | fe | peer | oracle | accuracy | all
       bool quick = false;
       int fe_repeat = 3;
       fs::path peer_scripts = fs::path(GRADCONTACT_SOURCE_DIR) / "cases/peers/freefem";
@@ -94,9 +95,10 @@ namespace gradcontact::cases
           else if (args[i] == "--part")
             {
               o.part = value("--part");
-              if (o.part != "analytic" && o.part != "fe" && o.part != "peer" && o.part != "oracle" && o.part != "all")
+              if (o.part != "analytic" && o.part != "fe" && o.part != "peer" && o.part != "oracle" &&
+                  o.part != "accuracy" && o.part != "all")
                 throw std::invalid_argument("bench: --part = '" + o.part +
-                                            "' is not one of analytic, fe, peer, oracle, all");
+                                            "' is not one of analytic, fe, peer, oracle, accuracy, all");
             }
           else if (args[i] == "--quick")
             o.quick = true;
@@ -305,8 +307,7 @@ namespace gradcontact::cases
             "or displacement at r/a in [0, 5) (uniform). Time of the whole batch, one core (one FE state per (k, nu), "
             "the rest by scaling). Errors relative to the closed form (|value| of the request; pressures and "
             "displacements near 0 excluded below 1e-3 of the batch's scale) and against the oracle's own "
-            "error estimate (the change under one uniform refinement, continued for k > 0; an estimate, not a bound: "
-            "where the two meshes happen to agree it is far below the error).\n\n| k | nu | requests | FE states | s | "
+            "error estimate (the Richardson estimate of the accuracy contract's ladder, fem/accuracy.h).\n\n| k | nu | requests | FE states | s | "
             "requests/s | worst error F, d | worst error p, w | error / estimate: median | 90 % | worst |\n"
             "|---|---|---|---|---|---|---|---|---|---|---|\n";
       for (const auto &[k, nu] : {std::pair{-0.5, 0.3}, std::pair{0., 0.3}, std::pair{0.5, 0.3}, std::pair{0., 0.49}})
@@ -395,8 +396,15 @@ namespace gradcontact::cases
     remove_stale_temporaries(o.reports); // what a killed run left
     fs::remove_all(tmp);
     fs::create_directories(tmp);
+    int broken = 0;
     try
       {
+        if (o.part == "accuracy" || o.part == "all")
+          {
+            AccuracyBenchOptions accuracy;
+            accuracy.quick = o.quick;
+            broken = run_accuracy_bench(accuracy, tmp, machine());
+          }
         if (o.part == "analytic" || o.part == "all")
           analytic_part(o, tmp);
         if (o.part == "oracle" || o.part == "all")
@@ -424,6 +432,9 @@ namespace gradcontact::cases
       }
     replace_folder(tmp, folder);
     std::cout << "wrote " << folder.string() << "/ (part " << o.part << (o.quick ? ", quick" : "") << ")\n";
-    return 0;
+    if (broken > 0)
+      std::cerr << "bench: the accuracy contract is broken in " << broken << " answers (" << (folder / "accuracy.md").string()
+                << ")\n";
+    return broken > 0 ? 1 : 0;
   }
 } // namespace gradcontact::cases

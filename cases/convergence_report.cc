@@ -2,6 +2,7 @@
 
 #include "report.h"
 
+#include <fem/accuracy.h>
 #include <fem/convergence.h>
 
 #include <algorithm>
@@ -42,21 +43,32 @@ namespace gradcontact::cases
                          const std::vector<ConvergenceSeries> &series, const bool plots)
   {
     std::ofstream csv(folder / "convergence.csv"), md(folder / "convergence.md");
-    csv << "quantity,refinement,dofs,seconds,value,reference,relative_error,observed_order\n";
+    csv << "quantity,refinement,dofs,seconds,value,reference,relative_error,observed_order,change,estimate\n";
     md << "# " << scene << ": convergence\n\nErrors against the " << reference
-       << "; the observed order p (error ~ h^p, h ~ DoFs^(-1/2)) is fitted over the last three levels.\n\n";
+       << "; the observed order p (error ~ h^p, h ~ DoFs^(-1/2)) is fitted over the last three levels. Next to them, "
+          "what the FE knows without a reference: the relative change from the level before, and the Richardson "
+          "estimate of the level's error from the changes (fem/accuracy.h, degree-2 ratio assumed with two levels, "
+          "observed from three).\n\n";
     for (std::size_t i = 0; i < series.size(); ++i)
       {
         const ConvergenceSeries &q = series[i];
         const double p = observed_order(q.levels);
-        md << "## " << q.quantity << "\n\n| refinement | DoFs | s | value | rel. error |\n|---|---|---|---|---|\n";
+        md << "## " << q.quantity
+           << "\n\n| refinement | DoFs | s | value | rel. error | rel. change | estimate |\n|---|---|---|---|---|---|---|\n";
         Series errors{q.quantity, {}, {}, true}, times{q.quantity, {}, {}, true};
+        std::vector<double> values;
         for (const Level &l : q.levels)
           {
+            values.push_back(l.value);
+            const double scale    = std::abs(l.value);
+            const double change   = values.size() > 1 ? std::abs(l.value - values[values.size() - 2]) / scale : std::nan("");
+            const double estimate = values.size() > 1 ? fem::estimate(values, fem::assumed_ratio(2), scale).relative()
+                                                      : std::nan("");
             md << "| " << l.refinement << " | " << l.dofs << " | " << format(l.seconds) << " | " << format(l.value)
-               << " | " << format(l.error) << " |\n";
+               << " | " << format(l.error) << " | " << (values.size() > 1 ? format(change) : "-") << " | "
+               << (values.size() > 1 ? format(estimate) : "-") << " |\n";
             csv << csv_quote(q.quantity) << ',' << l.refinement << ',' << l.dofs << ',' << l.seconds << ',' << l.value
-                << ',' << q.reference << ',' << l.error << ',' << p << '\n';
+                << ',' << q.reference << ',' << l.error << ',' << p << ',' << change << ',' << estimate << '\n';
             errors.x.push_back(l.dofs);
             errors.y.push_back(std::max(l.error, plot_error_floor));
             times.x.push_back(l.seconds);

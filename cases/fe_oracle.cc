@@ -3,6 +3,7 @@
 #include <analytic/batch.h>
 #include <analytic/errors.h>
 #include <analytic/material.h>
+#include <fem/accuracy.h>
 #include <fem/modulus.h>
 
 #include <nlohmann/json.hpp>
@@ -47,30 +48,37 @@ namespace gradcontact::cases
   struct FeOracle::UnitState
   {
     fem::LoadCase load;
-    std::unique_ptr<fem::AxisymmetricSolver> coarse, fine;
-    fem::Result coarse_result, fine_result;
-    double far_field = 0; ///< L / a of the mesh
-    /// (pressure?, r/a) -> (coarse, fine) samples already solved
-    std::map<std::pair<bool, double>, std::pair<double, double>> samples;
+    std::unique_ptr<fem::ContractSolver> solver;
+    fem::ContractResult scalars;  ///< force and depth, on the levels the contract needed for them
+    double far_field = 0;         ///< L / a of the meshes
+    bool   rigid_contact = false; ///< an indenter: its contact must be consistent
+    /// (pressure?, r/a) -> the estimated sample
+    std::map<std::pair<bool, double>, fem::Estimated> samples;
     /// radii announced by FeOracle::plan, solved together with the first one asked
     std::map<bool, std::set<double>> planned;
 
-    static void check(const fem::Result &r, const char *mesh)
+    /// Refuses an answer that the contract did not deliver, naming what limits it and what the finest level gives.
+    void check(const fem::ContractResult &r, const fem::Estimated &e, const char *what) const
     {
-      if (!r.reliable)
-        throw std::runtime_error(std::string("fe: the FE solution on the ") + mesh + " mesh is unreliable: " + r.message);
-      if (!r.consistent_contact)
-        throw std::runtime_error(std::string("fe: the FE contact state on the ") + mesh +
-                                 " mesh is inconsistent (a tensile contact node or a negative gap): " + r.message);
+      if (!r.met)
+        throw std::runtime_error(std::string("fe: the ") + what + " does not reach tolerance " +
+                                 check::format(r.tolerance) + ": " + r.limit + " (the finest level, " +
+                                 std::to_string(r.level_dofs.empty() ? 0 : r.level_dofs.back()) +
+                                 " DoFs, gives an estimated relative error of " + check::format(e.relative()) + ")");
+      if (rigid_contact && !r.result.consistent_contact)
+        throw std::runtime_error(std::string("fe: the FE contact state is inconsistent (a tensile contact node or a "
+                                             "negative gap): ") +
+                                 r.result.message);
     }
 
-    std::pair<double, double> sample(const bool pressure, const double r)
+    fem::Estimated sample(const bool pressure, const double r)
     {
       const auto key = std::make_pair(pressure, r);
       const auto found = samples.find(key);
       if (found != samples.end())
         return found->second;
-      // One run per mesh samples r and every planned radius of the quantity not solved yet.
+      // One ladder run samples r and every planned radius of the quantity not solved yet; each sample has its
+      // own estimate, and the contract covers them all.
       std::set<double> radii = planned[pressure];
       radii.insert(r);
       std::vector<double> wanted;
@@ -79,20 +87,17 @@ namespace gradcontact::cases
           wanted.push_back(x);
       fem::OutputRequest outputs;
       (pressure ? outputs.pressure_radii : outputs.displacement_radii) = wanted;
-      const auto values = [&](fem::AxisymmetricSolver &solver) {
-        const fem::Result result = solver.run(load, outputs);
-        const auto &s = pressure ? result.pressure : result.displacement;
-        if (s.size() != wanted.size())
-          throw std::runtime_error("fe: " + std::to_string(s.size()) + " FE samples for " +
-                                   std::to_string(wanted.size()) + " radii (" + result.message + ")");
-        std::vector<double> v;
-        for (const fem::Sample &x : s)
-          v.push_back(x.value);
-        return v;
-      };
-      const std::vector<double> v0 = values(*coarse), v1 = values(*fine);
+      const fem::ContractResult result = solver->run(load, outputs);
+      const auto &estimates = pressure ? result.pressure : result.displacement;
+      if (estimates.size() != wanted.size())
+        throw std::runtime_error("fe: " + std::to_string(estimates.size()) + " FE samples for " +
+                                 std::to_string(wanted.size()) + " radii (" + result.limit + result.result.message + ")");
       for (std::size_t i = 0; i < wanted.size(); ++i)
-        samples[{pressure, wanted[i]}] = {v0[i], v1[i]};
+        {
+          // the pressure's scale: the largest |p| sampled on the finest level, which the contract divides by
+          check(result, estimates[i], pressure ? "pressure" : "displacement");
+          samples[{pressure, wanted[i]}] = estimates[i];
+        }
       planned[pressure].clear();
       return samples.at(key);
     }
@@ -109,22 +114,16 @@ namespace gradcontact::cases
       return *slot;
     auto state = std::make_unique<UnitState>();
     state->load = load;
+    state->rigid_contact = load.type != fem::LoadType::flat_punch;
     fem::Material material;
     material.modulus = std::make_shared<fem::PowerLawModulus>(1.0, 1.0, k);
     material.nu = nu;
-    fem::Settings settings = fem::recommended_settings(1.0, *material.modulus, tolerance);
-    settings.discretization.formulation = fem::Formulation::automatic;
-    // No truncation error; L / a = 1e4 keeps the displacement requests up to r = 1e4 a (rings are cheap).
-    fem::use_condensed_far_field(settings, material, 1e4);
+    // L / a = 1e4 keeps the displacement requests up to r = 1e4 a (the condensed far field's rings are cheap).
+    fem::Settings settings = fem::contract_settings(1.0, material, tolerance, 1e4 / 1.5);
+    fem::grade_axis(settings, load);
     state->far_field = settings.mesh.far_field_size;
-    settings.mesh.global_refinements = 0;
-    state->coarse = std::make_unique<fem::AxisymmetricSolver>(material, settings.mesh, settings.discretization);
-    state->coarse_result = state->coarse->run(load);
-    UnitState::check(state->coarse_result, "recommended");
-    settings.mesh.global_refinements = 1;
-    state->fine = std::make_unique<fem::AxisymmetricSolver>(material, settings.mesh, settings.discretization);
-    state->fine_result = state->fine->run(load);
-    UnitState::check(state->fine_result, "refined");
+    state->solver = std::make_unique<fem::ContractSolver>(material, settings, tolerance);
+    state->scalars = state->solver->run(load);
     ++solved;
     slot = std::move(state);
     return *slot;
@@ -263,20 +262,22 @@ namespace gradcontact::cases
         plans.erase(p.key);
       }
     Answer answer;
-    answer.dofs = state.fine_result.n_dofs;
+    answer.dofs = state.scalars.level_dofs.empty() ? 0 : state.scalars.level_dofs.back();
     ++answered;
     if (p.outside)
       return answer; // no pressure outside the contact: exactly 0
-    std::pair<double, double> v; // the unit problem on both meshes
+    fem::Estimated v; // the unit problem's value and its estimate
     double scale = 0;
     if (p.quantity == "force")
       {
-        v = {state.coarse_result.force, state.fine_result.force};
+        v = state.scalars.force;
+        state.check(state.scalars, v, "force");
         scale = p.E_a * p.a * p.a * p.amplitude;
       }
     else if (p.quantity == "depth")
       {
-        v = {state.coarse_result.depth, state.fine_result.depth};
+        v = state.scalars.depth;
+        state.check(state.scalars, v, "depth");
         scale = p.a * p.amplitude;
       }
     else
@@ -288,13 +289,9 @@ namespace gradcontact::cases
         v = state.sample(pressure, p.r);
         scale = pressure ? p.E_a * p.amplitude : p.a * p.amplitude;
       }
-    answer.value = scale * v.second;
-    // The change under one uniform refinement, and for k > 0 its Richardson continuation: the surface layer
-    // u_z ~ z^(1-k) of a soft surface carries an energy error ~ T^(1-k) in the first cell row of thickness T,
-    // so each halving leaves the fraction rho = 2^-(1-k) of the error and the error of v_1 is
-    // |v_1 - v_0| rho / (1 - rho) (2.4 |v_1 - v_0| at k = 0.5).
-    const double rho = p.k > 0 ? std::pow(2.0, -(1 - p.k)) : 0.5;
-    answer.error_estimate = std::abs(scale * (v.second - v.first)) * rho / (1 - rho);
+    answer.value = scale * v.value;
+    answer.error_estimate = std::abs(scale) * v.error;
+    answer.relative_error_estimate = v.relative();
     return answer;
   }
 
@@ -344,7 +341,7 @@ namespace gradcontact::cases
           {
             const FeOracle::Answer a = oracle.evaluate(j);
             out << "{\"id\":" << id << ",\"value\":" << exact(a.value) << ",\"error_estimate\":" << exact(a.error_estimate)
-                << ",\"dofs\":" << a.dofs << "}\n";
+                << ",\"relative_error_estimate\":" << exact(a.relative_error_estimate) << ",\"dofs\":" << a.dofs << "}\n";
           }
         catch (const std::exception &e)
           {

@@ -4,9 +4,11 @@
 // error of the force, default 1e-6, in [1e-8, 1e-2]) is answered by the axisymmetric FE model
 // (fem/axisymmetric_solver.h) instead of a closed form: the cases flat_punch (at depth d), paraboloid, cone and
 // power_law (at contact radius a, the contact-radius control of the FE model), the quantities force, depth
-// (indenters), pressure and displacement (at r). The answer carries an error estimate: with v_0 the FE value on
-// the recommended mesh for the tolerance (fem::recommended_settings) and v_1 on its uniform refinement, the
-// answer is v_1 and the estimate |v_1 - v_0| (an upper bound of v_1's error wherever the FE converges).
+// (indenters), pressure and displacement (at r). The FE keeps the accuracy contract of fem/accuracy.h: the
+// answer comes from the ladder of uniform refinements that first brings the Richardson estimate within the
+// tolerance, and carries that estimate, absolute ("error_estimate") and relative ("relative_error_estimate": to
+// |F|, |d|, |w(r)|, and for a pressure to the largest |p| sampled with it). A tolerance the ladder cannot reach is
+// a refusal that names the limit (the DoF budget, the far field, an unreliable solve), never a value.
 //
 // Reuse. Besides c0 the power-law half-space has no length of its own, and c0 enters only through
 // E_a = E0 (a/c0)^k: in units of a, the problem of contact radius a is the one of radius 1 on E_a (z/a)^k. Every
@@ -37,8 +39,9 @@ namespace gradcontact::cases
     struct Answer
     {
       double       value          = 0;
-      double       error_estimate = 0; ///< |v_1 - v_0| (header)
-      unsigned int dofs           = 0; ///< of the finer mesh
+      double       error_estimate = 0;          ///< absolute (header)
+      double       relative_error_estimate = 0; ///< relative to the quantity's scale (header)
+      unsigned int dofs           = 0;          ///< of the finest level of the ladder
     };
 
     FeOracle();
@@ -52,12 +55,12 @@ namespace gradcontact::cases
     /// run as the first one of its unit state (a batch costs one run per state and quantity). Never throws.
     void plan(const nlohmann::json &request);
 
-    /// FE states solved so far (each a solve on both meshes) and requests answered from them.
+    /// FE states solved so far (each a ladder of meshes) and requests answered from them.
     unsigned int states_solved() const { return solved; }
     unsigned int requests() const { return answered; }
 
   private:
-    struct UnitState; ///< the unit problem of one (k, nu, tolerance, case, n) on both meshes
+    struct UnitState; ///< the unit problem of one (k, nu, tolerance, case, n) on its ladder
     struct Parsed;
     Parsed     parse(const nlohmann::json &request) const;
     UnitState &unit_state(const std::string &key, double k, double nu, double tolerance, const fem::LoadCase &load);
@@ -69,7 +72,7 @@ namespace gradcontact::cases
 
   /// `gradcontact eval`: one answer line per request line, in order (the whole input is read first, so that the
   /// FE plans its samples); a request with "method": "fe" goes to
-  /// `oracle` (its answer adds "error_estimate" and "dofs"), any other to the closed forms or the numerical MDR
+  /// `oracle` (its answer adds "error_estimate", "relative_error_estimate" and "dofs"), any other to the closed forms or the numerical MDR
   /// (analytic/batch.h). Never throws on a request: an error becomes {"id", "error"}. Returns the number of errors.
   int evaluate_stream(std::istream &in, std::ostream &out, FeOracle &oracle);
 } // namespace gradcontact::cases

@@ -7,6 +7,7 @@
 #include <analytic/batch.h>
 #include <analytic/material.h>
 #include <analytic/mdr.h>
+#include <fem/accuracy.h>
 #include <fem/axisymmetric_solver.h>
 #include <fem/unilateral_contact.h>
 
@@ -52,6 +53,8 @@ namespace gradcontact::cases
       unsigned int refinement;
       fem::Result result;
       double seconds;
+      /// Discretization/accuracy = contract: the ladder's estimates (result is its finest level's run).
+      std::optional<fem::ContractResult> contract;
     };
 
     /// Load/contact = unilateral: the contact set found on meshes graded toward the edge found (from Load/a),
@@ -176,9 +179,8 @@ namespace gradcontact::cases
       const auto start = std::chrono::steady_clock::now();
       FeModel model = fe_model(s, refinement);
       // The pressure of a cone (and of f = A r^n, n < 2) is singular at the axis: grade the mesh
-      // toward (0, 0) (fem/README.md, "Accuracy and cost", cone axis: p L2 2.8e-4 -> 5.4e-6 at k = 0).
-      if (s.load.type == Type::cone || (s.load.type == Type::power_law && s.load.n < 2))
-        model.settings.mesh.axis_refinements = 12;
+      // toward (0, 0) (fem/README.md, "Accuracy and cost", cone axis).
+      fem::grade_axis(model.settings, model.load);
       // The rigid frictionless model with its contact edge at the mesh's: the surface map where it applies
       // (not with the mixed formulation, whose degree-3 force it leaves 10x less accurate than the halvings).
       if (s.discretization.surface_map && s.load.contact != LoadParameters::Contact::unilateral &&
@@ -192,7 +194,7 @@ namespace gradcontact::cases
       const fem::Result r = s.load.contact == LoadParameters::Contact::unilateral ? run_unilateral(s, model, out, folder, refinement) :
                             fem::AxisymmetricSolver(model.material, model.settings.mesh,
                                                     model.settings.discretization).run(model.load, out);
-      return {refinement, r, std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count()};
+      return {refinement, r, std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), {}};
     }
 
     // The scalar quantities a scene compares, with the FE value and the reference quantity name.
@@ -574,6 +576,206 @@ namespace gradcontact::cases
     return result;
   }
 
+  namespace
+  {
+    /// One FE solve per entry of Discretization/refinements (a failed level is a failed row).
+    std::vector<FeRun> solve_levels(const Scene &s, const fs::path &folder, const bool verbose, SceneResult &result)
+    {
+      std::vector<FeRun> runs;
+      for (const unsigned int level : s.discretization.refinements)
+        {
+          if (verbose)
+            std::cerr << "  " << s.info.name << ": FE solve, " << level << " refinement(s)\n";
+          try
+            {
+              runs.push_back(run_fe(s, level, folder));
+            }
+          catch (const std::exception &e)
+            {
+              result.rows.push_back(failed("FE solve", "FE", "-", "refinement " + std::to_string(level) + ": " + concise(e)));
+            }
+        }
+      return runs;
+    }
+
+    /// Discretization/accuracy = contract: the ladder of fem/accuracy.h at Discretization/force tolerance; a refusal
+    /// is a failed row naming its limit.
+    FeRun solve_contract(const Scene &s, const bool verbose, SceneResult &result)
+    {
+      const auto start = std::chrono::steady_clock::now();
+      FeModel model = fe_model(s, 0);
+      double w_max = 0;
+      for (const double x : s.outputs.displacement_radii)
+        w_max = std::max(w_max, x * s.load.a);
+      fem::Settings settings = fem::contract_settings(s.load.a, model.material, s.discretization.force_tolerance, w_max);
+      fem::grade_axis(settings, model.load); // the tip's pressure at the axis (as run_fe)
+      if (verbose)
+        std::cerr << "  " << s.info.name << ": FE ladder to the relative tolerance "
+                  << format(s.discretization.force_tolerance) << "\n";
+      fem::ContractSolver solver(model.material, settings, s.discretization.force_tolerance);
+      fem::ContractResult contract = solver.run(model.load, output_request(s));
+      if (!contract.met)
+        result.rows.push_back(failed("FE contract", "FE (contract)", "-",
+                                     "tolerance " + format(contract.tolerance) + " not reached: " + contract.limit));
+      FeRun run{static_cast<unsigned>(contract.level_dofs.size()) - 1, contract.result, seconds_since(start), {}};
+      run.contract = std::move(contract);
+      return run;
+    }
+
+    /// The contract's columns of a row: the asked tolerance, the estimate and the verdict.
+    void add_contract(Row &row, const FeRun &run, const fem::Estimated &e)
+    {
+      if (!run.contract)
+        return;
+      row.asked    = run.contract->tolerance;
+      row.estimate = e.relative();
+      row.contract = run.contract->met ? "held" : "refused: " + run.contract->limit;
+    }
+
+    /// The estimate of the scalar quantity `name` (scalars()) under the contract.
+    const fem::Estimated &contract_estimate(const fem::ContractResult &c, const std::string &name)
+    {
+      return name == "force" ? c.force : name == "contact radius" ? c.contact_radius : c.depth;
+    }
+
+    /// The rows of one FE run against one reference: the scalars, p(r) relative to the largest |p|, w(r).
+    void add_fe_rows(const Scene &s, const FeRun &run, const AnalyticReference &ref, SceneResult &result)
+    {
+      const fem::Result &fe = run.result;
+      const std::string checked = run.contract ? "FE (contract, " + std::to_string(run.contract->level_dofs.size()) +
+                                                   " levels)"
+                                               : "FE (" + std::to_string(run.refinement) + " ref.)";
+      for (const Scalar &q : scalars(s, fe))
+        try
+          {
+            const double value = q.reference.empty() ? ref.radius() : ref.get(q.reference);
+            Row row = compare(q.name, "relative", checked, ref.label(), value, q.fe, value, q.tolerance, fe.n_dofs,
+                              run.seconds);
+            if (run.contract)
+              add_contract(row, run, contract_estimate(*run.contract, q.name));
+            result.rows.push_back(row);
+          }
+        catch (const std::exception &e)
+          {
+            result.rows.push_back(failed(q.name, checked, ref.label(), e.what()));
+          }
+      // pressure: relative to the largest |p| sampled (p -> 0 or -> inf at the edge)
+      try
+        {
+          std::vector<double> refs;
+          for (const fem::Sample &p : fe.pressure)
+            refs.push_back(ref.at("pressure", p.r));
+          double scale = 0.;
+          for (const double v : refs)
+            scale = std::max(scale, std::abs(v));
+          for (std::size_t i = 0; i < fe.pressure.size(); ++i)
+            {
+              Row row = compare("pressure", "r/a = " + format(fe.pressure[i].r / s.load.a) + ", rel. to max |p|",
+                                checked, ref.label(), refs[i], fe.pressure[i].value, scale, s.tolerances.pressure,
+                                fe.n_dofs, run.seconds);
+              if (run.contract)
+                add_contract(row, run, run.contract->pressure.at(i));
+              result.rows.push_back(row);
+            }
+        }
+      catch (const std::exception &e)
+        {
+          result.rows.push_back(failed("pressure", checked, ref.label(), e.what()));
+        }
+      for (std::size_t i = 0; i < fe.displacement.size(); ++i)
+        try
+          {
+            const fem::Sample &w = fe.displacement[i];
+            const double value = ref.at("displacement", w.r);
+            // Under a punch whose depth is given on the disc r <= a, w there is the imposed displacement
+            // (not with Load/contact = unilateral, where the contact set is found).
+            const bool imposed = (s.load.type == Type::flat_punch || s.load.type == Type::concave_punch) &&
+                                 s.load.contact == LoadParameters::Contact::disc && w.r < s.load.a;
+            Row row = compare(imposed ? "displacement (imposed: input check)" : "displacement",
+                              "r/a = " + format(w.r / s.load.a) + ", relative", checked, ref.label(), value, w.value,
+                              value, s.tolerances.displacement, fe.n_dofs, run.seconds);
+            if (run.contract)
+              add_contract(row, run, run.contract->displacement.at(i));
+            result.rows.push_back(row);
+          }
+        catch (const std::exception &e)
+          {
+            result.rows.push_back(failed("displacement", checked, ref.label(), e.what()));
+          }
+    }
+
+    /// Convergence study: the scalar quantities against the first reference, level by level.
+    void write_normal_convergence(const Scene &s, const std::vector<FeRun> &runs, const References &references,
+                                  const fs::path &folder)
+    {
+      std::vector<ConvergenceSeries> series;
+      const std::vector<Scalar> first_level = scalars(s, runs.front().result);
+      for (std::size_t q = 0; q < first_level.size(); ++q)
+        {
+          ConvergenceSeries c{first_level[q].name, 0., {}};
+          try
+            {
+              c.reference = first_level[q].reference.empty() ? references.front()->radius()
+                                                             : references.front()->get(first_level[q].reference);
+            }
+          catch (const std::exception &)
+            {
+              continue; // a failed row already says why
+            }
+          for (const FeRun &run : runs)
+            {
+              const double v = scalars(s, run.result)[q].fe;
+              c.levels.push_back({run.refinement, run.result.n_dofs, run.seconds, v, relative_error(v, c.reference)});
+            }
+          series.push_back(c);
+        }
+      write_convergence(folder, s.info.name, references.front()->label(), series, s.outputs.plots);
+    }
+
+    /// Profiles: the analytic curve (closed form, dense) with the FE points of the finest level.
+    void plot_normal_profiles(const Scene &s, const fem::Result &fe, const AnalyticReference &closed,
+                              const SceneResult &result, const fs::path &folder)
+    {
+      const double a = closed.radius();
+      const auto profile_plot = [&](const std::string &quantity, const std::vector<fem::Sample> &samples,
+                                    const double x_max, const std::string &ylabel) {
+        if (samples.empty())
+          return;
+        Series curve{"closed form", {}, {}, false}, points{"FE", {}, {}, true};
+        constexpr int n = 200;
+        for (int i = 0; i <= n; ++i)
+          {
+            // for the pressure stay inside the contact; for w also skip r = a exactly
+            const double x = x_max * (quantity == "pressure" ? 0.999 * i / n : static_cast<double>(i) / n);
+            try
+              {
+                curve.y.push_back(closed.at(quantity, x * a));
+                curve.x.push_back(x);
+              }
+            catch (const std::exception &)
+              {
+              }
+          }
+        double worst = 0.;
+        for (const fem::Sample &p : samples)
+          {
+            points.x.push_back(p.r / s.load.a);
+            points.y.push_back(p.value);
+          }
+        for (const Row &r : result.rows)
+          if (r.quantity == quantity && r.error.empty() && r.reference.rfind("closed form", 0) == 0)
+            worst = std::max(worst, r.rel_error);
+        write_plot(folder, quantity, s.info.name + ": " + quantity + " (worst FE error " + format(worst) + ")", "r / a",
+                   ylabel, {curve, points});
+      };
+      double w_max = 1.;
+      for (const double x : s.outputs.displacement_radii)
+        w_max = std::max(w_max, x);
+      profile_plot("pressure", fe.pressure, 1., "p [Pa]");
+      profile_plot("displacement", fe.displacement, w_max, "w [m]");
+    }
+  } // namespace
+
   SceneResult run_normal_scene(const Scene &s, const fs::path &folder, const bool verbose)
   {
     require_kind(s, SceneKind::normal, "run_normal_scene");
@@ -581,148 +783,21 @@ namespace gradcontact::cases
     SceneResult result = started(s, folder);
     const References references = references_of(s, result);
 
-    // One FE solve per refinement level, shared by every quantity and every reference.
-    std::vector<FeRun> runs;
-    for (const unsigned int level : s.discretization.refinements)
-      {
-        if (verbose)
-          std::cerr << "  " << s.info.name << ": FE solve, " << level << " refinement(s)\n";
-        try
-          {
-            runs.push_back(run_fe(s, level, folder));
-          }
-        catch (const std::exception &e)
-          {
-            result.rows.push_back(failed("FE solve", "FE", "-", "refinement " + std::to_string(level) + ": " + concise(e)));
-          }
-      }
-
+    // The FE solves, shared by every quantity and every reference.
+    const std::vector<FeRun> runs = s.discretization.contract ? std::vector<FeRun>{solve_contract(s, verbose, result)}
+                                                              : solve_levels(s, folder, verbose, result);
     for (const FeRun &run : runs)
       {
-        const fem::Result &fe = run.result;
-        const std::string checked = "FE (" + std::to_string(run.refinement) + " ref.)";
-        if (!fe.consistent_contact || !fe.reliable)
-          result.rows.push_back(failed("FE solve", checked, "-", fe.message));
+        if (!run.result.consistent_contact || !run.result.reliable)
+          result.rows.push_back(failed("FE solve", run.contract ? "FE (contract)" : "FE (" + std::to_string(run.refinement) + " ref.)",
+                                       "-", run.result.message));
         for (const auto &ref : references)
-          {
-            for (const Scalar &q : scalars(s, fe))
-              try
-                {
-                  const double value = q.reference.empty() ? ref->radius() : ref->get(q.reference);
-                  result.rows.push_back(compare(q.name, "relative", checked, ref->label(), value, q.fe, value,
-                                                q.tolerance, fe.n_dofs, run.seconds));
-                }
-              catch (const std::exception &e)
-                {
-                  result.rows.push_back(failed(q.name, checked, ref->label(), e.what()));
-                }
-            // pressure: relative to the largest |p| sampled (p -> 0 or -> inf at the edge)
-            try
-              {
-                std::vector<double> refs;
-                for (const fem::Sample &p : fe.pressure)
-                  refs.push_back(ref->at("pressure", p.r));
-                double scale = 0.;
-                for (const double v : refs)
-                  scale = std::max(scale, std::abs(v));
-                for (std::size_t i = 0; i < fe.pressure.size(); ++i)
-                  result.rows.push_back(compare("pressure", "r/a = " + format(fe.pressure[i].r / s.load.a) + ", rel. to max |p|",
-                                                checked, ref->label(), refs[i], fe.pressure[i].value, scale,
-                                                s.tolerances.pressure, fe.n_dofs, run.seconds));
-              }
-            catch (const std::exception &e)
-              {
-                result.rows.push_back(failed("pressure", checked, ref->label(), e.what()));
-              }
-            for (const fem::Sample &w : fe.displacement)
-              try
-                {
-                  const double value = ref->at("displacement", w.r);
-                  // Under a punch whose depth is given on the disc r <= a, w there is the imposed displacement
-                  // (not with Load/contact = unilateral, where the contact set is found).
-                  const bool imposed = (s.load.type == Type::flat_punch || s.load.type == Type::concave_punch) &&
-                                       s.load.contact == LoadParameters::Contact::disc && w.r < s.load.a;
-                  result.rows.push_back(compare(imposed ? "displacement (imposed: input check)" : "displacement", "r/a = " + format(w.r / s.load.a) + ", relative", checked,
-                                                ref->label(), value, w.value, value, s.tolerances.displacement, fe.n_dofs,
-                                                run.seconds));
-                }
-              catch (const std::exception &e)
-                {
-                  result.rows.push_back(failed("displacement", checked, ref->label(), e.what()));
-                }
-          }
+          add_fe_rows(s, run, *ref, result);
       }
-
-    // Convergence study: the scalar quantities against the first reference, level by level.
     if (runs.size() > 1 && !references.empty())
-      {
-        std::vector<ConvergenceSeries> series;
-        const std::vector<Scalar> first_level = scalars(s, runs.front().result);
-        for (std::size_t q = 0; q < first_level.size(); ++q)
-          {
-            ConvergenceSeries c{first_level[q].name, 0., {}};
-            try
-              {
-                c.reference = first_level[q].reference.empty() ? references.front()->radius()
-                                                               : references.front()->get(first_level[q].reference);
-              }
-            catch (const std::exception &)
-              {
-                continue; // a failed row already says why
-              }
-            for (const FeRun &run : runs)
-              {
-                const double v = scalars(s, run.result)[q].fe;
-                c.levels.push_back({run.refinement, run.result.n_dofs, run.seconds, v, relative_error(v, c.reference)});
-              }
-            series.push_back(c);
-          }
-        write_convergence(folder, s.info.name, references.front()->label(), series, s.outputs.plots);
-      }
-
-    // Profiles: the analytic curve (closed form, dense) with the FE points of the finest level.
+      write_normal_convergence(s, runs, references, folder);
     if (s.outputs.plots && !runs.empty() && s.references.closed_form && !references.empty())
-      {
-        const fem::Result &fe = runs.back().result;
-        const AnalyticReference &closed = *references.front();
-        const double a = closed.radius();
-        const auto profile_plot = [&](const std::string &quantity, const std::vector<fem::Sample> &samples,
-                                      const double x_max, const std::string &ylabel) {
-          if (samples.empty())
-            return;
-          Series curve{"closed form", {}, {}, false}, points{"FE", {}, {}, true};
-          constexpr int n = 200;
-          for (int i = 0; i <= n; ++i)
-            {
-              // for the pressure stay inside the contact; for w also skip r = a exactly
-              const double x = x_max * (quantity == "pressure" ? 0.999 * i / n : static_cast<double>(i) / n);
-              try
-                {
-                  curve.y.push_back(closed.at(quantity, x * a));
-                  curve.x.push_back(x);
-                }
-              catch (const std::exception &)
-                {
-                }
-            }
-          double worst = 0.;
-          for (const fem::Sample &p : samples)
-            {
-              points.x.push_back(p.r / s.load.a);
-              points.y.push_back(p.value);
-            }
-          for (const Row &r : result.rows)
-            if (r.quantity == quantity && r.error.empty() && r.reference.rfind("closed form", 0) == 0)
-              worst = std::max(worst, r.rel_error);
-          write_plot(folder, quantity, s.info.name + ": " + quantity + " (worst FE error " + format(worst) + ")", "r / a",
-                     ylabel, {curve, points});
-        };
-        double w_max = 1.;
-        for (const double x : s.outputs.displacement_radii)
-          w_max = std::max(w_max, x);
-        profile_plot("pressure", fe.pressure, 1., "p [Pa]");
-        profile_plot("displacement", fe.displacement, w_max, "w [m]");
-      }
+      plot_normal_profiles(s, runs.back().result, *references.front(), result, folder);
 
     result.seconds = seconds_since(start);
     return result;

@@ -181,26 +181,48 @@ namespace gradcontact::cases
     return out + "\"";
   }
 
+  namespace
+  {
+    /// A Markdown table cell: a '|' inside it would end the cell.
+    std::string cell(const std::string &text)
+    {
+      std::string out;
+      for (const char c : text)
+        out += c == '|' ? std::string("\\|") : std::string(1, c);
+      return out;
+    }
+  } // namespace
+
   void write_errors(const SceneResult &s, const fs::path &folder)
   {
+    const bool contract = std::any_of(s.rows.begin(), s.rows.end(), [](const Row &r) { return r.asked > 0; });
     std::ofstream csv(folder / "errors.csv");
-    csv << "quantity,metric,method,reference,reference_value,value,abs_error,rel_error,tolerance,pass,dofs,seconds,error\n";
+    csv << "quantity,metric,method,reference,reference_value,value,abs_error,rel_error,tolerance,pass,dofs,seconds,error,"
+           "fe_asked,fe_estimate,fe_contract\n";
     csv << std::setprecision(17);
     for (const Row &r : s.rows)
       csv << csv_quote(r.quantity) << ',' << csv_quote(r.metric) << ',' << csv_quote(r.method) << ','
           << csv_quote(r.reference) << ',' << r.reference_value << ',' << r.value << ',' << r.abs_error << ','
           << r.rel_error << ',' << r.tolerance << ',' << (r.pass ? "pass" : "FAIL") << ',' << r.dofs << ','
-          << r.seconds << ',' << csv_quote(r.error) << '\n';
+          << r.seconds << ',' << csv_quote(r.error) << ',' << r.asked << ',' << r.estimate << ','
+          << csv_quote(r.contract) << '\n';
     std::ofstream md(folder / "errors.md");
     md << "# " << s.name << "\n\n" << s.description << "\n\n"
-       << "| quantity | metric | checked | reference | reference value | value | rel. error | tolerance | pass | DoFs | s |\n"
-       << "|---|---|---|---|---|---|---|---|---|---|---|\n";
+       << "| quantity | metric | checked | reference | reference value | value | rel. error | tolerance | pass | DoFs | s |"
+       << (contract ? " FE asked | FE estimate | contract |" : "") << "\n"
+       << "|---|---|---|---|---|---|---|---|---|---|---|" << (contract ? "---|---|---|" : "") << "\n";
     for (const Row &r : s.rows)
-      md << "| " << r.quantity << " | " << r.metric << " | " << r.method << " | " << r.reference << " | "
-         << (r.error.empty() ? format(r.reference_value) : "-") << " | "
-         << (r.error.empty() ? format(r.value) : "error: " + r.error) << " | " << format(r.rel_error) << " | "
-         << format(r.tolerance) << " | " << (r.pass ? "pass" : "**FAIL**") << " | " << (r.dofs ? std::to_string(r.dofs) : "-")
-         << " | " << format(r.seconds) << " |\n";
+      {
+        md << "| " << cell(r.quantity) << " | " << cell(r.metric) << " | " << cell(r.method) << " | " << cell(r.reference)
+           << " | " << (r.error.empty() ? format(r.reference_value) : "-") << " | "
+           << (r.error.empty() ? format(r.value) : "error: " + cell(r.error)) << " | " << format(r.rel_error) << " | "
+           << format(r.tolerance) << " | " << (r.pass ? "pass" : "**FAIL**") << " | "
+           << (r.dofs ? std::to_string(r.dofs) : "-") << " | " << format(r.seconds) << " |";
+        if (contract)
+          md << ' ' << (r.asked > 0 ? format(r.asked) : "-") << " | " << (r.estimate >= 0 ? format(r.estimate) : "-")
+             << " | " << (r.contract.empty() ? "-" : cell(r.contract)) << " |";
+        md << '\n';
+      }
   }
 
   bool write_plot(const fs::path &folder, const std::string &stem, const std::string &title, const std::string &xlabel,

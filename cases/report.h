@@ -22,6 +22,11 @@ namespace gradcontact::cases
     unsigned int dofs = 0;  ///< 0 for analytic comparisons
     double seconds = 0.;    ///< time of the checked value
     std::string error;      ///< non-empty when a side failed to evaluate
+    /// Under the accuracy contract (Discretization/accuracy = contract): the FE's asked relative tolerance, its
+    /// relative error estimate and the verdict ("held", or "refused: " and the limit); 0, -1 and empty otherwise.
+    double      asked    = 0.;
+    double      estimate = -1.;
+    std::string contract;
   };
 
   /// A comparison row: |value - ref| / |scale| against `tolerance`.

@@ -238,6 +238,12 @@ namespace gradcontact::cases
                       "Uniform refinements of the recommended mesh; several values make a convergence study.");
     prm.declare_entry("force tolerance", "1e-6", Patterns::Double(1e-12, 1.),
                       "The wanted relative force error: selects the recommended mesh (fem/README.md).");
+    prm.declare_entry("accuracy", "levels", Patterns::Selection("levels|contract"),
+                      "levels: one FE solve per entry of refinements (a convergence study against the references); "
+                      "contract (normal scenes with a rigid indenter on a disc): the ladder of fem/accuracy.h, uniform "
+                      "refinements of its own degree until the Richardson estimate of every FE quantity (force, depth, "
+                      "contact radius, p(r) relative to the largest |p|, w(r)) is within force tolerance, or a "
+                      "refusal naming the limit; every FE row shows the asked tolerance, the estimate and the verdict.");
     prm.declare_entry("far field", "0", Patterns::Double(0.), "L/a of the truncated domain; 0: the recommended one.");
     prm.declare_entry("formulation", "displacement", Patterns::Selection("displacement|mixed|automatic"),
                       "FE unknowns: displacement; mixed (u and q = lambda div u, Taylor-Hood: nu -> 0.5 without "
@@ -264,6 +270,7 @@ namespace gradcontact::cases
     for (const std::string &s : dealii::Utilities::split_string_list(prm.get("refinements")))
       refinements.push_back(dealii::Utilities::string_to_int(s));
     force_tolerance = prm.get_double("force tolerance");
+    contract = prm.get("accuracy") == "contract";
     far_field = prm.get_double("far field");
     const std::string f = prm.get("formulation");
     formulation = f == "mixed" ? Formulation::mixed : (f == "automatic" ? Formulation::automatic : Formulation::displacement);
@@ -681,11 +688,39 @@ namespace gradcontact::cases
       if (!checks_something)
         throw std::invalid_argument("Candidate: no candidate formula given (depth, force, pressure or displacement)");
     }
+
+    /// Discretization/accuracy = contract is the ladder of fem/accuracy.h: the axisymmetric model of a rigid
+    /// indenter on a disc, in a normal FE scene.
+    void check_contract(const Scene &s, const std::string &where)
+    {
+      if (!s.discretization.contract)
+        return;
+      std::string other;
+      if (s.map.enabled())
+        other = "a Map";
+      else if (s.tangential.enabled())
+        other = "a Tangential study";
+      else if (s.adhesion.enabled(s.load))
+        other = "Adhesion";
+      else if (s.candidate.enabled())
+        other = "a Candidate";
+      else if (s.load.contact == LoadParameters::Contact::unilateral)
+        other = "Load/contact = unilateral";
+      else if (s.indenter.elasticity != IndenterParameters::Elasticity::rigid)
+        other = "an elastic Indenter";
+      else if (!s.references.fem)
+        other = "References/fem = false";
+      if (!other.empty())
+        throw std::invalid_argument(where + "Discretization/accuracy = contract with " + other +
+                                    ": the contract's ladder (fem/accuracy.h) answers the normal FE scenes of a rigid "
+                                    "indenter on a disc; use accuracy = levels");
+    }
   } // namespace
 
   SceneKind scene_kind(const Scene &s)
   {
     const std::string where = "scene " + s.file + ": ";
+    check_contract(s, where);
     if (s.adhesion.law == AdhesionParameters::Law::lennard_jones && s.map.parameter != MapParameters::Parameter::tabor_parameter)
       throw std::invalid_argument(where + "Adhesion/law = Lennard-Jones runs in Tabor-parameter maps only (Map/parameter "
                                   "= Tabor parameter, which gives its lambdas)");

@@ -120,7 +120,10 @@ namespace gradcontact::cases
   {
     unsigned int degree = 3;
     std::vector<unsigned int> refinements = {0}; ///< uniform refinements; several = a convergence study
-    double force_tolerance = 1e-6; ///< picks the recommended mesh (fem::recommended_settings)
+    double force_tolerance = 1e-6; ///< picks the recommended mesh (fem::recommended_settings); the contract's tolerance
+    /// Discretization/accuracy = contract: the normal scene's FE answers come from the ladder of fem/accuracy.h at
+    /// force_tolerance (its degree; refinements and degree unused), every FE row with its estimate and verdict.
+    bool contract = false;
     double far_field = 0.;         ///< L/a; 0: the recommended one
     enum class Formulation
     {

@@ -638,7 +638,8 @@ namespace gradcontact::fem
       force -= load.cohesion.stress * load.cohesion.radius * load.cohesion.radius / 2;
     result.force = 2 * numbers::PI * force;
 
-    result.record(check_energy(system.energy(state.u), work, mesh_info.min_surface_cell));
+    result.record(check_energy(system.energy(state.u), work, mesh_info.min_surface_cell, "",
+                               system.energy_magnitude(state.u)));
     if (!state.constrained)
       return;
 

@@ -459,4 +459,18 @@ namespace gradcontact::fem
     stiffness.vmult(Au, u_free);
     return u_free * Au;
   }
+
+
+
+  double DirectSystem::energy_magnitude(const Vector<double> &u) const
+  {
+    Vector<double> u_free(u);
+    constraints->set_zero(u_free);
+    double sum = 0;
+    for (unsigned int i = 0; i < u_free.size(); ++i)
+      if (u_free[i] != 0)
+        for (auto entry = stiffness.begin(i); entry != stiffness.end(i); ++entry)
+          sum += std::abs(u_free[i] * entry->value() * u_free[entry->column()]);
+    return sum;
+  }
 } // namespace gradcontact::fem

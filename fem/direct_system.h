@@ -97,6 +97,9 @@ namespace gradcontact::fem
 
     /// u.Au over the unconstrained DoFs (the constrained rows of A hold dummy diagonal entries).
     double energy(const dealii::Vector<double> &u) const;
+    /// |u|.|A||u| over the unconstrained DoFs: the scale of the rounding of energy(u) and of the work of the
+    /// reactions (each a sum of products of A's entries with u's).
+    double energy_magnitude(const dealii::Vector<double> &u) const;
 
     /// Whether the factorisation of the free (prescribe = false) or eliminated matrix is the Cholesky one (false
     /// before it is made).

@@ -409,7 +409,7 @@ namespace gradcontact::fem
     // the work of the loads, per pi
     const double work = load.type == TangentialLoadType::flat_punch ? solve_punch(load, u, result) :
                                                                        solve_traction(load, u, result);
-    result.record(check_energy(system.energy(u), work, mesh_info.min_surface_cell));
+    result.record(check_energy(system.energy(u), work, mesh_info.min_surface_cell, "", system.energy_magnitude(u)));
     result.time.solve = seconds_since(start) - result.time.factorize;
 
     const auto post = std::chrono::steady_clock::now();

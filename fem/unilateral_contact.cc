@@ -255,7 +255,7 @@ namespace gradcontact::fem
       b[dofs[i]] = values[i];
     double         unused = 0;
     Vector<double> u      = system.solve(false, {}, b, reaction, unused);
-    check = check_energy(system.energy(u), b * u, mesh_info.min_surface_cell, name);
+    check = check_energy(system.energy(u), b * u, mesh_info.min_surface_cell, name, system.energy_magnitude(u));
     return u;
   }
 

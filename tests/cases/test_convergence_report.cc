@@ -63,7 +63,19 @@ TEST_CASE("The convergence report shall have one row per quantity and level, wit
   for (std::string line; std::getline(csv, line);)
     lines.push_back(line);
   REQUIRE(lines.size() == 1 + 6);
-  CHECK_THAT(lines[0], Contains("quantity,refinement,dofs,seconds,value,reference,relative_error,observed_order"));
+  CHECK_THAT(lines[0], Contains("quantity,refinement,dofs,seconds,value,reference,relative_error,observed_order,"
+                                "change,estimate"));
+  // Order 2 halves h per level, so the values 1 + 3 h^2 are a geometric series of ratio 1/4, the degree-2 ratio the
+  // estimate assumes: its Richardson tail is the error itself (relative to the value, 1 + error).
+  {
+    std::vector<std::string> fields;
+    std::stringstream row(lines[3]);
+    for (std::string field; std::getline(row, field, ',');)
+      fields.push_back(field);
+    REQUIRE(fields.size() == 10);
+    const double error = std::stod(fields[6]), estimate = std::stod(fields[9]);
+    CHECK_THAT(estimate, WithinRel(error / (1 + error), 1e-9));
+  }
   // a quantity with a comma stays one CSV field
   CHECK_THAT(lines[4], Contains("\"pull-off force, force control\",0,1000,"));
   std::ifstream md(folder.path() / "convergence.md");

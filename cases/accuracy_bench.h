@@ -1,0 +1,32 @@
+// gradcontact/cases: the accuracy contract's benchmark (`gradcontact bench --part accuracy`).
+//
+// It sweeps the FE ladder of fem/accuracy.h over a grid of gradings, Poisson ratios, profiles and asked
+// tolerances, and over random held-out requests, and compares every answer with the chapter's closed forms (held
+// to 1e-13 by independent references, so they act as exact):
+//   - the contract: every answer's true error / asked tolerance is at most 1, or the answer is a refusal that names
+//     its limit;
+//   - the estimate: reliability (true error <= estimate in >= 95 % of the answers, never above 3x the estimate) and
+//     efficiency (the estimate at most 10x the true error);
+//   - the cost: DoFs, levels and seconds per k and tolerance (a work-precision table).
+// Writes accuracy.md and accuracy.csv; the return value is the number of broken promises (an answer that misses its
+// tolerance without a refusal, or a true error above 3x its estimate).
+#ifndef GRADCONTACT_CASES_ACCURACY_BENCH_H
+#define GRADCONTACT_CASES_ACCURACY_BENCH_H
+
+#include <filesystem>
+#include <string>
+
+namespace gradcontact::cases
+{
+  struct AccuracyBenchOptions
+  {
+    /// The small grid of the ctest (the paraboloid at k = -0.9, 0, 0.9, nu = 0.3, asked 1e-3; two random requests).
+    bool quick = false;
+  };
+
+  /// Runs the grid and writes accuracy.{md,csv} into `folder`; returns the number of broken promises.
+  int run_accuracy_bench(const AccuracyBenchOptions &options, const std::filesystem::path &folder,
+                         const std::string &machine);
+} // namespace gradcontact::cases
+
+#endif

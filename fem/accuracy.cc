@@ -1,0 +1,299 @@
+#include <fem/accuracy.h>
+#include <fem/errors.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <sstream>
+
+namespace gradcontact::fem
+{
+  namespace
+  {
+    constexpr double min_tolerance = 1e-9, max_tolerance = 0.1;
+    /// L / a of the condensed far field: its rings are cheap, and at k = -0.9 the condensation at L = 100 a leaves an
+    /// error that does not fall with h (the force of the paraboloid 7e-6 off, while the levels agree to 1e-6).
+    constexpr double contract_far_field_size = 1e4;
+
+    std::string format(const double x)
+    {
+      std::ostringstream s;
+      s.precision(2);
+      s << x;
+      return s.str();
+    }
+
+    /// The truncation error of a clamped far field at L / a: (a / L)^(1 + s), s the exponent deep below
+    /// (recommended_mesh_parameters picks L by it).
+    double truncation_error(const Settings &settings, const Material &material)
+    {
+      if (settings.discretization.far_field == FarField::condensed)
+        return 0;
+      return std::pow(settings.mesh.far_field_size, -(1 + material.modulus->deep_exponent()));
+    }
+
+    /// The quantities the contract covers for `load`, as (name, value, scale) of one level's result.
+    struct Quantity
+    {
+      std::string name;
+      double      value, scale;
+        /// A pressure sample: its recovery from the reactions (the L2 projection on the surface trace) spreads the edge
+      /// singularity's error into the contact, where two levels can agree far below it; its estimate needs three.
+      bool local = false;
+    };
+
+    std::vector<Quantity> quantities(const LoadCase &load, const Result &r)
+    {
+      std::vector<Quantity> q;
+      if (load.type != LoadType::constant_pressure)
+        q.push_back({"force", r.force, std::abs(r.force), false});
+      if (load.type == LoadType::indenter || load.type == LoadType::indenter_force ||
+          load.type == LoadType::constant_pressure)
+        q.push_back({"depth", r.depth, std::abs(r.depth), false});
+      if (load.type == LoadType::indenter_depth || load.type == LoadType::indenter_force)
+        q.push_back({"contact radius", r.contact_radius, std::abs(r.contact_radius), false});
+      double p_max = 0;
+      for (const Sample &s : r.pressure)
+        p_max = std::max(p_max, std::abs(s.value));
+      for (const Sample &s : r.pressure)
+        q.push_back({"p(" + format(s.r) + ")", s.value, p_max, true});
+      for (const Sample &s : r.displacement)
+        q.push_back({"w(" + format(s.r) + ")", s.value, std::abs(s.value), false});
+      return q;
+    }
+  } // namespace
+
+
+
+  void AccuracyBudget::validate() const
+  {
+    if (max_dofs < 1000)
+      fail("AccuracyBudget", "max_dofs", max_dofs, "[1000, inf)");
+    if (max_levels < 2 || max_levels > 6)
+      fail("AccuracyBudget", "max_levels", max_levels, "[2, 6] (an estimate needs two levels)");
+  }
+
+
+
+  double ContractResult::worst_relative() const
+  {
+    double worst = 0;
+    for (const Estimated *e : {&force, &depth, &contact_radius})
+      if (e->scale > 0)
+        worst = std::max(worst, e->relative());
+    for (const auto *samples : {&pressure, &displacement})
+      for (const Estimated &e : *samples)
+        worst = std::max(worst, e.relative());
+    return worst;
+  }
+
+
+
+  unsigned int contract_degree(const double tolerance)
+  {
+    // Degree 2 converges with a steady ratio of about 0.1 per uniform refinement over -0.9 <= k <= 0.9 (the
+    // surface map for k > 0, the condensed far field for k <= 0); degrees 3 and 4 reach further on fewer levels.
+    return tolerance >= 1e-4 ? 2 : tolerance >= 1e-7 ? 3 : 4;
+  }
+
+
+
+  double assumed_ratio(const unsigned int degree)
+  {
+    // Conservative: a quarter for degree 2 (observed 0.07 .. 0.22), a half above (observed down to 0.02 where the
+    // solution is smooth, 0.4 where the flat punch's edge limits).
+    return degree <= 2 ? 0.25 : 0.5;
+  }
+
+
+
+  Estimated estimate(const std::vector<double> &values, const double assumed, const double scale)
+  {
+    Estimated e;
+    e.scale  = scale;
+    e.levels = values;
+    if (values.empty())
+      return e;
+    e.value = values.back();
+    const std::size_t n = values.size() - 1;
+    if (n == 0)
+      return e;
+    const double d_n = std::abs(values[n] - values[n - 1]);
+    double       tail = d_n;
+    e.ratio          = assumed;
+    if (n >= 2)
+      {
+        const double d_prev   = std::abs(values[n - 1] - values[n - 2]);
+        const double observed = d_prev > 0 ? d_n / d_prev : (d_n > 0 ? ratio_limit : 0.0);
+        e.ratio               = std::clamp(observed, assumed, ratio_limit);
+        // Changes of opposite sign: the levels oscillate about the limit, and the geometric tail is no bound.
+        if ((values[n] - values[n - 1]) * (values[n - 1] - values[n - 2]) < 0)
+          e.ratio = std::max(e.ratio, oscillation_ratio);
+        // A change far below any rate of the ladder (less than assumed^2 of the one before) is an accident of two
+        // levels on opposite sides of the limit, not convergence.
+        tail = std::max(d_n, assumed * assumed * d_prev);
+      }
+    e.error = tail * e.ratio / (1 - e.ratio);
+    return e;
+  }
+
+
+
+  Settings contract_settings(const double contact_radius, const Material &material, const double tolerance,
+                             const double largest_displacement_radius)
+  {
+    if (!material.modulus)
+      throw std::invalid_argument("contract_settings: the material has no modulus field");
+    if (!(tolerance >= min_tolerance && tolerance <= max_tolerance))
+      fail("contract_settings", "tolerance", tolerance, "[1e-9, 0.1]");
+    Settings settings = recommended_settings(contact_radius, *material.modulus, std::min(tolerance, 1e-2));
+    settings.discretization.degree      = contract_degree(tolerance);
+    settings.discretization.formulation = Formulation::automatic;
+    if (!use_surface_map(settings, *material.modulus))
+      use_condensed_far_field(settings, material,
+                              std::max(contract_far_field_size, 1.5 * largest_displacement_radius / contact_radius));
+    return settings;
+  }
+
+
+
+  void grade_axis(Settings &settings, const LoadCase &load)
+  {
+    const bool indenter = load.type == LoadType::indenter || load.type == LoadType::indenter_depth ||
+                          load.type == LoadType::indenter_force;
+    if (indenter && load.profile.exponent() < 2)
+      settings.mesh.axis_refinements = std::max(settings.mesh.axis_refinements, axis_refinement_cycles);
+  }
+
+
+
+  ContractSolver::ContractSolver(const Material &material, const Settings &base, const double tolerance,
+                                 const AccuracyBudget &budget)
+    : material(material)
+    , base(base)
+    , asked(tolerance)
+    , budget(budget)
+  {
+    if (!(tolerance >= min_tolerance && tolerance <= max_tolerance))
+      fail("ContractSolver", "tolerance", tolerance, "[1e-9, 0.1]");
+    budget.validate();
+    base.discretization.validate();
+  }
+
+  ContractSolver::~ContractSolver() = default;
+
+
+
+  AxisymmetricSolver *ContractSolver::level(const unsigned int l, std::string &limit)
+  {
+    if (l < solvers.size())
+      return solvers[l].get();
+    if (l >= 2)
+      {
+        // Predicted from the growth of the last refinement (a uniform refinement multiplies the DoFs by about 4).
+        const double growth = double(solvers[l - 1]->n_dofs()) / solvers[l - 2]->n_dofs();
+        const double next   = solvers[l - 1]->n_dofs() * growth;
+        if (next > budget.max_dofs)
+          {
+            limit = "DoF budget: level " + std::to_string(l) + " would have about " + format(next) +
+                    " DoFs, above AccuracyBudget::max_dofs = " + std::to_string(budget.max_dofs);
+            return nullptr;
+          }
+      }
+    Settings s = base;
+    s.mesh.global_refinements += l;
+    solvers.push_back(std::make_unique<AxisymmetricSolver>(material, s.mesh, s.discretization));
+    if (solvers.back()->n_dofs() > budget.max_dofs)
+      {
+        limit = "DoF budget: level " + std::to_string(l) + " has " + std::to_string(solvers.back()->n_dofs()) +
+                " DoFs, above AccuracyBudget::max_dofs = " + std::to_string(budget.max_dofs);
+        solvers.pop_back();
+        return nullptr;
+      }
+    return solvers.back().get();
+  }
+
+
+
+  ContractResult ContractSolver::run(const LoadCase &load, const OutputRequest &outputs)
+  {
+    const auto     start = std::chrono::steady_clock::now();
+    ContractResult out;
+    out.tolerance = asked;
+    out.degree    = base.discretization.degree;
+    const double truncation = truncation_error(base, material);
+    if (truncation > asked / 4)
+      out.limit = "far field: the clamped boundary at L / a = " + format(base.mesh.far_field_size) +
+                  " leaves a truncation error of about " + format(truncation) +
+                  " (E grows like z^" + format(material.modulus->deep_exponent()) +
+                  " deep below; the condensed far field needs a power law of depth and the displacement formulation)";
+
+    std::vector<std::vector<double>> history; // history[i][l]: quantity i on level l
+    std::vector<Quantity>            last;
+    for (unsigned int l = 0; l < budget.max_levels && out.limit.empty(); ++l)
+      {
+        AxisymmetricSolver *solver = level(l, out.limit);
+        if (!solver)
+          break;
+        Result r = solver->run(load, outputs);
+        out.level_dofs.push_back(r.n_dofs);
+        if (!r.reliable)
+          {
+            out.limit = "unreliable solve on level " + std::to_string(l) + " (" + std::to_string(r.n_dofs) +
+                        " DoFs): " + r.message;
+            out.result = std::move(r);
+            break;
+          }
+        last = quantities(load, r);
+        if (history.empty())
+          history.resize(last.size());
+        for (std::size_t i = 0; i < last.size(); ++i)
+          history[i].push_back(last[i].value);
+        out.result = std::move(r);
+        if (l == 0)
+          continue;
+        bool within = true;
+        for (std::size_t i = 0; i < last.size(); ++i)
+          within = within && (!last[i].local || l >= 2) &&
+                   estimate(history[i], assumed_ratio(out.degree), last[i].scale).relative() <= asked;
+        if (within)
+          {
+            out.met = true;
+            break;
+          }
+      }
+
+    // The estimates of the finest level solved.
+    std::size_t i    = 0;
+    const auto  next = [&]() { return estimate(history[i], assumed_ratio(out.degree), last[i].scale); };
+    if (!last.empty())
+      {
+        if (load.type != LoadType::constant_pressure)
+          out.force = next(), ++i;
+        if (load.type == LoadType::indenter || load.type == LoadType::indenter_force ||
+            load.type == LoadType::constant_pressure)
+          out.depth = next(), ++i;
+        if (load.type == LoadType::indenter_depth || load.type == LoadType::indenter_force)
+          out.contact_radius = next(), ++i;
+        for (std::size_t j = 0; j < out.result.pressure.size(); ++j, ++i)
+          out.pressure.push_back(next());
+        for (std::size_t j = 0; j < out.result.displacement.size(); ++j, ++i)
+          out.displacement.push_back(next());
+      }
+    if (!out.met && out.limit.empty())
+      {
+        std::string worst;
+        double      worst_error = -1;
+        for (std::size_t j = 0; j < last.size(); ++j)
+          {
+            const Estimated e = estimate(history[j], assumed_ratio(out.degree), last[j].scale);
+            if (e.relative() > worst_error)
+              worst_error = e.relative(), worst = last[j].name;
+          }
+        out.limit = "levels: " + std::to_string(out.level_dofs.size()) + " solved (AccuracyBudget::max_levels), " +
+                    worst + " still estimated " + format(worst_error) + " off";
+      }
+    out.seconds = seconds_since(start);
+    return out;
+  }
+} // namespace gradcontact::fem

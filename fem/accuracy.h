@@ -1,0 +1,134 @@
+// The accuracy contract of the axisymmetric model: an FE answer at an asked relative tolerance, with an error
+// estimate that does not need the exact solution, or a refusal that names what stops it.
+//
+// The ladder. Level l is the mesh of contract_settings refined uniformly l times (every cell halved, the edge-graded
+// and far-field cells included), all at one degree. The levels are nested, so the change of a quantity from level to
+// level, d_l = q_l - q_{l-1}, falls like rho^l once the meshes resolve the solution (rho = 2^-order). Then the error
+// of q_n is the geometric tail (Richardson extrapolation with the observed ratio; Richardson, Phil. Trans. R. Soc. A
+// 226 (1927) 299; Roache, Verification and Validation in Computational Science and Engineering, 1998, ch. 5):
+//   |q_n - q_inf| = |d_n| rho / (1 - rho).
+// With two levels rho is the degree's assumed ratio; from three on it is observed, |d_n| / |d_{n-1}|, kept within
+// [assumed, ratio_limit], at least oscillation_ratio when the two changes have opposite signs, and applied to
+// max(|d_n|, assumed^2 |d_{n-1}|): an accidental near-zero d_n (two levels on opposite sides of the limit) does not
+// pass for convergence. The ladder stops at the first level whose estimates are
+// all within the tolerance, or refuses when the next level would exceed the DoF budget, or when the quantities stop
+// converging (observed ratio above ratio_limit), or when a level's solve is unreliable.
+//
+// What is estimated: the force, the depth (under contact-radius control) or the contact radius (under depth or
+// force control), p(r) at the asked radii relative to the largest |p| sampled (on three levels at least), and w(r)
+// relative to |w(r)|.
+#ifndef GRADCONTACT_FEM_ACCURACY_H
+#define GRADCONTACT_FEM_ACCURACY_H
+
+#include <fem/axisymmetric_solver.h>
+
+#include <deal.II/base/types.h>
+
+#include <limits>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace gradcontact::fem
+{
+  /// What a ladder may spend.
+  struct AccuracyBudget
+  {
+    /// The largest mesh a ladder solves (the axisymmetric solver's direct factorisation: memory grows a little faster
+    /// than the DoFs).
+    dealii::types::global_dof_index max_dofs = 1'200'000;
+    unsigned int                    max_levels = 4; ///< levels 0 .. max_levels - 1 at most (>= 2)
+
+    /// Throws std::invalid_argument naming the member, its value and the valid range.
+    void validate() const;
+  };
+
+  /// A value and the estimate of its error.
+  struct Estimated
+  {
+    double value = 0;
+    double error = std::numeric_limits<double>::infinity(); ///< estimated |value - exact| (absolute)
+    double scale = 0;    ///< what the relative error divides by: |value|, or max |p| for a pressure
+    double ratio = 0;    ///< the convergence ratio used (assumed or observed)
+    std::vector<double> levels; ///< the value on every level solved (the last is `value`)
+
+    double relative() const { return scale > 0 ? error / scale : error; }
+  };
+
+  struct ContractResult
+  {
+    Result result;    ///< the finest level's run: its values are the answer
+    Estimated force, depth, contact_radius;
+    std::vector<Estimated> pressure, displacement; ///< at the OutputRequest's radii, in its order
+    double tolerance = 0;                          ///< the relative tolerance asked
+    bool   met       = false;                      ///< every estimate within the tolerance
+    /// Empty when met; else what stopped the ladder: "DoF budget: ...", "no convergence: ...", "unreliable solve: ...".
+    std::string  limit;
+    unsigned int degree = 0;                                ///< of every level
+    std::vector<dealii::types::global_dof_index> level_dofs; ///< DoFs of every level solved
+    double seconds = 0; ///< wall time of this run (with the set-up of the levels it made)
+
+    /// The largest relative estimate of the quantities the contract covers.
+    double worst_relative() const;
+  };
+
+  /// The settings of level 0 for a relative tolerance: the recommended mesh (recommended_settings) with the degree of
+  /// the ladder (2 from 1e-5 on, 3 down to 1e-7, 4 below), the surface map where the modulus vanishes at the surface
+  /// (use_surface_map; the k > 0 layer u_z ~ z^(1-k) then needs no halvings that would keep the ratio at 2^-(1-k)),
+  /// else the condensed far field for a power law of depth (no truncation error; L / a = far_field_size, at least
+  /// 1.5 times the largest displacement radius) in the displacement formulation, and the formulation `automatic`
+  /// (mixed from nu = 0.45 on).
+  Settings contract_settings(double contact_radius, const Material &material, double tolerance,
+                             double largest_displacement_radius = 0);
+
+  /// The degree of the ladder for a relative tolerance (see contract_settings).
+  unsigned int contract_degree(double tolerance);
+
+  /// The estimate of the error of values.back(), values[l] the quantity on level l (the file's header).
+  /// `assumed_ratio`: the ratio with two levels and the floor of the observed one; scale: see Estimated.
+  Estimated estimate(const std::vector<double> &values, double assumed_ratio, double scale);
+
+  /// The ratio a degree's ladder is assumed to converge with (per uniform refinement) before it is observed.
+  double assumed_ratio(unsigned int degree);
+
+  /// Observed ratios above this are no convergence: the estimate would be 4 |d_n| or more.
+  inline constexpr double ratio_limit = 0.8;
+
+  /// The ratio used at least when the last two changes have opposite signs (the levels oscillate about the limit).
+  inline constexpr double oscillation_ratio = 0.5;
+
+  /// Refinement cycles toward the axis for a tip f ~ r^n, n < 2 (the cone's p ~ arccosh(a/r), a cusp of the power
+  /// law): MeshParameters::axis_refinements.
+  inline constexpr unsigned int axis_refinement_cycles = 12;
+
+  /// Grades `settings` toward the axis when `load` is an indenter whose tip exponent is below 2 (no change else).
+  void grade_axis(Settings &settings, const LoadCase &load);
+
+  /// Solves `load` on the ladder until the contract holds or a limit is reached. The solvers of the levels are kept,
+  /// so that further loads (other radii, other depths) reuse their factorisations.
+  class ContractSolver
+  {
+  public:
+    /// `base`: level 0 (contract_settings, or the caller's); its global_refinements is the first level.
+    ContractSolver(const Material &material, const Settings &base, double tolerance, const AccuracyBudget &budget = {});
+    ~ContractSolver();
+
+    /// Throws std::invalid_argument on a bad tolerance or budget (naming it); a failed solve is a refusal in the
+    /// result, not an exception.
+    ContractResult run(const LoadCase &load, const OutputRequest &outputs = {});
+
+    double tolerance() const { return asked; }
+
+  private:
+    /// The solver of level l, made on first use; null when its predicted size exceeds the budget.
+    AxisymmetricSolver *level(unsigned int l, std::string &limit);
+
+    Material                                         material;
+    Settings                                         base;
+    double                                           asked;
+    AccuracyBudget                                   budget;
+    std::vector<std::unique_ptr<AxisymmetricSolver>> solvers;
+  };
+} // namespace gradcontact::fem
+
+#endif
