@@ -266,7 +266,11 @@ namespace gradcontact::cases
         for (const Row &r : s.rows)
           if (o.verbose || !r.pass)
             std::cout << "  " << (r.pass ? "pass " : "FAIL ") << r.quantity << " [" << r.metric << "] " << r.method
-                      << " vs " << r.reference << ": " << (r.error.empty() ? format(r.rel_error) : r.error) << "\n";
+                      << " vs " << r.reference << ": " << (r.error.empty() ? format(r.rel_error) : r.error)
+                      << (r.asked > 0 ? " (asked " + format(r.asked) + ", estimate " + format(r.estimate) + ", contract " +
+                                          r.contract + ")"
+                                      : "")
+                      << "\n";
     }
 
     int finish(const std::vector<SceneResult> &results, const Options &o)

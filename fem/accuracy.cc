@@ -61,6 +61,31 @@ namespace gradcontact::fem
         q.push_back({"w(" + format(s.r) + ")", s.value, std::abs(s.value), false});
       return q;
     }
+
+    /// "; <the quantity furthest from the tolerance> still estimated ... off", with its changes' ratio and, when they
+    /// do not fall, what at the surface keeps them from falling.
+    std::string worst_quantity(const std::vector<std::vector<double>> &history, const std::vector<Quantity> &last,
+                               const unsigned int degree, const double surface_exponent)
+    {
+      if (last.empty() || history.front().size() < 2)
+        return "";
+      std::size_t worst = 0;
+      double      worst_error = -1;
+      for (std::size_t j = 0; j < last.size(); ++j)
+        {
+          const double e = estimate(history[j], assumed_ratio(degree), last[j].scale).relative();
+          if (e > worst_error)
+            worst_error = e, worst = j;
+        }
+      const Estimated e = estimate(history[worst], assumed_ratio(degree), last[worst].scale);
+      std::string     text = "; " + last[worst].name + " still estimated " + format(worst_error) + " off";
+      if (history[worst].size() >= 3 && e.ratio >= ratio_limit)
+        text += " and not converging (change ratio " + format(e.ratio) + " per level" +
+                (surface_exponent < 0 ? ": the stiff surface of k < 0, whose conditioning grows with every level)" :
+                 surface_exponent > 0 ? ": the soft surface layer of k > 0)" :
+                                        ")");
+      return text;
+    }
   } // namespace
 
 
@@ -149,6 +174,10 @@ namespace gradcontact::fem
     Settings settings = recommended_settings(contact_radius, *material.modulus, std::min(tolerance, 1e-2));
     settings.discretization.degree      = contract_degree(tolerance);
     settings.discretization.formulation = Formulation::automatic;
+    // The mixed formulation (Taylor-Hood) at degree 2 gives garbage from the first uniform refinement on (flagged by
+    // the energy check), degree 3 does not: its ladder starts at 3.
+    if (resolve_formulation(settings.discretization, material.nu) == Formulation::mixed)
+      settings.discretization.degree = std::max(settings.discretization.degree, 3u);
     if (!use_surface_map(settings, *material.modulus))
       use_condensed_far_field(settings, material,
                               std::max(contract_far_field_size, 1.5 * largest_displacement_radius / contact_radius));
@@ -280,19 +309,11 @@ namespace gradcontact::fem
         for (std::size_t j = 0; j < out.result.displacement.size(); ++j, ++i)
           out.displacement.push_back(next());
       }
-    if (!out.met && out.limit.empty())
-      {
-        std::string worst;
-        double      worst_error = -1;
-        for (std::size_t j = 0; j < last.size(); ++j)
-          {
-            const Estimated e = estimate(history[j], assumed_ratio(out.degree), last[j].scale);
-            if (e.relative() > worst_error)
-              worst_error = e.relative(), worst = last[j].name;
-          }
-        out.limit = "levels: " + std::to_string(out.level_dofs.size()) + " solved (AccuracyBudget::max_levels), " +
-                    worst + " still estimated " + format(worst_error) + " off";
-      }
+    if (!out.met)
+      out.limit = (out.limit.empty() ? "levels: " + std::to_string(out.level_dofs.size()) +
+                                         " solved (AccuracyBudget::max_levels)" :
+                                       out.limit) +
+                  worst_quantity(history, last, out.degree, material.modulus->surface_exponent());
     out.seconds = seconds_since(start);
     return out;
   }

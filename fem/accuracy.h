@@ -73,7 +73,7 @@ namespace gradcontact::fem
   };
 
   /// The settings of level 0 for a relative tolerance: the recommended mesh (recommended_settings) with the degree of
-  /// the ladder (2 from 1e-5 on, 3 down to 1e-7, 4 below), the surface map where the modulus vanishes at the surface
+  /// the ladder (contract_degree; at least 3 in the mixed formulation), the surface map where the modulus vanishes at the surface
   /// (use_surface_map; the k > 0 layer u_z ~ z^(1-k) then needs no halvings that would keep the ratio at 2^-(1-k)),
   /// else the condensed far field for a power law of depth (no truncation error; L / a = far_field_size, at least
   /// 1.5 times the largest displacement radius) in the displacement formulation, and the formulation `automatic`

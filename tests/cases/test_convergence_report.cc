@@ -74,7 +74,7 @@ TEST_CASE("The convergence report shall have one row per quantity and level, wit
       fields.push_back(field);
     REQUIRE(fields.size() == 10);
     const double error = std::stod(fields[6]), estimate = std::stod(fields[9]);
-    CHECK_THAT(estimate, WithinRel(error / (1 + error), 1e-9));
+    CHECK_THAT(estimate, WithinRel(error / (1 + error), 1e-5)); // the CSV keeps six digits
   }
   // a quantity with a comma stays one CSV field
   CHECK_THAT(lines[4], Contains("\"pull-off force, force control\",0,1000,"));
