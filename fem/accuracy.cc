@@ -11,8 +11,8 @@ namespace gradcontact::fem
   namespace
   {
     constexpr double min_tolerance = 1e-9, max_tolerance = 0.1;
-    /// L / a of the condensed far field: its rings are cheap, and at k = -0.9 the condensation at L = 100 a leaves an
-    /// error that does not fall with h (the force of the paraboloid 7e-6 off, while the levels agree to 1e-6).
+    /// L / a of the condensed far field: its rings are cheap, and near k = -1 the condensation close to the contact
+    /// (L = 100 a) leaves an error that does not fall with h, which the ladder would not see.
     constexpr double contract_far_field_size = 1e4;
 
     std::string format(const double x)
@@ -116,8 +116,8 @@ namespace gradcontact::fem
 
   unsigned int contract_degree(const double tolerance)
   {
-    // Degree 2 converges with a steady ratio of about 0.1 per uniform refinement over -0.9 <= k <= 0.9 (the
-    // surface map for k > 0, the condensed far field for k <= 0); degrees 3 and 4 reach further on fewer levels.
+    // Degree 2 converges with a steady ratio per uniform refinement over the whole range of k (the surface map for
+    // k > 0, the condensed far field for k <= 0); degrees 3 and 4 reach further on fewer levels.
     return tolerance >= 1e-4 ? 2 : tolerance >= 1e-7 ? 3 : 4;
   }
 
@@ -125,8 +125,8 @@ namespace gradcontact::fem
 
   double assumed_ratio(const unsigned int degree)
   {
-    // Conservative: a quarter for degree 2 (observed 0.07 .. 0.22), a half above (observed down to 0.02 where the
-    // solution is smooth, 0.4 where the flat punch's edge limits).
+    // Conservative: a quarter for degree 2 (the ratios of accuracy.md lie below it), a half above (where the flat
+    // punch's edge limits degree 3, its ratio approaches a half; where the solution is smooth it is far smaller).
     return degree <= 2 ? 0.25 : 0.5;
   }
 

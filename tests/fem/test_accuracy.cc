@@ -80,9 +80,8 @@ TEST_CASE("The contract shall deliver the asked tolerance at k = 0 against Hertz
   CHECK(force_error <= tolerance);
   CHECK(depth_error <= tolerance);
   CHECK(force_error <= 3 * h.force.relative());
-  // The depth under contact-radius control has an error of a few 1e-7 that uniform refinement does not reduce (the
-  // levels oscillate about it), far below this tolerance: its estimate is not asserted here (the accuracy bench
-  // reports it).
+  // The depth under contact-radius control has an error that uniform refinement does not reduce (the levels
+  // oscillate about it), far below this tolerance: its estimate is not asserted here (the accuracy bench reports it).
   CHECK(h.level_dofs.size() >= 2);
 
   LoadCase punch;
