@@ -86,6 +86,47 @@ namespace gradcontact::fem
                                         ")");
       return text;
     }
+
+    /// The verdict on the levels solved: every estimate within `asked` (met), or else whether more levels can help.
+    /// They cannot when a quantity's changes do not fall (observed ratio at ratio_limit or above: "no convergence"), or
+    /// when the levels its observed ratio needs would exceed the DoF budget ("DoF budget", predicted from 4x the DoFs
+    /// per level): the ladder then stops before its largest solves.
+    struct Verdict
+    {
+      bool        met = false;
+      std::string stop;
+    };
+
+    Verdict judge(const std::vector<std::vector<double>> &history, const std::vector<Quantity> &last,
+                  const unsigned int degree, const double asked, const double dofs, const AccuracyBudget &budget)
+    {
+      Verdict v;
+      v.met                = true;
+      double levels_needed = 0;
+      for (std::size_t i = 0; i < last.size(); ++i)
+        {
+          const Estimated e     = estimate(history[i], assumed_ratio(degree), last[i].scale);
+          const bool      three = history[i].size() >= 3;
+          if (last[i].local && !three)
+            v.met = false; // a pressure's estimate needs three levels
+          if (e.relative() <= asked)
+            continue;
+          v.met = false;
+          if (three && e.ratio >= ratio_limit && e.relative() * e.ratio > asked)
+            {
+              v.stop = "no convergence";
+              return v;
+            }
+          if (three)
+            levels_needed = std::max(levels_needed, std::ceil(std::log(asked / e.relative()) / std::log(e.ratio)));
+        }
+      const double predicted = dofs * std::pow(4.0, levels_needed);
+      if (!v.met && levels_needed > 0 && predicted > budget.max_dofs)
+        v.stop = "DoF budget: about " + std::to_string(static_cast<int>(levels_needed)) +
+                 " more level(s) needed at the observed ratios, about " + format(predicted) +
+                 " DoFs, above AccuracyBudget::max_dofs = " + std::to_string(budget.max_dofs);
+      return v;
+    }
   } // namespace
 
 
@@ -281,15 +322,11 @@ namespace gradcontact::fem
         out.result = std::move(r);
         if (l == 0)
           continue;
-        bool within = true;
-        for (std::size_t i = 0; i < last.size(); ++i)
-          within = within && (!last[i].local || l >= 2) &&
-                   estimate(history[i], assumed_ratio(out.degree), last[i].scale).relative() <= asked;
-        if (within)
-          {
-            out.met = true;
-            break;
-          }
+        const Verdict verdict = judge(history, last, out.degree, asked, double(out.level_dofs.back()), budget);
+        out.met               = verdict.met;
+        out.limit             = verdict.stop;
+        if (out.met)
+          break;
       }
 
     // The estimates of the finest level solved.

@@ -12,7 +12,8 @@
 // max(|d_n|, assumed^2 |d_{n-1}|): an accidental near-zero d_n (two levels on opposite sides of the limit) does not
 // pass for convergence. The ladder stops at the first level whose estimates are
 // all within the tolerance, or refuses when the next level would exceed the DoF budget, or when the quantities stop
-// converging (observed ratio above ratio_limit), or when a level's solve is unreliable.
+// converging (observed ratio at ratio_limit or above), or when the levels the observed ratios still need would exceed
+// the budget (so that a refusal does not cost the largest solves), or when a level's solve is unreliable.
 //
 // What is estimated: the force, the depth (under contact-radius control) or the contact radius (under depth or
 // force control), p(r) at the asked radii relative to the largest |p| sampled (on three levels at least), and w(r)
