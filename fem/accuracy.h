@@ -7,7 +7,7 @@
 // of q_n is the geometric tail (Richardson extrapolation with the observed ratio; Richardson, Phil. Trans. R. Soc. A
 // 226 (1927) 299; Roache, Verification and Validation in Computational Science and Engineering, 1998, ch. 5):
 //   |q_n - q_inf| = |d_n| rho / (1 - rho).
-// With two levels rho is the degree's assumed ratio; from three on it is observed, |d_n| / |d_{n-1}|, kept within
+// With two levels rho is the assumed ratio (of the degree, and 2^-(1 + s) on a stiff surface E ~ z^s, s < 0); from three on it is observed, |d_n| / |d_{n-1}|, kept within
 // [assumed, ratio_limit], at least oscillation_ratio when the two changes have opposite signs, and applied to
 // max(|d_n|, assumed^2 |d_{n-1}|): an accidental near-zero d_n (two levels on opposite sides of the limit) does not
 // pass for convergence. The ladder stops at the first level whose estimates are
@@ -89,8 +89,9 @@ namespace gradcontact::fem
   /// `assumed_ratio`: the ratio with two levels and the floor of the observed one; scale: see Estimated.
   Estimated estimate(const std::vector<double> &values, double assumed_ratio, double scale);
 
-  /// The ratio a degree's ladder is assumed to converge with (per uniform refinement) before it is observed.
-  double assumed_ratio(unsigned int degree);
+  /// The ratio a degree's ladder is assumed to converge with (per uniform refinement) before it is observed, on a
+  /// modulus with surface exponent s (E ~ z^s; slower on a stiff surface, s < 0).
+  double assumed_ratio(unsigned int degree, double surface_exponent = 0);
 
   /// Observed ratios above this are no convergence: the estimate would be 4 |d_n| or more.
   inline constexpr double ratio_limit = 0.8;
