@@ -33,6 +33,13 @@ namespace gradcontact::cases
       return buffer;
     }
 
+    std::string brief(const double x)
+    {
+      char buffer[32];
+      std::snprintf(buffer, sizeof buffer, "%.2g", x);
+      return buffer;
+    }
+
     [[noreturn]] void refuse(const std::string &what) { throw std::invalid_argument("fe: " + what); }
 
     double positive(const std::optional<double> &value, const std::string &name, const std::string &why)
@@ -57,14 +64,18 @@ namespace gradcontact::cases
     /// radii announced by FeOracle::plan, solved together with the first one asked
     std::map<bool, std::set<double>> planned;
 
-    /// Refuses an answer that the contract did not deliver, naming what limits it and what the finest level gives.
+    /// Refuses an answer that the contract did not deliver, naming what limits it and what the finest level gives. A
+    /// quantity whose own estimate is within the tolerance is delivered though another one of the same run is not
+    /// (a pressure's estimate counts from three levels on, fem/accuracy.h).
     void check(const fem::ContractResult &r, const fem::Estimated &e, const char *what) const
     {
-      if (!r.met)
+      const bool pressure = std::string(what) == "pressure";
+      const bool own = e.relative() <= r.tolerance && (!pressure || e.levels.size() >= 3);
+      if (!r.met && !own)
         throw std::runtime_error(std::string("fe: the ") + what + " does not reach tolerance " +
                                  check::format(r.tolerance) + ": " + r.limit + " (the finest level, " +
                                  std::to_string(r.level_dofs.empty() ? 0 : r.level_dofs.back()) +
-                                 " DoFs, gives an estimated relative error of " + check::format(e.relative()) + ")");
+                                 " DoFs, gives an estimated relative error of " + brief(e.relative()) + ")");
       if (rigid_contact && !r.result.consistent_contact)
         throw std::runtime_error(std::string("fe: the FE contact state is inconsistent (a tensile contact node or a "
                                              "negative gap): ") +
