@@ -208,7 +208,7 @@ namespace gradcontact::cases
     }
 
     /// A promise is broken by an answer that misses its tolerance, and by a refusal that does not name its limit. The
-    /// estimate's reliability is measured and reported (write_estimate_table), not promised per answer.
+    /// estimate's reliability goes into a table of the report (write_estimate_table), not a promise per answer.
     bool broken(const Row &r)
     {
       if (!r.met)

@@ -9,7 +9,7 @@
 //     efficiency (the estimate at most 10x the true error);
 //   - the cost: DoFs, levels and seconds per k and tolerance (a work-precision table).
 // Writes accuracy.md and accuracy.csv; the return value is the number of broken promises (an answer that misses its
-// tolerance, or a refusal that does not name its limit); the estimate's reliability is a measured table.
+// tolerance, or a refusal that does not name its limit); the estimate's reliability is a table of the report.
 #ifndef GRADCONTACT_CASES_ACCURACY_BENCH_H
 #define GRADCONTACT_CASES_ACCURACY_BENCH_H
 

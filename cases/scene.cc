@@ -715,189 +715,214 @@ namespace gradcontact::cases
                                     ": the contract's ladder (fem/accuracy.h) answers the normal FE scenes of a rigid "
                                     "indenter on a disc; use accuracy = levels");
     }
+
+    /// The checks every scene passes, whatever its kind: the Lennard-Jones law's maps, nu = 1/2, unilateral contact,
+    /// friction, elastic indenters, and Map/nu values without a map.
+    void check_common(const Scene &s, const std::string &where)
+    {
+      if (s.adhesion.law == AdhesionParameters::Law::lennard_jones && s.map.parameter != MapParameters::Parameter::tabor_parameter)
+        throw std::invalid_argument(where + "Adhesion/law = Lennard-Jones runs in Tabor-parameter maps only (Map/parameter "
+                                    "= Tabor parameter, which gives its lambdas)");
+      // The edge's cells of the Lennard-Jones path shrink like lambda^-2 (lennard_jones_edge_refinement).
+      if (s.adhesion.law == AdhesionParameters::Law::lennard_jones)
+        for (const double lambda : s.map.ratios)
+          if (!(lambda <= lennard_jones_largest_lambda()))
+            throw std::invalid_argument(where + "Map/ratios: lambda = " + std::to_string(lambda) +
+                                        " with Adhesion/law = Lennard-Jones; the valid range is (0, " +
+                                        format(lennard_jones_largest_lambda()) +
+                                        "] (the adhesive zone narrows like lambda^-2; the path at 10 takes about 15 "
+                                        "minutes)");
+      if (s.references.fem && s.material.nu >= 0.5 &&
+          s.discretization.formulation == DiscretizationParameters::Formulation::displacement)
+        throw std::invalid_argument(where + "Material/nu = 0.5 with Discretization/formulation = displacement: the "
+                                    "displacement formulation needs nu in [0, 0.5) (it locks); incompressible "
+                                    "nu = 0.5 needs formulation = mixed or automatic");
+      if (s.load.contact == LoadParameters::Contact::unilateral)
+        {
+          using Type = LoadParameters::Type;
+          const bool candidate = s.candidate.enabled();
+          if (!candidate && (s.load.type == Type::flat_punch || s.load.type == Type::constant_pressure))
+            throw std::invalid_argument(where + "Load/contact = unilateral needs an indenter (Load/type = paraboloid, "
+                                        "cone, power law or concave punch, or a Candidate/profile)");
+          if ((candidate || s.load.type != Type::concave_punch) &&
+              s.load.control == LoadParameters::Control::contact_radius)
+            throw std::invalid_argument(where + "Load/contact = unilateral finds the contact radius: Load/control "
+                                        "must be depth or force");
+          if (s.tangential.enabled() || s.adhesion.enabled(s.load))
+            throw std::invalid_argument(where + "Load/contact = unilateral is a normal-contact scene (no Adhesion or "
+                                        "Tangential entries)");
+        }
+      if (s.friction.enabled())
+        {
+          if (s.load.contact != LoadParameters::Contact::unilateral)
+            throw std::invalid_argument(where + "Friction/coefficient = " + format(s.friction.coefficient) +
+                                        " needs Load/contact = unilateral (the stick and slip zones are found with the "
+                                        "contact set)");
+          if (s.indenter.elasticity != IndenterParameters::Elasticity::rigid)
+            throw std::invalid_argument(where + "Friction/coefficient = " + format(s.friction.coefficient) +
+                                        " is modelled for a rigid indenter: Indenter/elasticity must be rigid");
+          if (s.candidate.enabled() || s.map.enabled())
+            throw std::invalid_argument(where + "Friction/coefficient = " + format(s.friction.coefficient) +
+                                        " with a Candidate or Map: a friction map sets mu from Map/ratios (Map/parameter "
+                                        "= friction coefficient); a candidate is checked frictionless");
+        }
+      if (s.indenter.elasticity != IndenterParameters::Elasticity::rigid)
+        {
+          if (s.load.contact != LoadParameters::Contact::unilateral)
+            throw std::invalid_argument(where + "Indenter/elasticity = " +
+                                        (s.indenter.elasticity == IndenterParameters::Elasticity::graded ? "graded"
+                                                                                                        : "homogeneous") +
+                                        " needs Load/contact = unilateral (the two-body model finds the contact set)");
+          if (s.indenter.elasticity == IndenterParameters::Elasticity::graded &&
+              s.material.modulus != MaterialParameters::Modulus::power_law)
+            throw std::invalid_argument(where + "Indenter/elasticity = graded takes the Material's k and c0 of the power "
+                                        "law (9.4): Material/modulus must be power law");
+          if (s.map.enabled())
+            throw std::invalid_argument(where + "Map/parameter is set: the map chooses the indenter; Indenter/elasticity "
+                                        "must be rigid");
+        }
+      if (!s.map.enabled() && !s.map.poisson_ratios.empty())
+        throw std::invalid_argument(where + "Map/nu values is set without a map (Map/parameter = none): it belongs to a "
+                                    "friction coefficient map");
+    }
+
+    /// Map/parameter = Coulomb 3D.
+    void check_coulomb_map(const Scene &s, const std::string &where)
+    {
+    if (s.tangential.study != TangentialParameters::Study::oscillation)
+      throw std::invalid_argument(where + "Map/parameter = Coulomb 3D needs Tangential/study = oscillation (its "
+                                  "friction coefficient, amplitude and load steps set the path)");
+    if (s.adhesion.enabled(s.load) || s.candidate.enabled() || s.load.contact == LoadParameters::Contact::unilateral ||
+        s.friction.enabled())
+      throw std::invalid_argument(where + "Map/parameter = Coulomb 3D: no Adhesion, Candidate or Friction entries and "
+                                  "Load/contact = disc (the 3D model finds the contact and stick zones itself)");
+    if (s.load.type != LoadParameters::Type::paraboloid)
+      throw std::invalid_argument(where + "Map/parameter = Coulomb 3D needs Load/type = paraboloid (the sphere of "
+                                  "9.80-9.86)");
+    if (s.material.modulus != MaterialParameters::Modulus::power_law)
+      throw std::invalid_argument(where + "Map/parameter = Coulomb 3D needs Material/modulus = power law");
+    if (!s.references.fem)
+      throw std::invalid_argument(where + "Map/parameter is set with References/fem = false: a map is FE data");
+
+    if (s.tangential.holl_ratio)
+      throw std::invalid_argument(where + "Map/parameter = Coulomb 3D: use Map/Holl ratio, not Tangential/Holl "
+                                  "ratio (the map runs every nu of Map/nu values)");
+    if (!(s.load.a > 0.) || !(s.load.R > s.load.a))
+      throw std::invalid_argument(where + "Map/parameter = Coulomb 3D needs 0 < Load/a < Load/R (Load/a = " +
+                                  format(s.load.a) + ", Load/R = " + format(s.load.R) + ")");
+    }
+
+    /// Map/parameter = Tabor parameter.
+    void check_tabor_map(const Scene &s, const std::string &where)
+    {
+    using Type = LoadParameters::Type;
+    if (s.adhesion.law == AdhesionParameters::Law::lennard_jones && !s.discretization.refinements.empty() &&
+        s.discretization.refinements.back() > 4)
+      throw std::invalid_argument(where + "Discretization/refinements = " +
+                                  std::to_string(s.discretization.refinements.back()) +
+                                  " with Adhesion/law = Lennard-Jones: at most 4 (its mesh is refined 2^level times, "
+                                  "fem/smooth_cohesion.h)");
+    if (s.tangential.enabled() || s.candidate.enabled() || s.load.contact == LoadParameters::Contact::unilateral)
+      throw std::invalid_argument(where + "Map/parameter = Tabor parameter: an adhesive scene (no Tangential or "
+                                  "Candidate entries, Load/contact = disc)");
+    if (s.adhesion.tabor_parameter > 0. || s.adhesion.cohesive_strength > 0.)
+      throw std::invalid_argument(where + "Map/parameter = Tabor parameter: Adhesion/Tabor parameter and cohesive "
+                                  "strength are not set (Map/ratios gives the lambdas)");
+    if (!(s.adhesion.work_of_adhesion > 0.))
+      throw std::invalid_argument(where + "Map/parameter = Tabor parameter with Adhesion/work of adhesion = " +
+                                  format(s.adhesion.work_of_adhesion) + ": it must be in (0, inf)");
+    if (s.load.type != Type::paraboloid && s.load.type != Type::power_law)
+      throw std::invalid_argument(where + "Map/parameter = Tabor parameter needs Load/type = paraboloid or power law "
+                                  "(a profile that opens monotonically, with the chapter's JKR pull-off)");
+    if (s.material.modulus != MaterialParameters::Modulus::power_law)
+      throw std::invalid_argument(where + "Map/parameter = Tabor parameter needs Material/modulus = power law (the "
+                                  "map isolates the range of adhesion)");
+    if (!s.references.fem)
+      throw std::invalid_argument(where + "Map/parameter is set with References/fem = false: a map is FE data");
+    if (s.map.ratios.empty())
+      throw std::invalid_argument(where + "Map/ratios is empty: give the Tabor parameters lambda of the map");
+    if (!s.map.poisson_ratios.empty())
+      throw std::invalid_argument(where + "Map/nu values is set for Map/parameter = Tabor parameter: the map runs at "
+                                  "Material/nu");
+    }
+
+    /// The maps of normal contact (every other Map/parameter).
+    void check_normal_map(const Scene &s, const std::string &where)
+    {
+    using Type = LoadParameters::Type;
+    if (s.tangential.enabled() || s.adhesion.enabled(s.load) || s.candidate.enabled() ||
+        s.load.contact == LoadParameters::Contact::unilateral)
+      throw std::invalid_argument(where + "Map/parameter is set: a map is a normal-contact scene (no Adhesion, "
+                                  "Tangential or Candidate entries, Load/contact = disc)");
+    if (s.load.type == Type::constant_pressure || s.load.type == Type::concave_punch)
+      throw std::invalid_argument(where + "Map/parameter is set with Load/type = " +
+                                  (s.load.type == Type::constant_pressure ? "constant pressure" : "concave punch") +
+                                  ": a map needs a flat punch, paraboloid, cone or power law");
+    if (s.load.control != LoadParameters::Control::contact_radius)
+      throw std::invalid_argument(where + "Map/parameter is set: Load/control must be contact radius (the map "
+                                  "runs at Load/a and compares at the FE depth)");
+    if (!s.references.fem)
+      throw std::invalid_argument(where + "Map/parameter is set with References/fem = false: a map is FE data");
+    if (s.map.ratios.empty())
+      throw std::invalid_argument(where + "Map/ratios is empty: give the ratios a/z0, a/H, a/w or E1/E0 of the map");
+    if (s.map.parameter == MapParameters::Parameter::indenter_modulus)
+      {
+        if (s.load.type == Type::flat_punch)
+          throw std::invalid_argument(where + "Map/parameter = indenter modulus with Load/type = flat punch: the "
+                                      "elastic indenter's contact set is found, which needs a curved indenter "
+                                      "(paraboloid, cone or power law)");
+        if (s.material.modulus != MaterialParameters::Modulus::power_law)
+          throw std::invalid_argument(where + "Map/parameter = indenter modulus needs Material/modulus = power law "
+                                      "(the map isolates the indenter's elasticity)");
+      }
+    if (s.map.parameter == MapParameters::Parameter::friction_coefficient &&
+        (s.friction.load_steps < 2 || s.friction.load_steps % 2 != 0))
+      throw std::invalid_argument(where + "Map/parameter = friction coefficient with Friction/load steps = " +
+                                  std::to_string(s.friction.load_steps) +
+                                  ": the map extrapolates from N and 2N steps and measures it from N/2: give an even "
+                                  "number >= 2");
+    if (s.map.parameter != MapParameters::Parameter::friction_coefficient && !s.map.poisson_ratios.empty())
+      throw std::invalid_argument(where + "Map/nu values is set for Map/parameter other than friction coefficient: "
+                                  "the other maps run at Material/nu");
+    if (s.map.parameter == MapParameters::Parameter::friction_coefficient)
+      {
+        if (s.load.type == Type::flat_punch)
+          throw std::invalid_argument(where + "Map/parameter = friction coefficient with Load/type = flat punch: "
+                                      "the map finds the contact set during loading, which needs a curved "
+                                      "indenter (paraboloid, cone or power law)");
+        if (s.material.modulus != MaterialParameters::Modulus::power_law)
+          throw std::invalid_argument(where + "Map/parameter = friction coefficient needs Material/modulus = power "
+                                      "law (the map isolates friction)");
+      }
+    if (s.map.parameter == MapParameters::Parameter::erf_width)
+      for (const double k : s.map.exponents.empty() ? std::vector<double>{s.material.k} : s.map.exponents)
+        if (k != 0.)
+          throw std::invalid_argument(where + "Map/parameter = erf width with k = " + format(k) + " (" +
+                                      (s.map.exponents.empty() ? "Material/k" : "Map/k values") +
+                                      "): the error-function grading needs k = 0 (homogeneous E0 below the skin)");
+    if (!(s.load.a > 0.))
+      throw std::invalid_argument(where + "Load/a = " + format(s.load.a) + " must be in (0, inf) (z0 or H = a / ratio)");
+    }
   } // namespace
 
   SceneKind scene_kind(const Scene &s)
   {
     const std::string where = "scene " + s.file + ": ";
     check_contract(s, where);
-    if (s.adhesion.law == AdhesionParameters::Law::lennard_jones && s.map.parameter != MapParameters::Parameter::tabor_parameter)
-      throw std::invalid_argument(where + "Adhesion/law = Lennard-Jones runs in Tabor-parameter maps only (Map/parameter "
-                                  "= Tabor parameter, which gives its lambdas)");
-    // The edge's cells of the Lennard-Jones path shrink like lambda^-2 (lennard_jones_edge_refinement).
-    if (s.adhesion.law == AdhesionParameters::Law::lennard_jones)
-      for (const double lambda : s.map.ratios)
-        if (!(lambda <= lennard_jones_largest_lambda()))
-          throw std::invalid_argument(where + "Map/ratios: lambda = " + std::to_string(lambda) +
-                                      " with Adhesion/law = Lennard-Jones; the valid range is (0, " +
-                                      format(lennard_jones_largest_lambda()) +
-                                      "] (the adhesive zone narrows like lambda^-2; the path at 10 takes about 15 "
-                                      "minutes)");
-    if (s.references.fem && s.material.nu >= 0.5 &&
-        s.discretization.formulation == DiscretizationParameters::Formulation::displacement)
-      throw std::invalid_argument(where + "Material/nu = 0.5 with Discretization/formulation = displacement: the "
-                                  "displacement formulation needs nu in [0, 0.5) (it locks); incompressible "
-                                  "nu = 0.5 needs formulation = mixed or automatic");
-    if (s.load.contact == LoadParameters::Contact::unilateral)
-      {
-        using Type = LoadParameters::Type;
-        const bool candidate = s.candidate.enabled();
-        if (!candidate && (s.load.type == Type::flat_punch || s.load.type == Type::constant_pressure))
-          throw std::invalid_argument(where + "Load/contact = unilateral needs an indenter (Load/type = paraboloid, "
-                                      "cone, power law or concave punch, or a Candidate/profile)");
-        if ((candidate || s.load.type != Type::concave_punch) &&
-            s.load.control == LoadParameters::Control::contact_radius)
-          throw std::invalid_argument(where + "Load/contact = unilateral finds the contact radius: Load/control "
-                                      "must be depth or force");
-        if (s.tangential.enabled() || s.adhesion.enabled(s.load))
-          throw std::invalid_argument(where + "Load/contact = unilateral is a normal-contact scene (no Adhesion or "
-                                      "Tangential entries)");
-      }
-    if (s.friction.enabled())
-      {
-        if (s.load.contact != LoadParameters::Contact::unilateral)
-          throw std::invalid_argument(where + "Friction/coefficient = " + format(s.friction.coefficient) +
-                                      " needs Load/contact = unilateral (the stick and slip zones are found with the "
-                                      "contact set)");
-        if (s.indenter.elasticity != IndenterParameters::Elasticity::rigid)
-          throw std::invalid_argument(where + "Friction/coefficient = " + format(s.friction.coefficient) +
-                                      " is modelled for a rigid indenter: Indenter/elasticity must be rigid");
-        if (s.candidate.enabled() || s.map.enabled())
-          throw std::invalid_argument(where + "Friction/coefficient = " + format(s.friction.coefficient) +
-                                      " with a Candidate or Map: a friction map sets mu from Map/ratios (Map/parameter "
-                                      "= friction coefficient); a candidate is checked frictionless");
-      }
-    if (s.indenter.elasticity != IndenterParameters::Elasticity::rigid)
-      {
-        if (s.load.contact != LoadParameters::Contact::unilateral)
-          throw std::invalid_argument(where + "Indenter/elasticity = " +
-                                      (s.indenter.elasticity == IndenterParameters::Elasticity::graded ? "graded"
-                                                                                                      : "homogeneous") +
-                                      " needs Load/contact = unilateral (the two-body model finds the contact set)");
-        if (s.indenter.elasticity == IndenterParameters::Elasticity::graded &&
-            s.material.modulus != MaterialParameters::Modulus::power_law)
-          throw std::invalid_argument(where + "Indenter/elasticity = graded takes the Material's k and c0 of the power "
-                                      "law (9.4): Material/modulus must be power law");
-        if (s.map.enabled())
-          throw std::invalid_argument(where + "Map/parameter is set: the map chooses the indenter; Indenter/elasticity "
-                                      "must be rigid");
-      }
-    if (!s.map.enabled() && !s.map.poisson_ratios.empty())
-      throw std::invalid_argument(where + "Map/nu values is set without a map (Map/parameter = none): it belongs to a "
-                                  "friction coefficient map");
+    check_common(s, where);
     if (s.map.parameter == MapParameters::Parameter::coulomb_3d)
       {
-        if (s.tangential.study != TangentialParameters::Study::oscillation)
-          throw std::invalid_argument(where + "Map/parameter = Coulomb 3D needs Tangential/study = oscillation (its "
-                                      "friction coefficient, amplitude and load steps set the path)");
-        if (s.adhesion.enabled(s.load) || s.candidate.enabled() || s.load.contact == LoadParameters::Contact::unilateral ||
-            s.friction.enabled())
-          throw std::invalid_argument(where + "Map/parameter = Coulomb 3D: no Adhesion, Candidate or Friction entries and "
-                                      "Load/contact = disc (the 3D model finds the contact and stick zones itself)");
-        if (s.load.type != LoadParameters::Type::paraboloid)
-          throw std::invalid_argument(where + "Map/parameter = Coulomb 3D needs Load/type = paraboloid (the sphere of "
-                                      "9.80-9.86)");
-        if (s.material.modulus != MaterialParameters::Modulus::power_law)
-          throw std::invalid_argument(where + "Map/parameter = Coulomb 3D needs Material/modulus = power law");
-        if (!s.references.fem)
-          throw std::invalid_argument(where + "Map/parameter is set with References/fem = false: a map is FE data");
-
-        if (s.tangential.holl_ratio)
-          throw std::invalid_argument(where + "Map/parameter = Coulomb 3D: use Map/Holl ratio, not Tangential/Holl "
-                                      "ratio (the map runs every nu of Map/nu values)");
-        if (!(s.load.a > 0.) || !(s.load.R > s.load.a))
-          throw std::invalid_argument(where + "Map/parameter = Coulomb 3D needs 0 < Load/a < Load/R (Load/a = " +
-                                      format(s.load.a) + ", Load/R = " + format(s.load.R) + ")");
+        check_coulomb_map(s, where);
         return SceneKind::map;
       }
     if (s.map.parameter == MapParameters::Parameter::tabor_parameter)
       {
-        using Type = LoadParameters::Type;
-        if (s.adhesion.law == AdhesionParameters::Law::lennard_jones && !s.discretization.refinements.empty() &&
-            s.discretization.refinements.back() > 4)
-          throw std::invalid_argument(where + "Discretization/refinements = " +
-                                      std::to_string(s.discretization.refinements.back()) +
-                                      " with Adhesion/law = Lennard-Jones: at most 4 (its mesh is refined 2^level times, "
-                                      "fem/smooth_cohesion.h)");
-        if (s.tangential.enabled() || s.candidate.enabled() || s.load.contact == LoadParameters::Contact::unilateral)
-          throw std::invalid_argument(where + "Map/parameter = Tabor parameter: an adhesive scene (no Tangential or "
-                                      "Candidate entries, Load/contact = disc)");
-        if (s.adhesion.tabor_parameter > 0. || s.adhesion.cohesive_strength > 0.)
-          throw std::invalid_argument(where + "Map/parameter = Tabor parameter: Adhesion/Tabor parameter and cohesive "
-                                      "strength are not set (Map/ratios gives the lambdas)");
-        if (!(s.adhesion.work_of_adhesion > 0.))
-          throw std::invalid_argument(where + "Map/parameter = Tabor parameter with Adhesion/work of adhesion = " +
-                                      format(s.adhesion.work_of_adhesion) + ": it must be in (0, inf)");
-        if (s.load.type != Type::paraboloid && s.load.type != Type::power_law)
-          throw std::invalid_argument(where + "Map/parameter = Tabor parameter needs Load/type = paraboloid or power law "
-                                      "(a profile that opens monotonically, with the chapter's JKR pull-off)");
-        if (s.material.modulus != MaterialParameters::Modulus::power_law)
-          throw std::invalid_argument(where + "Map/parameter = Tabor parameter needs Material/modulus = power law (the "
-                                      "map isolates the range of adhesion)");
-        if (!s.references.fem)
-          throw std::invalid_argument(where + "Map/parameter is set with References/fem = false: a map is FE data");
-        if (s.map.ratios.empty())
-          throw std::invalid_argument(where + "Map/ratios is empty: give the Tabor parameters lambda of the map");
-        if (!s.map.poisson_ratios.empty())
-          throw std::invalid_argument(where + "Map/nu values is set for Map/parameter = Tabor parameter: the map runs at "
-                                      "Material/nu");
+        check_tabor_map(s, where);
         return SceneKind::map;
       }
     if (s.map.enabled())
       {
-        using Type = LoadParameters::Type;
-        if (s.tangential.enabled() || s.adhesion.enabled(s.load) || s.candidate.enabled() ||
-            s.load.contact == LoadParameters::Contact::unilateral)
-          throw std::invalid_argument(where + "Map/parameter is set: a map is a normal-contact scene (no Adhesion, "
-                                      "Tangential or Candidate entries, Load/contact = disc)");
-        if (s.load.type == Type::constant_pressure || s.load.type == Type::concave_punch)
-          throw std::invalid_argument(where + "Map/parameter is set with Load/type = " +
-                                      (s.load.type == Type::constant_pressure ? "constant pressure" : "concave punch") +
-                                      ": a map needs a flat punch, paraboloid, cone or power law");
-        if (s.load.control != LoadParameters::Control::contact_radius)
-          throw std::invalid_argument(where + "Map/parameter is set: Load/control must be contact radius (the map "
-                                      "runs at Load/a and compares at the FE depth)");
-        if (!s.references.fem)
-          throw std::invalid_argument(where + "Map/parameter is set with References/fem = false: a map is FE data");
-        if (s.map.ratios.empty())
-          throw std::invalid_argument(where + "Map/ratios is empty: give the ratios a/z0, a/H, a/w or E1/E0 of the map");
-        if (s.map.parameter == MapParameters::Parameter::indenter_modulus)
-          {
-            if (s.load.type == Type::flat_punch)
-              throw std::invalid_argument(where + "Map/parameter = indenter modulus with Load/type = flat punch: the "
-                                          "elastic indenter's contact set is found, which needs a curved indenter "
-                                          "(paraboloid, cone or power law)");
-            if (s.material.modulus != MaterialParameters::Modulus::power_law)
-              throw std::invalid_argument(where + "Map/parameter = indenter modulus needs Material/modulus = power law "
-                                          "(the map isolates the indenter's elasticity)");
-          }
-        if (s.map.parameter == MapParameters::Parameter::friction_coefficient &&
-            (s.friction.load_steps < 2 || s.friction.load_steps % 2 != 0))
-          throw std::invalid_argument(where + "Map/parameter = friction coefficient with Friction/load steps = " +
-                                      std::to_string(s.friction.load_steps) +
-                                      ": the map extrapolates from N and 2N steps and measures it from N/2: give an even "
-                                      "number >= 2");
-        if (s.map.parameter != MapParameters::Parameter::friction_coefficient && !s.map.poisson_ratios.empty())
-          throw std::invalid_argument(where + "Map/nu values is set for Map/parameter other than friction coefficient: "
-                                      "the other maps run at Material/nu");
-        if (s.map.parameter == MapParameters::Parameter::friction_coefficient)
-          {
-            if (s.load.type == Type::flat_punch)
-              throw std::invalid_argument(where + "Map/parameter = friction coefficient with Load/type = flat punch: "
-                                          "the map finds the contact set during loading, which needs a curved "
-                                          "indenter (paraboloid, cone or power law)");
-            if (s.material.modulus != MaterialParameters::Modulus::power_law)
-              throw std::invalid_argument(where + "Map/parameter = friction coefficient needs Material/modulus = power "
-                                          "law (the map isolates friction)");
-          }
-        if (s.map.parameter == MapParameters::Parameter::erf_width)
-          for (const double k : s.map.exponents.empty() ? std::vector<double>{s.material.k} : s.map.exponents)
-            if (k != 0.)
-              throw std::invalid_argument(where + "Map/parameter = erf width with k = " + format(k) + " (" +
-                                          (s.map.exponents.empty() ? "Material/k" : "Map/k values") +
-                                          "): the error-function grading needs k = 0 (homogeneous E0 below the skin)");
-        if (!(s.load.a > 0.))
-          throw std::invalid_argument(where + "Load/a = " + format(s.load.a) + " must be in (0, inf) (z0 or H = a / ratio)");
+        check_normal_map(s, where);
         return SceneKind::map;
       }
     if (s.tangential.enabled())

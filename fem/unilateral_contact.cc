@@ -393,23 +393,31 @@ namespace gradcontact::fem
 
 
 
-  UnilateralContactSolver::ActiveSetSolution
-  UnilateralContactSolver::solve_active_set(const UnilateralLoad &load, const SurfaceOperator &op,
-                                            const std::vector<double> &f) const
+  class UnilateralContactSolver::ActiveSetProblem
   {
-    const unsigned int n        = op.D.m(); // displacement nodes
-    const unsigned int m        = op.D.n(); // pressure vertices
-    const bool         by_force = load.control == ContactControl::force;
-    const double       target   = load.force / (2 * numbers::PI); // 1^T D p
-    const FullMatrix<double>   C        = gap_compliance(op);      // the gap's displacements of each vertex pressure
-
-    const WeightedProfile      weighted = weighted_profile(op, load, f);
-    const Vector<double>      &D1 = weighted.D1, &Df = weighted.Df;
-    const std::vector<double> &f_vertex = weighted.f_vertex;
+  public:
+    ActiveSetProblem(const UnilateralContactSolver &solver, const UnilateralLoad &load, const SurfaceOperator &op,
+                     const std::vector<double> &f)
+      : solver(solver)
+      , load(load)
+      , op(op)
+      , f(f)
+      , n(op.D.m())
+      , m(op.D.n())
+      , by_force(load.control == ContactControl::force)
+      , target(load.force / (2 * numbers::PI))
+      , C(solver.gap_compliance(op))
+      , weighted(solver.weighted_profile(op, load, f))
+      , D1(weighted.D1)
+      , Df(weighted.Df)
+      , f_vertex(weighted.f_vertex)
+      , max_steps(50 + 4 * m)
+    {}
 
     // The state of an active set: p on it (0 elsewhere), lambda = D p, u = C lambda, the weighted gaps
     // w = D^T (u - (d - f)); the depth given or found.
-    const auto state = [&](const std::vector<bool> &active, ActiveSetSolution &s) {
+    void state(const std::vector<bool> &active, ActiveSetSolution &s) const
+    {
       std::vector<unsigned int> I;
       for (unsigned int k = 0; k < m; ++k)
         if (active[k])
@@ -454,24 +462,15 @@ namespace gradcontact::fem
       s.u.assign(u.begin(), u.end());
       s.weighted_gap.assign(w.begin(), w.end());
       s.active = active;
-    };
-
-    // The start: the geometric overlap (force control: the lowest vertex of the indenter alone).
-    std::vector<bool> active(m, false);
-    if (by_force)
-      active[std::min_element(f_vertex.begin(), f_vertex.end()) - f_vertex.begin()] = true;
-    else
-      for (unsigned int k = 0; k < m; ++k)
-        active[k] = load.depth - f_vertex[k] > 0;
-
-    const unsigned int max_steps = 50 + 4 * m; // per stage
+    }
 
     // After a cycle of PDAS: the primal active-set method of Lawson and Hanson (Solving Least Squares
     // Problems, 1974, ch. 23) for the convex problem min 1/2 p^T K p - b^T p, p >= 0 (with 1^T D p = F/(2 pi)
     // under force control), whose optimality conditions are this LCP: p stays feasible and the energy
     // falls at every step, so no set repeats and it ends for a symmetric positive definite K. It keeps
     // p >= 0 at every vertex (no tensile runs at a corner).
-    const auto monotone = [&](ActiveSetSolution &s) {
+    void monotone(ActiveSetSolution &s) const
+    {
       const unsigned int steps_before = s.iterations;
       std::vector<bool>  P(m, false);
       if (by_force)
@@ -491,7 +490,7 @@ namespace gradcontact::fem
                   << std::count(P.begin(), P.end(), true) << " of " << m << " candidate vertices in contact";
               throw std::runtime_error(msg.str());
             }
-          const double w_scale = gap_scale(op, current, D1);
+          const double w_scale = solver.gap_scale(op, current, D1);
           unsigned int add = m;
           for (unsigned int k = 0; k < m; ++k)
             if (!P[k] && !blocked[k] && current.weighted_gap[k] < -gap_zero * w_scale &&
@@ -545,18 +544,56 @@ namespace gradcontact::fem
                   }
             }
         }
-    };
+    }
 
+    /// The start: the geometric overlap (force control: the lowest vertex of the indenter alone).
+    std::vector<bool> start() const
+    {
+      std::vector<bool> active(m, false);
+      if (by_force)
+        active[std::min_element(f_vertex.begin(), f_vertex.end()) - f_vertex.begin()] = true;
+      else
+        for (unsigned int k = 0; k < m; ++k)
+          active[k] = load.depth - f_vertex[k] > 0;
+      return active;
+    }
+
+    double gap_scale(const ActiveSetSolution &s) const { return solver.gap_scale(op, s, D1); }
+
+    const UnilateralContactSolver &solver;
+    const UnilateralLoad          &load;
+    const SurfaceOperator         &op;
+    const std::vector<double>     &f;
+    const unsigned int             n;        // displacement nodes
+    const unsigned int             m;        // pressure vertices
+    const bool                     by_force;
+    const double                   target;   // 1^T D p
+    const FullMatrix<double>       C;        // the gap's displacements of each vertex pressure
+    const WeightedProfile          weighted;
+    const Vector<double>          &D1, &Df;
+    const std::vector<double>     &f_vertex;
+    const unsigned int             max_steps; // per stage
+  };
+
+
+
+  UnilateralContactSolver::ActiveSetSolution
+  UnilateralContactSolver::solve_active_set(const UnilateralLoad &load, const SurfaceOperator &op,
+                                            const std::vector<double> &f) const
+  {
+    const ActiveSetProblem problem(*this, load, op, f);
+    const unsigned int     m      = problem.m;
+    std::vector<bool>      active = problem.start();
     ActiveSetSolution           s;
     std::set<std::vector<bool>> seen;
     for (unsigned int step = 1;; ++step)
       {
-        state(active, s);
+        problem.state(active, s);
         s.iterations = step;
-        const std::vector<bool> next = next_contact_set(active, s.p, s.weighted_gap, op.M, gap_scale(op, s, D1));
+        const std::vector<bool> next = next_contact_set(active, s.p, s.weighted_gap, op.M, problem.gap_scale(s));
         if (next == active)
           return s;
-        if (step >= max_steps)
+        if (step >= problem.max_steps)
           {
             std::ostringstream msg;
             msg << "unilateral contact (" << load.indenter.name << "): the active set did not settle after " << step
@@ -567,7 +604,7 @@ namespace gradcontact::fem
         seen.insert(active);
         if (seen.count(next))
           {
-            monotone(s); // a cycle
+            problem.monotone(s); // a cycle
             return s;
           }
         active = next;
