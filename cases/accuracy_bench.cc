@@ -339,8 +339,8 @@ namespace gradcontact::cases
             w.levels  = std::max(w.levels, r.levels);
             w.seconds = std::max(w.seconds, r.seconds);
           }
-      md << "\n## Work and precision\n\nPer k and asked tolerance: the ladder's degree, its levels and the DoFs of "
-            "its finest level, and the wall time of one answer with the levels it set up (the largest over nu and the "
+      md << "\n## Work and precision\n\nPer k and asked tolerance: the degree of the ladder's finest level, its levels and the DoFs of "
+            "that level, and the wall time of one answer with the levels it set up (the largest over nu and the "
             "profiles; one core).\n\n| k | asked | degree | levels | DoFs | s |\n|---|---|---|---|---|---|\n";
       for (const auto &[key, r] : worst)
         md << "| " << key.first << " | " << fmt(key.second, "%.0e") << " | " << r.degree << " | " << r.levels << " | "
@@ -365,8 +365,9 @@ namespace gradcontact::cases
         ++answers, refusals += !r.met;
     std::ostringstream md;
     md << "# The accuracy contract: asked tolerance, true error, estimate and cost\n\nMachine: " << machine
-       << ".  \nThe FE ladder of fem/accuracy.h (uniform refinements of one degree until the Richardson estimate "
-          "of every quantity is within the asked tolerance, or a refusal naming the limit) against the chapter's "
+       << ".  \nThe FE ladder of fem/accuracy.h (hp for k >= 0: one degree more and a finer geometric mesh at the "
+          "contact edge per level; uniform refinements of one degree for k < 0) until the Richardson estimate "
+          "of every quantity is within the asked tolerance, or a refusal naming the limit, against the chapter's "
           "closed forms, unit problem a = E0 = c0 = 1"
        << (options.quick ? " (quick grid)" : "") << ". " << answers << " answers, " << refusals << " refused, "
        << n_broken << " broken promises (an answer off by more than its tolerance, or a refusal that does not name its "

@@ -233,7 +233,7 @@ namespace gradcontact::cases
   void DiscretizationParameters::declare(ParameterHandler &prm)
   {
     prm.enter_subsection("Discretization");
-    prm.declare_entry("degree", "3", Patterns::Integer(1, 4), "FE_Q degree.");
+    prm.declare_entry("degree", "3", Patterns::Integer(1, 8), "FE_Q degree.");
     prm.declare_entry("refinements", "0", Patterns::List(Patterns::Integer(0, 6), 1, 7),
                       "Uniform refinements of the recommended mesh; several values make a convergence study.");
     prm.declare_entry("force tolerance", "1e-6", Patterns::Double(1e-12, 1.),

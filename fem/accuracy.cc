@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <functional>
 #include <cmath>
 #include <sstream>
 
@@ -64,8 +65,10 @@ namespace gradcontact::fem
 
     /// "; <the quantity furthest from the tolerance> still estimated ... off", with its changes' ratio and, when they
     /// do not fall, what at the surface keeps them from falling.
+    using Estimator = std::function<Estimated(const std::vector<double> &, double)>;
+
     std::string worst_quantity(const std::vector<std::vector<double>> &history, const std::vector<Quantity> &last,
-                               const unsigned int degree, const double surface_exponent)
+                               const Estimator &estimate, const double surface_exponent)
     {
       if (last.empty() || history.front().size() < 2)
         return "";
@@ -73,11 +76,11 @@ namespace gradcontact::fem
       double      worst_error = -1;
       for (std::size_t j = 0; j < last.size(); ++j)
         {
-          const double e = estimate(history[j], assumed_ratio(degree, surface_exponent), last[j].scale).relative();
+          const double e = estimate(history[j], last[j].scale).relative();
           if (e > worst_error)
             worst_error = e, worst = j;
         }
-      const Estimated e = estimate(history[worst], assumed_ratio(degree, surface_exponent), last[worst].scale);
+      const Estimated e = estimate(history[worst], last[worst].scale);
       std::string     text = "; " + last[worst].name + " still estimated " + format(worst_error) + " off";
       if (history[worst].size() >= 3 && e.ratio >= ratio_limit)
         text += " and not converging (change ratio " + format(e.ratio) + " per level" +
@@ -89,8 +92,9 @@ namespace gradcontact::fem
 
     /// The verdict on the levels solved: every estimate within `asked` (met), or else whether more levels can help.
     /// They cannot when a quantity's changes do not fall (observed ratio at ratio_limit or above: "no convergence"), or
-    /// when the levels its observed ratio needs would exceed the DoF budget ("DoF budget", predicted from 4x the DoFs
-    /// per level): the ladder then stops before its largest solves.
+    /// when the levels its observed ratio needs would exceed the DoF budget ("DoF budget", predicted from the growth
+    /// of the DoFs over the last level; the uniform ladder only): the ladder then stops before its largest solves. On
+    /// the hp ladder every estimate needs three levels, not only the pressures'.
     struct Verdict
     {
       bool        met = false;
@@ -98,18 +102,21 @@ namespace gradcontact::fem
     };
 
     Verdict judge(const std::vector<std::vector<double>> &history, const std::vector<Quantity> &last,
-                  const unsigned int degree, const double surface_exponent, const double asked, const double dofs,
-                  const AccuracyBudget &budget)
+                  const Estimator &estimate, const bool hp, const double asked,
+                  const std::vector<dealii::types::global_dof_index> &dofs, const AccuracyBudget &budget)
     {
       Verdict v;
       v.met                = true;
+      // The hp ladder's ratios fall from level to level (exponential convergence) and its levels are cheap: a
+      // prediction from the clamped ratio would stop it too early.
+      const bool predict   = !hp;
       double levels_needed = 0;
       for (std::size_t i = 0; i < last.size(); ++i)
         {
-          const Estimated e     = estimate(history[i], assumed_ratio(degree, surface_exponent), last[i].scale);
+          const Estimated e     = estimate(history[i], last[i].scale);
           const bool      three = history[i].size() >= 3;
-          if (last[i].local && !three)
-            v.met = false; // a pressure's estimate needs three levels
+          if ((last[i].local || hp) && !three)
+            v.met = false; // a pressure's estimate needs three levels, and every estimate of the hp ladder
           if (e.relative() <= asked)
             continue;
           v.met = false;
@@ -118,10 +125,11 @@ namespace gradcontact::fem
               v.stop = "no convergence";
               return v;
             }
-          if (three)
+          if (three && predict)
             levels_needed = std::max(levels_needed, std::ceil(std::log(asked / e.relative()) / std::log(e.ratio)));
         }
-      const double predicted = dofs * std::pow(4.0, levels_needed);
+      const double growth    = dofs.size() >= 2 ? double(dofs.back()) / dofs[dofs.size() - 2] : 4.0;
+      const double predicted = double(dofs.back()) * std::pow(growth, levels_needed);
       if (!v.met && levels_needed > 0 && predicted > budget.max_dofs)
         v.stop = "DoF budget: about " + std::to_string(static_cast<int>(levels_needed)) +
                  " more level(s) needed at the observed ratios, about " + format(predicted) +
@@ -138,6 +146,41 @@ namespace gradcontact::fem
       fail("AccuracyBudget", "max_dofs", max_dofs, "[1000, inf)");
     if (max_levels < 2 || max_levels > 6)
       fail("AccuracyBudget", "max_levels", max_levels, "[2, 6] (an estimate needs two levels)");
+  }
+
+
+
+  Ladder contract_ladder(const Material &material)
+  {
+    if (!material.modulus)
+      throw std::invalid_argument("contract_ladder: the material has no modulus field");
+    return material.modulus->surface_exponent() >= 0 && material.modulus->discontinuities().empty() ? Ladder::hp :
+                                                                                                       Ladder::uniform;
+  }
+
+
+
+  Settings ladder_settings(const Settings &base, const Ladder ladder, const unsigned int level)
+  {
+    Settings s = base;
+    if (ladder == Ladder::uniform)
+      {
+        s.mesh.global_refinements += level;
+        return s;
+      }
+    s.discretization.degree += level;
+    if (s.discretization.degree > max_contract_degree)
+      fail("ladder_settings (hp)", "level", level,
+           "[0, " + std::to_string(max_contract_degree - base.discretization.degree) + "] (degree at most " +
+             std::to_string(max_contract_degree) + ")");
+    s.mesh.edge_refinements += hp_edge_step * level;
+    if (s.mesh.axis_refinements > 0)
+      s.mesh.axis_refinements += hp_axis_step * level;
+    // The map resolves lengths down to its floor: the floor follows the edge cell, else the ladder would converge
+    // to the answer of a fixed floor.
+    if (s.discretization.surface_map.enabled)
+      s.discretization.surface_map.floor = s.mesh.h_edge * std::pow(0.5, s.mesh.edge_refinements);
+    return s;
   }
 
 
@@ -177,7 +220,7 @@ namespace gradcontact::fem
 
 
 
-  Estimated estimate(const std::vector<double> &values, const double assumed, const double scale)
+  Estimated estimate(const std::vector<double> &values, const double assumed, const double scale, const double accident)
   {
     Estimated e;
     e.scale  = scale;
@@ -201,7 +244,7 @@ namespace gradcontact::fem
           e.ratio = std::max(e.ratio, oscillation_ratio);
         // A change far below any rate of the ladder (less than assumed^2 of the one before) is an accident of two
         // levels on opposite sides of the limit, not convergence.
-        tail = std::max(d_n, assumed * assumed * d_prev);
+        tail = std::max(d_n, (accident < 0 ? assumed * assumed : accident) * d_prev);
       }
     e.error = tail * e.ratio / (1 - e.ratio);
     return e;
@@ -217,8 +260,19 @@ namespace gradcontact::fem
     if (!(tolerance >= min_tolerance && tolerance <= max_tolerance))
       fail("contract_settings", "tolerance", tolerance, "[1e-9, 0.1]");
     Settings settings = recommended_settings(contact_radius, *material.modulus, std::min(tolerance, 1e-2));
-    settings.discretization.degree      = contract_degree(tolerance);
+    const bool hp     = contract_ladder(material) == Ladder::hp;
+    settings.discretization.degree      = hp ? hp_first_degree : contract_degree(tolerance);
     settings.discretization.formulation = Formulation::automatic;
+    if (hp)
+      settings.mesh.edge_refinements = std::max(settings.mesh.edge_refinements, hp_edge_refinements);
+    // A clamped far field (the surface map's, the mixed formulation's) far enough for its truncation error
+    // (a / L)^(1 + s) to stay below tol / 64 (the run refuses above tol / 4), and below that relative to w(r) at
+    // the largest displacement radius r, whose share of the truncation is larger; the ladder cannot see this error.
+    // The rings grow geometrically, so L costs little.
+    const double reach = std::max(1.0, largest_displacement_radius / contact_radius);
+    settings.mesh.far_field_size =
+      std::clamp(reach * std::pow(64 / tolerance, 1 / (1 + material.modulus->deep_exponent())),
+                 settings.mesh.far_field_size, std::max(settings.mesh.far_field_size, 1e16));
     // The mixed formulation (Taylor-Hood) at degree 2 gives garbage from the first uniform refinement on (flagged by
     // the energy check), degree 3 does not: its ladder starts at 3.
     if (resolve_formulation(settings.discretization, material.nu) == Formulation::mixed)
@@ -226,7 +280,7 @@ namespace gradcontact::fem
     if (!use_surface_map(settings, *material.modulus))
       use_condensed_far_field(settings, material,
                               std::max(contract_far_field_size, 1.5 * largest_displacement_radius / contact_radius));
-    return settings;
+    return hp ? ladder_settings(settings, Ladder::hp, 0) : settings; // the floor of level 0
   }
 
 
@@ -245,6 +299,7 @@ namespace gradcontact::fem
                                  const AccuracyBudget &budget)
     : material(material)
     , base(base)
+    , ladder(contract_ladder(material))
     , asked(tolerance)
     , budget(budget)
   {
@@ -255,6 +310,15 @@ namespace gradcontact::fem
   }
 
   ContractSolver::~ContractSolver() = default;
+
+
+
+  Estimated ContractSolver::estimate_on_ladder(const std::vector<double> &values, const double scale) const
+  {
+    if (ladder == Ladder::hp)
+      return estimate(values, hp_assumed_ratio, scale, hp_accident);
+    return estimate(values, assumed_ratio(base.discretization.degree, material.modulus->surface_exponent()), scale);
+  }
 
 
 
@@ -274,8 +338,7 @@ namespace gradcontact::fem
             return nullptr;
           }
       }
-    Settings s = base;
-    s.mesh.global_refinements += l;
+    const Settings s = ladder_settings(base, ladder, l);
     solvers.push_back(std::make_unique<AxisymmetricSolver>(material, s.mesh, s.discretization));
     if (solvers.back()->n_dofs() > budget.max_dofs)
       {
@@ -302,15 +365,22 @@ namespace gradcontact::fem
                   " (E grows like z^" + format(material.modulus->deep_exponent()) +
                   " deep below; the condensed far field needs a power law of depth and the displacement formulation)";
 
+    const Estimator estimator = [this](const std::vector<double> &values, const double scale) {
+      return estimate_on_ladder(values, scale);
+    };
     std::vector<std::vector<double>> history; // history[i][l]: quantity i on level l
     std::vector<Quantity>            last;
-    for (unsigned int l = 0; l < budget.max_levels && out.limit.empty(); ++l)
+    const unsigned int n_levels =
+      ladder == Ladder::hp ? max_contract_degree + 1 - std::min(base.discretization.degree, max_contract_degree) :
+                             budget.max_levels;
+    for (unsigned int l = 0; l < n_levels && out.limit.empty(); ++l)
       {
         AxisymmetricSolver *solver = level(l, out.limit);
         if (!solver)
           break;
         Result r = solver->run(load, outputs);
         out.level_dofs.push_back(r.n_dofs);
+        out.degree = base.discretization.degree + (ladder == Ladder::hp ? l : 0);
         if (!r.reliable)
           {
             out.limit = "unreliable solve on level " + std::to_string(l) + " (" + std::to_string(r.n_dofs) +
@@ -326,8 +396,7 @@ namespace gradcontact::fem
         out.result = std::move(r);
         if (l == 0)
           continue;
-        const Verdict verdict = judge(history, last, out.degree, material.modulus->surface_exponent(), asked,
-                                      double(out.level_dofs.back()), budget);
+        const Verdict verdict = judge(history, last, estimator, ladder == Ladder::hp, asked, out.level_dofs, budget);
         out.met               = verdict.met;
         out.limit             = verdict.stop;
         if (out.met)
@@ -335,9 +404,8 @@ namespace gradcontact::fem
       }
 
     // The estimates of the finest level solved.
-    const double assumed = assumed_ratio(out.degree, material.modulus->surface_exponent());
-    std::size_t  i       = 0;
-    const auto   next    = [&]() { return estimate(history[i], assumed, last[i].scale); };
+    std::size_t i    = 0;
+    const auto  next = [&]() { return estimate_on_ladder(history[i], last[i].scale); };
     if (!last.empty())
       {
         if (load.type != LoadType::constant_pressure)
@@ -353,10 +421,13 @@ namespace gradcontact::fem
           out.displacement.push_back(next());
       }
     if (!out.met)
-      out.limit = (out.limit.empty() ? "levels: " + std::to_string(out.level_dofs.size()) +
-                                         " solved (AccuracyBudget::max_levels)" :
+      out.limit = (out.limit.empty() ? "levels: " + std::to_string(out.level_dofs.size()) + " solved (" +
+                                         (ladder == Ladder::hp ?
+                                            "the hp ladder ends at degree " + std::to_string(max_contract_degree) :
+                                            std::string("AccuracyBudget::max_levels")) +
+                                         ")" :
                                        out.limit) +
-                  worst_quantity(history, last, out.degree, material.modulus->surface_exponent());
+                  worst_quantity(history, last, estimator, material.modulus->surface_exponent());
     out.seconds = seconds_since(start);
     return out;
   }

@@ -1,16 +1,29 @@
 // The accuracy contract of the axisymmetric model: an FE answer at an asked relative tolerance, with an error
 // estimate that does not need the exact solution, or a refusal that names what stops it.
 //
-// The ladder. Level l is the mesh of contract_settings refined uniformly l times (every cell halved, the edge-graded
-// and far-field cells included), all at one degree. The levels are nested, so the change of a quantity from level to
-// level, d_l = q_l - q_{l-1}, falls like rho^l once the meshes resolve the solution (rho = 2^-order). Then the error
-// of q_n is the geometric tail (Richardson extrapolation with the observed ratio; Richardson, Phil. Trans. R. Soc. A
-// 226 (1927) 299; Roache, Verification and Validation in Computational Science and Engineering, 1998, ch. 5):
+// The ladder: a sequence of discretisations whose answers converge to the exact one, solved from the cheapest up.
+// Two kinds (contract_ladder picks one by the modulus):
+// - hp, where the surface is not stiff (E ~ z^s, s >= 0, no jumps): level l raises the degree by one (2, 3, ...,
+//   max_contract_degree) and adds hp_edge_step geometric refinements at the contact edge (hp_axis_step at the axis
+//   where a cone's tip is graded), and the surface map's floor follows the edge cell. Every length the solution is
+//   singular over shrinks with the degree, the geometric mesh of hp-FEM (Babuska & Guo, SIAM J. Numer. Anal. 25
+//   (1988) 837; Schwab, p- and hp-Finite Element Methods, 1998, ch. 4): the error falls exponentially, by a ratio
+//   of a tenth or less per level, where uniform refinement at a fixed degree stalls at the edge singularity's
+//   algebraic rate (the flat punch's force error ~ h^(1+k)).
+// - uniform, on a stiff surface (s < 0, where higher degrees and thinner surface cells make the system ill
+//   conditioned) and on moduli with jumps: level l is the mesh of contract_settings refined uniformly l times
+//   (every cell halved, the edge-graded and far-field cells included), all at one degree.
+// Either way the change of a quantity from level to level, d_l = q_l - q_{l-1}, falls like rho^l once the levels
+// resolve the solution. Then the error of q_n is the geometric tail (Richardson extrapolation with the observed
+// ratio; Richardson, Phil. Trans. R. Soc. A 226 (1927) 299; Roache, Verification and Validation in Computational
+// Science and Engineering, 1998, ch. 5):
 //   |q_n - q_inf| = |d_n| rho / (1 - rho).
-// With two levels rho is the assumed ratio (of the degree, and 2^-(1 + s) on a stiff surface E ~ z^s, s < 0); from three on it is observed, |d_n| / |d_{n-1}|, kept within
+// With two levels rho is the assumed ratio (of the ladder and the degree, and 2^-(1 + s) on a stiff surface
+// E ~ z^s, s < 0); from three on it is observed, |d_n| / |d_{n-1}|, kept within
 // [assumed, ratio_limit], at least oscillation_ratio when the two changes have opposite signs, and applied to
 // max(|d_n|, assumed^2 |d_{n-1}|): an accidental near-zero d_n (two levels on opposite sides of the limit) does not
-// pass for convergence. The ladder stops at the first level whose estimates are
+// pass for convergence. The hp ladder's estimates always take three levels (its first two are cheap). The ladder
+// stops at the first level whose estimates are
 // all within the tolerance, or refuses when the next level would exceed the DoF budget, or when the quantities stop
 // converging (observed ratio at ratio_limit or above), or when the levels the observed ratios still need would exceed
 // the budget (so that a refusal does not cost the largest solves), or when a level's solve is unreliable.
@@ -38,7 +51,8 @@ namespace gradcontact::fem
     /// The largest mesh a ladder solves (the axisymmetric solver's direct factorisation: memory grows a little faster
     /// than the DoFs).
     dealii::types::global_dof_index max_dofs = 1'200'000;
-    unsigned int                    max_levels = 4; ///< levels 0 .. max_levels - 1 at most (>= 2)
+    /// Levels 0 .. max_levels - 1 at most (>= 2) of the uniform ladder; the hp ladder ends at max_contract_degree.
+    unsigned int max_levels = 4;
 
     /// Throws std::invalid_argument naming the member, its value and the valid range.
     void validate() const;
@@ -65,7 +79,7 @@ namespace gradcontact::fem
     bool   met       = false;                      ///< every estimate within the tolerance
     /// Empty when met; else what stopped the ladder: "DoF budget: ...", "no convergence: ...", "unreliable solve: ...".
     std::string  limit;
-    unsigned int degree = 0;                                ///< of every level
+    unsigned int degree = 0;                                ///< of the finest level solved (of every level on the uniform ladder)
     std::vector<dealii::types::global_dof_index> level_dofs; ///< DoFs of every level solved
     double seconds = 0; ///< wall time of this run (with the set-up of the levels it made)
 
@@ -73,8 +87,27 @@ namespace gradcontact::fem
     double worst_relative() const;
   };
 
+  /// The two ladders of the header.
+  enum class Ladder
+  {
+    uniform,
+    hp
+  };
+
+  /// hp where the modulus is not stiff at the surface (surface exponent >= 0) and has no jumps, else uniform.
+  Ladder contract_ladder(const Material &material);
+
+  /// The hp ladder: its first degree (at least 3 in the mixed formulation), its last, and what every level adds.
+  inline constexpr unsigned int hp_first_degree = 2, max_contract_degree = 8;
+  inline constexpr unsigned int hp_edge_refinements = 2; ///< at (a, 0) on level 0
+  inline constexpr unsigned int hp_edge_step = 2, hp_axis_step = 2;
+
+  /// The settings of level `level` of `ladder` above level 0 `base` (the header).
+  Settings ladder_settings(const Settings &base, Ladder ladder, unsigned int level);
+
   /// The settings of level 0 for a relative tolerance: the recommended mesh (recommended_settings) with the degree of
-  /// the ladder (contract_degree; at least 3 in the mixed formulation), the surface map where the modulus vanishes at the surface
+  /// the ladder (hp: hp_first_degree and hp_edge_refinements; uniform: contract_degree; at least 3 in the mixed
+  /// formulation), the surface map where the modulus vanishes at the surface
   /// (use_surface_map; the k > 0 layer u_z ~ z^(1-k) then needs no halvings that would keep the ratio at 2^-(1-k)),
   /// else the condensed far field for a power law of depth (no truncation error; L / a = far_field_size, at least
   /// 1.5 times the largest displacement radius) in the displacement formulation, and the formulation `automatic`
@@ -82,16 +115,22 @@ namespace gradcontact::fem
   Settings contract_settings(double contact_radius, const Material &material, double tolerance,
                              double largest_displacement_radius = 0);
 
-  /// The degree of the ladder for a relative tolerance (see contract_settings).
+  /// The degree of the uniform ladder for a relative tolerance (see contract_settings).
   unsigned int contract_degree(double tolerance);
 
   /// The estimate of the error of values.back(), values[l] the quantity on level l (the file's header).
   /// `assumed_ratio`: the ratio with two levels and the floor of the observed one; scale: see Estimated.
-  Estimated estimate(const std::vector<double> &values, double assumed_ratio, double scale);
+  /// `accident`: a change below accident |d_(n-1)| counts as accident |d_(n-1)| (default, below 0: assumed^2).
+  Estimated estimate(const std::vector<double> &values, double assumed_ratio, double scale, double accident = -1);
 
-  /// The ratio a degree's ladder is assumed to converge with (per uniform refinement) before it is observed, on a
+  /// The ratio a degree's uniform ladder is assumed to converge with (per refinement) before it is observed, on a
   /// modulus with surface exponent s (E ~ z^s; slower on a stiff surface, s < 0).
   double assumed_ratio(unsigned int degree, double surface_exponent = 0);
+
+  /// The same for the hp ladder (per level), the floor of its observed ratios: its convergence is exponential, with
+  /// ratios of a tenth or less on its first levels that grow toward this floor on later ones. Its accident factor
+  /// (estimate) is smaller than the floor squared: a hundredfold fall from one level to the next is real there.
+  inline constexpr double hp_assumed_ratio = 0.2, hp_accident = 0.01;
 
   /// Observed ratios above this are no convergence: the estimate would be 4 |d_n| or more.
   inline constexpr double ratio_limit = 0.8;
@@ -125,8 +164,12 @@ namespace gradcontact::fem
     /// The solver of level l, made on first use; null when its predicted size exceeds the budget.
     AxisymmetricSolver *level(unsigned int l, std::string &limit);
 
+    /// The estimate of the quantity with levels `values` on this ladder.
+    Estimated estimate_on_ladder(const std::vector<double> &values, double scale) const;
+
     Material                                         material;
     Settings                                         base;
+    Ladder                                           ladder;
     double                                           asked;
     AccuracyBudget                                   budget;
     std::vector<std::unique_ptr<AxisymmetricSolver>> solvers;

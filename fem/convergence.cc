@@ -29,9 +29,9 @@ namespace gradcontact::fem
       fail("n_levels", n_levels, "[1, 7]");
     if (refinement == Refinement::h && first_level + n_levels - 1 > 6)
       fail("first_level + n_levels - 1 (global refinements)", first_level + n_levels - 1, "[0, 6]");
-    if (refinement == Refinement::p && (first_level < 1 || first_level + n_levels - 1 > 4))
+    if (refinement == Refinement::p && (first_level < 1 || first_level + n_levels - 1 > 8))
       fail("degrees first_level .. first_level + n_levels - 1, last", first_level + n_levels - 1,
-           "[1, 4] (first_level >= 1)");
+           "[1, 8] (first_level >= 1)");
     if (!std::isfinite(reference) || reference == 0)
       fail("reference", reference, "finite, non-zero");
     if (quantity == StudyQuantity::displacement && !(radius >= 0))

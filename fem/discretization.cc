@@ -11,7 +11,7 @@ namespace gradcontact::fem
 {
   namespace
   {
-    constexpr unsigned int max_degree = 4;
+    constexpr unsigned int max_degree = 8;
   }
 
 
@@ -19,7 +19,7 @@ namespace gradcontact::fem
   void DiscretizationParameters::validate() const
   {
     if (degree < 1 || degree > max_degree)
-      fail("DiscretizationParameters", "degree", degree, "[1, 4]");
+      fail("DiscretizationParameters", "degree", degree, "[1, 8]");
     if (extra_quadrature_points > 6)
       fail("DiscretizationParameters", "extra_quadrature_points", extra_quadrature_points, "[0, 6]");
     if (discontinuity_subdivisions < 1 || discontinuity_subdivisions > 64)
@@ -31,7 +31,7 @@ namespace gradcontact::fem
            "{displacement, mixed, automatic}");
     if (formulation == Formulation::mixed && degree < 2)
       fail("DiscretizationParameters (mixed formulation)", "degree", degree,
-           "[2, 4] (the pressure space is FE_Q(degree - 1))");
+           "[2, 8] (the pressure space is FE_Q(degree - 1))");
     if (far_field != FarField::clamped && far_field != FarField::condensed)
       fail("DiscretizationParameters", "far_field", static_cast<int>(far_field), "{clamped, condensed}");
     surface_map.validate();
@@ -46,7 +46,7 @@ namespace gradcontact::fem
       f = (nu >= automatic_mixed_threshold) ? Formulation::mixed : Formulation::displacement;
     if (f == Formulation::mixed && discretization.degree < 2)
       fail("DiscretizationParameters (mixed formulation, nu = " + std::to_string(nu) + ")", "degree",
-           discretization.degree, "[2, 4] (the pressure space is FE_Q(degree - 1))");
+           discretization.degree, "[2, 8] (the pressure space is FE_Q(degree - 1))");
     return f;
   }
 
