@@ -3,7 +3,6 @@
 
 #include <algorithm>
 #include <chrono>
-#include <functional>
 #include <cmath>
 #include <sstream>
 
@@ -33,19 +32,10 @@ namespace gradcontact::fem
       return std::pow(settings.mesh.far_field_size, -(1 + material.modulus->deep_exponent()));
     }
 
-    /// The quantities the contract covers for `load`, as (name, value, scale) of one level's result.
-    struct Quantity
+    /// The quantities the contract covers for `load`, as the values of one level's result.
+    std::vector<LadderValue> quantities(const LoadCase &load, const Result &r)
     {
-      std::string name;
-      double      value, scale;
-        /// A pressure sample: its recovery from the reactions (the L2 projection on the surface trace) spreads the edge
-      /// singularity's error into the contact, where two levels can agree far below it; its estimate needs three.
-      bool local = false;
-    };
-
-    std::vector<Quantity> quantities(const LoadCase &load, const Result &r)
-    {
-      std::vector<Quantity> q;
+      std::vector<LadderValue> q;
       if (load.type != LoadType::constant_pressure)
         q.push_back({"force", r.force, std::abs(r.force), false});
       if (load.type == LoadType::indenter || load.type == LoadType::indenter_force ||
@@ -56,85 +46,13 @@ namespace gradcontact::fem
       double p_max = 0;
       for (const Sample &s : r.pressure)
         p_max = std::max(p_max, std::abs(s.value));
+      // A pressure sample: its recovery from the reactions (the L2 projection on the surface trace) spreads the edge
+      // singularity's error into the contact, where two levels can agree far below it; its estimate needs three.
       for (const Sample &s : r.pressure)
         q.push_back({"p(" + format(s.r) + ")", s.value, p_max, true});
       for (const Sample &s : r.displacement)
         q.push_back({"w(" + format(s.r) + ")", s.value, std::abs(s.value), false});
       return q;
-    }
-
-    /// "; <the quantity furthest from the tolerance> still estimated ... off", with its changes' ratio and, when they
-    /// do not fall, what at the surface keeps them from falling.
-    using Estimator = std::function<Estimated(const std::vector<double> &, double)>;
-
-    std::string worst_quantity(const std::vector<std::vector<double>> &history, const std::vector<Quantity> &last,
-                               const Estimator &estimate, const double surface_exponent)
-    {
-      if (last.empty() || history.front().size() < 2)
-        return "";
-      std::size_t worst = 0;
-      double      worst_error = -1;
-      for (std::size_t j = 0; j < last.size(); ++j)
-        {
-          const double e = estimate(history[j], last[j].scale).relative();
-          if (e > worst_error)
-            worst_error = e, worst = j;
-        }
-      const Estimated e = estimate(history[worst], last[worst].scale);
-      std::string     text = "; " + last[worst].name + " still estimated " + format(worst_error) + " off";
-      if (history[worst].size() >= 3 && e.ratio >= ratio_limit)
-        text += " and not converging (change ratio " + format(e.ratio) + " per level" +
-                (surface_exponent < 0 ? ": the stiff surface of k < 0, whose conditioning grows with every level)" :
-                 surface_exponent > 0 ? ": the soft surface layer of k > 0)" :
-                                        ")");
-      return text;
-    }
-
-    /// The verdict on the levels solved: every estimate within `asked` (met), or else whether more levels can help.
-    /// They cannot when a quantity's changes do not fall (observed ratio at ratio_limit or above: "no convergence"), or
-    /// when the levels its observed ratio needs would exceed the DoF budget ("DoF budget", predicted from the growth
-    /// of the DoFs over the last level; the uniform ladder only): the ladder then stops before its largest solves. On
-    /// the hp ladder every estimate needs three levels, not only the pressures'.
-    struct Verdict
-    {
-      bool        met = false;
-      std::string stop;
-    };
-
-    Verdict judge(const std::vector<std::vector<double>> &history, const std::vector<Quantity> &last,
-                  const Estimator &estimate, const bool hp, const double asked,
-                  const std::vector<dealii::types::global_dof_index> &dofs, const AccuracyBudget &budget)
-    {
-      Verdict v;
-      v.met                = true;
-      // The hp ladder's ratios fall from level to level (exponential convergence) and its levels are cheap: a
-      // prediction from the clamped ratio would stop it too early.
-      const bool predict   = !hp;
-      double levels_needed = 0;
-      for (std::size_t i = 0; i < last.size(); ++i)
-        {
-          const Estimated e     = estimate(history[i], last[i].scale);
-          const bool      three = history[i].size() >= 3;
-          if ((last[i].local || hp) && !three)
-            v.met = false; // a pressure's estimate needs three levels, and every estimate of the hp ladder
-          if (e.relative() <= asked)
-            continue;
-          v.met = false;
-          if (three && e.ratio >= ratio_limit && e.relative() * e.ratio > asked)
-            {
-              v.stop = "no convergence";
-              return v;
-            }
-          if (three && predict)
-            levels_needed = std::max(levels_needed, std::ceil(std::log(asked / e.relative()) / std::log(e.ratio)));
-        }
-      const double growth    = dofs.size() >= 2 ? double(dofs.back()) / dofs[dofs.size() - 2] : 4.0;
-      const double predicted = double(dofs.back()) * std::pow(growth, levels_needed);
-      if (!v.met && levels_needed > 0 && predicted > budget.max_dofs)
-        v.stop = "DoF budget: about " + std::to_string(static_cast<int>(levels_needed)) +
-                 " more level(s) needed at the observed ratios, about " + format(predicted) +
-                 " DoFs, above AccuracyBudget::max_dofs = " + std::to_string(budget.max_dofs);
-      return v;
     }
   } // namespace
 
@@ -295,6 +213,166 @@ namespace gradcontact::fem
 
 
 
+  LadderRecord::LadderRecord(const Material &material, const Settings &base, const double tolerance,
+                             const AccuracyBudget &budget)
+    : ladder(contract_ladder(material))
+    , first_degree(base.discretization.degree)
+    , surface_exponent(material.modulus->surface_exponent())
+    , asked(tolerance)
+    , budget(budget)
+  {
+    if (!(tolerance >= min_tolerance && tolerance <= max_tolerance))
+      fem::fail("LadderRecord", "tolerance", tolerance, "[1e-9, 0.1]");
+    budget.validate();
+    const double truncation = truncation_error(base, material);
+    if (truncation > asked / 4)
+      stop = "far field: the clamped boundary at L / a = " + format(base.mesh.far_field_size) +
+             " leaves a truncation error of about " + format(truncation) + " (E grows like z^" +
+             format(material.modulus->deep_exponent()) +
+             " deep below; the condensed far field needs a power law of depth and the displacement formulation)";
+  }
+
+
+
+  unsigned int LadderRecord::degree() const
+  {
+    const unsigned int solved = levels() > 0 ? levels() - 1 : 0;
+    return first_degree + (ladder == Ladder::hp ? solved : 0);
+  }
+
+
+
+  Estimated LadderRecord::estimate(const std::vector<double> &values, const double scale) const
+  {
+    if (ladder == Ladder::hp)
+      return fem::estimate(values, hp_assumed_ratio, scale, hp_accident);
+    return fem::estimate(values, assumed_ratio(first_degree, surface_exponent), scale);
+  }
+
+
+
+  Estimated LadderRecord::estimate(const std::size_t i) const
+  {
+    return estimate(history.at(i), last.at(i).scale);
+  }
+
+
+
+  bool LadderRecord::next_level_allowed()
+  {
+    if (is_met || !stop.empty())
+      return false;
+    const unsigned int l = levels();
+    if (ladder == Ladder::hp ? first_degree + l > max_contract_degree : l >= budget.max_levels)
+      {
+        stop = "levels: " + std::to_string(l) + " solved (" +
+               (ladder == Ladder::hp ? "the hp ladder ends at degree " + std::to_string(max_contract_degree) :
+                                       std::string("AccuracyBudget::max_levels")) +
+               ")";
+        return false;
+      }
+    if (l >= 2)
+      {
+        const double growth = double(dofs[l - 1]) / double(dofs[l - 2]), next = double(dofs[l - 1]) * growth;
+        if (next > budget.max_dofs)
+          {
+            stop = "DoF budget: level " + std::to_string(l) + " would have about " + format(next) +
+                   " DoFs, above AccuracyBudget::max_dofs = " + std::to_string(budget.max_dofs);
+            return false;
+          }
+      }
+    return true;
+  }
+
+
+
+  void LadderRecord::fail(const std::string &why)
+  {
+    stop = why;
+  }
+
+
+
+  bool LadderRecord::add(const std::vector<LadderValue> &values, const dealii::types::global_dof_index level_dofs)
+  {
+    if (!history.empty() && values.size() != history.size())
+      throw std::logic_error("LadderRecord::add: level " + std::to_string(levels()) + " has " +
+                             std::to_string(values.size()) + " quantities, the levels before " +
+                             std::to_string(history.size()));
+    if (history.empty())
+      history.resize(values.size());
+    for (std::size_t i = 0; i < values.size(); ++i)
+      history[i].push_back(values[i].value);
+    last = values;
+    dofs.push_back(level_dofs);
+    if (levels() < 2)
+      return false;
+
+    // The verdict: every estimate within `asked` (met), or else whether more levels can help. They cannot when a
+    // quantity's changes do not fall (observed ratio at ratio_limit or above: "no convergence"), or, on the uniform
+    // ladder, when the levels its observed ratio needs would exceed the DoF budget (predicted from the growth of the
+    // DoFs over the last level; the ladder then stops before its largest solves). The hp ladder's ratios fall from
+    // level to level and its levels are cheap: a prediction from the clamped ratio would stop it too early.
+    is_met               = true;
+    double levels_needed = 0;
+    for (std::size_t i = 0; i < last.size(); ++i)
+      {
+        const Estimated e     = estimate(i);
+        const bool      three = history[i].size() >= 3;
+        if ((last[i].local || ladder == Ladder::hp) && !three)
+          is_met = false; // a pressure's estimate needs three levels, and every estimate of the hp ladder
+        if (e.relative() <= asked)
+          continue;
+        is_met = false;
+        if (three && e.ratio >= ratio_limit && e.relative() * e.ratio > asked)
+          {
+            stop = "no convergence";
+            return true;
+          }
+        if (three && ladder == Ladder::uniform)
+          levels_needed = std::max(levels_needed, std::ceil(std::log(asked / e.relative()) / std::log(e.ratio)));
+      }
+    if (is_met)
+      return true;
+    const double growth = double(dofs.back()) / double(dofs[dofs.size() - 2]);
+    const double predicted = double(dofs.back()) * std::pow(growth, levels_needed);
+    if (levels_needed > 0 && predicted > budget.max_dofs)
+      {
+        stop = "DoF budget: about " + std::to_string(static_cast<int>(levels_needed)) +
+               " more level(s) needed at the observed ratios, about " + format(predicted) +
+               " DoFs, above AccuracyBudget::max_dofs = " + std::to_string(budget.max_dofs);
+        return true;
+      }
+    return false;
+  }
+
+
+
+  std::string LadderRecord::limit() const
+  {
+    if (is_met)
+      return "";
+    std::string text = stop.empty() ? "levels: " + std::to_string(levels()) + " solved" : stop;
+    if (last.empty() || history.front().size() < 2)
+      return text;
+    // The quantity furthest from the tolerance, with its changes' ratio and, when they do not fall, what at the
+    // surface keeps them from falling.
+    std::size_t worst = 0;
+    for (std::size_t j = 1; j < last.size(); ++j)
+      if (estimate(j).relative() > estimate(worst).relative())
+        worst = j;
+    const Estimated e = estimate(worst);
+    text += "; " + last[worst].name + " still estimated " + format(e.relative()) + " off";
+    if (history[worst].size() >= 3 && e.ratio >= ratio_limit)
+      text += " and not converging (change ratio " + format(e.ratio) + " per level" +
+              (surface_exponent < 0 ? ": the stiff surface of k < 0, whose conditioning grows with every level)" :
+               surface_exponent > 0 ? ": the soft surface layer of k > 0)" :
+                                      ")");
+    return text;
+  }
+
+
+
   ContractSolver::ContractSolver(const Material &material, const Settings &base, const double tolerance,
                                  const AccuracyBudget &budget)
     : material(material)
@@ -313,31 +391,10 @@ namespace gradcontact::fem
 
 
 
-  Estimated ContractSolver::estimate_on_ladder(const std::vector<double> &values, const double scale) const
-  {
-    if (ladder == Ladder::hp)
-      return estimate(values, hp_assumed_ratio, scale, hp_accident);
-    return estimate(values, assumed_ratio(base.discretization.degree, material.modulus->surface_exponent()), scale);
-  }
-
-
-
   AxisymmetricSolver *ContractSolver::level(const unsigned int l, std::string &limit)
   {
     if (l < solvers.size())
       return solvers[l].get();
-    if (l >= 2)
-      {
-        // Predicted from the growth of the last refinement (a uniform refinement multiplies the DoFs by about 4).
-        const double growth = double(solvers[l - 1]->n_dofs()) / solvers[l - 2]->n_dofs();
-        const double next   = solvers[l - 1]->n_dofs() * growth;
-        if (next > budget.max_dofs)
-          {
-            limit = "DoF budget: level " + std::to_string(l) + " would have about " + format(next) +
-                    " DoFs, above AccuracyBudget::max_dofs = " + std::to_string(budget.max_dofs);
-            return nullptr;
-          }
-      }
     const Settings s = ladder_settings(base, ladder, l);
     solvers.push_back(std::make_unique<AxisymmetricSolver>(material, s.mesh, s.discretization));
     if (solvers.back()->n_dofs() > budget.max_dofs)
@@ -357,77 +414,50 @@ namespace gradcontact::fem
     const auto     start = std::chrono::steady_clock::now();
     ContractResult out;
     out.tolerance = asked;
-    out.degree    = base.discretization.degree;
-    const double truncation = truncation_error(base, material);
-    if (truncation > asked / 4)
-      out.limit = "far field: the clamped boundary at L / a = " + format(base.mesh.far_field_size) +
-                  " leaves a truncation error of about " + format(truncation) +
-                  " (E grows like z^" + format(material.modulus->deep_exponent()) +
-                  " deep below; the condensed far field needs a power law of depth and the displacement formulation)";
-
-    const Estimator estimator = [this](const std::vector<double> &values, const double scale) {
-      return estimate_on_ladder(values, scale);
-    };
-    std::vector<std::vector<double>> history; // history[i][l]: quantity i on level l
-    std::vector<Quantity>            last;
-    const unsigned int n_levels =
-      ladder == Ladder::hp ? max_contract_degree + 1 - std::min(base.discretization.degree, max_contract_degree) :
-                             budget.max_levels;
-    for (unsigned int l = 0; l < n_levels && out.limit.empty(); ++l)
+    LadderRecord record(material, base, asked, budget);
+    while (record.next_level_allowed())
       {
-        AxisymmetricSolver *solver = level(l, out.limit);
+        std::string         limit;
+        AxisymmetricSolver *solver = level(record.levels(), limit);
         if (!solver)
-          break;
+          {
+            record.fail(limit);
+            break;
+          }
         Result r = solver->run(load, outputs);
-        out.level_dofs.push_back(r.n_dofs);
-        out.degree = base.discretization.degree + (ladder == Ladder::hp ? l : 0);
         if (!r.reliable)
           {
-            out.limit = "unreliable solve on level " + std::to_string(l) + " (" + std::to_string(r.n_dofs) +
-                        " DoFs): " + r.message;
+            record.fail("unreliable solve on level " + std::to_string(record.levels()) + " (" +
+                        std::to_string(r.n_dofs) + " DoFs): " + r.message);
             out.result = std::move(r);
             break;
           }
-        last = quantities(load, r);
-        if (history.empty())
-          history.resize(last.size());
-        for (std::size_t i = 0; i < last.size(); ++i)
-          history[i].push_back(last[i].value);
-        out.result = std::move(r);
-        if (l == 0)
-          continue;
-        const Verdict verdict = judge(history, last, estimator, ladder == Ladder::hp, asked, out.level_dofs, budget);
-        out.met               = verdict.met;
-        out.limit             = verdict.stop;
-        if (out.met)
+        const bool stop = record.add(quantities(load, r), r.n_dofs);
+        out.result      = std::move(r);
+        if (stop)
           break;
       }
 
     // The estimates of the finest level solved.
-    std::size_t i    = 0;
-    const auto  next = [&]() { return estimate_on_ladder(history[i], last[i].scale); };
-    if (!last.empty())
+    out.met        = record.met();
+    out.limit      = record.limit();
+    out.degree     = record.degree();
+    out.level_dofs = record.level_dofs();
+    std::size_t i = 0;
+    if (record.levels() > 0)
       {
         if (load.type != LoadType::constant_pressure)
-          out.force = next(), ++i;
+          out.force = record.estimate(i++);
         if (load.type == LoadType::indenter || load.type == LoadType::indenter_force ||
             load.type == LoadType::constant_pressure)
-          out.depth = next(), ++i;
+          out.depth = record.estimate(i++);
         if (load.type == LoadType::indenter_depth || load.type == LoadType::indenter_force)
-          out.contact_radius = next(), ++i;
-        for (std::size_t j = 0; j < out.result.pressure.size(); ++j, ++i)
-          out.pressure.push_back(next());
-        for (std::size_t j = 0; j < out.result.displacement.size(); ++j, ++i)
-          out.displacement.push_back(next());
+          out.contact_radius = record.estimate(i++);
+        for (std::size_t j = 0; j < out.result.pressure.size(); ++j)
+          out.pressure.push_back(record.estimate(i++));
+        for (std::size_t j = 0; j < out.result.displacement.size(); ++j)
+          out.displacement.push_back(record.estimate(i++));
       }
-    if (!out.met)
-      out.limit = (out.limit.empty() ? "levels: " + std::to_string(out.level_dofs.size()) + " solved (" +
-                                         (ladder == Ladder::hp ?
-                                            "the hp ladder ends at degree " + std::to_string(max_contract_degree) :
-                                            std::string("AccuracyBudget::max_levels")) +
-                                         ")" :
-                                       out.limit) +
-                  worst_quantity(history, last, estimator, material.modulus->surface_exponent());
     out.seconds = seconds_since(start);
     return out;
   }

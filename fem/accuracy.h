@@ -145,6 +145,57 @@ namespace gradcontact::fem
   /// Grades `settings` toward the axis when `load` is an indenter whose tip exponent is below 2 (no change else).
   void grade_axis(Settings &settings, const LoadCase &load);
 
+  /// One quantity of one level, as the contract judges it.
+  struct LadderValue
+  {
+    std::string name;
+    double      value = 0;
+    double      scale = 0;     ///< what its relative error divides by (Estimated::scale)
+    bool        local = false; ///< a recovered pressure sample: its estimate takes three levels on either ladder
+  };
+
+  /// The contract's record of quantities solved level by level on a ladder (ladder_settings of a level-0 `base`):
+  /// their histories, estimates, and the verdict after every level. ContractSolver keeps one per load; any FE
+  /// procedure that can be run on the ladder's settings (an adhesive critical search, for example) can keep its own.
+  class LadderRecord
+  {
+  public:
+    /// Throws std::invalid_argument on a bad tolerance or budget (naming it).
+    LadderRecord(const Material &material, const Settings &base, double tolerance, const AccuracyBudget &budget = {});
+
+    /// Records level levels(): the same quantities in the same order as on the levels before, and the level's
+    /// largest DoF count. Returns true when the ladder stops here (met(), or limit() names why not).
+    bool add(const std::vector<LadderValue> &values, dealii::types::global_dof_index dofs);
+    /// Records that level levels() could not be solved (an unreliable solve, a failed search): the ladder stops.
+    void fail(const std::string &why);
+    /// Before solving level levels(): whether it may be solved (the ladder's last level, AccuracyBudget::max_levels,
+    /// the DoFs predicted from the growth of the last level). When not, limit() names why and the ladder stops.
+    bool next_level_allowed();
+
+    bool        met() const { return is_met; }
+    std::string limit() const; ///< empty when met; else the limit and the quantity furthest from the tolerance
+    unsigned int levels() const { return static_cast<unsigned>(dofs.size()); }
+    unsigned int degree() const; ///< of the last level recorded (of every level on the uniform ladder)
+    const std::vector<dealii::types::global_dof_index> &level_dofs() const { return dofs; }
+    double       tolerance() const { return asked; }
+    Ladder       kind() const { return ladder; }
+    /// The estimate of quantity i (in the order of add) on the last level recorded.
+    Estimated estimate(std::size_t i) const;
+    /// The estimate of values `values` of one quantity on this ladder.
+    Estimated estimate(const std::vector<double> &values, double scale) const;
+
+  private:
+    Ladder                           ladder;
+    unsigned int                     first_degree;
+    double                           surface_exponent, asked;
+    AccuracyBudget                   budget;
+    std::vector<std::vector<double>> history; ///< history[i][l]: quantity i on level l
+    std::vector<LadderValue>         last;
+    std::vector<dealii::types::global_dof_index> dofs;
+    bool                             is_met = false;
+    std::string                      stop;
+  };
+
   /// Solves `load` on the ladder until the contract holds or a limit is reached. The solvers of the levels are kept,
   /// so that further loads (other radii, other depths) reuse their factorisations.
   class ContractSolver
@@ -161,11 +212,8 @@ namespace gradcontact::fem
     double tolerance() const { return asked; }
 
   private:
-    /// The solver of level l, made on first use; null when its predicted size exceeds the budget.
+    /// The solver of level l, made on first use; null when its size exceeds the budget (`limit` says so).
     AxisymmetricSolver *level(unsigned int l, std::string &limit);
-
-    /// The estimate of the quantity with levels `values` on this ladder.
-    Estimated estimate_on_ladder(const std::vector<double> &values, double scale) const;
 
     Material                                         material;
     Settings                                         base;
