@@ -9,6 +9,7 @@
 
 #include <analytic/batch.h>
 #include <analytic/maugis_dugdale.h>
+#include <fem/accuracy.h>
 #include <fem/adhesion.h>
 #include <fem/cohesive_zone.h>
 #include <fem/axisymmetric_solver.h>
@@ -71,6 +72,28 @@ namespace gradcontact::cases
       };
     }
 
+    std::optional<fem::Profile> fe_profile_of(const LoadParameters &l);
+
+    /// The same under Discretization/accuracy = contract: level `level` of the ladder of fem/accuracy.h at
+    /// Discretization/force tolerance, graded toward the axis for a cone's tip.
+    fem::AdhesiveContact::SettingsFunction contract_settings_at(const Scene &s, const fem::Material &material,
+                                                                 const unsigned int level)
+    {
+      const double                      tolerance = s.discretization.force_tolerance;
+      const std::optional<fem::Profile> profile   = fe_profile_of(s.load);
+      return [material, level, tolerance, profile](const double a) {
+        fem::Settings base = fem::contract_settings(a, material, tolerance);
+        if (profile)
+          {
+            fem::LoadCase load;
+            load.type    = fem::LoadType::indenter;
+            load.profile = *profile;
+            fem::grade_axis(base, load);
+          }
+        return fem::ladder_settings(base, fem::contract_ladder(material), level);
+      };
+    }
+
     std::optional<fem::Profile> fe_profile_of(const LoadParameters &l)
     {
       switch (l.type)
@@ -88,11 +111,15 @@ namespace gradcontact::cases
         }
     }
 
-    fem::AdhesionParameters fe_parameters(const AdhesionParameters &ad)
+    /// The FE search's parameters; under the contract (tolerance > 0) the critical search ends far below the asked
+    /// tolerance, since the ladder cannot see its own stopping error (the same on every level).
+    fem::AdhesionParameters fe_parameters(const AdhesionParameters &ad, const double contract_tolerance = 0)
     {
       fem::AdhesionParameters parameters;
       parameters.stencil_ratio = ad.stencil_ratio;
       parameters.local_stencil = ad.local_stencil;
+      if (contract_tolerance > 0)
+        parameters.radius_tolerance = std::clamp(contract_tolerance / 1000, 1e-12, parameters.radius_tolerance);
       return parameters;
     }
   } // namespace
@@ -157,41 +184,108 @@ namespace gradcontact::cases
 
       void run()
       {
-        for (const unsigned int level : s.discretization.refinements)
-          {
-            level_start = std::chrono::steady_clock::now();
-            LevelResult lr;
-            lr.refinement = level;
-            level_tag = s.discretization.refinements.size() > 1 ? ", refinement " + std::to_string(level) : "";
-            const fem::Material material = fe_material(s);
-            const auto settings = settings_at(s, material, level);
-            if (l.type == Type::constant_pressure)
-              optimal_profile(material, settings(l.a), level == s.discretization.refinements.back(), lr);
-            else
-              {
-                fem::AdhesiveContact model(material, fe_profile_of(l), settings, fe_parameters(ad));
-                try
-                  {
-                    if (l.type == Type::flat_punch)
-                      report_state("periphery (edge)", model.periphery_state(l.a, ad.work_of_adhesion), Inputs{},
-                                   false, lr);
-                    else if (l.type == Type::concave_punch)
-                      concave_punch(model, lr);
-                    else if (ad.law == AdhesionParameters::Law::dugdale)
-                      cohesive_profile(material, settings, lr);
-                    else
-                      curved_profile(model, level == s.discretization.refinements.back(), lr);
-                  }
-                catch (const std::runtime_error &e)
-                  {
-                    result.rows.push_back(failed("FE adhesion", "FE", "-", concise(e)));
-                  }
-                lr.seconds = seconds_since(level_start);
-              }
-            levels.push_back(lr);
-          }
+        if (s.discretization.contract)
+          run_contract();
+        else
+          for (const unsigned int level : s.discretization.refinements)
+            {
+              level_start = std::chrono::steady_clock::now();
+              LevelResult lr;
+              lr.refinement = level;
+              level_tag = s.discretization.refinements.size() > 1 ? ", refinement " + std::to_string(level) : "";
+              const fem::Material material = fe_material(s);
+              solve_level(material, settings_at(s, material, level), level == s.discretization.refinements.back(), lr);
+              levels.push_back(lr);
+            }
         plot_force_depth();
         convergence();
+      }
+
+      /// Discretization/accuracy = contract: the ladder of fem/accuracy.h, level by level, until the estimate of every
+      /// FE value the scene checks is within Discretization/force tolerance (or a refusal naming the limit). Only the
+      /// rows and plot points of the last level stay, each row with the asked tolerance, its estimate and the verdict.
+      void run_contract()
+      {
+        const fem::Material material = fe_material(s);
+        fem::LadderRecord   record(material, contract_settings_at(s, material, 0)(l.a), s.discretization.force_tolerance);
+        ladder_values.emplace();
+        bool last_recorded = false; // the rows of the last level have their values in the record
+        while (record.next_level_allowed())
+          {
+            const unsigned int level = record.levels();
+            level_start              = std::chrono::steady_clock::now();
+            LevelResult lr;
+            lr.refinement                 = level;
+            const std::size_t first_row   = result.rows.size();
+            const std::size_t first_curve = curve_series.size();
+            ladder_values->clear();
+            value_rows.clear();
+            last_recorded = false;
+            const bool solved = solve_level(material, contract_settings_at(s, material, level), true, lr);
+            levels.push_back(lr);
+            if (!solved || (record.levels() > 0 && ladder_values->size() != record_size))
+              {
+                record.fail("level " + std::to_string(level) + (solved ? " checked other quantities than the levels "
+                                                                         "before" :
+                                                                         " failed (its row says why)"));
+                break;
+              }
+            record_size   = ladder_values->size();
+            last_recorded = true;
+            if (record.add(*ladder_values, lr.dofs) || !record.next_level_allowed())
+              break;
+            // Not the last level: its rows and plot points give way to the next level's.
+            result.rows.erase(result.rows.begin() + static_cast<std::ptrdiff_t>(first_row), result.rows.end());
+            curve_series.erase(curve_series.begin() + static_cast<std::ptrdiff_t>(first_curve), curve_series.end());
+          }
+        for (const auto &[row, value] : value_rows)
+          {
+            Row &r     = result.rows.at(row);
+            r.asked    = record.tolerance();
+            r.estimate = last_recorded ? record.estimate(value).relative() : -1.;
+            r.contract = record.met() ? "held" : "refused: " + record.limit();
+          }
+        if (!record.met())
+          result.rows.push_back(failed("FE contract", "FE (contract)", "-",
+                                       "tolerance " + format(record.tolerance()) + " not reached: " + record.limit()));
+        if (verbose)
+          std::cerr << "  contract: " << (record.met() ? "held" : "refused: " + record.limit()) << " ("
+                    << record.levels() << " levels, degree " << record.degree() << ")\n";
+        ladder_values.reset();
+      }
+
+      /// One level: the optimal profile (9.69-9.74) or the FE model's own critical states. False when the FE failed
+      /// (a row says why).
+      bool solve_level(const fem::Material &material, const fem::AdhesiveContact::SettingsFunction &settings,
+                       const bool finest, LevelResult &lr)
+      {
+        bool solved = true;
+        if (l.type == Type::constant_pressure)
+          optimal_profile(material, settings(l.a), finest, lr);
+        else
+          {
+            fem::AdhesiveContact model(material, fe_profile_of(l), settings,
+                                       fe_parameters(ad, s.discretization.contract ? s.discretization.force_tolerance : 0));
+            try
+              {
+                if (l.type == Type::flat_punch)
+                  report_state("periphery (edge)", model.periphery_state(l.a, ad.work_of_adhesion), Inputs{}, false,
+                               lr);
+                else if (l.type == Type::concave_punch)
+                  concave_punch(model, lr);
+                else if (ad.law == AdhesionParameters::Law::dugdale)
+                  cohesive_profile(material, settings, lr);
+                else
+                  curved_profile(model, finest, lr);
+              }
+            catch (const std::runtime_error &e)
+              {
+                result.rows.push_back(failed("FE adhesion", "FE", "-", concise(e)));
+                solved = false;
+              }
+            lr.seconds = seconds_since(level_start);
+          }
+        return solved;
       }
 
     private:
@@ -202,6 +296,8 @@ namespace gradcontact::cases
                                       const std::optional<double> scale = std::nullopt)
       {
         double first = std::numeric_limits<double>::quiet_NaN();
+        if (ladder_values)
+          ladder_values->push_back({quantity + ", " + metric, fe, std::abs(scale ? *scale : fe), false});
         for (const AnalyticReference &ref : references)
           try
             {
@@ -210,6 +306,8 @@ namespace gradcontact::cases
                 first = r;
               result.rows.push_back(
                 compare(quantity, metric, "FE", ref.label(), r, fe, scale ? *scale : r, tolerance, dofs, seconds));
+              if (ladder_values)
+                value_rows.emplace_back(result.rows.size() - 1, ladder_values->size() - 1);
             }
           catch (const std::exception &e)
             {
@@ -627,6 +725,11 @@ namespace gradcontact::cases
       std::vector<Series> curve_series; ///< the force-depth plot (closed form first, then the FE points)
       std::chrono::steady_clock::time_point level_start;
       std::string level_tag; ///< ", refinement l" in the metrics of a refinement study
+      /// Under the contract: the FE values check() saw on the current level, the rows they went to (row, value),
+      /// and the number of values of the levels before.
+      std::optional<std::vector<fem::LadderValue>>   ladder_values;
+      std::vector<std::pair<std::size_t, std::size_t>> value_rows;
+      std::size_t                                      record_size = 0;
     };
   } // namespace
 

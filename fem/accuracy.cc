@@ -33,7 +33,7 @@ namespace gradcontact::fem
     }
 
     /// The quantities the contract covers for `load`, as the values of one level's result.
-    std::vector<LadderValue> quantities(const LoadCase &load, const Result &r)
+    std::vector<LadderValue> quantities(const LoadCase &load, const Result &r, const double contact_radius)
     {
       std::vector<LadderValue> q;
       if (load.type != LoadType::constant_pressure)
@@ -51,7 +51,7 @@ namespace gradcontact::fem
       for (const Sample &s : r.pressure)
         q.push_back({"p(" + format(s.r) + ")", s.value, p_max, true});
       for (const Sample &s : r.displacement)
-        q.push_back({"w(" + format(s.r) + ")", s.value, std::abs(s.value), false});
+        q.push_back({"w(" + format(s.r) + ")", s.value, std::abs(s.value), false, s.r / contact_radius});
       return q;
     }
   } // namespace
@@ -219,12 +219,13 @@ namespace gradcontact::fem
     , first_degree(base.discretization.degree)
     , surface_exponent(material.modulus->surface_exponent())
     , asked(tolerance)
+    , truncation(truncation_error(base, material))
+    , deep_exponent(material.modulus->deep_exponent())
     , budget(budget)
   {
     if (!(tolerance >= min_tolerance && tolerance <= max_tolerance))
       fem::fail("LadderRecord", "tolerance", tolerance, "[1e-9, 0.1]");
     budget.validate();
-    const double truncation = truncation_error(base, material);
     if (truncation > asked / 4)
       stop = "far field: the clamped boundary at L / a = " + format(base.mesh.far_field_size) +
              " leaves a truncation error of about " + format(truncation) + " (E grows like z^" +
@@ -253,7 +254,9 @@ namespace gradcontact::fem
 
   Estimated LadderRecord::estimate(const std::size_t i) const
   {
-    return estimate(history.at(i), last.at(i).scale);
+    Estimated e = estimate(history.at(i), last.at(i).scale);
+    e.error += truncation * std::pow(std::max(1.0, last[i].reach), 1 + deep_exponent) * e.scale;
+    return e;
   }
 
 
@@ -432,7 +435,7 @@ namespace gradcontact::fem
             out.result = std::move(r);
             break;
           }
-        const bool stop = record.add(quantities(load, r), r.n_dofs);
+        const bool stop = record.add(quantities(load, r, base.mesh.contact_radius), r.n_dofs);
         out.result      = std::move(r);
         if (stop)
           break;

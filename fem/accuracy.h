@@ -152,6 +152,7 @@ namespace gradcontact::fem
     double      value = 0;
     double      scale = 0;     ///< what its relative error divides by (Estimated::scale)
     bool        local = false; ///< a recovered pressure sample: its estimate takes three levels on either ladder
+    double      reach = 1;     ///< r / a of a displacement sample (its share of a clamped far field's truncation)
   };
 
   /// The contract's record of quantities solved level by level on a ladder (ladder_settings of a level-0 `base`):
@@ -179,7 +180,9 @@ namespace gradcontact::fem
     const std::vector<dealii::types::global_dof_index> &level_dofs() const { return dofs; }
     double       tolerance() const { return asked; }
     Ladder       kind() const { return ladder; }
-    /// The estimate of quantity i (in the order of add) on the last level recorded.
+    /// The estimate of quantity i (in the order of add) on the last level recorded: the ladder's tail, plus the
+    /// truncation of a clamped far field, which no level reduces: (a / L)^(1 + s) relative, (r / L)^(1 + s) for w(r),
+    /// s the exponent deep below.
     Estimated estimate(std::size_t i) const;
     /// The estimate of values `values` of one quantity on this ladder.
     Estimated estimate(const std::vector<double> &values, double scale) const;
@@ -188,6 +191,7 @@ namespace gradcontact::fem
     Ladder                           ladder;
     unsigned int                     first_degree;
     double                           surface_exponent, asked;
+    double                           truncation, deep_exponent; ///< of a clamped far field (0 when condensed)
     AccuracyBudget                   budget;
     std::vector<std::vector<double>> history; ///< history[i][l]: quantity i on level l
     std::vector<LadderValue>         last;
