@@ -8,6 +8,7 @@
 #include <analytic/material.h>
 #include <analytic/normal.h>
 #include <analytic/tangential.h>
+#include <fem/accuracy.h>
 #include <fem/axisymmetric_solver.h>
 #include <fem/fourier_mode1_solver.h>
 
@@ -20,6 +21,7 @@
 #include <fstream>
 #include <iostream>
 #include <memory>
+#include <optional>
 #include <stdexcept>
 
 namespace gradcontact::cases
@@ -73,15 +75,31 @@ namespace gradcontact::cases
       return s;
     }
 
+    /// Level `level` of the accuracy contract's ladder (fem/accuracy.h) at Discretization/force tolerance, in the
+    /// displacement formulation (mode 1 has no mixed one).
+    fem::Settings contract_level_settings(const Scene &s, const fem::Material &material, const unsigned int level)
+    {
+      fem::Settings base = fem::contract_settings(s.load.a, material, s.discretization.force_tolerance);
+      base.discretization.formulation = fem::Formulation::displacement;
+      return fem::ladder_settings(base, fem::contract_ladder(material), level);
+    }
+
     /// The mode-1 FE model of a scene: one mesh (graded toward `stick_radii` by Tangential/stick levels), one
-    /// factorisation, any number of tangential loads.
+    /// factorisation, any number of tangential loads. `contract_level`: the settings of that level of the contract's
+    /// ladder instead of the scene's.
     struct Mode1Model
     {
-      Mode1Model(const Scene &s, const std::vector<double> &stick_radii)
+      Mode1Model(const Scene &s, const std::vector<double> &stick_radii,
+                 const std::optional<unsigned int> contract_level = std::nullopt)
       {
         material = fe_material(s);
-        settings = fe_settings(s, material, s.load.a, finest_refinement(s)); // the mode-1 solver refuses mixed
-        condense_far_field(s, material, settings);
+        if (contract_level)
+          settings = contract_level_settings(s, material, *contract_level);
+        else
+          {
+            settings = fe_settings(s, material, s.load.a, finest_refinement(s)); // the mode-1 solver refuses mixed
+            condense_far_field(s, material, settings);
+          }
         fem::SurfaceRefinement refinement;
         for (const double c : stick_radii)
           if (c > 0. && c < s.load.a * (1. - 1e-12)) // c = a is a mesh node already
@@ -186,13 +204,23 @@ namespace gradcontact::cases
     class TangentialStudy
     {
     public:
-      TangentialStudy(const Scene &s, const fs::path &folder, const bool verbose, SceneResult &result)
+      /// `contract_level`: solve on that level of the accuracy contract's ladder and record every FE value that
+      /// check() compares (ladder_values, value_rows).
+      TangentialStudy(const Scene &s, const fs::path &folder, const bool verbose, SceneResult &result,
+                      const std::optional<unsigned int> contract_level = std::nullopt)
         : s(s), folder(folder), verbose(verbose), result(result), reference(s, batch::Method::closed_form, AnalyticReference::Problem::tangential), medium(medium_of(s))
+        , contract_level(contract_level)
       {}
 
       void stiffness();
       void partial_slip();
       void oscillation();
+
+      /// Under the contract: the FE values check() compared, in order, the rows they went to (row, value), and the
+      /// largest DoF count.
+      std::vector<fem::LadderValue>                    ladder_values;
+      std::vector<std::pair<std::size_t, std::size_t>> value_rows;
+      unsigned int                                     max_dofs = 0;
 
     private:
       /// A row against a batch reference; a reference that fails to evaluate is a failed row.
@@ -201,11 +229,18 @@ namespace gradcontact::cases
                    const Reference &ref, const double tolerance, const unsigned int dofs, const double seconds,
                    const double scale = 0.)
       {
+        if (contract_level)
+          {
+            ladder_values.push_back({quantity + ", " + metric, fe, std::abs(scale != 0. ? scale : fe), false});
+            max_dofs = std::max(max_dofs, dofs);
+          }
         try
           {
             const double r = ref();
             result.rows.push_back(compare(quantity, metric, "FE", ref_name, r, fe, scale != 0. ? scale : r, tolerance,
                                           dofs, seconds));
+            if (contract_level)
+              value_rows.emplace_back(result.rows.size() - 1, ladder_values.size() - 1);
             return r;
           }
         catch (const std::exception &e)
@@ -235,13 +270,14 @@ namespace gradcontact::cases
       SceneResult &result;
       const AnalyticReference reference;
       const gradcontact::Medium medium;
+      const std::optional<unsigned int> contract_level;
     };
 
     void TangentialStudy::stiffness()
     {
       const auto start = std::chrono::steady_clock::now();
       const double a = s.load.a, k = s.material.k, E0 = s.material.E0, c0 = s.material.c0, nu = s.material.nu;
-      Mode1Model model(s, {});
+      Mode1Model model(s, {}, contract_level);
       const double delta = punch_displacement * a;
       const fem::TangentialResult t = model.solver->run(fem::TangentialLoad::flat_punch(delta));
       reliability(t, "tangential flat punch");
@@ -286,7 +322,7 @@ namespace gradcontact::cases
       std::vector<double> radii;
       for (const double x : c_over_a)
         radii.push_back(x * a);
-      Mode1Model model(s, radii);
+      Mode1Model model(s, radii, contract_level);
       const double FN = gradcontact::force(medium, gradcontact::Paraboloid{s.load.R}, a);
       const double mu = tp.friction_coefficient;
       double u_gross = 0.;
@@ -376,7 +412,7 @@ namespace gradcontact::cases
       const TangentialParameters &tp = s.tangential;
       const double a = s.load.a, k = s.material.k, nu = s.material.nu, E0 = s.material.E0, mu = tp.friction_coefficient;
       const Oscillation o = oscillation_of(s, medium);
-      Mode1Model model(s, {o.cA});
+      Mode1Model model(s, {o.cA}, contract_level);
       double uA = 0.;
       try
         {
@@ -555,33 +591,94 @@ namespace gradcontact::cases
                                 "oscillation");
   }
 
+  namespace
+  {
+    /// Runs the scene's study; false when the FE failed (a row says why).
+    bool run_study(const Scene &s, TangentialStudy &study, SceneResult &result)
+    {
+      try
+        {
+          switch (s.tangential.study)
+            {
+              case Study::stiffness:
+                study.stiffness();
+                break;
+              case Study::partial_slip:
+                study.partial_slip();
+                break;
+              case Study::oscillation:
+                study.oscillation();
+                break;
+              case Study::none:
+                break;
+            }
+          return true;
+        }
+      catch (const std::runtime_error &e)
+        {
+          result.rows.push_back(failed("FE tangential", "FE", "-", concise(e)));
+          return false;
+        }
+    }
+
+    /// Discretization/accuracy = contract: the study on the ladder's levels (fem/accuracy.h) until the estimate of
+    /// every FE value it compares is within Discretization/force tolerance, or a refusal naming the limit. Only the
+    /// last level's rows (and plots) stay, each with the asked tolerance, its estimate and the verdict.
+    void run_contract(const Scene &s, const fs::path &folder, const bool verbose, SceneResult &result)
+    {
+      const fem::Material material = fe_material(s);
+      fem::LadderRecord   record(material, contract_level_settings(s, material, 0), s.discretization.force_tolerance);
+      std::vector<std::pair<std::size_t, std::size_t>> value_rows;
+      bool        last_recorded = false;
+      std::size_t n_values      = 0;
+      while (record.next_level_allowed())
+        {
+          const unsigned int level     = record.levels();
+          const std::size_t  first_row = result.rows.size();
+          TangentialStudy    study(s, folder, verbose, result, level);
+          const bool         solved = run_study(s, study, result);
+          value_rows                = study.value_rows;
+          last_recorded             = false;
+          if (!solved || (level > 0 && study.ladder_values.size() != n_values))
+            {
+              record.fail("level " + std::to_string(level) +
+                          (solved ? " compared other quantities than the levels before" : " failed (its row says why)"));
+              break;
+            }
+          n_values      = study.ladder_values.size();
+          last_recorded = true;
+          if (record.add(study.ladder_values, study.max_dofs) || !record.next_level_allowed())
+            break;
+          result.rows.erase(result.rows.begin() + static_cast<std::ptrdiff_t>(first_row), result.rows.end());
+        }
+      for (const auto &[row, value] : value_rows)
+        {
+          Row &r     = result.rows.at(row);
+          r.asked    = record.tolerance();
+          r.estimate = last_recorded ? record.estimate(value).relative() : -1.;
+          r.contract = record.met() ? "held" : "refused: " + record.limit();
+        }
+      if (!record.met())
+        result.rows.push_back(failed("FE contract", "FE (contract)", "-",
+                                     "tolerance " + format(record.tolerance()) + " not reached: " + record.limit()));
+      if (verbose)
+        std::cerr << "  contract: " << (record.met() ? "held" : "refused: " + record.limit()) << " ("
+                  << record.levels() << " levels, degree " << record.degree() << ")\n";
+    }
+  } // namespace
+
   SceneResult run_tangential_scene(const Scene &scene, const fs::path &folder, const bool verbose)
   {
     const auto start = std::chrono::steady_clock::now();
     require_kind(scene, SceneKind::tangential, "run_tangential_scene");
     const Scene s = with_holl_ratio(scene);
     SceneResult result = started(s, folder);
-    TangentialStudy study(s, folder, verbose, result);
-    try
+    if (s.discretization.contract)
+      run_contract(s, folder, verbose, result);
+    else
       {
-        switch (s.tangential.study)
-          {
-            case Study::stiffness:
-              study.stiffness();
-              break;
-            case Study::partial_slip:
-              study.partial_slip();
-              break;
-            case Study::oscillation:
-              study.oscillation();
-              break;
-            case Study::none:
-              break;
-          }
-      }
-    catch (const std::runtime_error &e)
-      {
-        result.rows.push_back(failed("FE tangential", "FE", "-", concise(e)));
+        TangentialStudy study(s, folder, verbose, result);
+        run_study(s, study, result);
       }
     result.seconds = seconds_since(start);
     return result;

@@ -240,11 +240,12 @@ namespace gradcontact::cases
                       "The wanted relative force error: selects the recommended mesh (fem/README.md).");
     prm.declare_entry("accuracy", "levels", Patterns::Selection("levels|contract"),
                       "levels: one FE solve per entry of refinements (a convergence study against the references); "
-                      "contract (normal and JKR adhesion scenes with a rigid indenter on a disc): the ladder of "
-                      "fem/accuracy.h (hp for k >= 0, uniform refinements for k < 0) until the Richardson estimate of "
-                      "every FE quantity (force, depth, contact radius, p(r) relative to the largest |p|, w(r); the "
-                      "critical states of adhesion) is within force tolerance, or a refusal naming the limit; every FE "
-                      "row shows the asked tolerance, the estimate and the verdict.");
+                      "contract (normal, JKR adhesion and tangential scenes with a rigid indenter on a disc): the "
+                      "ladder of fem/accuracy.h (hp for k >= 0, uniform refinements for k < 0) until the Richardson "
+                      "estimate of every FE quantity (force, depth, contact radius, p(r) relative to the largest |p|, "
+                      "w(r); the critical states of adhesion; K_T and the tangential curves) is within force tolerance, "
+                      "or a refusal naming the limit; every FE row shows the asked tolerance, the estimate and the "
+                      "verdict.");
     prm.declare_entry("far field", "0", Patterns::Double(0.), "L/a of the truncated domain; 0: the recommended one.");
     prm.declare_entry("formulation", "displacement", Patterns::Selection("displacement|mixed|automatic"),
                       "FE unknowns: displacement; mixed (u and q = lambda div u, Taylor-Hood: nu -> 0.5 without "
@@ -691,7 +692,8 @@ namespace gradcontact::cases
     }
 
     /// Discretization/accuracy = contract is the ladder of fem/accuracy.h: the axisymmetric model of a rigid
-    /// indenter on a disc, in a normal FE scene or a JKR adhesion scene (its states from the energy release rate).
+    /// indenter on a disc, in a normal FE scene, a JKR adhesion scene (its states from the energy release rate) or a
+    /// tangential (mode-1) scene.
     void check_contract(const Scene &s, const std::string &where)
     {
       if (!s.discretization.contract)
@@ -699,8 +701,6 @@ namespace gradcontact::cases
       std::string other;
       if (s.map.enabled())
         other = "a Map";
-      else if (s.tangential.enabled())
-        other = "a Tangential study";
       else if (s.adhesion.enabled(s.load) && s.adhesion.law != AdhesionParameters::Law::jkr)
         other = "Adhesion/law = " + std::string(s.adhesion.law == AdhesionParameters::Law::dugdale ? "Dugdale" :
                                                                                                     "Lennard-Jones");
@@ -714,8 +714,8 @@ namespace gradcontact::cases
         other = "References/fem = false";
       if (!other.empty())
         throw std::invalid_argument(where + "Discretization/accuracy = contract with " + other +
-                                    ": the contract's ladder (fem/accuracy.h) answers the normal and the JKR adhesion "
-                                    "FE scenes of a rigid indenter on a disc; use accuracy = levels");
+                                    ": the contract's ladder (fem/accuracy.h) answers the normal, JKR adhesion and "
+                                    "tangential FE scenes of a rigid indenter on a disc; use accuracy = levels");
     }
 
     /// The checks every scene passes, whatever its kind: the Lennard-Jones law's maps, nu = 1/2, unilateral contact,
