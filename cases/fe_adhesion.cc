@@ -1,5 +1,6 @@
 #include "fe_adhesion.h"
 #include "fe_cohesive.h"
+#include "fe_contract.h"
 
 #include "convergence_report.h"
 #include "fe_model.h"
@@ -201,57 +202,27 @@ namespace gradcontact::cases
         convergence();
       }
 
-      /// Discretization/accuracy = contract: the ladder of fem/accuracy.h, level by level, until the estimate of every
-      /// FE value the scene checks is within Discretization/force tolerance (or a refusal naming the limit). Only the
-      /// rows and plot points of the last level stay, each row with the asked tolerance, its estimate and the verdict.
+      /// Discretization/accuracy = contract (cases/fe_contract.h): the study on the ladder's levels; only the last
+      /// level's plot points stay.
       void run_contract()
       {
         const fem::Material material = fe_material(s);
-        fem::LadderRecord   record(material, contract_settings_at(s, material, 0)(l.a), s.discretization.force_tolerance);
-        ladder_values.emplace();
-        bool last_recorded = false; // the rows of the last level have their values in the record
-        while (record.next_level_allowed())
-          {
-            const unsigned int level = record.levels();
-            level_start              = std::chrono::steady_clock::now();
+        std::size_t         first_curve = curve_series.size();
+        run_on_ladder(
+          material, contract_settings_at(s, material, 0)(l.a), s.discretization.force_tolerance, verbose, result,
+          [&](const unsigned int level, LadderLevel &out) {
+            level_start = std::chrono::steady_clock::now();
             LevelResult lr;
-            lr.refinement                 = level;
-            const std::size_t first_row   = result.rows.size();
-            const std::size_t first_curve = curve_series.size();
-            ladder_values->clear();
-            value_rows.clear();
-            last_recorded = false;
+            lr.refinement = level;
+            first_curve   = curve_series.size();
+            ladder_level  = &out;
             const bool solved = solve_level(material, contract_settings_at(s, material, level), true, lr);
+            ladder_level      = nullptr;
+            out.dofs          = lr.dofs;
             levels.push_back(lr);
-            if (!solved || (record.levels() > 0 && ladder_values->size() != record_size))
-              {
-                record.fail("level " + std::to_string(level) + (solved ? " checked other quantities than the levels "
-                                                                         "before" :
-                                                                         " failed (its row says why)"));
-                break;
-              }
-            record_size   = ladder_values->size();
-            last_recorded = true;
-            if (record.add(*ladder_values, lr.dofs) || !record.next_level_allowed())
-              break;
-            // Not the last level: its rows and plot points give way to the next level's.
-            result.rows.erase(result.rows.begin() + static_cast<std::ptrdiff_t>(first_row), result.rows.end());
-            curve_series.erase(curve_series.begin() + static_cast<std::ptrdiff_t>(first_curve), curve_series.end());
-          }
-        for (const auto &[row, value] : value_rows)
-          {
-            Row &r     = result.rows.at(row);
-            r.asked    = record.tolerance();
-            r.estimate = last_recorded ? record.estimate(value).relative() : -1.;
-            r.contract = record.met() ? "held" : "refused: " + record.limit();
-          }
-        if (!record.met())
-          result.rows.push_back(failed("FE contract", "FE (contract)", "-",
-                                       "tolerance " + format(record.tolerance()) + " not reached: " + record.limit()));
-        if (verbose)
-          std::cerr << "  contract: " << (record.met() ? "held" : "refused: " + record.limit()) << " ("
-                    << record.levels() << " levels, degree " << record.degree() << ")\n";
-        ladder_values.reset();
+            return solved;
+          },
+          [&] { curve_series.erase(curve_series.begin() + static_cast<std::ptrdiff_t>(first_curve), curve_series.end()); });
       }
 
       /// One level: the optimal profile (9.69-9.74) or the FE model's own critical states. False when the FE failed
@@ -296,8 +267,8 @@ namespace gradcontact::cases
                                       const std::optional<double> scale = std::nullopt)
       {
         double first = std::numeric_limits<double>::quiet_NaN();
-        if (ladder_values)
-          ladder_values->push_back({quantity + ", " + metric, fe, std::abs(scale ? *scale : fe), false});
+        if (ladder_level)
+          ladder_level->value(quantity + ", " + metric, fe, scale ? *scale : fe);
         for (const AnalyticReference &ref : references)
           try
             {
@@ -306,8 +277,8 @@ namespace gradcontact::cases
                 first = r;
               result.rows.push_back(
                 compare(quantity, metric, "FE", ref.label(), r, fe, scale ? *scale : r, tolerance, dofs, seconds));
-              if (ladder_values)
-                value_rows.emplace_back(result.rows.size() - 1, ladder_values->size() - 1);
+              if (ladder_level)
+                ladder_level->row(result.rows.size() - 1);
             }
           catch (const std::exception &e)
             {
@@ -725,11 +696,8 @@ namespace gradcontact::cases
       std::vector<Series> curve_series; ///< the force-depth plot (closed form first, then the FE points)
       std::chrono::steady_clock::time_point level_start;
       std::string level_tag; ///< ", refinement l" in the metrics of a refinement study
-      /// Under the contract: the FE values check() saw on the current level, the rows they went to (row, value),
-      /// and the number of values of the levels before.
-      std::optional<std::vector<fem::LadderValue>>   ladder_values;
-      std::vector<std::pair<std::size_t, std::size_t>> value_rows;
-      std::size_t                                      record_size = 0;
+      /// Under the contract, while a level is solved: where check() records its FE values and rows.
+      LadderLevel *ladder_level = nullptr;
     };
   } // namespace
 

@@ -2,6 +2,7 @@
 
 #include "analytic_reference.h"
 #include "fe_scene.h"
+#include "fe_contract.h"
 #include "fe_model.h"
 
 #include <analytic/batch.h>
@@ -216,11 +217,8 @@ namespace gradcontact::cases
       void partial_slip();
       void oscillation();
 
-      /// Under the contract: the FE values check() compared, in order, the rows they went to (row, value), and the
-      /// largest DoF count.
-      std::vector<fem::LadderValue>                    ladder_values;
-      std::vector<std::pair<std::size_t, std::size_t>> value_rows;
-      unsigned int                                     max_dofs = 0;
+      /// Under the contract: the FE values check() compared, the rows they went to, the largest DoF count.
+      LadderLevel ladder_level;
 
     private:
       /// A row against a batch reference; a reference that fails to evaluate is a failed row.
@@ -231,8 +229,8 @@ namespace gradcontact::cases
       {
         if (contract_level)
           {
-            ladder_values.push_back({quantity + ", " + metric, fe, std::abs(scale != 0. ? scale : fe), false});
-            max_dofs = std::max(max_dofs, dofs);
+            ladder_level.value(quantity + ", " + metric, fe, scale != 0. ? scale : fe);
+            ladder_level.dofs = std::max(ladder_level.dofs, dofs);
           }
         try
           {
@@ -240,7 +238,7 @@ namespace gradcontact::cases
             result.rows.push_back(compare(quantity, metric, "FE", ref_name, r, fe, scale != 0. ? scale : r, tolerance,
                                           dofs, seconds));
             if (contract_level)
-              value_rows.emplace_back(result.rows.size() - 1, ladder_values.size() - 1);
+              ladder_level.row(result.rows.size() - 1);
             return r;
           }
         catch (const std::exception &e)
@@ -621,49 +619,17 @@ namespace gradcontact::cases
         }
     }
 
-    /// Discretization/accuracy = contract: the study on the ladder's levels (fem/accuracy.h) until the estimate of
-    /// every FE value it compares is within Discretization/force tolerance, or a refusal naming the limit. Only the
-    /// last level's rows (and plots) stay, each with the asked tolerance, its estimate and the verdict.
+    /// Discretization/accuracy = contract (cases/fe_contract.h): the study on the ladder's levels.
     void run_contract(const Scene &s, const fs::path &folder, const bool verbose, SceneResult &result)
     {
       const fem::Material material = fe_material(s);
-      fem::LadderRecord   record(material, contract_level_settings(s, material, 0), s.discretization.force_tolerance);
-      std::vector<std::pair<std::size_t, std::size_t>> value_rows;
-      bool        last_recorded = false;
-      std::size_t n_values      = 0;
-      while (record.next_level_allowed())
-        {
-          const unsigned int level     = record.levels();
-          const std::size_t  first_row = result.rows.size();
-          TangentialStudy    study(s, folder, verbose, result, level);
-          const bool         solved = run_study(s, study, result);
-          value_rows                = study.value_rows;
-          last_recorded             = false;
-          if (!solved || (level > 0 && study.ladder_values.size() != n_values))
-            {
-              record.fail("level " + std::to_string(level) +
-                          (solved ? " compared other quantities than the levels before" : " failed (its row says why)"));
-              break;
-            }
-          n_values      = study.ladder_values.size();
-          last_recorded = true;
-          if (record.add(study.ladder_values, study.max_dofs) || !record.next_level_allowed())
-            break;
-          result.rows.erase(result.rows.begin() + static_cast<std::ptrdiff_t>(first_row), result.rows.end());
-        }
-      for (const auto &[row, value] : value_rows)
-        {
-          Row &r     = result.rows.at(row);
-          r.asked    = record.tolerance();
-          r.estimate = last_recorded ? record.estimate(value).relative() : -1.;
-          r.contract = record.met() ? "held" : "refused: " + record.limit();
-        }
-      if (!record.met())
-        result.rows.push_back(failed("FE contract", "FE (contract)", "-",
-                                     "tolerance " + format(record.tolerance()) + " not reached: " + record.limit()));
-      if (verbose)
-        std::cerr << "  contract: " << (record.met() ? "held" : "refused: " + record.limit()) << " ("
-                  << record.levels() << " levels, degree " << record.degree() << ")\n";
+      run_on_ladder(material, contract_level_settings(s, material, 0), s.discretization.force_tolerance, verbose,
+                    result, [&](const unsigned int level, LadderLevel &out) {
+                      TangentialStudy study(s, folder, verbose, result, level);
+                      const bool      solved = run_study(s, study, result);
+                      out                    = study.ladder_level;
+                      return solved;
+                    });
     }
   } // namespace
 
