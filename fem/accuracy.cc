@@ -64,6 +64,8 @@ namespace gradcontact::fem
       fail("AccuracyBudget", "max_dofs", max_dofs, "[1000, inf)");
     if (max_levels < 2 || max_levels > 6)
       fail("AccuracyBudget", "max_levels", max_levels, "[2, 6] (an estimate needs two levels)");
+    if (!(max_factor_bytes >= 1e6))
+      fail("AccuracyBudget", "max_factor_bytes", max_factor_bytes, "[1e6, inf)");
   }
 
 
@@ -398,6 +400,22 @@ namespace gradcontact::fem
   {
     if (l < solvers.size())
       return solvers[l].get();
+    if (l >= 2)
+      {
+        // The factorisations kept, and the next one's predicted from the growth over the last level.
+        double kept = 0;
+        for (const auto &solver : solvers)
+          kept += double(solver->factor_bytes());
+        const double last = double(solvers[l - 1]->factor_bytes()), before = double(solvers[l - 2]->factor_bytes());
+        const double next = before > 0 ? last * last / before : 0;
+        if (kept + next > budget.max_factor_bytes)
+          {
+            limit = "memory budget: the factorisations of levels 0-" + std::to_string(l - 1) + " hold " +
+                    format(kept) + " bytes and level " + std::to_string(l) + "'s would add about " + format(next) +
+                    ", above AccuracyBudget::max_factor_bytes = " + format(budget.max_factor_bytes);
+            return nullptr;
+          }
+      }
     const Settings s = ladder_settings(base, ladder, l);
     solvers.push_back(std::make_unique<AxisymmetricSolver>(material, s.mesh, s.discretization));
     if (solvers.back()->n_dofs() > budget.max_dofs)

@@ -83,6 +83,14 @@ namespace gradcontact::fem
                                                            control, info);
         umfpack_dl_free_symbolic(&symbolic);
         check(status, "numeric");
+        numeric_bytes = info[UMFPACK_NUMERIC_SIZE] * info[UMFPACK_SIZE_OF_UNIT];
+      }
+
+      /// The numeric object and the copy of the matrix.
+      std::size_t bytes() const
+      {
+        return static_cast<std::size_t>(numeric_bytes) + (Ap.size() + Ai.size()) * sizeof(SuiteSparse_long) +
+               Ax.size() * sizeof(double);
       }
 
       ~UmfpackLU()
@@ -118,7 +126,8 @@ namespace gradcontact::fem
       std::vector<SuiteSparse_long> Ap, Ai;
       std::vector<double>           Ax;
       double                        control[UMFPACK_CONTROL];
-      void                         *numeric = nullptr;
+      void                         *numeric       = nullptr;
+      double                        numeric_bytes = 0;
     };
   } // namespace
 
@@ -145,6 +154,8 @@ namespace gradcontact::fem
     Factorization &operator=(const Factorization &) = delete;
 
     bool cholesky() const { return factor != nullptr; }
+
+    std::size_t bytes() const { return lu ? lu->bytes() : workspace.common.memory_inuse; }
 
     /// |A|_inf of the factorised matrix (the scale of the backward error).
     double matrix_norm() const { return A_norm; }
@@ -251,6 +262,13 @@ namespace gradcontact::fem
   {
     const auto &solver = prescribe ? prescribed_solver : free_solver;
     return solver && solver->cholesky();
+  }
+
+
+
+  std::size_t DirectSystem::factor_bytes() const
+  {
+    return (free_solver ? free_solver->bytes() : 0) + (prescribed_solver ? prescribed_solver->bytes() : 0);
   }
 
   void DirectSystem::reinit(const DoFHandler<2> &dof_handler, const AffineConstraints<double> &constraints_,

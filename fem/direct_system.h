@@ -105,6 +105,10 @@ namespace gradcontact::fem
     /// before it is made).
     bool cholesky(bool prescribe) const;
 
+    /// The memory the factorisations made so far hold (bytes; CHOLMOD's in use, UMFPACK's numeric object and its
+    /// copy of the matrix).
+    std::size_t factor_bytes() const;
+
   private:
     /// The factorisation of one matrix: Cholesky, or LU when it is not positive definite (header).
     class Factorization;

@@ -143,6 +143,17 @@ TEST_CASE("A tolerance beyond the DoF budget shall be refused, naming the budget
   CHECK_THAT(r.limit, Contains("DoF budget") && Contains("max_dofs = 60000"));
 
   CHECK_THROWS_WITH(contract_settings(1.0, material, 0.0), Contains("tolerance") && Contains("[1e-9, 0.1]"));
+  // The factorisations kept: level 2's, predicted from the growth of levels 0 and 1, does not fit into 1 MB.
+  AccuracyBudget memory;
+  memory.max_factor_bytes = 1e6;
+  ContractSolver small(material, contract_settings(1.0, material, 1e-8), 1e-8, memory);
+  const ContractResult m = small.run(punch);
+  CHECK_FALSE(m.met);
+  CHECK_THAT(m.limit, Contains("memory budget") && Contains("max_factor_bytes"));
+  AccuracyBudget no_memory;
+  no_memory.max_factor_bytes = 0;
+  CHECK_THROWS_WITH(ContractSolver(material, contract_settings(1.0, material, 1e-3), 1e-3, no_memory),
+                    Contains("max_factor_bytes") && Contains("[1e6, inf)"));
   AccuracyBudget one_level;
   one_level.max_levels = 1;
   CHECK_THROWS_WITH(ContractSolver(material, contract_settings(1.0, material, 1e-3), 1e-3, one_level),
