@@ -140,6 +140,13 @@ namespace gradcontact::fem
 
 
 
+  double hp_assumed_ratio(const double surface_exponent)
+  {
+    return surface_exponent >= 0.9 ? 0.5 : 1. / 3;
+  }
+
+
+
   Estimated estimate(const std::vector<double> &values, const double assumed, const double scale, const double accident)
   {
     Estimated e;
@@ -248,7 +255,7 @@ namespace gradcontact::fem
   Estimated LadderRecord::estimate(const std::vector<double> &values, const double scale) const
   {
     if (ladder == Ladder::hp)
-      return fem::estimate(values, hp_assumed_ratio, scale, hp_accident);
+      return fem::estimate(values, hp_assumed_ratio(surface_exponent), scale, hp_accident);
     return fem::estimate(values, assumed_ratio(first_degree, surface_exponent), scale);
   }
 

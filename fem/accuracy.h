@@ -130,10 +130,14 @@ namespace gradcontact::fem
   /// modulus with surface exponent s (E ~ z^s; slower on a stiff surface, s < 0).
   double assumed_ratio(unsigned int degree, double surface_exponent = 0);
 
-  /// The same for the hp ladder (per level), the floor of its observed ratios: its convergence is exponential, with
-  /// ratios of a tenth or less on its first levels that grow toward this floor on later ones. Its accident factor
-  /// (estimate) is smaller than the floor squared: a hundredfold fall from one level to the next is real there.
-  inline constexpr double hp_assumed_ratio = 0.2, hp_accident = 0.01;
+  /// The same for the hp ladder (per level), the floor of its observed ratios, on a modulus with surface exponent s.
+  /// Its convergence is exponential with ratios that grow from level to level (a few hundredths on its first levels,
+  /// a third and more on its last ones), so a ratio observed on two changes underestimates the next: the floor is
+  /// a third, and a half on the thin soft layer of s >= 0.9, whose levels approach their limit the least regularly.
+  double hp_assumed_ratio(double surface_exponent);
+  /// The hp ladder's accident factor (estimate), smaller than its floor squared: a twentyfold fall from one level to
+  /// the next is real there.
+  inline constexpr double hp_accident = 0.04;
 
   /// Observed ratios above this are no convergence: the estimate would be 4 |d_n| or more.
   inline constexpr double ratio_limit = 0.8;

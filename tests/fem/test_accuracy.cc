@@ -57,9 +57,9 @@ TEST_CASE("A change between two levels that is near zero by accident shall not p
   // Two levels on opposite sides of the limit 1: the last change is 1e-9, the one before 0.1.
   const Estimated e = estimate({1.05, 0.95, 0.950000001}, 0.25, 1.0);
   CHECK(e.error >= 0.25 * 0.25 * 0.1 * 0.99);
-  // The hp ladder's smaller accident factor: a change of 1e-9 after 0.1 still counts as 1e-3 (with the ratio of
+  // The hp ladder's smaller accident factor: a change of 1e-9 after 0.1 still counts as 4e-3 (with the ratio of
   // levels that oscillate, the changes having opposite signs).
-  const Estimated hp = estimate({1.05, 0.95, 0.950000001}, hp_assumed_ratio, 1.0, hp_accident);
+  const Estimated hp = estimate({1.05, 0.95, 0.950000001}, hp_assumed_ratio(0.0), 1.0, hp_accident);
   CHECK_THAT(hp.error, WithinRel(hp_accident * 0.1 * oscillation_ratio / (1 - oscillation_ratio), 1e-6));
 }
 
