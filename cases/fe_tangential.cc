@@ -221,6 +221,22 @@ namespace gradcontact::cases
       LadderLevel ladder_level;
 
     private:
+      /// The plots of an oscillation: the FE branches and the surface displacements and tractions at A to E.
+      struct HysteresisPlots
+      {
+        Series              fe_un{"FE unloading", {}, {}, true};
+        Series              fe_re{"FE reloading (u_re(F) = -u_un(-F))", {}, {}, true};
+        std::vector<Series> profiles, tractions;
+      };
+      /// u0 of the closed form on `branch` at force F (9.83-9.84).
+      double branch_u(const Oscillation &o, Branch branch, double F) const;
+      /// The unloading branch at `load steps` forces and the points A to E (9.82-9.83, figs. 9.34-9.35).
+      void unloading_branch(Mode1Model &model, const Oscillation &o, double uA,
+                            std::chrono::steady_clock::time_point start, HysteresisPlots &plots);
+      /// The dissipated energy per cycle (9.86, and 9.87 at k = 0) from the FE unloading branch.
+      void dissipated_energy(Mode1Model &model, const Oscillation &o, std::chrono::steady_clock::time_point start);
+      void plot_hysteresis(const Oscillation &o, double uA, HysteresisPlots &plots) const;
+
       /// A row against a batch reference; a reference that fails to evaluate is a failed row.
       template <class Reference>
       double check(const std::string &quantity, const std::string &metric, const double fe, const std::string &ref_name,
@@ -403,33 +419,41 @@ namespace gradcontact::cases
         }
     }
 
+    double TangentialStudy::branch_u(const Oscillation &o, const Branch branch, const double F) const
+    {
+      return reference.get("oscillating_sphere", "tangential_displacement", branch_state(o.FA, branch, F));
+    }
+
     void TangentialStudy::oscillation()
     {
-      namespace t = gradcontact::tangential;
-      const auto start = std::chrono::steady_clock::now();
-      const TangentialParameters &tp = s.tangential;
-      const double a = s.load.a, k = s.material.k, nu = s.material.nu, E0 = s.material.E0, mu = tp.friction_coefficient;
-      const Oscillation o = oscillation_of(s, medium);
-      Mode1Model model(s, {o.cA}, contract_level);
-      double uA = 0.;
+      const auto        start = std::chrono::steady_clock::now();
+      const Oscillation o     = oscillation_of(s, medium);
+      Mode1Model        model(s, {o.cA}, contract_level);
+      double            uA = 0.;
       try
         {
-          uA = reference.get("oscillating_sphere", "tangential_displacement", branch_state(o.FA, Branch::loading, o.FA));
+          uA = branch_u(o, Branch::loading, o.FA);
         }
       catch (const std::exception &e)
         {
           result.rows.push_back(failed("u_A (9.85)", "closed form", "-", concise(e)));
           return;
         }
-      const auto branch_u = [&](const Branch branch, const double F) {
-        return reference.get("oscillating_sphere", "tangential_displacement", branch_state(o.FA, branch, F));
-      };
+      HysteresisPlots plots;
+      unloading_branch(model, o, uA, start, plots);
+      dissipated_energy(model, o, start);
+      if (s.outputs.plots)
+        plot_hysteresis(o, uA, plots);
+    }
 
+    void TangentialStudy::unloading_branch(Mode1Model &model, const Oscillation &o, const double uA,
+                                           const std::chrono::steady_clock::time_point start, HysteresisPlots &plots)
+    {
+      namespace t = gradcontact::tangential;
+      const double a = s.load.a, mu = s.tangential.friction_coefficient;
       // Unloading branch at `load steps` forces (the first is A, the last E) and the points A to E (9.34-9.35).
-      const std::vector<double> forces = unloading_forces(tp);
+      const std::vector<double> forces = unloading_forces(s.tangential);
       const std::vector<std::pair<std::string, double>> labelled{{"A", 1.}, {"B", 0.5}, {"C", 0.}, {"D", -0.5}, {"E", -1.}};
-      Series fe_un{"FE unloading", {}, {}, true}, fe_re{"FE reloading (u_re(F) = -u_un(-F))", {}, {}, true};
-      std::vector<Series> profiles, tractions;
       std::vector<double> all = forces;
       for (const auto &[name, f] : labelled)
         if (std::none_of(forces.begin(), forces.end(), [f = f](const double x) { return std::abs(x - f) < 1e-12; }))
@@ -450,11 +474,11 @@ namespace gradcontact::cases
           if (std::find(forces.begin(), forces.end(), f) != forces.end())
             {
               check("unloading u0 (9.83)", metric + ", relative to u_A", r.stick.mean_ux, "closed form 9.83",
-                    [&] { return branch_u(Branch::unloading, F); }, s.tolerances.displacement, r.n_dofs, seconds, uA);
-              fe_un.x.push_back(r.stick.mean_ux / uA);
-              fe_un.y.push_back(f);
-              fe_re.x.push_back(-r.stick.mean_ux / uA);
-              fe_re.y.push_back(-f);
+                    [&] { return branch_u(o, Branch::unloading, F); }, s.tolerances.displacement, r.n_dofs, seconds, uA);
+              plots.fe_un.x.push_back(r.stick.mean_ux / uA);
+              plots.fe_un.y.push_back(f);
+              plots.fe_re.x.push_back(-r.stick.mean_ux / uA);
+              plots.fe_re.y.push_back(-f);
             }
           if (is_point)
             {
@@ -474,13 +498,13 @@ namespace gradcontact::cases
                   tau.x.push_back(x);
                   tau.y.push_back(t::traction(medium, slip, a, o.FA, t::Branch::unloading, F, x * a) / (mu * p0));
                 }
-              profiles.push_back(u);
-              tractions.push_back(tau);
+              plots.profiles.push_back(u);
+              plots.tractions.push_back(tau);
               try
                 {
                   // 9.83: the stick zone r <= c_A moves rigidly by u0(F).
-                  const double u_theory = branch_u(Branch::unloading, F) / uA;
-                  profiles.push_back({"9.83: " + label->first, {0., o.cA / a}, {u_theory, u_theory}, false});
+                  const double u_theory = branch_u(o, Branch::unloading, F) / uA;
+                  plots.profiles.push_back({"9.83: " + label->first, {0., o.cA / a}, {u_theory, u_theory}, false});
                 }
               catch (const std::exception &)
                 {
@@ -491,7 +515,12 @@ namespace gradcontact::cases
             std::cerr << "  F/F_A = " << f << ": u0 = " << r.stick.mean_ux << " (" << r.n_dofs << " DoFs, "
                       << format(seconds) << " s)\n";
         }
+    }
 
+    void TangentialStudy::dissipated_energy(Mode1Model &model, const Oscillation &o,
+                                            const std::chrono::steady_clock::time_point start)
+    {
+      const double a = s.load.a, nu = s.material.nu, E0 = s.material.E0, mu = s.tangential.friction_coefficient;
       // Dissipated energy per cycle, W = \int_{-F_A}^{F_A} [u_un(F) - u_re(F)] dF, u_re(F) = -u_un(-F), by
       // Gauss-Legendre in F on the FE u_un (the nodes are symmetric: sum_q w_q [u(F_q) + u(-F_q)] = 2 sum_q w_q u(F_q)).
       const dealii::QGauss<1> gauss(energy_gauss_points);
@@ -506,13 +535,13 @@ namespace gradcontact::cases
       check("dissipated energy per cycle W", "relative", W, "9.86 corrected (ERRATA.md)",
             [&] { return reference.get("oscillating_sphere", "dissipated_energy", [&](batch::Request &q) { q.FA = o.FA; }); }, s.tolerances.force, dofs,
             seconds);
-      if (k == 0.)
+      if (s.material.k == 0.)
         {
           // Mindlin-Deresiewicz (9.87) from Hertz alone: a rigid sphere on the homogeneous half-space,
           // W = 9 mu^2 F_N^2 (2 - nu) / (10 G a) [1 - (1 - phi)^(5/3) - 5/6 phi (1 + (1 - phi)^(2/3))],
           // F_N = 4 E* a^3 / (3 R), E* = E0 / (1 - nu^2), phi = F_A / (mu F_N).
           const double G = E0 / (2. * (1. + nu)), Estar = E0 / (1. - nu * nu);
-          const double FN = 4. * Estar * a * a * a / (3. * s.load.R), phi = tp.amplitude;
+          const double FN = 4. * Estar * a * a * a / (3. * s.load.R), phi = s.tangential.amplitude;
           const double W_md = 9. * mu * mu * FN * FN * (2. - nu) / (10. * G * a) *
                               (1. - std::pow(1. - phi, 5. / 3.) - 5. / 6. * phi * (1. + std::pow(1. - phi, 2. / 3.)));
           result.rows.push_back(compare("dissipated energy per cycle W", "relative", "FE",
@@ -521,15 +550,18 @@ namespace gradcontact::cases
         }
       if (verbose)
         std::cerr << "  W = " << W << " (" << dofs << " DoFs, " << format(seconds) << " s)\n";
-      if (!s.outputs.plots)
-        return;
+    }
+
+    void TangentialStudy::plot_hysteresis(const Oscillation &o, const double uA, HysteresisPlots &plots) const
+    {
+      const double a = s.load.a;
       Series un{"closed form unloading (9.83)", {}, {}, false}, re{"closed form reloading", {}, {}, false};
       for (int i = 0; i <= 200; ++i)
         {
           const double f = -1. + 2. * i / 200.;
-          un.x.push_back(branch_u(Branch::unloading, f * o.FA) / uA);
+          un.x.push_back(branch_u(o, Branch::unloading, f * o.FA) / uA);
           un.y.push_back(f);
-          re.x.push_back(branch_u(Branch::reloading, f * o.FA) / uA);
+          re.x.push_back(branch_u(o, Branch::reloading, f * o.FA) / uA);
           re.y.push_back(f);
         }
       double worst = 0.;
@@ -537,15 +569,15 @@ namespace gradcontact::cases
         if (row.quantity == "unloading u0 (9.83)" && row.error.empty())
           worst = std::max(worst, row.rel_error);
       write_plot(folder, "hysteresis",
-                 s.info.name + ": hysteresis loop (fig. 9.36), F_A = " + format(tp.amplitude) + " mu F_N, worst FE u0 error " +
+                 s.info.name + ": hysteresis loop (fig. 9.36), F_A = " + format(s.tangential.amplitude) + " mu F_N, worst FE u0 error " +
                    format(worst),
-                 "u0 / u_A", "F_x / F_A", {un, re, fe_un, fe_re});
-      profiles.insert(profiles.begin(), Series{"stick zone r <= c_A", {o.cA / a, o.cA / a}, {-1., 1.}, false});
+                 "u0 / u_A", "F_x / F_A", {un, re, plots.fe_un, plots.fe_re});
+      plots.profiles.insert(plots.profiles.begin(), Series{"stick zone r <= c_A", {o.cA / a, o.cA / a}, {-1., 1.}, false});
       write_plot(folder, "displacement_A_to_E",
                  s.info.name + ": FE surface u_x(r) (theta = 0) at the points A to E under the traction of 9.82",
-                 "r / a", "u_x / u_A", profiles);
+                 "r / a", "u_x / u_A", plots.profiles);
       write_plot(folder, "traction_A_to_E", s.info.name + ": the prescribed traction at A to E (9.82, figs. 9.34-9.35)",
-                 "r / a", "tau / (mu p(0))", tractions);
+                 "r / a", "tau / (mu p(0))", plots.tractions);
     }
   } // namespace
 

@@ -732,8 +732,8 @@ namespace gradcontact::cases
             throw std::invalid_argument(where + "Map/ratios: lambda = " + std::to_string(lambda) +
                                         " with Adhesion/law = Lennard-Jones; the valid range is (0, " +
                                         format(lennard_jones_largest_lambda()) +
-                                        "] (the adhesive zone narrows like lambda^-2; the path at 10 takes about 15 "
-                                        "minutes)");
+                                        "] (the adhesive zone narrows like lambda^-2, and the edge refinement and the "
+                                        "cost of the path grow with it)");
       if (s.references.fem && s.material.nu >= 0.5 &&
           s.discretization.formulation == DiscretizationParameters::Formulation::displacement)
         throw std::invalid_argument(where + "Material/nu = 0.5 with Discretization/formulation = displacement: the "
@@ -848,6 +848,20 @@ namespace gradcontact::cases
                                   "Material/nu");
     }
 
+
+    /// A map whose FE finds the contact set needs a curved indenter, and one that isolates `isolates` needs the
+    /// power law.
+    void require_curved_power_law(const Scene &s, const std::string &where, const std::string &parameter,
+                                  const std::string &why_curved, const std::string &isolates)
+    {
+      if (s.load.type == LoadParameters::Type::flat_punch)
+        throw std::invalid_argument(where + "Map/parameter = " + parameter + " with Load/type = flat punch: " +
+                                    why_curved + ", which needs a curved indenter (paraboloid, cone or power law)");
+      if (s.material.modulus != MaterialParameters::Modulus::power_law)
+        throw std::invalid_argument(where + "Map/parameter = " + parameter +
+                                    " needs Material/modulus = power law (the map isolates " + isolates + ")");
+    }
+
     /// The maps of normal contact (every other Map/parameter).
     void check_normal_map(const Scene &s, const std::string &where)
     {
@@ -868,15 +882,8 @@ namespace gradcontact::cases
     if (s.map.ratios.empty())
       throw std::invalid_argument(where + "Map/ratios is empty: give the ratios a/z0, a/H, a/w or E1/E0 of the map");
     if (s.map.parameter == MapParameters::Parameter::indenter_modulus)
-      {
-        if (s.load.type == Type::flat_punch)
-          throw std::invalid_argument(where + "Map/parameter = indenter modulus with Load/type = flat punch: the "
-                                      "elastic indenter's contact set is found, which needs a curved indenter "
-                                      "(paraboloid, cone or power law)");
-        if (s.material.modulus != MaterialParameters::Modulus::power_law)
-          throw std::invalid_argument(where + "Map/parameter = indenter modulus needs Material/modulus = power law "
-                                      "(the map isolates the indenter's elasticity)");
-      }
+      require_curved_power_law(s, where, "indenter modulus", "the elastic indenter's contact set is found",
+                               "the indenter's elasticity");
     if (s.map.parameter == MapParameters::Parameter::friction_coefficient &&
         (s.friction.load_steps < 2 || s.friction.load_steps % 2 != 0))
       throw std::invalid_argument(where + "Map/parameter = friction coefficient with Friction/load steps = " +
@@ -887,15 +894,8 @@ namespace gradcontact::cases
       throw std::invalid_argument(where + "Map/nu values is set for Map/parameter other than friction coefficient: "
                                   "the other maps run at Material/nu");
     if (s.map.parameter == MapParameters::Parameter::friction_coefficient)
-      {
-        if (s.load.type == Type::flat_punch)
-          throw std::invalid_argument(where + "Map/parameter = friction coefficient with Load/type = flat punch: "
-                                      "the map finds the contact set during loading, which needs a curved "
-                                      "indenter (paraboloid, cone or power law)");
-        if (s.material.modulus != MaterialParameters::Modulus::power_law)
-          throw std::invalid_argument(where + "Map/parameter = friction coefficient needs Material/modulus = power "
-                                      "law (the map isolates friction)");
-      }
+      require_curved_power_law(s, where, "friction coefficient", "the map finds the contact set during loading",
+                               "friction");
     if (s.map.parameter == MapParameters::Parameter::erf_width)
       for (const double k : s.map.exponents.empty() ? std::vector<double>{s.material.k} : s.map.exponents)
         if (k != 0.)
