@@ -239,7 +239,7 @@ namespace gradcontact::fem
       stop = "far field: the clamped boundary at L / a = " + format(base.mesh.far_field_size) +
              " leaves a truncation error of about " + format(truncation) + " (E grows like z^" +
              format(material.modulus->deep_exponent()) +
-             " deep below; the condensed far field needs a power law of depth and the displacement formulation)";
+             " deep below; the condensed far field needs a power law of depth)";
   }
 
 

@@ -80,11 +80,15 @@ namespace gradcontact::fem
 
     // Homogeneous constraints shared by every load: hanging nodes (z-only halvings, edge refinement),
     // u_r = 0 on the axis, u = 0 on the truncation boundary unless the far field is condensed onto it.
-    const bool condensed = discretization.far_field == FarField::condensed; // mixed refused by checked_formulation
+    const bool condensed = discretization.far_field == FarField::condensed;
     constraints.clear();
     make_homogeneous_constraints(dof_handler, mapping, fe, constraints, !condensed);
+    // The mixed formulation's pressure is component 2 (u_r, u_z, q).
+    const unsigned int pressure =
+      used_formulation == Formulation::mixed ? 2u : dealii::numbers::invalid_unsigned_int;
     system.reinit(dof_handler, constraints,
-                  condensed ? std::make_unique<FarFieldRings>(dof_handler, mapping, constraints, mesh_parameters, mesh_info) :
+                  condensed ? std::make_unique<FarFieldRings>(dof_handler, mapping, constraints, mesh_parameters,
+                                                              mesh_info, pressure) :
                               nullptr);
 
     dof_r = support_radii(mapping, dof_handler);
@@ -710,7 +714,7 @@ namespace gradcontact::fem
     data_out.attach_dof_handler(dof_handler);
     std::vector<std::string> names{"u_r", "u_z"};
     if (used_formulation == Formulation::mixed)
-      names.push_back("q"); // q = lambda div u (mixed formulation)
+      names.push_back(mixed_pressure_name(material)); // lambda div u, or (lambda / E) div u on a stiff surface
     data_out.add_data_vector(with_physical_pressure(u, dof_handler, fe, material, mesh_parameters.contact_radius),
                              names);
     Vector<float> modulus(triangulation.n_active_cells());

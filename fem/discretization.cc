@@ -138,8 +138,7 @@ namespace gradcontact::fem
 
   bool use_condensed_far_field(Settings &settings, const Material &material, const double far_field_size)
   {
-    if (!material.modulus || !power_law_of_depth(*material.modulus) || settings.discretization.surface_map.enabled ||
-        resolve_formulation(settings.discretization, material.nu) != Formulation::displacement)
+    if (!material.modulus || !power_law_of_depth(*material.modulus) || settings.discretization.surface_map.enabled)
       return false;
     const double two_rings = settings.mesh.near_field_size * settings.mesh.ring_growth * (1 + 1e-9);
     if (!(far_field_size > two_rings && far_field_size <= 1e16))

@@ -118,12 +118,11 @@ namespace gradcontact::fem
 
   /// Switches `settings` to the condensed far field (fem/far_field.h, the exterior of max(r, z) = L condensed
   /// onto it, no truncation error) with L / a = `far_field_size`, when `material` has a power-law modulus
-  /// (power_law_of_depth), the displacement formulation, and no surface map is on (the map is homogeneous
-  /// only for L >> a); returns whether it did. For the axisymmetric and mode-1 solvers on the meshes of
-  /// fem/mesh.h (the unilateral, distributed and 3D ones refuse it).
-  /// Measured (flat punch, degree 3 recommended mesh, fem/README.md "Far field"): k = -0.5 3.8e-7 with 45k DoFs
-  /// in 0.64 s against 4.0e-7 with 117k in 1.5 s at L = 1e16 a; k = 0 7.8e-7 with 32k in 0.45 s against 7.9e-7
-  /// with 66k in 0.78 s; k = -0.9 1.5e-5 .. 3.1e-5, where the clamped mesh is 2.7e-2 off at L = 1e16 a.
+  /// (power_law_of_depth) and no surface map is on (the map is homogeneous only for L >> a); returns whether
+  /// it did. Either formulation: the mixed one's pressure DoFs are scaled ring by ring (fem/far_field.h). For
+  /// the axisymmetric and mode-1 solvers on the meshes of fem/mesh.h (the unilateral, distributed and 3D ones
+  /// refuse it). Where k < 0 a clamped boundary's truncation (a / L)^(1 + k) needs L far beyond 1e16 a for
+  /// tight tolerances; the condensed one has none.
   bool use_condensed_far_field(Settings &settings, const Material &material,
                                double far_field_size = condensed_far_field_size);
 

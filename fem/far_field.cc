@@ -11,6 +11,7 @@
 #include <set>
 #include <sstream>
 #include <stdexcept>
+#include <tuple>
 
 namespace gradcontact::fem
 {
@@ -41,7 +42,7 @@ namespace gradcontact::fem
 
   FarFieldRings::FarFieldRings(const DoFHandler<2> &dof_handler_, const Mapping<2> &mapping,
                                const AffineConstraints<double> &constraints_, const MeshParameters &mesh,
-                               const MeshInfo &info)
+                               const MeshInfo &info, const unsigned int pressure_component)
     : dof_handler(dof_handler_)
     , constraints(constraints_)
   {
@@ -156,6 +157,9 @@ namespace gradcontact::fem
       throw std::invalid_argument("FarFieldRings: the " + std::to_string(outer_port[1].size()) +
                                   " DoFs on max(r, z) = L are not the " + std::to_string(truncation.size()) +
                                   " free DoFs of the far_field boundary (not a mesh of fem/mesh.h)");
+    pressure_entry.resize(outer_port[1].size());
+    for (std::size_t j = 0; j < outer_port[1].size(); ++j)
+      pressure_entry[j] = component[outer_port[1][j]] == pressure_component;
     if (rings[0].interior.size() != rings[1].interior.size())
       throw std::invalid_argument("FarFieldRings: the last two rings differ in their interior DoFs (" +
                                   std::to_string(rings[0].interior.size()) + " and " +
@@ -231,23 +235,43 @@ namespace gradcontact::fem
 
 
 
-  Exterior FarFieldRings::condense(const CellMatrix &cell_matrix) const
+  std::pair<double, double> FarFieldRings::fit_ring_scale(const FullMatrix<double> &T0, const FullMatrix<double> &T1) const
   {
-    const FullMatrix<double> T0 = two_port(0, cell_matrix), T1 = two_port(1, cell_matrix);
-    double                   t01 = 0, t00 = 0;
+    // sigma: least squares of T1 onto T0 over the displacement entries; mu: of T1 onto sigma T0 over the
+    // displacement-pressure entries (mu = g^(1 - s) for q, g for q / E; fem/graded_elasticity.h).
+    const unsigned int n = T0.m() / 2;
+    double             uu01 = 0, uu00 = 0, up01 = 0, up00 = 0;
     for (unsigned int r = 0; r < T0.m(); ++r)
       for (unsigned int c = 0; c < T0.n(); ++c)
         {
-          t01 += T1(r, c) * T0(r, c);
-          t00 += T0(r, c) * T0(r, c);
+          const unsigned int pressures = pressure_entry[r % n] + pressure_entry[c % n];
+          if (pressures == 0)
+            uu01 += T1(r, c) * T0(r, c), uu00 += T0(r, c) * T0(r, c);
+          else if (pressures == 1)
+            up01 += T1(r, c) * T0(r, c), up00 += T0(r, c) * T0(r, c);
         }
-    Exterior exterior;
-    exterior.ring_scale = t01 / t00;
+    const double sigma = uu01 / uu00;
+    return {sigma, up00 > 0 ? up01 / (sigma * up00) : 1.0};
+  }
+
+
+
+  Exterior FarFieldRings::condense(const CellMatrix &cell_matrix) const
+  {
+    const FullMatrix<double> T0 = two_port(0, cell_matrix), T1 = two_port(1, cell_matrix);
+    const unsigned int       n  = T1.m() / 2;
+    Exterior                 exterior;
+    std::tie(exterior.ring_scale, exterior.pressure_scale) = fit_ring_scale(T0, T1);
+    const double sigma = exterior.ring_scale, mu = exterior.pressure_scale;
+    // The factor of port entry j when a ring is scaled by one ring (D of the header).
+    const auto factor = [&](const unsigned int j, const double pressure_factor) {
+      return pressure_entry[j % n] ? pressure_factor : 1.0;
+    };
     double deviation = 0, norm = 0;
     for (unsigned int r = 0; r < T0.m(); ++r)
       for (unsigned int c = 0; c < T0.n(); ++c)
         {
-          deviation += std::pow(T1(r, c) - exterior.ring_scale * T0(r, c), 2);
+          deviation += std::pow(T1(r, c) - sigma * factor(r, mu) * factor(c, mu) * T0(r, c), 2);
           norm += T1(r, c) * T1(r, c);
         }
     exterior.self_similarity = std::sqrt(deviation / norm);
@@ -256,40 +280,43 @@ namespace gradcontact::fem
     if (!(exterior.self_similarity <= self_similarity_tolerance))
       why << "the last two far-field rings are no scaled copies of each other: relative deviation "
           << exterior.self_similarity << " > " << self_similarity_tolerance
-          << " (a modulus that is no power law of depth at max(r, z) = L, the mixed formulation's pressure, or a "
-             "surface map not yet homogeneous there)";
-    else if (!(exterior.ring_scale > 1 + 1e-9))
-      why << "the stiffness of consecutive far-field rings grows by " << exterior.ring_scale
+          << " (a modulus that is no power law of depth at max(r, z) = L, or a surface map not yet homogeneous there)";
+    else if (!(sigma > 1 + 1e-9))
+      why << "the stiffness of consecutive far-field rings grows by " << sigma
           << " <= 1: the exterior of a modulus E ~ z^s with s <= -1 is not bounded";
     if (!why.str().empty())
       throw std::runtime_error("FarFieldRings::condense: " + why.str());
 
-    // The first exterior ring is sigma T1; doubling as in the header.
-    const unsigned int n     = T1.m() / 2;
-    const double       sigma = exterior.ring_scale;
-    Dense              A(n, n), B(n, n), C(n, n);
+    // The first exterior ring is sigma D T1 D; doubling as in the header, a chain's copy scaled by `scale` (sigma^N)
+    // with the pressure factor `pressure` (mu^N).
+    Dense A(n, n), B(n, n), C(n, n);
     for (unsigned int r = 0; r < n; ++r)
       for (unsigned int c = 0; c < n; ++c)
         {
-          A(r, c) = sigma * T1(r, c);
-          B(r, c) = sigma * T1(r, n + c);
-          C(r, c) = sigma * T1(n + r, n + c);
+          const double d = sigma * factor(r, mu) * factor(c, mu);
+          A(r, c)        = d * T1(r, c);
+          B(r, c)        = d * T1(r, n + c);
+          C(r, c)        = d * T1(n + r, n + c);
         }
-    double scale = sigma; // of the next chain against this one: sigma^N
+    double scale = sigma, pressure = mu;
     while (1 / scale > chain_tolerance)
       {
         if (exterior.doublings == 64)
           throw std::runtime_error("FarFieldRings::condense: the chain of 2^64 rings still has a truncation factor " +
                                    std::to_string(1 / scale));
-        Dense M(C), R(n, 2 * n);
-        M.add(scale, A);
+        // The copy's blocks X' = scale D X D; the middle port (C + A') eliminated.
+        Dense M(C), R(n, 2 * n), Bc(n, n), Cc(n, n);
         for (unsigned int r = 0; r < n; ++r)
           for (unsigned int c = 0; c < n; ++c)
             {
-              R(r, c)     = B(c, r); // B^T
-              R(r, n + c) = B(r, c);
+              const double d = scale * factor(r, pressure) * factor(c, pressure);
+              M(r, c) += d * A(r, c);
+              Bc(r, c)     = d * B(r, c);
+              Cc(r, c)     = d * C(r, c);
+              R(r, c)      = B(c, r); // B^T
+              R(r, n + c)  = Bc(r, c);
             }
-        const Dense X = solve(M, R); // [M^{-1} B^T | M^{-1} B], one factorisation
+        const Dense X = solve(M, R); // [M^{-1} B^T | M^{-1} B'], one factorisation
         Dense       P(n, n), Q(n, n), BP(n, n), BQ(n, n), BtQ(n, n);
         for (unsigned int r = 0; r < n; ++r)
           for (unsigned int c = 0; c < n; ++c)
@@ -299,13 +326,14 @@ namespace gradcontact::fem
             }
         B.mmult(BP, P);
         B.mmult(BQ, Q);
-        B.Tmmult(BtQ, Q);
+        Bc.Tmmult(BtQ, Q);
         A.add(-1.0, BP);
         B = BQ;
-        B *= -scale;
-        C *= scale;
-        C.add(-scale * scale, BtQ);
+        B *= -1.0;
+        C = Cc;
+        C.add(-1.0, BtQ);
         scale *= scale;
+        pressure *= pressure;
         ++exterior.doublings;
       }
     exterior.chain_error = 1 / scale;

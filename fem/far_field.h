@@ -17,8 +17,15 @@
 // Nothing is assumed of the modulus or the mesh: the mesh's last two rings are both condensed, the scale is
 // the least-squares fit of the outer one onto the inner one, and their relative deviation is measured and
 // bounded: a modulus that is no power law of depth at the rings' size (a finite surface modulus, a coating)
-// and a surface map that is not yet homogeneous at L are refused with the deviation found; the solvers refuse
-// the mixed formulation up front (its pressure DoFs scale otherwise).
+// and a surface map that is not yet homogeneous at L are refused with the deviation found.
+//
+// The mixed formulation's pressure DoFs scale otherwise: K_uq = \int div(v) q r dr dz ~ lambda^2 and
+// K_qq = \int q q' / lambda_Lame r dr dz ~ lambda^{3-s}, so a ring scaled by lambda is
+// lambda^{1+s} D T D with D = diag(1 on displacement DoFs, mu on pressure DoFs), mu = lambda^{1-s} (the
+// pressure of the scaled ring is measured in units lambda^{s-1} times those of the original: q ~ E eps ~
+// lambda^{s-1} at equal displacements); mu = lambda where the unknown is q / E (a stiff surface,
+// fem/graded_elasticity.h). sigma is fitted on the displacement block and mu on the displacement-pressure one;
+// the deviation is measured over all of T.
 //
 // The infinite discrete problem has no truncation error left: the flat punch at k = -0.5 gives the force
 // of the mesh clamped at L / a = 1e16 (fem/README.md "Far field").
@@ -49,6 +56,7 @@ namespace gradcontact::fem
     std::vector<dealii::types::global_dof_index> dofs; ///< the truncation-boundary DoFs S acts on
     dealii::FullMatrix<double>                   stiffness; ///< S (symmetric), in the order of `dofs`
     double       ring_scale      = 0; ///< sigma, the measured ratio of consecutive rings' stiffness
+    double       pressure_scale  = 1; ///< mu, the factor of the pressure DoFs per ring (mixed formulation; else 1)
     double       self_similarity = 0; ///< |T_n - sigma T_{n-1}| / |T_n| (Frobenius)
     unsigned int doublings       = 0; ///< chains of 2^doublings rings
     double       chain_error     = 0; ///< the truncation factor sigma^{-N} of the last chain
@@ -62,10 +70,11 @@ namespace gradcontact::fem
     /// `constraints`: the model's homogeneous constraints *without* the far-field condition: a ring DoF
     /// constrained to zero or to DoFs of its own ring (the axis conditions) is applied in the ring's matrix, one
     /// tied to other rings (a hanging node) is refused. Needs at
-    /// least two rings (MeshInfo::n_rings >= 2). Throws std::invalid_argument naming what is missing.
+    /// least two rings (MeshInfo::n_rings >= 2). `pressure_component`: the mixed formulation's pressure
+    /// component of the element (none by default). Throws std::invalid_argument naming what is missing.
     FarFieldRings(const dealii::DoFHandler<2> &dof_handler, const dealii::Mapping<2> &mapping,
                   const dealii::AffineConstraints<double> &constraints, const MeshParameters &mesh,
-                  const MeshInfo &info);
+                  const MeshInfo &info, unsigned int pressure_component = dealii::numbers::invalid_unsigned_int);
 
     /// The unconstrained DoFs on the truncation boundary (for the sparsity pattern: they couple densely).
     const std::vector<dealii::types::global_dof_index> &boundary_dofs() const { return outer_port[1]; }
@@ -86,8 +95,14 @@ namespace gradcontact::fem
     /// The condensed two-port of ring `i`: rows and columns in the order inner_port[i], outer_port[i].
     dealii::FullMatrix<double> two_port(unsigned int i, const CellMatrix &cell_matrix) const;
 
+    /// The scale sigma of T1 against T0 and, with pressure DoFs, their factor mu per ring (1 without).
+    std::pair<double, double> fit_ring_scale(const dealii::FullMatrix<double> &T0,
+                                             const dealii::FullMatrix<double> &T1) const;
+
     const dealii::DoFHandler<2>                        &dof_handler;
     const dealii::AffineConstraints<double>            &constraints;
+    /// Per port entry (the same for every port): whether it is a pressure DoF of the mixed formulation.
+    std::vector<bool>                                   pressure_entry;
     std::array<Ring, 2>                                  rings;
     /// Port DoFs of each ring, sorted by (component, angle), so that entry j of every port is the same
     /// DoF of the polyline scaled.

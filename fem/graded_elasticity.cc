@@ -143,6 +143,7 @@ namespace gradcontact::fem
     , mixed(fe_.n_components() == Strain::n_displacement_components + 1)
     , inverse_lambda_factor(mixed ? (1 + material_.nu) * (1 - 2 * material_.nu) / material_.nu : 0.0)
     , pressure_scale(mixed ? mixed_pressure_scale(material_, contact_radius) : 1.0)
+    , weighted_pressure(mixed && depth_weighted_pressure(material_))
     , map(discretization.surface_map, *material_.modulus, contact_radius, h_edge)
     , rules(material_, fe_, mapping, discretization, mixed && inverse_lambda_factor != 0.0, map.gamma())
     , cell_matrix(fe_.n_dofs_per_cell(), fe_.n_dofs_per_cell())
@@ -363,18 +364,23 @@ namespace gradcontact::fem
     const double        s             = rules.surface_exponent();
     const unsigned int  dofs_per_cell = fe.n_dofs_per_cell();
     const unsigned int  pressure      = Strain::n_displacement_components;
-    // Surface cells with E ~ z^s, s != 0: K_qq needs its own rule (Gauss-Jacobi, exponent -s).
+    // Surface cells with E ~ z^s, s != 0: K_qq needs its own rule (Gauss-Jacobi, exponent -s), unless the
+    // unknown is q / E, whose blocks both carry E and take K_uu's rule (header).
     const bool singular_qq =
-      choice.surface_face != numbers::invalid_unsigned_int && s != 0.0 && !choice.straddles;
+      !weighted_pressure && choice.surface_face != numbers::invalid_unsigned_int && s != 0.0 && !choice.straddles;
     const bool qq_here = inverse_lambda_factor != 0.0 && !singular_qq;
 
-    // K_uq = \int tr B_i psi_j r and, where 1/E is regular, K_qq = -\int psi_i psi_j / lambda r.
-    FEValues<dim> &plain = rules.plain(cell, choice.straddles);
+    // K_uq = \int tr B_i psi_j r and, where 1/E is regular, K_qq = -\int psi_i psi_j / lambda r; weighted, both
+    // times E(z) (q = E q_hat) with the cell's rule for E, whose weights contain xi^s where `xi` is set.
+    FEValues<dim>             &plain = weighted_pressure ? *choice.values : rules.plain(cell, choice.straddles);
+    const std::vector<double> *xi_e  = weighted_pressure ? choice.xi : nullptr;
     for (const unsigned int q : plain.quadrature_point_indices())
       {
         const Point<dim> &x      = plain.quadrature_point(q);
         const double      r      = x[0];
-        const double      weight = Strain::weight(x) * plain.JxW(q);
+        double            weight = Strain::weight(x) * plain.JxW(q);
+        if (weighted_pressure)
+          weight *= E.value(x[dim - 1]) / (xi_e ? std::pow((*xi_e)[q], s) : 1.0);
         for (unsigned int i = 0; i < dofs_per_cell; ++i)
           {
             const unsigned int c   = fe.system_to_component_index(i).first;
@@ -388,9 +394,11 @@ namespace gradcontact::fem
               trace[i] = 0.0;
             psi[i] = (c == pressure) ? phi : 0.0;
           }
-        // q = S q_hat (mixed_pressure_scale): K_uq times S, K_qq times S^2.
-        const double S              = pressure_scale;
-        const double inverse_lambda = qq_here ? S * S * inverse_lambda_factor / E.value(x[dim - 1]) : 0.0;
+        // q = S q_hat (mixed_pressure_scale): K_uq times S, K_qq times S^2; weighted: E / lambda, E in `weight`.
+        const double S              = weighted_pressure ? 1.0 : pressure_scale;
+        const double inverse_lambda = weighted_pressure ? inverse_lambda_factor :
+                                      qq_here           ? S * S * inverse_lambda_factor / E.value(x[dim - 1]) :
+                                                          0.0;
         for (unsigned int i = 0; i < dofs_per_cell; ++i)
           for (unsigned int j = 0; j <= i; ++j)
             cell_matrix(i, j) +=
@@ -430,11 +438,25 @@ namespace gradcontact::fem
 
 
 
+  bool depth_weighted_pressure(const Material &material)
+  {
+    return material.modulus && material.modulus->surface_exponent() < 0;
+  }
+
+
+
+  std::string mixed_pressure_name(const Material &material)
+  {
+    return depth_weighted_pressure(material) ? "q_over_E" : "q";
+  }
+
+
+
   Vector<double> with_physical_pressure(const Vector<double> &u, const DoFHandler<2> &dof_handler,
                                        const FESystem<2> &fe, const Material &material, const double contact_radius)
   {
     Vector<double> fields = u;
-    if (fe.n_components() == AxisymmetricStrain::n_displacement_components + 1)
+    if (fe.n_components() == AxisymmetricStrain::n_displacement_components + 1 && !depth_weighted_pressure(material))
       {
         const double S = mixed_pressure_scale(material, contact_radius);
         for (const auto i : DoFTools::extract_dofs(dof_handler, fe.component_mask(FEValuesExtractors::Scalar(2))))
@@ -497,11 +519,6 @@ namespace gradcontact::fem
   {
     discretization.validate();
     const Formulation f = resolve_formulation(discretization, material.nu);
-    // The condensed far field (fem/far_field.h) scales every ring DoF alike; the pressure DoFs scale otherwise.
-    if (f == Formulation::mixed && discretization.far_field == FarField::condensed)
-      throw std::invalid_argument("DiscretizationParameters::far_field = condensed needs the displacement formulation "
-                                  "(the pressure DoFs of the rings scale otherwise); nu = " +
-                                  std::to_string(material.nu));
     material.validate(f == Formulation::mixed);
     return f;
   }

@@ -26,6 +26,11 @@
 // below; K_uq (polynomial, no E) with plain Gauss (QIterated across a jump), since Gauss-Jacobi would
 // leave the integrand divided by xi^s; K_qq (carries 1/E ~ z^{-s}) with Gauss-Jacobi of exponent -s in
 // the surface cells, integrand xi^s / E(z) regular there. K_qq vanishes at nu = 1/2.
+// On a stiff surface (E ~ z^s, s < 0; depth_weighted_pressure) the in-plane stress of the skin makes
+// q ~ z^s unbounded at z = 0, which no polynomial follows; there the unknown is q_hat = q / E(z) =
+// (lambda / E) div u, bounded (a constant plus z^{-s}), and
+//   K_uq = \int tr B_i psi_j E r dr dz,   K_qq = - \int psi_i psi_j (E / lambda) E r dr dz,
+// both carrying E, with the rule of K_uu (E / lambda is a constant).
 //
 // Quadrature per cell: QGauss(degree + extra) in the bulk; QIterated copies of it where a jump of E
 // crosses the cell; in the cells with a face on z = 0, when E ~ z^s there (s != 0), Gauss-Jacobi across
@@ -57,6 +62,7 @@
 
 #include <array>
 #include <memory>
+#include <string>
 #include <vector>
 
 namespace gradcontact::fem
@@ -217,6 +223,7 @@ namespace gradcontact::fem
     const bool                          mixed;
     const double                        inverse_lambda_factor; ///< 1/lambda = this / E (0 at nu = 1/2)
     const double                        pressure_scale;        ///< S of mixed_pressure_scale
+    const bool                          weighted_pressure;     ///< depth_weighted_pressure: q / E(z) solved for
     const SurfaceMap<dim>               map;
     GradedCellRules<dim>                rules;
     dealii::FullMatrix<double>          cell_matrix;
@@ -230,8 +237,17 @@ namespace gradcontact::fem
   /// can fail on the unbalanced system (test `The mixed formulation shall solve the graded flat punch alike*`).
   double mixed_pressure_scale(const Material &material, double contact_radius);
 
-  /// A solution vector of the meridian element with the mixed formulation's pressure unknowns in physical
-  /// units (q = lambda div u, times mixed_pressure_scale); the displacement-only element's vector as it is.
+  /// Whether the mixed formulation's pressure unknown is q / E(z) (a stiff surface, E ~ z^s with s < 0; header)
+  /// rather than q / S.
+  bool depth_weighted_pressure(const Material &material);
+
+  /// The name of the mixed formulation's pressure field in output: "q" (lambda div u), or "q_over_E"
+  /// ((lambda / E) div u, dimensionless) where depth_weighted_pressure holds (q is unbounded at z = 0 there).
+  std::string mixed_pressure_name(const Material &material);
+
+  /// A solution vector of the meridian element with the mixed formulation's pressure unknowns in the units of
+  /// mixed_pressure_name (q = lambda div u: times mixed_pressure_scale; q / E: as solved); the
+  /// displacement-only element's vector as it is.
   dealii::Vector<double> with_physical_pressure(const dealii::Vector<double> &u, const dealii::DoFHandler<2> &dof_handler,
                                                 const dealii::FESystem<2> &fe, const Material &material,
                                                 double contact_radius);

@@ -841,7 +841,7 @@ namespace gradcontact::fem
           data_out.attach_dof_handler(body.dof_handler);
           std::vector<std::string> names{"u_r", "u_z"};
           if (body.used_formulation == Formulation::mixed)
-            names.push_back("q");
+            names.push_back(mixed_pressure_name(body.material));
           data_out.add_data_vector(
             with_physical_pressure(field, body.dof_handler, body.fe, body.material, body.contact_radius), names);
           write_vtu(data_out, body.mapping, discretization.degree, file, "UnilateralContactSolver");
