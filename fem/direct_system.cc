@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <limits>
 #include <memory>
 #include <stdexcept>
@@ -72,9 +73,10 @@ namespace gradcontact::fem
               Ai[k]        = i;
               Ax[k]        = entry->value();
             }
+        equilibrate();
         umfpack_dl_defaults(control);
         control[UMFPACK_STRATEGY] = UMFPACK_STRATEGY_UNSYMMETRIC;
-        control[UMFPACK_SCALE]    = UMFPACK_SCALE_MAX;
+        control[UMFPACK_SCALE]    = UMFPACK_SCALE_NONE; // equilibrated above
         control[UMFPACK_IRSTEP]   = 0;
         double info[UMFPACK_INFO];
         void  *symbolic = nullptr;
@@ -102,17 +104,55 @@ namespace gradcontact::fem
       UmfpackLU(const UmfpackLU &) = delete;
       UmfpackLU &operator=(const UmfpackLU &) = delete;
 
-      /// x <- A^{-1} x.
+      /// x <- A^{-1} x = D_c (D_r A D_c)^{-1} D_r x.
       void solve(Vector<double> &x) const
       {
         Vector<double> b(x);
-        double         info[UMFPACK_INFO];
+        for (SuiteSparse_long i = 0; i < n; ++i)
+          b[i] *= row_scale[i];
+        double info[UMFPACK_INFO];
         check(umfpack_dl_solve(UMFPACK_A, Ap.data(), Ai.data(), Ax.data(), x.begin(), b.begin(), numeric, control,
                                info),
               "solve");
+        for (SuiteSparse_long j = 0; j < n; ++j)
+          x[j] *= column_scale[j];
       }
 
     private:
+      /// Scales the rows and columns of the copy to a largest entry of about 1 each (Ruiz, "A scaling algorithm to
+      /// equilibrate both rows and columns norms in matrices", RAL-TR-2001-034: D_r A D_c, each step dividing by the
+      /// square roots of the rows' and columns' largest entries). A stiff thin skin over a soft bulk (k < 0) puts
+      /// entries many orders apart in one matrix; scaling rows alone leaves the columns of the pivot search unequal.
+      void equilibrate()
+      {
+        constexpr unsigned int steps = 8;
+        row_scale.assign(n, 1.0);
+        column_scale.assign(n, 1.0);
+        std::vector<double> row_max(n), column_max(n);
+        for (unsigned int step = 0; step < steps; ++step)
+          {
+            std::fill(row_max.begin(), row_max.end(), 0.0);
+            std::fill(column_max.begin(), column_max.end(), 0.0);
+            for (SuiteSparse_long j = 0; j < n; ++j)
+              for (SuiteSparse_long k = Ap[j]; k < Ap[j + 1]; ++k)
+                {
+                  const double x = std::abs(Ax[k]);
+                  row_max[Ai[k]] = std::max(row_max[Ai[k]], x);
+                  column_max[j]  = std::max(column_max[j], x);
+                }
+            for (SuiteSparse_long i = 0; i < n; ++i)
+              {
+                row_max[i]    = row_max[i] > 0 ? 1 / std::sqrt(row_max[i]) : 1.0;
+                column_max[i] = column_max[i] > 0 ? 1 / std::sqrt(column_max[i]) : 1.0;
+                row_scale[i] *= row_max[i];
+                column_scale[i] *= column_max[i];
+              }
+            for (SuiteSparse_long j = 0; j < n; ++j)
+              for (SuiteSparse_long k = Ap[j]; k < Ap[j + 1]; ++k)
+                Ax[k] *= row_max[Ai[k]] * column_max[j];
+          }
+      }
+
       /// A failed UMFPACK step (a singular matrix included: its solve would divide by zero) is an error naming the step.
       static void check(const SuiteSparse_long status, const char *step)
       {
@@ -125,6 +165,7 @@ namespace gradcontact::fem
       SuiteSparse_long              n;
       std::vector<SuiteSparse_long> Ap, Ai;
       std::vector<double>           Ax;
+      std::vector<double>           row_scale, column_scale; ///< D_r, D_c of equilibrate
       double                        control[UMFPACK_CONTROL];
       void                         *numeric       = nullptr;
       double                        numeric_bytes = 0;
