@@ -25,30 +25,40 @@ namespace gradcontact::cases
       int (*run)(const std::vector<std::string> &args);
     };
 
-    int eval(const std::vector<std::string> &args)
+    int eval(const std::vector<std::string> &args_in)
     {
+      // --batch: read the whole input first (cases/fe_oracle.h, EvalReading); else each line answered at once.
+      std::vector<std::string> args;
+      EvalReading              reading = EvalReading::per_line;
+      for (const std::string &a : args_in)
+        if (a == "--batch")
+          reading = EvalReading::whole_input;
+        else
+          args.push_back(a);
       if (args.size() > 1)
         throw std::invalid_argument("eval: takes at most one file (got " + std::to_string(args.size()) + ")");
       FeOracle oracle; // "method": "fe" (cases/fe_oracle.h)
       if (args.empty() || args[0] == "-")
         {
-          evaluate_stream(std::cin, std::cout, oracle);
+          evaluate_stream(std::cin, std::cout, oracle, reading);
           return 0;
         }
       std::ifstream in(args[0]);
       if (!in)
         throw std::invalid_argument("eval: cannot open file '" + args[0] + "'");
-      evaluate_stream(in, std::cout, oracle);
+      evaluate_stream(in, std::cout, oracle, reading);
       return 0;
     }
 
     const std::vector<Command> &commands()
     {
       static const std::vector<Command> list = {
-        {"eval", "[file]",
+        {"eval", "[--batch] [file]",
          "evaluate JSON Lines requests from file (or stdin), one answer\n"
-         "line per request (vocabulary: analytic/README.md; \"method\": \"fe\" answers\n"
-         "by the FE model with an error estimate, cases/fe_oracle.h)",
+         "line per request, each written as soon as its line is read (vocabulary:\n"
+         "analytic/README.md; \"method\": \"fe\" answers by the FE model with an error\n"
+         "estimate, cases/fe_oracle.h); --batch reads the whole input first, so that\n"
+         "the FE samples all pressures and displacements of one state together",
          eval},
         {"run", "<scene|folder> ... [--set Section/key=value] [--reports DIR] [--quiet]\n"
                 "    [--verbose] [--shard i/N] [--map-shard i/N] [--help-scene]",

@@ -11,6 +11,7 @@
 #include <cmath>
 #include <cstdio>
 #include <memory>
+#include <optional>
 #include <set>
 #include <sstream>
 #include <stdexcept>
@@ -274,6 +275,7 @@ namespace gradcontact::cases
       }
     Answer answer;
     answer.dofs = state.scalars.level_dofs.empty() ? 0 : state.scalars.level_dofs.back();
+    answer.formulation = state.scalars.result.formulation == fem::Formulation::mixed ? "mixed" : "displacement";
     ++answered;
     if (p.outside)
       return answer; // no pressure outside the contact: exactly 0
@@ -306,60 +308,81 @@ namespace gradcontact::cases
     return answer;
   }
 
-  int evaluate_stream(std::istream &in, std::ostream &out, FeOracle &oracle)
+  namespace
+  {
+    bool blank(const std::string &line)
+    {
+      return line.find_first_not_of(" \t\r") == std::string::npos;
+    }
+
+    /// The request of `line` when it asks the FE ("method": "fe"), else null (a closed-form or numerical-MDR
+    /// request, or invalid JSON, which batch::evaluate reports).
+    std::optional<json> fe_request(const std::string &line)
+    {
+      try
+        {
+          json j = json::parse(line);
+          if (j.is_object() && j.contains("method") && j.at("method").is_string() && j.at("method") == "fe")
+            return j;
+        }
+      catch (const json::exception &)
+        {
+        }
+      return std::nullopt;
+    }
+
+    /// Writes the answer line of one request; returns 1 for an error, else 0.
+    int answer_line(const std::string &line, std::ostream &out, FeOracle &oracle)
+    {
+      const std::optional<json> fe = fe_request(line);
+      if (!fe)
+        {
+          const batch::Answer answer = batch::evaluate(line);
+          out << batch::to_json(answer) << '\n';
+          return answer.ok ? 0 : 1;
+        }
+      const std::string id = fe->contains("id") ? fe->at("id").dump() : "null";
+      try
+        {
+          const FeOracle::Answer a = oracle.evaluate(*fe);
+          out << "{\"id\":" << id << ",\"value\":" << exact(a.value) << ",\"error_estimate\":" << exact(a.error_estimate)
+              << ",\"relative_error_estimate\":" << exact(a.relative_error_estimate) << ",\"dofs\":" << a.dofs
+              << ",\"formulation\":\"" << a.formulation << "\"}\n";
+          return 0;
+        }
+      catch (const std::exception &e)
+        {
+          out << "{\"id\":" << id << ",\"error\":" << json(std::string(e.what())).dump() << "}\n";
+          return 1;
+        }
+    }
+  } // namespace
+
+  int evaluate_stream(std::istream &in, std::ostream &out, FeOracle &oracle, const EvalReading reading)
   {
     int errors = 0;
+    if (reading == EvalReading::per_line)
+      {
+        for (std::string line; std::getline(in, line);)
+          if (!blank(line))
+            {
+              if (const std::optional<json> fe = fe_request(line))
+                oracle.plan(*fe);
+              errors += answer_line(line, out, oracle);
+              out.flush();
+            }
+        return errors;
+      }
     // All lines first: the FE's pressures and displacements of one unit state are sampled together.
     std::vector<std::string> lines;
     for (std::string line; std::getline(in, line);)
-      if (line.find_first_not_of(" \t\r") != std::string::npos)
+      if (!blank(line))
         lines.push_back(line);
     for (const std::string &line : lines)
-      {
-        try
-          {
-            const json j = json::parse(line);
-            if (j.is_object() && j.contains("method") && j.at("method").is_string() && j.at("method") == "fe")
-              oracle.plan(j);
-          }
-        catch (const json::exception &)
-          {
-            // reported below
-          }
-      }
+      if (const std::optional<json> fe = fe_request(line))
+        oracle.plan(*fe);
     for (const std::string &line : lines)
-      {
-        json j;
-        bool fe = false;
-        try
-          {
-            j = json::parse(line);
-            fe = j.is_object() && j.contains("method") && j.at("method").is_string() && j.at("method") == "fe";
-          }
-        catch (const json::exception &)
-          {
-            fe = false; // batch::evaluate reports the invalid JSON
-          }
-        if (!fe)
-          {
-            const batch::Answer answer = batch::evaluate(line);
-            errors += answer.ok ? 0 : 1;
-            out << batch::to_json(answer) << '\n';
-            continue;
-          }
-        const std::string id = j.contains("id") ? j.at("id").dump() : "null";
-        try
-          {
-            const FeOracle::Answer a = oracle.evaluate(j);
-            out << "{\"id\":" << id << ",\"value\":" << exact(a.value) << ",\"error_estimate\":" << exact(a.error_estimate)
-                << ",\"relative_error_estimate\":" << exact(a.relative_error_estimate) << ",\"dofs\":" << a.dofs << "}\n";
-          }
-        catch (const std::exception &e)
-          {
-            ++errors;
-            out << "{\"id\":" << id << ",\"error\":" << json(std::string(e.what())).dump() << "}\n";
-          }
-      }
+      errors += answer_line(line, out, oracle);
     out.flush();
     return errors;
   }

@@ -42,6 +42,7 @@ namespace gradcontact::cases
       double       error_estimate = 0;          ///< absolute (header)
       double       relative_error_estimate = 0; ///< relative to the quantity's scale (header)
       unsigned int dofs           = 0;          ///< of the finest level of the ladder
+      std::string  formulation;                 ///< "displacement", or "mixed" (nu >= 0.45, fem/README.md)
     };
 
     FeOracle();
@@ -70,11 +71,21 @@ namespace gradcontact::cases
     unsigned int                                       solved = 0, answered = 0;
   };
 
-  /// `gradcontact eval`: one answer line per request line, in order (the whole input is read first, so that the
-  /// FE plans its samples); a request with "method": "fe" goes to
-  /// `oracle` (its answer adds "error_estimate", "relative_error_estimate" and "dofs"), any other to the closed forms or the numerical MDR
-  /// (analytic/batch.h). Never throws on a request: an error becomes {"id", "error"}. Returns the number of errors.
-  int evaluate_stream(std::istream &in, std::ostream &out, FeOracle &oracle);
+  /// How `gradcontact eval` reads its input.
+  enum class EvalReading
+  {
+    per_line,   ///< each request answered (and the output flushed) as soon as its line is complete: a script
+                ///< can write one request and wait for its answer
+    whole_input ///< every line read first, so that the FE samples all the pressures and displacements asked of
+                ///< one unit state in one ladder run (their estimates then share the largest |p| as scale)
+  };
+
+  /// `gradcontact eval`: one answer line per request line, in order; a request with "method": "fe" goes to
+  /// `oracle` (its answer adds "error_estimate", "relative_error_estimate", "dofs" and "formulation"), any other to
+  /// the closed forms or the numerical MDR (analytic/batch.h). Never throws on a request: an error becomes
+  /// {"id", "error"}. Returns the number of errors.
+  int evaluate_stream(std::istream &in, std::ostream &out, FeOracle &oracle,
+                      EvalReading reading = EvalReading::whole_input);
 } // namespace gradcontact::cases
 
 #endif

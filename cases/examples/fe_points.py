@@ -4,13 +4,14 @@
 Usage: python3 cases/examples/fe_points.py [GRADCONTACT] [--k K] [--tolerance TOL]
        (GRADCONTACT defaults to build/cases/gradcontact)
 
-Writes one batch of requests to one `gradcontact eval` process: the force and the depth of a paraboloid at ten
-contact radii, its pressure p(r) at three radii and its surface displacement w(2 a), each answered twice, by the FE
-model at the asked relative tolerance ("method": "fe") and by the closed form (the default method). The FE answers
-{"id", "value", "error_estimate", "relative_error_estimate", "dofs"} or {"id", "error"} when it cannot vouch for a
-value (the accuracy contract, fem/README.md). One FE state per (k, nu, tolerance, profile) answers every E0, c0,
-contact radius and R by the power law's similarity, so the whole batch costs one ladder of FE solves. The request
-vocabulary is in analytic/README.md.
+Keeps one `gradcontact eval` process open and sends it one request at a time, reading each answer before the
+next: the force and the depth of a paraboloid at ten contact radii, its pressure p(r) at three radii and its
+surface displacement w(2 a), each answered twice, by the FE model at the asked relative tolerance ("method": "fe")
+and by the closed form (the default method). The FE answers {"id", "value", "error_estimate",
+"relative_error_estimate", "dofs", "formulation"} or {"id", "error"} when it cannot vouch for a value (the accuracy
+contract, fem/README.md). One FE state per (k, nu, tolerance, profile) answers every E0, c0, contact radius and R by
+the power law's similarity: the first FE request costs one ladder of FE solves, the later ones back substitutions.
+The request vocabulary is in analytic/README.md.
 
 Prints one row per point and exits 1 when an FE answer is an error, or is further from the closed form than the
 asked tolerance (relative to the value; a pressure relative to the largest |p| sampled, p(0) here).
@@ -44,14 +45,23 @@ for n, (_, request, _) in enumerate(points):
     lines.append(json.dumps({"id": f"fe-{n}", "method": "fe", "tolerance": args.tolerance, **base}))
     lines.append(json.dumps({"id": f"cf-{n}", **base}))
 
-# One process for the whole batch: the requests go in, one answer a line comes out, in order.
-run = subprocess.run([args.gradcontact, "eval"], input="\n".join(lines) + "\n", capture_output=True, text=True)
-if run.returncode != 0:
-    sys.exit(f"gradcontact eval failed ({run.returncode}): {run.stderr}")
+# One process kept open: each request is written and its answer read before the next is sent (eval answers a line as
+# soon as it is complete and flushes it). `gradcontact eval --batch` reads the whole input first instead, so that the
+# FE samples every pressure and displacement of one state in one ladder run.
+process = subprocess.Popen([args.gradcontact, "eval"], stdin=subprocess.PIPE, stdout=subprocess.PIPE,
+                           stderr=subprocess.PIPE, text=True, bufsize=1)
 answers = {}
-for line in run.stdout.splitlines():
-    answer = json.loads(line)
+for line in lines:
+    process.stdin.write(line + "\n")
+    process.stdin.flush()
+    reply = process.stdout.readline()
+    if not reply:
+        sys.exit(f"gradcontact eval stopped answering: {process.stderr.read()}")
+    answer = json.loads(reply)
     answers[answer["id"]] = answer
+process.stdin.close()
+if process.wait() != 0:
+    sys.exit(f"gradcontact eval failed ({process.returncode}): {process.stderr.read()}")
 
 p0 = answers[f"cf-{[label for label, _, _ in points].index('p(r = 0.0 a)')}"]["value"]
 failures = 0

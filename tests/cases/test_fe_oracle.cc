@@ -155,13 +155,54 @@ TEST_CASE("gradcontact eval shall answer FE and closed-form requests in order, w
   CHECK(answers[3].contains("error"));
 }
 
-TEST_CASE("A tolerance the FE cannot reach shall be refused with the limit that stops it, not answered", "[cases][quick]")
+TEST_CASE("A tolerance the FE cannot reach shall be refused with the limit that stops it, not answered", "[cases]")
 {
-  // nu = 1/2 needs the mixed formulation, whose far field is clamped: at k = -0.9 its truncation error (a/L)^(1+k) at
-  // the largest L / a = 1e16 is about 0.025 (an independent bound: the power of the half-space's decay).
+  // nu = 1/2 at k = -0.9, asked 1e-8: the stiff skin's round-off keeps the levels' changes far above that
+  // (fem/README.md, "Accuracy contract"), and the ladder stops at a budget or on changes that do not fall.
   FeOracle oracle;
   json request = paraboloid("force", 1e9, 1e-3, -0.9, 1e-4, 1e-2);
   request["material"]["nu"] = 0.5;
-  CHECK_THROWS_WITH(oracle.evaluate(with_fe(request, 1e-4)),
-                    Contains("does not reach tolerance 0.0001") && Contains("far field") && Contains("truncation"));
+  CHECK_THROWS_WITH(oracle.evaluate(with_fe(request, 1e-8)),
+                    Contains("does not reach tolerance 1e-08") &&
+                      (Contains("budget") || Contains("no convergence") || Contains("levels")));
+}
+
+TEST_CASE("gradcontact eval shall give the same answers line by line as from the whole input", "[cases][quick]")
+{
+  std::string input;
+  for (const double r : {0.0, 0.5})
+    {
+      json p = with_fe(paraboloid("pressure", 1e9, 1e-3, 0, 1e-4, 1e-2), 1e-3);
+      p["r"] = r * 1e-4;
+      p["id"] = r;
+      input += p.dump() + "\n";
+    }
+  json force = with_fe(paraboloid("force", 1e9, 1e-3, 0, 1e-4, 1e-2), 1e-3);
+  force["id"] = "F";
+  input += force.dump() + "\nnot json\n";
+  std::vector<std::vector<json>> answers;
+  for (const EvalReading reading : {EvalReading::per_line, EvalReading::whole_input})
+    {
+      std::istringstream in(input);
+      std::ostringstream out;
+      FeOracle           oracle;
+      CHECK(evaluate_stream(in, out, oracle, reading) == 1);
+      std::istringstream lines(out.str());
+      answers.emplace_back();
+      for (std::string line; std::getline(lines, line);)
+        answers.back().push_back(json::parse(line));
+    }
+  REQUIRE(answers[0].size() == 4);
+  REQUIRE(answers[1].size() == 4);
+  // Both readings within the asked tolerance of the same limit: p relative to the largest |p| sampled (p(0)).
+  const auto value = [&](const std::size_t reading, const std::size_t i) { return answers[reading][i]["value"].get<double>(); };
+  for (std::size_t i = 0; i < 3; ++i)
+    {
+      CAPTURE(i, answers[0][i].dump(), answers[1][i].dump());
+      CHECK(answers[0][i]["id"] == answers[1][i]["id"]);
+      CHECK(answers[0][i]["formulation"] == "displacement");
+      const double scale = std::abs(value(1, i < 2 ? 0 : 2));
+      CHECK(std::abs(value(0, i) - value(1, i)) <= 2e-3 * scale);
+    }
+  CHECK(answers[0][3].contains("error"));
 }
