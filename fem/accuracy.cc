@@ -5,6 +5,7 @@
 #include <chrono>
 #include <cmath>
 #include <sstream>
+#include <stdexcept>
 
 namespace gradcontact::fem
 {
@@ -446,13 +447,24 @@ namespace gradcontact::fem
     while (record.next_level_allowed())
       {
         std::string         limit;
-        AxisymmetricSolver *solver = level(record.levels(), limit);
-        if (!solver)
+        Result              r;
+        try
           {
-            record.fail(limit);
+            AxisymmetricSolver *solver = level(record.levels(), limit);
+            if (!solver)
+              {
+                record.fail(limit);
+                break;
+              }
+            r = solver->run(load, outputs);
+          }
+        catch (const std::runtime_error &e)
+          {
+            // A factorisation that fails (a numerically singular matrix) limits the ladder like an unreliable solve;
+            // bad input (std::invalid_argument) is not caught.
+            record.fail("failed solve on level " + std::to_string(record.levels()) + ": " + e.what());
             break;
           }
-        Result r = solver->run(load, outputs);
         if (!r.reliable)
           {
             record.fail("unreliable solve on level " + std::to_string(record.levels()) + " (" +

@@ -287,36 +287,33 @@ namespace gradcontact::fem
     if (!why.str().empty())
       throw std::runtime_error("FarFieldRings::condense: " + why.str());
 
-    // The first exterior ring is sigma D T1 D; doubling as in the header, a chain's copy scaled by `scale` (sigma^N)
-    // with the pressure factor `pressure` (mu^N).
+    // The first exterior ring is sigma D T1 D. A chain of N rings is kept with its far port in the units of its
+    // last ring (its DoFs times D^N): then the copy of a chain scaled by g^N is `scale` (sigma^N) times the chain,
+    // D cancels from the doubling, and no power of mu (g^(1 - s) per ring, thousands of rings near s = -1) is
+    // ever formed. The near port stays in the mesh's units, and its block is S.
     Dense A(n, n), B(n, n), C(n, n);
     for (unsigned int r = 0; r < n; ++r)
       for (unsigned int c = 0; c < n; ++c)
         {
-          const double d = sigma * factor(r, mu) * factor(c, mu);
-          A(r, c)        = d * T1(r, c);
-          B(r, c)        = d * T1(r, n + c);
-          C(r, c)        = d * T1(n + r, n + c);
+          A(r, c) = sigma * factor(r, mu) * factor(c, mu) * T1(r, c);
+          B(r, c) = sigma * factor(r, mu) * T1(r, n + c);
+          C(r, c) = sigma * T1(n + r, n + c);
         }
-    double scale = sigma, pressure = mu;
+    double scale = sigma; // of the next chain against this one: sigma^N
     while (1 / scale > chain_tolerance)
       {
         if (exterior.doublings == 64)
           throw std::runtime_error("FarFieldRings::condense: the chain of 2^64 rings still has a truncation factor " +
                                    std::to_string(1 / scale));
-        // The copy's blocks X' = scale D X D; the middle port (C + A') eliminated.
-        Dense M(C), R(n, 2 * n), Bc(n, n), Cc(n, n);
+        Dense M(C), R(n, 2 * n);
+        M.add(scale, A);
         for (unsigned int r = 0; r < n; ++r)
           for (unsigned int c = 0; c < n; ++c)
             {
-              const double d = scale * factor(r, pressure) * factor(c, pressure);
-              M(r, c) += d * A(r, c);
-              Bc(r, c)     = d * B(r, c);
-              Cc(r, c)     = d * C(r, c);
-              R(r, c)      = B(c, r); // B^T
-              R(r, n + c)  = Bc(r, c);
+              R(r, c)     = B(c, r); // B^T
+              R(r, n + c) = B(r, c);
             }
-        const Dense X = solve(M, R); // [M^{-1} B^T | M^{-1} B'], one factorisation
+        const Dense X = solve(M, R); // [M^{-1} B^T | M^{-1} B], one factorisation
         Dense       P(n, n), Q(n, n), BP(n, n), BQ(n, n), BtQ(n, n);
         for (unsigned int r = 0; r < n; ++r)
           for (unsigned int c = 0; c < n; ++c)
@@ -326,14 +323,13 @@ namespace gradcontact::fem
             }
         B.mmult(BP, P);
         B.mmult(BQ, Q);
-        Bc.Tmmult(BtQ, Q);
+        B.Tmmult(BtQ, Q);
         A.add(-1.0, BP);
         B = BQ;
-        B *= -1.0;
-        C = Cc;
-        C.add(-1.0, BtQ);
+        B *= -scale;
+        C *= scale;
+        C.add(-scale * scale, BtQ);
         scale *= scale;
-        pressure *= pressure;
         ++exterior.doublings;
       }
     exterior.chain_error = 1 / scale;
