@@ -35,8 +35,8 @@ namespace gradcontact::cases
   {
     constexpr double pi = 3.14159265358979323846;
 
-    /// The FE G(a) check: a K'/K = 1 + k for the power law holds to the solver's round-off on scaled meshes
-    /// (measured <= 7e-8); 1e-6 leaves room for gmsh placing nodes differently on scaled geometries.
+    /// The FE G(a) check: a K'/K = 1 + k for the power law holds to the solver's round-off on scaled meshes;
+    /// 1e-6 leaves room for gmsh placing nodes differently on scaled geometries.
     constexpr double scaling_tolerance = 1e-6;
 
     double seconds_since(const std::chrono::steady_clock::time_point start)

@@ -51,11 +51,10 @@ namespace gradcontact::cases
     /// The peer models the normal scenes only.
     bool peer_models(const std::string &load) { return load == "flat_punch" || load == "paraboloid"; }
     /// Mesh levels and repetitions per scene. A pull-off costs 7 FE solves (one per contact radius) and
-    /// the mode-1 system has 3/2 the DoFs of the axisymmetric one: measured with one repetition (OpenBLAS,
-    /// shared machine), levels 0-2 of the pull-off took 105 / 197 / 275 s and levels 0-3 of the tangential
-    /// punch 32 / 65 / 76 / 169 s over degrees 1-4 and three k (918 s in all). To keep the whole bench
-    /// near 40 min they run levels 0-1 and 0-2, once each (a pull-off row already times 7 solves): 170 s
-    /// and 72 s of runs, 243 s in all, measured on a less loaded machine.
+    /// the mode-1 system has 3/2 the DoFs of the axisymmetric one, so these two scenes run fewer levels
+    /// (0-1 and 0-2) and once each (a pull-off row already times 7 solves): their full ladders would
+    /// dominate the bench's time. The times per level and scene are the wall-time
+    /// columns of reports/benchmarks/fe_work_precision.md (`./vv bench --part fe`).
     unsigned int levels_of(const std::string &load)
     {
       return load == "jkr_paraboloid" ? 2 : load == "tangential_punch" ? 3 : fe_levels;
@@ -414,7 +413,8 @@ namespace gradcontact::cases
       throw std::invalid_argument("fe_mesh_level: level = " + std::to_string(level) + " is outside [0, " +
                                   std::to_string(fe_levels - 1) + "]");
     // h_edge a decade per level; the far-field rings grow slower as the edge gets finer, so that the
-    // rings do not limit the error before the edge does (fem/README.md: g = 1.6 limits p = 2 at 9e-4).
+    // rings do not limit the error before the edge does (a coarse growth caps the error of the finer levels;
+    // `fem_study g=...` shows it).
     const std::array<double, fe_levels> h_edge{{1e-2, 1e-3, 1e-4, 1e-5, 1e-6}};
     const std::array<double, fe_levels> growth{{1.6, 1.4, 1.3, 1.15, 1.15}};
     const std::array<double, fe_levels> h_far{{4, 4, 4, 3, 3}};

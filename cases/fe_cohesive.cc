@@ -696,8 +696,8 @@ namespace gradcontact::cases
             if (r.size() >= 2)
               {
                 // The Dugdale search under displacement control minimises d(a): its d_c is accurate, the force at
-                // that flat minimum moves with its location (k = 0.5, lambda = 10: 5.7e-3 off the MDR solution, d_c
-                // 2.1e-4), so the trend toward JKR is read on d_c there.
+                // that flat minimum moves with its location (at large lambda it is an order of magnitude further
+                // off the MDR solution than d_c), so the trend toward JKR is read on d_c there.
                 const bool                 on_depth = !smooth && !force_control;
                 const std::vector<double> &trend    = on_depth ? dd : d;
                 const double prev = std::abs(trend[trend.size() - 2]), last = std::abs(trend.back());

@@ -32,11 +32,12 @@ namespace gradcontact::cases
   using JkrProfile = std::variant<gradcontact::Paraboloid, gradcontact::PowerLaw>;
 
   /// The Lennard-Jones map's path follows the contact edge (fem::SmoothCohesionParameters::follow_edge) on
-  /// fem::smooth_cohesion_settings' mesh, whose edge cells resolve the adhesive zone up to lambda = 5 (k = 0: 5.1e-7
-  /// off a mesh with those cells over the whole contact); the zone narrows like lambda^-2, so beyond lambda = 5 the
-  /// edge's cells are divided by (lambda / 5)^2, rounded up to a power of 2 (one model per power), and the band the
-  /// edge may move in before the next frame by its square root (the graded mesh's cells grow linearly away from the
-  /// edge, so that a band of a few edge cells keeps them within about twice the finest size). Throws
+  /// fem::smooth_cohesion_settings' mesh, whose edge cells resolve the adhesive zone up to lambda = 5 (as closely
+  /// as a mesh with those cells over the whole contact; test_smooth_cohesion.cc); the zone narrows like
+  /// lambda^-2, so beyond lambda = 5 the edge's cells are divided by (lambda / 5)^2, rounded up to a power of 2
+  /// (one model per power), and the band the edge may move in before the next frame by its square root (the
+  /// graded mesh's cells grow linearly away from the edge, so that a band of a few edge cells keeps them within
+  /// about twice the finest size). Throws
   /// std::invalid_argument beyond lennard_jones_largest_lambda().
   double lennard_jones_edge_refinement(double lambda);
   /// The largest lambda whose edge refinement smooth_cohesion_settings accepts (fem::max_edge_refinement).

@@ -7,7 +7,7 @@
 //   - the settings: fem::recommended_settings for the surface exponent s of that modulus field
 //     (ModulusField::surface_exponent(): E ~ z^s as z -> 0), never for Material/k. The two differ for a
 //     layered modulus, whose top layer is a constant (s = 0): its surface needs no z-halvings (those of
-//     k = 0.5, 1e-10 a thin, make the solve unreliable at one refinement: energy mismatch 1.6e-6). The far
+//     k = 0.5, 1e-10 a thin, make the solve unreliable at one refinement: the energy check flags it). The far
 //     field L/a follows the exponent deep below (the layers' base power law: k). Then Discretization/degree,
 //     formulation, far field (L/a, 0: the recommended one) and the uniform refinement level of the run.
 #ifndef GRADCONTACT_CASES_FE_MODEL_H

@@ -16,7 +16,7 @@
 //
 // Errors are reported here, at the boundary: what() on stderr and a non-zero exit code. MPI starts here when
 // an MPI launcher started the process, else only when a scene of the distributed 3D model needs it
-// (cases/mpi_session.h: starting it costs a singleton process about 0.35 s).
+// (cases/mpi_session.h: starting it costs a singleton process more than a short FE run).
 #include "command_line.h"
 #include "mpi_session.h"
 

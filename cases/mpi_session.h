@@ -1,6 +1,6 @@
 // gradcontact/cases: MPI for the command line, started only when a command needs it.
 //
-// Starting MPI costs a singleton process about 0.35 s of wall time (Open MPI loads its components and
+// Starting MPI costs a singleton process noticeable wall time (Open MPI loads its components and
 // starts a helper daemon), more than a whole short FE run of the suite. The serial models (every scene but the
 // Coulomb 3D ones) do not use MPI, so `gradcontact` starts it
 //  - at once when an MPI launcher started the process (mpirun/mpiexec/srun: every rank calls MPI_Init at the

@@ -34,9 +34,10 @@ namespace gradcontact::cases
     ///   at small x, the loop area from a cancelling integrand) exceeds it.
     /// floor: the rounding of a well-conditioned evaluation, not a tolerance for losses: the closed forms are
     ///   10-40 operations with Boost special functions whose rounded exponents (k + 3, (1+k)/2, ...) are
-    ///   amplified by log(length) at the scale variants (worst 4.3e-14 on the rows as generated, 1e-13 = 450 eps);
-    ///   the numerical MDR locates critical states by central differences of its quadratures to ~1e-11 (worst
-    ///   7.2e-11, jkr_power_law critical force under displacement control; 1e-10).
+    ///   amplified by log(length) at the scale variants (1e-13 = 450 eps; the worst row is in
+    ///   reports/benchmarks/stability.md of `gradcontact stress`); the numerical MDR locates critical states by
+    ///   central differences of its quadratures to ~1e-11 (1e-10; its worst row is the critical force of
+    ///   jkr_power_law under displacement control).
     constexpr double closed_form_floor = 1e-13;
     constexpr double numerical_mdr_floor = 1e-10;
 

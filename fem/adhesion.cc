@@ -103,9 +103,10 @@ namespace gradcontact::fem
 
     RadiusState  state;
     state.a = a;
-    // p(0) for the centre mechanism of the concave punch: the recovered pressure (M p = R) is as accurate
-    // at the axis as elsewhere (measured flat punch, k = -0.5 / 0: degree 3 3.2e-6 / 1.6e-6 at r = 0,
-    // <= 4e-5 over r <= 0.9 a; degree 2 only 3e-3 / 3e-4), so the centre needs degree >= 3.
+    // p(0) for the centre mechanism of the concave punch: from degree 3 on the recovered pressure (M p = R) is
+    // as accurate at the axis as elsewhere, while at degree 2 the axis node, which the r-weighted recovery
+    // barely constrains, lags by orders of magnitude (test_fem.cc, the recovered pressure of the flat punch),
+    // so the centre needs degree >= 3.
     OutputRequest centre;
     centre.pressure_radii = {0.};
 

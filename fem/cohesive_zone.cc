@@ -174,8 +174,8 @@ namespace gradcontact::fem
     // 2 gap_samples + 1 points): near the traction jump at c the gap opens like sign(r - c) |r - c|^{1-k}
     // (k = 0: (r - c) ln|r - c|), whose FE value at c itself converges only like (cell width)^{1-k}, a few 1e-3 h_0
     // on the soft surface of k = 0.5 even with cells of 1e-10 c - a; the mean cancels the odd term, and what remains
-    // is the even part, O((delta / (c - a))^2) (measured at k = 0.5, lambda = 10: the mean moves by 6e-5 h_0 from
-    // delta = 1e-2 to 1e-3 (c - a), the point value by 1e-3 h_0 between two meshes).
+    // is the even part, O((delta / (c - a))^2), so the mean moves far less with the window than the point value
+    // does between meshes (`build/tests/fem/cohesive_study` varies the window with gap_window=).
     const auto mean_gap = [&](const Result &r) {
       // The first 2 gap_samples + 1 samples of r are the window's (window() below), in order.
       const auto h   = [&](const unsigned int i) {
@@ -359,8 +359,8 @@ namespace gradcontact::fem
         if (parameters.zone_refinements == 0)
           return solved.emplace(a, total).first->second;
         // The root between the last two points: d, F and c interpolated linearly in G (their FE states are on two
-        // meshes), so that F(a) is smooth where its minimum is flat (k = 0, lambda = 0.5: a_c moved by 9e-3 with the
-        // state at p itself); a first refined mesh stands alone only within 1 % of the tolerance.
+        // meshes), so that F(a) is smooth where its minimum is flat (taking the state at p itself moves a_c there by
+        // more than radius_tolerance); a first refined mesh stands alone only within 1 % of the tolerance.
         if (refined && accepted(g))
           {
             const double t = std::isnan(p_previous) ? 0 : g / (g - g_previous);
@@ -529,7 +529,7 @@ namespace gradcontact::fem
       {
         // Brent's tolerance is relative to |x|: in x = ln a + shift, |x| is about 1 over the bracket, so that the
         // tolerance is radius_tolerance in ln a whatever the unit of length (in x = ln a it was |ln a| times
-        // larger: 1.2e-2 for a ~ 5e-6 m, 1.5e-4 off the MDR's F_c at k = -0.5, lambda = 10).
+        // larger, about 12 times for a ~ 5e-6 m, and F_c lost accuracy against the MDR's).
         const double   shift      = 1 - 0.5 * (left + right);
         const int      bits       = static_cast<int>(std::ceil(-std::log2(parameters.radius_tolerance))) + 1;
         std::uintmax_t iterations = parameters.max_states;

@@ -21,15 +21,16 @@
 // The zone end. At the traction jump the gap opens like sign(r - c) |r - c|^{1-k} (k = 0: (r - c) ln|r - c|): on
 // the soft surface of k > 0 the FE gap at the point c converges only like (cell width)^{1-k}, and a zone much
 // thinner than the cells at the contact edge (k = 0.5, lambda = 10: c - a = 2e-5 a against cells of 1e-5 a) turns
-// that into errors of several 1e-3 in F. So h(c) is the mean gap over the window c +- `gap_window` (c - a), where
+// that into errors in F far above the zone tolerance. So h(c) is the mean gap over the window c +- `gap_window` (c - a), where
 // the odd term cancels, and each refined mesh is refined toward one point p (SurfaceRefinement: `zone_cells` cells
 // across its window, then `zone_refinements` levels toward p) and g is taken at p, where it is accurate: the zone
 // end is the root of G(p) = g_{mesh(p)}(p), found from a first mesh without refinement (its root of g) or the zone
 // ratio predicted from the two nearest solved states, then one tangent step of g on the first refined mesh (g at p and at
 // p + gap_window (p - a); the mesh's root of g when that step leaves p +- (p - a) / 2), then secants through G, until
-// |G(p)| <= `zone_tolerance` h_0 (each later mesh costs one solve of g; measured at k = 0.5, lambda = 10,
-// a = a_JKR: F within 7e-5 of JKR, the windows 3e-4..1e-2 (c - a) and 16..64 cells within 8e-5 of each other;
-// one mesh per p without the mean moved F by 5e-3).
+// |G(p)| <= `zone_tolerance` h_0 (each later mesh costs one solve of g). The force then does not depend on
+// the window width or the cells across it to within the test's bound, while one mesh per p without the mean
+// moves F by far more (test_cohesive.cc, "a cohesive zone thinner than the edge cells ..."; `cohesive_study`
+// varies both with gap_window= and zone_cells=).
 //
 // The path. The states are parametrised by a (Maugis' path following: F(a) and d(a) are single-valued along
 // it, through the force- and displacement-controlled instabilities, where F(d) is not). Pull-off under force
@@ -75,9 +76,9 @@ namespace gradcontact::fem
     double       near_field_margin = 2.0; ///< the near field reaches at least this times c
     /// Brent's resolution of the critical radius in ln a; the state at the parabola's vertex through its best
     /// state and that state's solved neighbours follows (parabolic_vertex). a_c itself is no better than the FE's
-    /// flat minimum allows (k = 0, lambda = 1, displacement control: 1.2e-2 from the MDR's). Measured with the
-    /// vertex, 1e-2 against 1e-3 (k = 0.5, lambda = 0.3; k = 0, lambda = 0.5, force control): F_c, d_c and a_c as
-    /// close to the MDR, 2-3 states fewer.
+    /// flat minimum allows: near the minimum F and d change to second order in a, so a_c is resolved only to
+    /// the square root of their error. With the vertex, 1e-2 gives F_c, d_c and a_c as close to the MDR as 1e-3
+    /// does, with fewer states.
     double       radius_tolerance = 1e-2;
     double       stencil_ratio    = 1.25; ///< first step of the bracketing walk (then growing by the golden ratio)
     double       max_zone_ratio   = 200;  ///< c / a beyond which the contact counts as vanished

@@ -71,12 +71,13 @@ namespace gradcontact::fem
   {
     if (!(force_tolerance > 0 && force_tolerance < 1))
       fail("recommended_settings", "force_tolerance", force_tolerance, "(0, 1)");
-    // The threshold between the two measured settings: degree 3 reaches 3.8e-7..2.1e-6.
+    // The threshold between the degree-3 and degree-4 settings: the force error that degree 3 on its mesh
+    // reaches over -0.5 <= s <= 0.5 (reports/benchmarks/fe_work_precision.md of `./vv bench`).
     constexpr double degree_3_limit = 1e-6;
-    // Degree 2 on the same mesh (fem_study p=2, flat punch / paraboloid / cone / power law n = 4): force within
-    // 2.3e-5..5.7e-5 for -0.5 <= s <= 0.5 with 30k-70k DoFs, a third to a half of degree 3's time, 2.9e-5 at
-    // s = -0.9 with the condensed far field; the flat punch at s = 0.9 (surface map) 7.6e-4, so larger s, and the
-    // unmeasured s < -0.9, keep degree 3. Asked for 2e-4 or more, a case need not pay for 1e-6.
+    // Degree 2 on the same mesh (`build/tests/fem/fem_study p=2`, flat punch / paraboloid / cone / power law
+    // n = 4) keeps the force well inside 2e-4 for -0.9 <= s <= 0.5 at a fraction of degree 3's time; beyond
+    // s = 0.5 the u_z ~ z^{1-s} surface layer takes it out of that bound, so larger s, and the unchecked
+    // s < -0.9, keep degree 3. Asked for 2e-4 or more, a case need not pay for 1e-6.
     constexpr double degree_2_limit = 2e-4, degree_2_min_exponent = -0.9, degree_2_max_exponent = 0.5;
     Settings settings;
     settings.mesh = recommended_mesh_parameters(contact_radius, s, std::min(force_tolerance / 10, 1e-8));
@@ -88,8 +89,8 @@ namespace gradcontact::fem
         settings.mesh.h_edge           = 1e-6;
         settings.mesh.h_far            = 4.0;
         settings.mesh.ring_growth      = 1.3;
-        // The halvings of the cells just outside the contact doubled the DoFs for k = 0.5 and did not
-        // change the error (measured 2.03e-6 vs 2.58e-6 at degree 3).
+        // No halvings of the cells just outside the contact: the u_z ~ z^{1-k} layer they resolve lies under
+        // the loaded surface, so outside it they double the DoFs for k > 0 without changing the force error.
         settings.mesh.halving_radius = 1.0;
       }
     return settings;
@@ -166,8 +167,8 @@ namespace gradcontact::fem
   {
     // A finite surface modulus E0 ((z + z0)/c0)^k: the power law's mesh with surface cells of z0/4, so that E
     // varies by a bounded factor in each (plain Gauss: E is regular at z = 0), but not thinner than 1e-10 a
-    // (k > 0) or 2e-6 a (k < 0, where thinner cells with the stiff surface are flagged ill-conditioned:
-    // halvings to 5e-7 a gave an energy mismatch of 2.8e-6 at k = -0.5).
+    // (k > 0) or 2e-6 a (k < 0, where thinner cells under the stiff surface make the system ill-conditioned
+    // and the energy check, energy_mismatch_tolerance, flags the solve).
     if (const auto *shifted = dynamic_cast<const ShiftedPowerLawModulus *>(&modulus))
       {
         Settings settings = recommended_settings(contact_radius, shifted->k, force_tolerance);
@@ -177,8 +178,8 @@ namespace gradcontact::fem
       }
     // The error-function grading: homogeneous at both ends (s = 0), surface cells of w/4 (not thinner than
     // 1e-8 a) over the whole near field: outside the contact the skin carries in-plane stress, and halvings only
-    // under r <= 1.05 a put the thin-layer coefficient of a flat punch 7-12 % off (w = 1e-3..1e-4 a; test
-    // "An error-function grading with w << a*").
+    // under r <= 1.05 a leave the thin-layer coefficient of a flat punch several percent off (w = 1e-3..1e-4 a;
+    // test "An error-function grading with w << a*").
     if (const auto *erf = dynamic_cast<const ErrorFunctionModulus *>(&modulus))
       {
         Settings settings = recommended_settings(contact_radius, 0.0, force_tolerance);
@@ -187,8 +188,9 @@ namespace gradcontact::fem
         return settings;
       }
     Settings settings = recommended_settings(contact_radius, modulus.surface_exponent(), force_tolerance);
-    // Measured (flat punch, 16 layers over 10 a, k = -0.5): L/a of s = 0 (1.1e8) lost 1.2e-4 of the force
-    // against L/a = 1e16.
+    // The truncation error C (a/L)^(1 + s) is set by the exponent far below the surface, not at it: layers
+    // that end in a power law of k < 0 need the L/a of k, since that of s = 0 leaves a truncation error far
+    // above the force tolerance.
     if (modulus.deep_exponent() != modulus.surface_exponent())
       settings.mesh.far_field_size =
         recommended_settings(contact_radius, modulus.deep_exponent(), force_tolerance).mesh.far_field_size;

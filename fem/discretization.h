@@ -29,8 +29,9 @@ namespace gradcontact::fem
   };
 
   /// `automatic` switches to the mixed formulation from this nu on: at nu = 0.45 (k = 0, degree 3) the
-  /// two formulations are about equally accurate (flat-punch force 5.7e-7 mixed against 1.3e-6, the
-  /// paraboloid p(r) 3.7e-6 against 1.6e-6); from nu = 0.49 on the mixed one is better in both.
+  /// two formulations are about equally accurate (the mixed one better in the flat-punch force, the
+  /// displacement one in the paraboloid's p(r)); closer to 1/2 the displacement formulation locks and the
+  /// mixed one is better in both (`fem_study formulation=mixed` against `formulation=displacement`).
   inline constexpr double automatic_mixed_threshold = 0.45;
 
   /// How the meridian model ends at the truncation boundary max(r, z) = L.
@@ -74,15 +75,14 @@ namespace gradcontact::fem
     DiscretizationParameters discretization;
   };
 
-  /// The cheapest settings measured for a modulus E ~ z^s at the surface (s = surface_exponent: k for
-  /// the power law, 0 for a layered or finite-surface modulus) and a wanted relative force error
-  /// (fem/README.md, "Accuracy and cost"). force_tolerance >= 2e-4 and -0.9 <= s <= 0.5: degree 2 on the mesh of
-  /// degree 3 (flat punch and paraboloid 2.4e-5 .. 5.7e-5 for k = -0.5, 0, 0.5; measured for the power law only,
-  /// at nu = 0.3). force_tolerance >= 1e-6: degree 3, h_edge = 1e-5 a, rings
-  /// g = 1.15 (flat punch 3.8e-7 / 7.9e-7 / 2.1e-6 for k = -0.5 / 0 / 0.5). Below: degree 4,
-  /// h_edge = 1e-6 a, h_far = 4 a, g = 1.3 (k = 0: 5.2e-8 in about 2 s; k = -0.5: 1.1e-7 in 6 s; k = 0.5
-  /// stays near 1e-6, limited by the u_z ~ z^{1-k} surface layer, unless use_surface_map), and z-halvings
-  /// only under r <= a.
+  /// The cheapest settings found for a modulus E ~ z^s at the surface (s = surface_exponent: k for
+  /// the power law, 0 for a layered or finite-surface modulus) and a wanted relative force error; their
+  /// error and cost per degree are the work-precision table of `./vv bench`
+  /// (reports/benchmarks/fe_work_precision.md), one setting at a time `build/tests/fem/fem_study`.
+  /// force_tolerance >= 2e-4 and -0.9 <= s <= 0.5: degree 2 on the mesh of degree 3 (checked for the power
+  /// law only, at nu = 0.3). force_tolerance >= 1e-6: degree 3, h_edge = 1e-5 a, rings g = 1.15. Below:
+  /// degree 4, h_edge = 1e-6 a, h_far = 4 a, g = 1.3 (for k > 0 the error is limited by the u_z ~ z^{1-k}
+  /// surface layer unless use_surface_map), and z-halvings only under r <= a.
   Settings recommended_settings(double contact_radius, double surface_exponent, double force_tolerance);
 
   /// The same for a modulus field: the surface settings of its surface exponent, the far field of its deep
@@ -93,13 +93,13 @@ namespace gradcontact::fem
 
   /// Switches `settings` from z-halvings to the surface map (fem/surface_map.h) when `modulus` vanishes at the
   /// surface like z^s, 0 < s <= 0.95, and has no jumps, and widens L by SurfaceMap::far_field_contraction of the
-  /// automatic (or already set) scale; returns whether it did. Measured for a contact edge at the
-  /// mesh's contact radius (the flat punch at k = 0.5: degree 3 2.3e-6 with 53k DoFs against 2.1e-6 with 156k
-  /// by halvings; degree 4, h_edge 1e-7 a: 5.4e-8 with 87k DoFs in 1.6 s; k = 0.9: 5.6e-6 against 0.78).
+  /// automatic (or already set) scale; returns whether it did. It pays for a contact edge at the mesh's
+  /// contact radius: the map resolves the u_z ~ z^{1-k} layer with the cells the halvings would spend there,
+  /// so the same error takes fewer DoFs, and near k = 1 the halvings lose the force where the map keeps it
+  /// (`build/tests/fem/fem_study load=punch k=0.5 map=auto` against `map=0`; test_surface_map.cc at k = 0.9).
   /// Where other surface features need cells finer than the distance to that edge (a cohesive zone's end,
-  /// a stick radius, an edge found by a unilateral solve) the map squeezes them (a cohesive zone at k = 0.5:
-  /// 2.2e-3 off JKR against 2e-4 with halvings), and at degree 2 a mesh keeps more accuracy with the halvings
-  /// (h_edge 1e-4 a: 1.1e-4 against 6.2e-5, with 22k against 58k DoFs).
+  /// a stick radius, an edge found by a unilateral solve) the map squeezes them and the halvings are more
+  /// accurate, and at degree 2 a mesh keeps more accuracy with the halvings.
   bool use_surface_map(Settings &settings, const ModulusField &modulus);
   /// Whether use_surface_map would switch a setting for `modulus`.
   bool surface_map_applies(const ModulusField &modulus);
@@ -155,8 +155,9 @@ namespace gradcontact::fem
 
   /// A contact state is inconsistent when a nodal contact force (relative to the largest) or a gap
   /// (relative to the depth) falls below -this. Not round-off: the nodal forces of Lagrange elements
-  /// of degree >= 2 are not sign-definite where p vanishes like (a - r)^{(1+k)/2}; consistent states
-  /// measured down to -3e-5 (degree 3), a violated complete contact of the concave punch is O(1).
+  /// of degree >= 2 are not sign-definite where p vanishes like (a - r)^{(1+k)/2}, so consistent states
+  /// dip slightly below zero, while a violated complete contact of the concave punch is O(1); the
+  /// threshold lies between the two.
   inline constexpr double consistency_tolerance = 1e-3;
 
   /// The outcome of the energy check.

@@ -7,9 +7,9 @@
 //    it reproduces the serial direct answer to round-off on the ill-conditioned graded systems;
 //  - amg_cg: CG preconditioned by Trilinos ML (smoothed aggregation, Chebyshev smoother, the constant
 //    modes of every displacement component as near-null space), stopped at ||b - A u|| <= relative_tolerance
-//    ||b||. The graded E (orders of magnitude of cell size, E -> 0 or infinity at z = 0) degrades it: measured
-//    iteration counts are in fem/README.md ("Distributed runs"). A CG that does not converge throws with its
-//    iteration count and residual.
+//    ||b||. The graded E (orders of magnitude of cell size, E -> 0 or infinity at z = 0) degrades it: the
+//    iteration counts are in the table of `./vv scaling` (reports/benchmarks/mpi_scaling.md). A CG that
+//    does not converge throws with its iteration count and residual.
 #ifndef GRADCONTACT_FEM_DISTRIBUTED_LINEAR_SOLVER_H
 #define GRADCONTACT_FEM_DISTRIBUTED_LINEAR_SOLVER_H
 

@@ -112,8 +112,9 @@ namespace gradcontact::fem
     }
 
     /// gmsh returns collapsed quads where the grading is too steep: h_edge = 1e-6 with h_surface = 0.5
-    /// gave 12 cells of zero area at (a, 0) and a singular matrix in UMFPACK (h_edge = 1e-6 with
-    /// h_surface = 0.25, and 1e-7 with 0.25, are fine). Such a mesh is refused here: a cell whose
+    /// yields cells of zero area at (a, 0) and a singular matrix in UMFPACK (h_edge = 1e-6 with
+    /// h_surface = 0.25, and 1e-7 with 0.25, are fine; test_contact.cc, "A near-field mesh that gmsh
+    /// collapses ..."). Such a mesh is refused here: a cell whose
     /// bilinear map has a corner Jacobian <= 1e-12 of its largest is degenerate or inverted.
     void check_cells(const Triangulation<2> &tria, const MeshParameters &p)
     {
@@ -140,7 +141,7 @@ namespace gradcontact::fem
               << first[0] << ", " << first[1] << ")) from h_edge = " << p.h_edge << " and h_surface = "
               << p.h_surface << " (ratio " << p.h_surface / p.h_edge
               << "): this grading is too steep for gmsh; raise h_edge or lower h_surface (h_surface = 0.25 "
-                 "measured to work with h_edge down to 1e-7), or use NearFieldMesher::deal_ii";
+                 "works with h_edge down to 1e-7), or use NearFieldMesher::deal_ii";
           throw std::invalid_argument(msg.str());
         }
     }
@@ -394,15 +395,16 @@ namespace gradcontact::fem
   MeshParameters recommended_mesh_parameters(const double contact_radius, const double s,
                                              const double truncation_tolerance)
   {
-    // Measured truncation constant of the flat-punch force, C (a/L)^{1+k}: 1.1 / 0.9 / 0.55 for
-    // k = -0.5 / 0 / 0.5; the largest is used for any s.
+    // The truncation constant C of the flat-punch force error C (a/L)^{1+k}, fitted per k from two L
+    // (`build/tests/fem/fem_study load=punch L=...`); it falls as k grows, and its largest, at k = -0.5,
+    // is used for any s.
     constexpr double truncation_constant = 1.1;
     constexpr double min_far_field = 1e4, max_far_field = 1e16;
     // Thinnest surface layer for s > 0: the error of u_z ~ z^{1-s} falls like t^{1-s}.
     constexpr double singular_surface_layer = 1e-10;
     // For s < 0 the stresses sigma_rr ~ E eps_rr blow up at the surface: a graded layer to 1e-4 a
     // resolves the pressure near the axis; thinner than 1e-7 a the solve becomes garbage (the
-    // energy-mismatch check: 2e-4 at 1e-7 a, 3e-3 at 1e-8 a for k = -0.5).
+    // energy-mismatch check, energy_mismatch_tolerance, flags it, and the mismatch grows as the layer thins).
     constexpr double stiff_surface_layer = 1e-4;
     // s = 1: the Gibson medium (9.42), solved by the mixed formulation only (Material::validate).
     if (!(s > -1 && s <= 1))
@@ -413,8 +415,9 @@ namespace gradcontact::fem
     p.contact_radius = contact_radius;
     p.far_field_size = std::clamp(std::pow(truncation_constant / truncation_tolerance, 1 / (1 + s)),
                                   min_far_field, max_far_field);
-    // s = 1 (Gibson, nu = 1/2): the displacement is regular at z = 0 (w = p / k_W); measured with the
-    // mixed formulation, degree 3: constant-pressure w inside 7.2e-6 with no layer, 1.0e-5 with 1e-10 a.
+    // s = 1 (Gibson, nu = 1/2): the displacement is regular at z = 0 (w = p / k_W), so a thin surface layer
+    // does not improve the constant-pressure w (test_mixed.cc, the Winkler response of the Gibson medium;
+    // `fem_study load=pressure k=1 nu=0.5 formulation=mixed layer=...` compares).
     p.surface_layer_thickness =
       (s >= 1) ? 1.0 : (s > 0) ? singular_surface_layer : (s < 0) ? stiff_surface_layer : 1.0;
     p.validate();
@@ -486,7 +489,8 @@ namespace gradcontact::fem
       {
         // A cell is refined when its centre lies within axis_grading diameters of (0, 0): the cells
         // end up about 1 / axis_grading of their distance from the singular point (a geometric mesh
-        // toward it), not only the one corner cell (which left the cone's pressure 2.8e-4 off).
+        // toward it), not only the one corner cell (which leaves the cone's pressure, singular at the
+        // apex, far less accurate than elsewhere).
         for (const auto &cell : tria.active_cell_iterators())
           if (cell->is_locally_owned() &&
               (cell->center().norm() < p.axis_grading * cell->diameter() ||
@@ -500,8 +504,8 @@ namespace gradcontact::fem
 
     // Uniform refinements (h-studies) after the local ones, so that the meshes of a study are nested
     // and keep the edge and axis grading of level 0 (refined before them, the axis grading of a cone
-    // covered 3 coarse cell diameters at level 0 but 1.5 at level 1: the depth error went 2.5e-3,
-    // 3.5e-3, 9.0e-4 at degree 1, k = 0, not monotone).
+    // covered 3 coarse cell diameters at level 0 but 1.5 at level 1, and the depth error of the cone
+    // was not monotone over the levels).
     tria.refine_global(p.global_refinements);
 
     // Step 3b: halve the surface cells under r <= halving_radius a parallel to the surface until they

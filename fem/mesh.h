@@ -71,7 +71,7 @@ namespace gradcontact::fem
     bool         cache_hit         = false;
   };
 
-  /// The measured defaults (fem/README.md) for a modulus that behaves like z^s at the surface:
+  /// The defaults for a modulus that behaves like z^s at the surface:
   /// L/a such that the truncation error C (a/L)^{1+s}, C <= 1.1, is below `truncation_tolerance`
   /// (within [1e4, 1e16]); z-halvings to 1e-10 a for s > 0 (u_z ~ z^{1-s} is singular there), to
   /// 1e-4 a for s < 0 (sigma_rr ~ E is singular; thinner cells ruin the condition), none for s = 0.

@@ -22,7 +22,8 @@
 // A field may be singular at the surface like z^s (s = k for the power law). It reports s through
 // surface_exponent(); the assembly then integrates the cells touching z = 0 with a Gauss-Jacobi rule that
 // is exact for z^s times a polynomial (fem/gauss_jacobi.h) and asks for the regular factor E(z) / (z/h)^s.
-// Plain Gauss points under-estimate the flat-punch force by 0.4-1.3 % for k < 0.
+// Plain Gauss points cannot integrate the singular factor and under-estimate the flat-punch force by far
+// more than the discretisation error for k < 0.
 #ifndef GRADCONTACT_FEM_MODULUS_H
 #define GRADCONTACT_FEM_MODULUS_H
 
@@ -157,9 +158,9 @@ namespace gradcontact::fem
   /// A graded coating of thickness H on a homogeneous substrate: E0 (z/c0)^k (9.1) for 0 < z <= H, the
   /// substrate modulus E0 (H/c0)^k for z > H; E0 > 0, c0 > 0, -1 < k <= 1, H > 0. Continuous with a kink
   /// at H, which discontinuities() reports, so that the cells crossing it get the QIterated rule: without
-  /// it, a surface cell crossing H applies Gauss-Jacobi to E / xi^k, singular above H (2e-5 of the force
-  /// at k = 0.5, H = 1e-4 a); with it such a cell loses Gauss-Jacobi (up to 5e-5 at k = -0.5,
-  /// H = 0.01..0.1 a, where the surface cells are about H thick; fem/README.md "Real gradings").
+  /// it, a surface cell crossing H applies Gauss-Jacobi to E / xi^k, singular above H; with it such a cell
+  /// loses Gauss-Jacobi, which costs accuracy where the surface cells are about H thick (H = 0.01..0.1 a;
+  /// tests/fem/test_real_gradings.cc checks the coating against both limits below).
   /// Limits (flat punch): H >> a is the power law (9.16) up to C (a/H)^{1+k}, like a truncation;
   /// H << a is Sneddon's punch on the substrate up to O(H/a ln(a/H)).
   class CoatingModulus : public ModulusField
@@ -184,8 +185,8 @@ namespace gradcontact::fem
   /// A measured profile E(z) as a table: rows (z_i, E_i), 0 = z_0 < z_1 < ... < z_{n-1}, E_i > 0 finite,
   /// n >= 2; E is linear in z between rows and E_{n-1} below the last row. Continuous, so no
   /// discontinuities(): the rows are kinks, which plain Gauss integrates with an error far below that of
-  /// interpolating E from the table (reporting them changed the force by 4e-4 of the interpolation error
-  /// at 100 rows, for 4x the assembly time; fem/README.md "Real gradings").
+  /// interpolating E from the table (reporting them as discontinuities would buy QIterated rules in every
+  /// cell a row crosses, a larger assembly, for a change far below the interpolation error).
   class TabulatedModulus : public ModulusField
   {
   public:

@@ -30,8 +30,8 @@ namespace gradcontact::fem
     constexpr unsigned int max_critical_iterations = 80;
 
     /// Newton keeps its Jacobian (chord iteration) while each solve shrinks |R|_inf to at most this fraction of its
-    /// previous value (measured at k = 0, lambda = 3 and k = 0.5, lambda = 1 against 0.1, 0.2 and 0.5: the fewest
-    /// factorisations for the same critical states to all printed digits).
+    /// previous value (chosen over 0.1, 0.2 and 0.5 at k = 0, lambda = 3 and k = 0.5, lambda = 1: the fewest
+    /// factorisations for the same critical states to all printed digits; `cohesive_study mode=smooth path=1`).
     constexpr double chord_contraction = 0.3;
 
     /// |R|_inf at or below this times max(|x|_inf, eps) is round-off of the residual w - C b (a sum over the surface
@@ -39,9 +39,9 @@ namespace gradcontact::fem
     constexpr double roundoff_residual = 1e3 * std::numeric_limits<double>::epsilon();
 
     /// The path's step grows by 1.5 after a state found with at most this many factorisations and linear solves
-    /// and shrinks by 0.7 after one with at least the second pair (a chord state takes 1-2 factorisations and 6-12
-    /// solves where a fresh Newton took 3-5 iterations; at k = 0, lambda = 3 these gave 264 steps against the
-    /// original 224, at k = 0.5, lambda = 1 160 against 188).
+    /// and shrinks by 0.7 after one with at least the second pair: a chord state takes more linear solves but
+    /// fewer factorisations than a fresh Newton, so the thresholds count both, and the number of path steps
+    /// stays comparable to a step control by Newton iterations (`cohesive_study mode=smooth path=1` prints them).
     constexpr unsigned int grow_factorisations = 2, grow_solves = 16, shrink_factorisations = 3, shrink_solves = 24;
 
     /// Folds of F(d) a resolved path can have: at large Tabor parameters the surface's bulge on approach (a maximum
@@ -421,7 +421,7 @@ namespace gradcontact::fem
     }
 
     /// The path metric: |dx|^2 = dd^2 + dh_c^2 + |dw|^2 / n (the first two alone degenerate where the contact grows at
-    /// fixed d and h_c, measured at lambda = 10).
+    /// fixed d and h_c, as at lambda = 10).
     double metric(const std::vector<double> &a, const std::vector<double> &b) const
     {
       double w = 0;
@@ -637,8 +637,9 @@ namespace gradcontact::fem
             {
               if (fresh)
                 {
-                  // No descent from the Jacobian at x: converged as far as round-off lets |R| fall (measured at k = 0,
-                  // lambda = 10: |R| 2.2e-14 |x|, the update 1.2e-12 eps, just above newton_tolerance), else failed.
+                  // No descent from the Jacobian at x: converged as far as round-off lets |R| fall (at large
+                  // lambda |R| reaches roundoff_residual |x| while the update stays just above newton_tolerance),
+                  // else failed.
                   return norm <= roundoff_residual * std::max(max_norm(x), eps()) && converged_at_x();
                 }
               refactor = true; // the older Jacobian's direction does not descend: a new one at x

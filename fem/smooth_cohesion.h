@@ -23,10 +23,10 @@
 //
 // The path. Under displacement control F(d) is S-shaped at large Tabor parameters (snap-in on approach, a jump
 // off the surface on retraction); under force control F has a minimum; and at large Tabor parameters the central
-// gap h_c = h(0) = f(0) - d + w(0) folds too (measured at lambda = 10: Newton in h_c stalls at 0.91 eps). So the
+// gap h_c = h(0) = f(0) - d + w(0) folds too (at lambda = 10 a Newton iteration in h_c stalls at the fold). So the
 // path is followed by pseudo-arclength continuation (Keller, in Applications of Bifurcation Theory, Academic Press
 // 1977, 359-384): the unknowns x = (w, d), the metric |dx|^2 = dd^2 + dh_c^2 + |dw|^2 / n (the plane (h_c, d) alone
-// degenerates where the contact grows at nearly fixed d and h_c, measured at lambda = 10), the constraint
+// degenerates where the contact grows at nearly fixed d and h_c, as at lambda = 10), the constraint
 // t . (x - x') = ds with t the unit tangent of the last state, a tangent predictor, a chord Newton on the bordered
 // system (the last state's factorisation, its border row replaced by a Sherman-Morrison update, refactorised where
 // it converges slowly and once at the solution for an exact tangent), and steps ds adapted to the factorisations and
@@ -167,7 +167,7 @@ namespace gradcontact::fem
   double rigid_force(const LennardJonesLaw &law, const Profile &profile, double d);
   RigidPullOff rigid_pull_off(const LennardJonesLaw &law, const Profile &profile);
 
-  /// The mesh the model was measured on (fem/README.md): degree 2, surface cells of 2.5e-3 a at the expected
+  /// The mesh the model is checked on (tests/fem/test_smooth_cohesion.cc): degree 2, surface cells of 2.5e-3 a at the expected
   /// contact edge a (e.g. the JKR pull-off radius) and 2.5e-2 a at the axis and at the near field's end 2.5 a
   /// (gmsh sizes twice these, halved by its subdivision), divided by `refinement`; the z-halvings of a modulus
   /// E ~ z^s (s > 0) under the whole near field (the law acts everywhere there); the condensed far field at 100 a

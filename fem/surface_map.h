@@ -58,9 +58,10 @@ namespace gradcontact::fem
   struct SurfaceMapParameters
   {
     bool   enabled = false;
-    /// alpha; 0: alpha = 0.5 sqrt((1 - s) / s), else [0.02, 20]. Measured optimum of the flat-punch force at
-    /// degree 4 (h_edge = 1e-7 a): 0.5 at s = 0.5, 0.3 at 0.7, 0.15 at 0.9, 1..2 at 0.2; away from it the
-    /// error grows fast for s -> 1 (s = 0.9: 5.6e-6 at 0.15, 2e-5 at 0.2, 4e-2 at 0.5).
+    /// alpha; 0: alpha = 0.5 sqrt((1 - s) / s), else [0.02, 20]. The formula follows the optimum of the
+    /// flat-punch force at degree 4 (h_edge = 1e-7 a) over s, which falls as s -> 1; away from it the error
+    /// grows fast for s -> 1, so a hand-set alpha there wants a scan (`fem_study load=punch k=0.9 p=4
+    /// h_edge=1e-7 map=<alpha>`).
     double scale = 0;
     /// tau / a; 0: the mesh's cell size at the contact edge (h_edge), else [1e-12, 1].
     double floor = 0;
@@ -90,8 +91,8 @@ namespace gradcontact::fem
     /// the parameters disable it or s = 0. Throws std::invalid_argument when enabled for a modulus with
     /// jumps (their depths would be mesh coordinates) or with s outside (0, 0.95]: s = 1 (the Gibson medium)
     /// has no singular layer, s -> 1 underflows (beta - 1 = 19 at 0.95), and for s < 0 the map makes the
-    /// regular field outside the contact ~ zeta^beta, beta < 1 (measured: the flat punch at k = -0.5 went from
-    /// 6e-7 to 3e-2).
+    /// regular field outside the contact ~ zeta^beta, beta < 1 (the flat punch at k = -0.5 loses orders of
+    /// magnitude of its force accuracy).
     SurfaceMap(const SurfaceMapParameters &parameters, const ModulusField &modulus, double contact_radius,
                double h_edge);
 

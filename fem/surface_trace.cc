@@ -131,9 +131,9 @@ namespace gradcontact::fem
     // integrand: n-point Gauss then converges only like rho^{-2n}, rho = x + sqrt(x^2 - 1), x = 1 + 2 d / L
     // (the Bernstein ellipse through it). At d = 2 L, rho = 9.9 and 8 points reach 1e-16; closer, the
     // geometric pieces toward the end keep every piece at least a third of its length away from the
-    // singularity, as at a cut. Measured on the unloading traction (9.82), whose reversal radius b lay
-    // 0.017 face lengths beyond a face end: one rule on that face is 2.2e-5 of its integral off (4.1e-6 of
-    // F_x); graded, F_x is within 1.0e-11, the graded rule's own error at a kink.
+    // singularity, as at a cut. The case that needs it: the unloading traction (9.82), whose reversal radius b
+    // can lie a small fraction of a face length beyond a face end, where one rule on that face is far from its
+    // integral (rho near 1 above); graded, F_x is at the graded rule's own error at a kink.
     constexpr double near_cut_reach = 2.;
     auto             graded_end     = [&](const double x, const double length, const int outward) {
       return std::any_of(cuts.begin(), cuts.end(), [&](const double c) {
