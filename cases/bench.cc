@@ -205,7 +205,8 @@ namespace gradcontact::cases
             cpu = line.substr(line.find(':') + 2);
             break;
           }
-      // The BLAS actually loaded (CHOLMOD's and UMFPACK's speed depend on it, fem/README.md "Profile").
+      // The BLAS actually loaded (CHOLMOD's and UMFPACK's speed depend on it, fem/doc/accuracy-and-cost.md,
+      // "Profile and BLAS kernels").
       std::string blas = "unknown";
       std::ifstream maps("/proc/self/maps");
       for (std::string line; std::getline(maps, line);)

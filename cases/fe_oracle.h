@@ -42,7 +42,7 @@ namespace gradcontact::cases
       double       error_estimate = 0;          ///< absolute (header)
       double       relative_error_estimate = 0; ///< relative to the quantity's scale (header)
       unsigned int dofs           = 0;          ///< of the finest level of the ladder
-      std::string  formulation;                 ///< "displacement", or "mixed" (nu >= 0.45, fem/README.md)
+      std::string  formulation;                 ///< "displacement", or "mixed" (nu >= 0.45, fem/doc/model.md)
     };
 
     FeOracle();

@@ -179,7 +179,7 @@ namespace gradcontact::cases
       const auto start = std::chrono::steady_clock::now();
       FeModel model = fe_model(s, refinement);
       // The pressure of a cone (and of f = A r^n, n < 2) is singular at the axis: grade the mesh
-      // toward (0, 0) (fem/README.md, "Accuracy and cost", cone axis).
+      // toward (0, 0) (fem/doc/accuracy-and-cost.md, "What limits the error", cone axis).
       fem::grade_axis(model.settings, model.load);
       // The rigid frictionless model with its contact edge at the mesh's: the surface map where it applies
       // (not with the mixed formulation, whose degree-3 force it leaves 10x less accurate than the halvings).

@@ -173,7 +173,7 @@ namespace gradcontact::cases
 
     /// The FE state on the unloading branch at F_x (traction 9.82 with the factor mu, ERRATA.md). The rigid
     /// displacement u0 is the mean of u_x over r <= c_A, where nothing ever slipped (in c_A < r <= b the slip of
-    /// the loading stays; fem/README.md).
+    /// the loading stays; fem/doc/loads-and-contact.md).
     fem::TangentialResult solve_unloading(const Scene &s, Mode1Model &model, const gradcontact::Medium &medium,
                                           const Oscillation &o, const double Fx, const std::vector<double> &radii)
     {

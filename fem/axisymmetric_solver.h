@@ -15,8 +15,9 @@
 //
 // Mixed (displacement-pressure, Taylor-Hood) formulation, DiscretizationParameters::formulation. As nu
 // -> 1/2 the term lambda tr eps tr eps locks the displacement elements (the force survives at degree 3,
-// the pressure p(r) oscillates, fem/README.md). With q = lambda div u, div u = tr eps = d u_r/dr + u_r/r
-// + d u_z/dz, the unknowns (u, q) in FE_Q(p)^2 x FE_Q(p-1) solve the symmetric saddle-point problem
+// the pressure p(r) oscillates, fem/doc/model.md, "Mixed formulation"). With q = lambda div u,
+// div u = tr eps = d u_r/dr + u_r/r + d u_z/dz, the unknowns (u, q) in FE_Q(p)^2 x FE_Q(p-1) solve the
+// symmetric saddle-point problem
 //   \int [ 2 mu (eps_rr eps_rr + eps_zz eps_zz + eps_tt eps_tt) + mu gamma_rz gamma_rz ](u, v) r dr dz
 //     + \int q div v r dr dz = l(v)                      for all v,
 //   \int s div u r dr dz - \int s q / lambda r dr dz = 0  for all s,

@@ -28,7 +28,7 @@
 // the deviation is measured over all of T.
 //
 // The infinite discrete problem has no truncation error left: the flat punch at k = -0.5 gives the force
-// of the mesh clamped at L / a = 1e16 (fem/README.md "Far field").
+// of the mesh clamped at L / a = 1e16 (fem/doc/meshes.md "Far field").
 #ifndef GRADCONTACT_FEM_FAR_FIELD_H
 #define GRADCONTACT_FEM_FAR_FIELD_H
 

@@ -161,7 +161,7 @@ namespace gradcontact::fem
     const unsigned int mask = mask_of(prescribed);
     if (by_mask.count(mask))
       return *by_mask[mask];
-    // One factorisation at a time: a 3D sparse LU takes gigabytes (fem/README.md, "3D model").
+    // One factorisation at a time: a 3D sparse LU takes gigabytes (fem/doc/distributed-and-3d.md, "3D model").
     by_mask.clear();
     std::unique_ptr<Constrained> &slot = by_mask[mask];
     slot = std::make_unique<Constrained>();

@@ -133,7 +133,7 @@ namespace gradcontact::fem
 
   /// E(z) = E0 ((z + z0) / c0)^k, E0 > 0, c0 > 0, -1 < k <= 1, z0 > 0: the power law (9.1) shifted by z0,
   /// with the finite surface modulus E0 (z0/c0)^k; regular at z = 0 (surface exponent 0).
-  /// Limits (flat punch of radius a, fem/README.md "Real gradings"):
+  /// Limits (flat punch of radius a, fem/doc/real-gradings.md):
   ///  - z0 >> a: Sneddon's punch on E0 (z0/c0)^k, F/F_S - 1 = k (a/z0) [c1 ln(z0/a) + c2], c1 = 0.773
   ///    at nu = 0.3 (the depth moment of Boussinesq's energy density), c2 = O(1);
   ///  - z0 << a, k > 0: the power law (9.16) times 1 + (1 - 2 nu)(1 + k) h_N / (2 pi k (1 - k)(1 - nu)^2)
@@ -217,7 +217,7 @@ namespace gradcontact::fem
   /// "Indentation of an elastic half space with material properties varying with depth", Int. J. Eng. Sci.
   /// 47 (2009) 1274-1283 (its error-function grading, next to a power law truncated to a finite surface
   /// value); written here with w as the only length. Regular at z = 0, homogeneous below a few w.
-  /// Limits (flat punch of radius a, fem/README.md "Real gradings"; tests/fem/test_real_gradings.cc):
+  /// Limits (flat punch of radius a, fem/doc/real-gradings.md; tests/fem/test_real_gradings.cc):
   ///  - w >> a: Sneddon's punch on E_s, with the surface slope E'(0)/E_s = -(1 - E_b/E_s) 2/(sqrt(pi) w) in
   ///    the place of k/z0 of the shifted power law: F/F_S(E_s) - 1 = (E_b/E_s - 1) (2/sqrt(pi)) (a/w)
   ///    [c1 ln(w/a) + c2], c1 = 0.773 at nu = 0.3, c2 = O(1);

@@ -1,6 +1,6 @@
 // cohesive_study: the Dugdale cohesive-zone FE (fem/cohesive_zone.h) on E0 (z/c0)^k for the Tabor map's
 // scene (cases/validation/map_cohesive_paraboloid.prm: E0 = 1 GPa, c0 = 1 mm, nu = 0.3, R = 5 mm,
-// dgamma = 0.05 J/m^2), one state or one pull-off, for the measurements of fem/README.md. Not a test.
+// dgamma = 0.05 J/m^2), one state or one pull-off, for the measurements fem/doc/loads-and-contact.md names. Not a test.
 //
 //   cohesive_study k=0.5 lambda=10 mode=state x=1 p=2 h_edge=1e-5 zone_refinements=8
 //   cohesive_study k=0.5 lambda=10 mode=critical control=force

@@ -1,5 +1,5 @@
 // fem_study: one FE run of the graded half-space with any mesh/discretisation setting, its error against
-// the closed form and its timings, for the measurements of fem/README.md. Not a test.
+// the closed form and its timings, for the measurements fem/doc/ names. Not a test.
 //
 //   fem_study load=punch k=0 p=3 h_edge=1e-5 h_surface=0.25 h_far=3 g=1.15 L=1e8 layer=1e-10 R1=4
 //             edge_refinements=0 global=0
@@ -7,7 +7,7 @@
 // layers=N layer_depth=D/a: N layers with the exact layer means of the power law over [0, D a], uniform, or
 // with layer_kind=geometric layer_first=t1/a geometric ones (first thickness t1, ratio from D, N);
 // subdiv=m: QIterated copies in cells crossing a layer interface (default 8);
-// formulation = displacement | mixed | automatic (nu -> 0.5, fem/README.md "Mixed formulation");
+// formulation = displacement | mixed | automatic (nu -> 0.5, fem/doc/model.md "Mixed formulation");
 // k = 1 (with nu = 0.5, mixed) is the Gibson medium: references from the Winkler law p = 2 E0 w / (3 c0)
 // (9.44); load=pressure then also prints w inside / outside and the transition width at r = a.
 //   fem_study load=pressure k=1 nu=0.5 formulation=mixed

@@ -1,6 +1,6 @@
 // mode1_study: one Fourier-mode-1 FE run (fem/fourier_mode1_solver.h) with any mesh/discretisation
-// setting, its error against the closed forms of chapter 9.3, and its timings; the measurements of the
-// "Fourier mode 1" section of fem/README.md. Not a test.
+// setting, its error against the closed forms of chapter 9.3, and its timings; the measurements
+// fem/doc/loads-and-contact.md, "Tangential loads", names. Not a test.
 //
 //   mode1_study load=punch k=0 nu=0.3 p=3 h_edge=1e-5 g=1.15 L=1e8 layer=1e-10 normal=1
 //   mode1_study load=slip k=0.5 nu=0.4 c=0.5        (c: stick radius / a; R = 50 a, mu = 0.3)

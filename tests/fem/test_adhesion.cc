@@ -39,7 +39,7 @@ namespace
     return gradcontact::medium(gradcontact::GradedHalfSpace{E0, c0, k, nu});
   }
   /// The fast test meshes: degree 2 on the recommended geometry (measured pull-off errors in
-  /// fem/README.md, "Adhesion").
+  /// fem/doc/loads-and-contact.md, "Adhesion (JKR)").
   AdhesiveContact::SettingsFunction test_settings(const double k)
   {
     return [k](const double a) {
@@ -94,7 +94,7 @@ TEST_CASE("The FE flat-punch pull-off force and depth agree with 9.51-9.52", "[f
 TEST_CASE("The FE paraboloid pull-off reproduces 9.55-9.56 and, at k = 0, JKR", "[fem]")
 {
   // Requirement: pull-off force, critical radius and critical depth within 1e-4 of the closed
-  // forms under both controls. Measured at degree 2 (fem/README.md, "Adhesion"): <= 3.5e-5.
+  // forms under both controls. Measured at degree 2 (fem/doc/loads-and-contact.md, "Adhesion (JKR)"): <= 3.5e-5.
   const double    k = GENERATE(-0.5, 0.0, 0.5);
   AdhesiveContact sphere(power_law_material(k), Profile::paraboloid(R), test_settings(k));
   for (const auto control : {AdhesionControl::force, AdhesionControl::displacement})

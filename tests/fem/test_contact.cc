@@ -1,7 +1,8 @@
 // Tests of curved indenters, depth and force control, surface displacement, pressure, layered E, VTU
 // output and the convergence-study helper (fem/). References: the closed forms of
 // analytic/normal.h (an independent code path: the MDR closed forms of chapter 9), linked here only.
-// Every tolerance is a measured error (fem/README.md) times a margin of 2.5-5 with its reason.
+// Every tolerance is a measured error (fem_study; fem/doc/accuracy-and-cost.md) times a margin of 2.5-5 with its
+// reason.
 #include <fem/axisymmetric_solver.h>
 #include <fem/contact_check.h>
 #include <fem/convergence.h>
@@ -374,7 +375,7 @@ TEST_CASE("The convergence-study helper shall tabulate h and p refinement with f
     study.n_levels   = 3;
     const auto rows = run_convergence_study(study);
     write_markdown(std::cout, study, rows);
-    // Measured (README): errors 9.3e-4, 1.03e-4, 2.3e-5, fitted order 2.67 (edge singularity at level 2).
+    // Measured (this test with -s): errors 9.3e-4, 1.03e-4, 2.3e-5, fitted order 2.67 (edge singularity at level 2).
     REQUIRE(rows.size() == 3);
     CHECK(rows[2].order >= 2.5);
   }

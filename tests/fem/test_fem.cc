@@ -11,8 +11,8 @@
 //                 complete contact iff d0 > 2 (1 - k) h0 / (1 + k)^2                           (9.34), (9.35)
 // The surface displacement outside the contact is taken from the analytic library (analytic/normal.h,
 // checked against 34-digit references of the MDR integrals), not written out here.
-// Tolerances are the measured errors of the default discretisation (fem/README.md) with a margin of
-// about 2.5x, each with its reason; they are not loosened to pass.
+// Tolerances are the measured errors of the default discretisation (fem_study; fem/doc/accuracy-and-cost.md)
+// with a margin of about 2.5x, each with its reason; they are not loosened to pass.
 #include <fem/axisymmetric_solver.h>
 #include <fem/gauss_jacobi.h>
 #include <fem/modulus.h>

@@ -1,5 +1,5 @@
 // Tests of the mixed (Taylor-Hood displacement-pressure) formulation of the axisymmetric solver and of
-// the Gibson medium (fem/README.md "Mixed formulation (nu -> 0.5) and the Gibson medium").
+// the Gibson medium (fem/doc/model.md "Mixed formulation (nu -> 0.5) and the Gibson medium").
 // References: classical closed forms written out here (Boussinesq's flat punch, Hertz's pressure, the
 // Winkler law of the Gibson medium 9.44) and the closed forms of analytic/normal.h for k = 0.5, an
 // independent code path. Every tolerance is a measured error times a stated margin.

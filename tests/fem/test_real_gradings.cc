@@ -31,7 +31,7 @@
 // every surface cell thicker than z0, along the whole surface, and plain Gauss (the rule of a field with
 // surface exponent 0) under-integrates it: halvings to z0 = 1e-6 a under r <= 1.05 a / 4 a / 16 a / 64 a
 // gave F / F_9.16 - 1 = -1.8e-3 / -1.2e-3 / -4.0e-4 / -2.8e-4 (1.8M DoFs, flagged unreliable), thin
-// cells beyond the near field ruin the conditioning (fem/README.md, "Limits").
+// cells beyond the near field ruin the conditioning (fem/doc/limits.md).
 #include <fem/axisymmetric_solver.h>
 #include <fem/modulus.h>
 
@@ -150,7 +150,8 @@ namespace
   }
 
   // Flat punch against (9.16) / Sneddon at degree 3 and the default edge grading: the power-law errors of
-  // fem/README.md (7.9e-7 at k = 0, 2.1e-6 at k = 0.5, 4.0e-7 at k = -0.5) with a margin of about 2.5x.
+  // test_fem.cc, fem/doc/accuracy-and-cost.md (7.9e-7 at k = 0, 2.1e-6 at k = 0.5, 4.0e-7 at k = -0.5) with a
+  // margin of about 2.5x.
   constexpr double flat_punch_tolerance = 5e-6;
 } // namespace
 
@@ -264,7 +265,7 @@ TEST_CASE("A shifted power law with z0 >> a shall approach Sneddon's punch on it
   // 1e16 a: with 1.1e8 a the truncation moves c1 at k = -0.5 by 1.1 %.
   const MeshParameters mesh      = comparison_mesh(0.0, -0.5);
   const Result         uniform   = punch(std::make_shared<ShiftedPowerLawModulus>(E0, c0, 0.0, a), mesh, 2);
-  // degree 2, h_edge = 1e-4 a: measured 5.2e-5 off Sneddon (fem/README.md, "Edge singularity")
+  // degree 2, h_edge = 1e-4 a: measured 5.2e-5 off Sneddon (fem/doc/accuracy-and-cost.md, "What limits the error")
   CHECK_THAT(uniform.force, WithinRel(sneddon_force(E0), 1.3e-4));
   // c1 from two z0 a decade apart: measured 0.7672 (k = 0.5) and 0.7814 (k = -0.5), 0.75 % and 1.1 % off
   // the first-order 0.7730 (the k^2 terms); their mean 0.16 % off (the k^2 terms cancel).
