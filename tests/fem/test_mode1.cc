@@ -6,7 +6,7 @@
 //                (the traction F / (2 pi a sqrt(a^2 - r^2)) in x gives u_x = const, u_y = 0 on the disc)
 //   MDR          K_T = 2 cT0 a^{1+k} / ((1+k) c0^k), cT0 = h_T(k, nu) E0 (9.78)-(9.79), analytic/
 //   9.80         u0 = mu alpha [d(a) - d(c)] for tau = mu [p(r; a) - p(r; c)], analytic/tangential.h
-// Tolerances are the measured errors (mode1_study; fem/doc/loads-and-contact.md, "Tangential loads") with a
+// Tolerances are the errors that mode1_study prints (fem/doc/loads-and-contact.md, "Tangential loads") with a
 // margin, each with its reason; they are not loosened to pass.
 #include <fem/axisymmetric_solver.h>
 #include <fem/convergence.h>
