@@ -35,7 +35,8 @@ namespace gradcontact::fem::testing
     // Boundary ids of the 3D mesh (local to this check).
     constexpr types::boundary_id lateral = 0, top = 1, bottom = 2;
     constexpr types::manifold_id cylinder_manifold = 0;
-    // Up to this many DoFs UMFPACK, above CG + SSOR (UMFPACK took 64 s for 25k 3D DoFs, CG + SSOR TBD).
+    // Up to this many DoFs UMFPACK, above CG + SSOR (the fill-in of a 3D sparse LU makes it slow well before
+    // memory runs out).
     constexpr unsigned int direct_limit = 5000;
   } // namespace
 
