@@ -29,9 +29,8 @@ namespace gradcontact::testing
   // comparison is absolute against the scale of the quantity.
   constexpr double relative_floor = 1e-12;
   // The regions where a formula can cancel (r or c within 1e-5 of a, small fractions of 1 - (1 - x)^p,
-  // small amplitudes): both paths keep their digits there (worst 3.8e-14 over 3000 such draws), and a
-  // cancellation of either loses 1e-11 and more (measured: 2.8e-11 near the edge, 5.5e-11 at small x, 1e-8
-  // and more for the loop area), so the comparison is 1e-12.
+  // small amplitudes): both paths keep their digits there (to a few hundred eps), and a cancellation of either
+  // loses 1e-11 and more (near the edge, at small x, and most for the loop area), so the comparison is 1e-12.
   constexpr double tol_targeted = 1e-12;
   // The requests are valid by construction, so a closed form answers every one (0 refusals over 2e5 points,
   // seeds 12345 and 20261122; 0 over 1e5 points of property_run, seed 20261123). An explicit refusal is still an

@@ -95,7 +95,8 @@ namespace
   }
 
   /// Every `stride`-th row (all rows with stride 1) within its tolerance, or refused with one of the two
-  /// explained refusals, at most max_no_path and max_centre times. The numerical MDR costs 1-100 ms a row.
+  /// explained refusals, at most max_no_path and max_centre times. The numerical MDR is far slower than a closed
+  /// form per row, hence the stride.
   void check_method(const char *method, const double method_tolerance, const std::size_t stride,
                     const int max_no_path, const int max_centre)
   {
@@ -254,13 +255,13 @@ TEST_CASE("closed forms agree with the 34-digit MDR references", "[analytic]")
 
 TEST_CASE("the numerical MDR engine agrees with the 34-digit MDR references (every 9th row)", "[analytic]")
 {
-  // measured: 23 of the 425 rows have no numerical path, 1 is a p(0) out of reach
+  // the explained refusals of these 425 rows: 23 have no numerical path, 1 is a p(0) out of reach
   check_method("numerical_mdr", tol_numerical_mdr, 9, 23, 1);
 }
 
 TEST_CASE("the numerical MDR engine agrees with all 34-digit MDR references", "[analytic][slow]")
 {
-  // measured: 224 of the 3823 rows have no numerical path, 13 are p(0) out of reach
+  // the explained refusals of the 3823 rows: 224 have no numerical path, 13 are p(0) out of reach
   check_method("numerical_mdr", tol_numerical_mdr, 1, 224, 13);
 }
 

@@ -330,7 +330,7 @@ TEST_CASE("The graded Maugis-Dugdale threshold shall be where Maugis' closed for
 TEST_CASE("A graded Maugis-Dugdale row shall read a jump that one side alone finds by its depth", "[cases][quick]")
 {
   // Where d(a) is flat as the contact vanishes (small lambda), the FE can find a minimum of d that the reference
-  // does not (measured: the power-law tip n = 4 at k = 0, lambda = 0.3, 5.5e-5 from the vanishing depth): the row
+  // does not (the power-law tip n = 4 at k = 0, lambda = 0.3, just short of the vanishing depth): the row
   // then compares depths. The reference's own states (analytic/maugis_dugdale.h) give the depths here.
   namespace md = gradcontact::maugis_dugdale;
   const gradcontact::Medium   m = gradcontact::medium(gradcontact::GradedHalfSpace{2e9, 3e-4, 0, 0.3});
