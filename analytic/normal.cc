@@ -53,11 +53,11 @@ namespace gradcontact
     check::open_interval("kappa", "k", k, -1., 1.);
     // kappa = n/2 B(n/2, (1+k)/2) = Gamma(n/2 + 1) Gamma((1+k)/2) / Gamma((1+k+n)/2) (9.29), in long double:
     // in double, kappa, whose difference from 1 the displacement near the edge takes as k -> 1, loses up to
-    // 1e-13 (measured on the references). For n <= 200 from three log-gammas (glibc's reentrant lgammal_r, all
-    // arguments positive; about 0.3 us): their sum keeps about 1e-18 absolute while the log-gammas stay below
+    // 1e-13 (against the references). For n <= 200 from three log-gammas (glibc's reentrant lgammal_r, all
+    // arguments positive; the cheaper path): their sum keeps about 1e-18 absolute while the log-gammas stay below
     // a few hundred, and kappa is within 1.3e-16 (about one ulp) of 50 digits for n in [0.05, 300], k in
     // (-1, 1). Above, the log-gammas grow like n log n and so would the error of their difference (5e-14 at
-    // n = 1e5): Boost's beta promoted to long double (about 1 us) keeps it. n and k stay the same over the
+    // n = 1e5): Boost's beta promoted to long double (slower) keeps it. n and k stay the same over the
     // calls of a prepared request or of a root search for the contact radius: the last value is kept, per
     // thread.
     static_assert(std::numeric_limits<long double>::digits >= 64,

@@ -52,8 +52,9 @@
 //
 // Force. From the reaction, F = 2 pi sum_{i in contact} (A u - b)_i = 2 pi [a(u, phi) - l(phi)] with phi
 // the sum of the contact z-basis functions (1 on the contact); far more accurate than integrating
-// sigma_zz, whose stress is the derivative of the field and singular at the edge. The pressure p(r) is recovered consistently from the same nodal reactions,
-// M p = R with M the r-weighted mass matrix of the contact line.
+// sigma_zz, whose stress is the derivative of the field and singular at the edge. The pressure p(r) is
+// recovered consistently from the same nodal reactions, M p = R with M the r-weighted mass matrix of the
+// contact line.
 //
 // Everything that does not depend on the load (mesh, DoFs, constraints, sparsity, stiffness matrix and
 // the factorisations) is built once, in the constructor or on first use, and reused by every

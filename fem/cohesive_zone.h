@@ -21,8 +21,8 @@
 // The zone end. At the traction jump the gap opens like sign(r - c) |r - c|^{1-k} (k = 0: (r - c) ln|r - c|): on
 // the soft surface of k > 0 the FE gap at the point c converges only like (cell width)^{1-k}, and a zone much
 // thinner than the cells at the contact edge (k = 0.5, lambda = 10: c - a = 2e-5 a against cells of 1e-5 a) turns
-// that into errors in F far above the zone tolerance. So h(c) is the mean gap over the window c +- `gap_window` (c - a), where
-// the odd term cancels, and each refined mesh is refined toward one point p (SurfaceRefinement: `zone_cells` cells
+// that into errors in F far above the zone tolerance. So h(c) is the mean gap over the window c +- `gap_window`
+// (c - a), where the odd term cancels, and each refined mesh is refined toward one point p (SurfaceRefinement: `zone_cells` cells
 // across its window, then `zone_refinements` levels toward p) and g is taken at p, where it is accurate: the zone
 // end is the root of G(p) = g_{mesh(p)}(p), found from a first mesh without refinement (its root of g) or the zone
 // ratio predicted from the two nearest solved states, then one tangent step of g on the first refined mesh (g at p and at

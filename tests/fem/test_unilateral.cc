@@ -162,8 +162,8 @@ TEST_CASE("The unilateral solver shall refuse bad input with the parameter, its 
   CHECK_THROWS_WITH(load.validate(), Catch::Contains("force") && Catch::Contains("(0, inf)"));
 }
 
-// A convergence study over three uniform refinements: label slow (./vv test --all); the default tier keeps the radius-controlled disc and
-// the paraboloid's h-convergence under contact-radius control.
+// A convergence study over three uniform refinements: label slow (./vv test --all); the default tier keeps the
+// radius-controlled disc and the paraboloid's h-convergence under contact-radius control.
 TEST_CASE("The unilateral force at a given depth shall converge under uniform refinement", "[slow]")
 {
   // Paraboloid, k = 0, degree 1, the mesh graded toward the closed form's radius (9.26 at the given depth):
