@@ -1,13 +1,13 @@
 // The sign check of a frictionless contact state from its nodal contact forces (both solvers).
 //
-// A frictionless contact transmits compression only, so a state is consistent when no part of the
-// contact carries tension. The nodal forces R_i = \int p phi_i r dr of Lagrange elements of degree >= 2
-// are not sign-definite, though: where p is steep (the (a - r)^{(k-1)/2} edge of a flat punch, k < 0)
-// the nodes inside an edge cell carry negative forces next to a large positive one although p > 0
-// everywhere (the flat punch at k = -0.5, degree 3: a negative nodal force of the order of a tenth of the
-// largest in a state whose total force is accurate). A tensile zone of the solution shows differently: the
-// net force of the contact between the node and the centre, or between the node and the edge, is tensile as well. So a node counts as tensile
-// when its own force and the smaller of those two partial sums are both below -tolerance * max |R|.
+// A frictionless contact transmits compression only, so a state is consistent when no part of the contact carries
+// tension. The nodal forces R_i = \int p phi_i r dr of Lagrange elements of degree >= 2 are not sign-definite,
+// though: where p is steep (the (a - r)^{(k-1)/2} edge of a flat punch, k < 0) the nodes inside an edge cell carry
+// negative forces next to a large positive one although p > 0 everywhere (the flat punch at k = -0.5, degree 3: a
+// negative nodal force of the order of a tenth of the largest in a state whose total force is accurate). A tensile
+// zone of the solution shows differently: the net force of the contact between the node and the centre, or between
+// the node and the edge, is tensile as well. So a node counts as tensile when its own force and the smaller of
+// those two partial sums are both below -tolerance * max |R|.
 #ifndef GRADCONTACT_FEM_CONTACT_CHECK_H
 #define GRADCONTACT_FEM_CONTACT_CHECK_H
 

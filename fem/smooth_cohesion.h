@@ -167,14 +167,14 @@ namespace gradcontact::fem
   double rigid_force(const LennardJonesLaw &law, const Profile &profile, double d);
   RigidPullOff rigid_pull_off(const LennardJonesLaw &law, const Profile &profile);
 
-  /// The mesh the model is checked on (tests/fem/test_smooth_cohesion.cc): degree 2, surface cells of 2.5e-3 a
-  /// at the expected contact edge a (e.g. the JKR pull-off radius) and 2.5e-2 a at the axis and at the near
-  /// field's end 2.5 a (gmsh sizes twice these, halved by its subdivision), divided by `refinement`; the z-halvings of a modulus
-  /// E ~ z^s (s > 0) under the whole near field (the law acts everywhere there); the condensed far field at 100 a
-  /// for a power law (fem/far_field.h), else the clamped one of recommended_settings. `edge_refinement` divides the
-  /// edge's cells only (for the edge-following path at large Tabor parameters, whose adhesive zone narrows like
-  /// lambda^-2). Alone, this mesh resolves the whole path up to lambda = 3 (k <= 0) and 1 (k = 0.5): beyond, its
-  /// path folds at the nodes where the edge passes coarse cells (between the axis and a), which
+  /// The mesh the model is checked on (tests/fem/test_smooth_cohesion.cc): degree 2, surface cells of 2.5e-3 a at the
+  /// expected contact edge a (e.g. the JKR pull-off radius) and 2.5e-2 a at the axis and at the near field's end
+  /// 2.5 a (gmsh sizes twice these, halved by its subdivision), divided by `refinement`; the z-halvings of a modulus
+  /// E ~ z^s (s > 0) under the whole near field (the law acts everywhere there); the condensed far field at 100 a for a
+  /// power law (fem/far_field.h), else the clamped one of recommended_settings. `edge_refinement` divides the edge's
+  /// cells only (for the edge-following path at large Tabor parameters, whose adhesive zone narrows like lambda^-2).
+  /// Alone, this mesh resolves the whole path up to lambda = 3 (k <= 0) and 1 (k = 0.5): beyond, its path folds at
+  /// the nodes where the edge passes coarse cells (between the axis and a), which
   /// SmoothCohesionParameters::follow_edge avoids.
   Settings smooth_cohesion_settings(const Material &material, double contact_radius, double refinement = 1,
                                     double edge_refinement = 1);
