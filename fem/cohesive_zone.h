@@ -18,19 +18,20 @@
 // solver keeps the indenter's unit-depth and profile solutions; the tension's is the only new one). The force is that
 // of the contact pressure minus pi c^2 sigma_0.
 //
-// The zone end. At the traction jump the gap opens like sign(r - c) |r - c|^{1-k} (k = 0: (r - c) ln|r - c|): on the
-// soft surface of k > 0 the FE gap at the point c converges only like (cell width)^{1-k}, and a zone much thinner
-// than the cells at the contact edge (k = 0.5, lambda = 10: c - a = 2e-5 a against cells of 1e-5 a) turns that into
-// errors in F far above the zone tolerance. So h(c) is the mean gap over the window c +- `gap_window` (c - a), where
-// the odd term cancels, and each refined mesh is refined toward one point p (SurfaceRefinement: `zone_cells` cells
-// across its window, then `zone_refinements` levels toward p) and g is taken at p, where it is accurate: the zone end
-// is the root of G(p) = g_{mesh(p)}(p), found from a first mesh without refinement (its root of g) or the zone ratio
-// predicted from the two nearest solved states, then one tangent step of g on the first refined mesh (g at p and
-// at p + gap_window (p - a); the mesh's root of g when that step leaves p +- (p - a) / 2), then secants through
-// G, until |G(p)| <= `zone_tolerance` h_0 (each later mesh costs one solve of g). The force then does not depend on the window
-// width or the cells across it to within the test's bound, while one mesh per p without the mean moves F by far more
-// (test_cohesive.cc, "a cohesive zone thinner than the edge cells ..."; `cohesive_study` varies both with gap_window=
-// and zone_cells=).
+// The zone end. At the traction jump the gap opens like sign(r - c) |r - c|^{1-k} (k = 0: (r - c) ln|r - c|):
+// on the soft surface of k > 0 the FE gap at the point c converges only like (cell width)^{1-k}, and a zone
+// much thinner than the cells at the contact edge (k = 0.5, lambda = 10: c - a = 2e-5 a against cells of
+// 1e-5 a) turns that into errors in F far above the zone tolerance. So h(c) is the mean gap over the window
+// c +- `gap_window` (c - a), where the odd term cancels, and each refined mesh is refined toward one point p
+// (SurfaceRefinement: `zone_cells` cells across its window, then `zone_refinements` levels toward p) and g is
+// taken at p, where it is accurate: the zone end is the root of G(p) = g_{mesh(p)}(p), found from a first mesh
+// without refinement (its root of g) or the zone ratio predicted from the two nearest solved states, then one
+// tangent step of g on the first refined mesh (g at p and at p + gap_window (p - a); the mesh's root of g when
+// that step leaves p +- (p - a) / 2), then secants through G, until |G(p)| <= `zone_tolerance` h_0 (each later
+// mesh costs one solve of g). The force then does not depend on the window width or the cells across it to
+// within the test's bound, while one mesh per p without the mean moves F by far more (test_cohesive.cc, "a
+// cohesive zone thinner than the edge cells ..."; `cohesive_study` varies both with gap_window= and
+// zone_cells=).
 //
 // The path. The states are parametrised by a (Maugis' path following: F(a) and d(a) are single-valued along
 // it, through the force- and displacement-controlled instabilities, where F(d) is not). Pull-off under force
