@@ -3,6 +3,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include <cmath>
 #include <cstdlib>
 #include <map>
 #include <set>
@@ -92,10 +93,33 @@ namespace gradcontact::batch
       {"a", &Request::a},           {"r", &Request::r},     {"d", &Request::d},   {"F", &Request::F},
       {"d0", &Request::d0},         {"dgamma", &Request::dgamma}, {"sigma_th", &Request::sigma_th},
       {"mu", &Request::mu},         {"c", &Request::c},     {"Fx", &Request::Fx}, {"FA", &Request::FA},
-      {"u0", &Request::u0},         {"a_lo", &Request::a_lo}, {"a_hi", &Request::a_hi}};
+      {"u0", &Request::u0},         {"a_lo", &Request::a_lo}, {"a_hi", &Request::a_hi},
+      {"h0", &Request::h0},         {"z0", &Request::z0}};
     const std::map<std::string, GeometryNumber> geometry_keys = {
       {"R", &Geometry::R}, {"tan_theta", &Geometry::tan_theta}, {"n", &Geometry::n},
       {"A", &Geometry::A}, {"h0", &Geometry::h0},               {"p0", &Geometry::p0}};
+
+    /// h0 or z0 (Request) as the Dugdale stress sigma_th of a maugis_dugdale request.
+    void adhesive_range_to_stress(Request &q)
+    {
+      if (!q.h0 && !q.z0)
+        return;
+      const char *name = q.h0 ? "h0" : "z0";
+      if (q.case_name != "maugis_dugdale")
+        throw DomainError(std::string(name) + ": the adhesive's range is read by case 'maugis_dugdale' only (case '" +
+                          q.case_name + "' takes sigma_th)");
+      if (q.h0 && q.z0)
+        throw DomainError("h0, z0: give one range (h0 the Dugdale range, z0 the Lennard-Jones spacing), not both");
+      if (q.sigma_th)
+        throw DomainError(std::string(name) + ": give the range or sigma_th, not both (sigma_th = " +
+                          check::format(*q.sigma_th) + ")");
+      if (!q.dgamma)
+        throw DomainError(std::string(name) + ": needs dgamma (the stress is dgamma over the range)");
+      const double range = q.h0 ? *q.h0 : *q.z0;
+      check::positive("maugis_dugdale", name, range);
+      check::positive("maugis_dugdale", "dgamma", *q.dgamma);
+      q.sigma_th = q.h0 ? *q.dgamma / range : 16 * *q.dgamma / (9 * std::sqrt(3.0) * range);
+    }
   } // namespace
 
   const char *method_name(const Method method)
@@ -145,6 +169,7 @@ namespace gradcontact::batch
     for (const auto &[key, member] : number_keys)
       if (j.contains(key))
         q.*member = number(j.at(key), key);
+    adhesive_range_to_stress(q);
     if (j.contains("control"))
       q.control = choice(j, "control", control_names);
     if (j.contains("branch"))

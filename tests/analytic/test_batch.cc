@@ -146,3 +146,32 @@ TEST_CASE("eval names the valid choices of a mistyped branch or mechanism", "[an
   REQUIRE_FALSE(a.ok);
   CHECK_THAT(a.error, Contains("branch = 'sideways'") && Contains("unloading"));
 }
+
+TEST_CASE("eval takes the adhesive's range (h0 or z0) for the Tabor parameter of maugis_dugdale", "[analytic][quick]")
+{
+  // k = 0, E* = E0 / (1 - nu^2). Tabor's mu = (R dgamma^2 / (E*^2 z0^3))^(1/3), and Maugis's lambda = 1.1570 mu for
+  // the Dugdale stress matched to the Lennard-Jones law's largest stress (Maugis 1992; Johnson and Greenwood, J.
+  // Colloid Interface Sci. 192 (1997) 326, where the factor is quoted as 1.16).
+  const double E0 = 1e9, nu = 0.3, R = 1e-3, dgamma = 0.05, z0 = 3e-10;
+  const std::string base = R"({"case":"maugis_dugdale","quantity":"tabor_parameter","material":{"E0":1e9,"c0":1e-3,"k":0,"nu":0.3},"geometry":{"R":1e-3},"dgamma":0.05,)";
+  const auto value = [](const std::string &line) {
+    const batch::Answer a = batch::evaluate(line);
+    INFO(batch::to_json(a));
+    REQUIRE(a.ok);
+    return a.value;
+  };
+  const double E_star = E0 / (1 - nu * nu);
+  const double mu     = std::cbrt(R * dgamma * dgamma / (E_star * E_star * z0 * z0 * z0));
+  CHECK_THAT(value(base + R"("z0":3e-10})"), Catch::Matchers::WithinRel(1.1570 * mu, 1e-4));
+  // The Dugdale range h0: sigma_0 h0 = dgamma.
+  CHECK_THAT(value(base + R"("h0":2e-10})"), Catch::Matchers::WithinRel(value(base + R"("sigma_th":2.5e8})"), 1e-14));
+  const auto error = [](const std::string &line) {
+    const batch::Answer a = batch::evaluate(line);
+    REQUIRE_FALSE(a.ok);
+    return a.error;
+  };
+  CHECK_THAT(error(base + R"("z0":3e-10,"h0":2e-10})"), Contains("not both"));
+  CHECK_THAT(error(base + R"("z0":3e-10,"sigma_th":1e8})"), Contains("sigma_th") && Contains("not both"));
+  CHECK_THAT(error(base + R"("z0":-1})"), Contains("z0") && Contains("-1"));
+  CHECK_THAT(error(R"({"case":"jkr_concave","quantity":"critical_force","h0":1e-9})"), Contains("'maugis_dugdale' only"));
+}
