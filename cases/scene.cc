@@ -5,6 +5,10 @@
 
 #include <deal.II/base/utilities.h>
 
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -237,7 +241,7 @@ namespace gradcontact::cases
     prm.declare_entry("refinements", "0", Patterns::List(Patterns::Integer(0, 6), 1, 7),
                       "Uniform refinements of the recommended mesh; several values make a convergence study.");
     prm.declare_entry("force tolerance", "1e-6", Patterns::Double(1e-12, 1.),
-                      "The wanted relative force error: selects the recommended mesh (fem/README.md).");
+                      "The wanted relative force error: selects the recommended mesh (fem/doc/meshes.md).");
     prm.declare_entry("accuracy", "levels", Patterns::Selection("levels|contract"),
                       "levels: one FE solve per entry of refinements (a convergence study against the references); "
                       "contract (normal, JKR adhesion and tangential scenes with a rigid indenter on a disc): the "
@@ -250,7 +254,7 @@ namespace gradcontact::cases
     prm.declare_entry("formulation", "displacement", Patterns::Selection("displacement|mixed|automatic"),
                       "FE unknowns: displacement; mixed (u and q = lambda div u, Taylor-Hood: nu -> 0.5 without "
                       "locking, nu = 0.5, the Gibson medium k = 1); automatic (mixed for nu >= 0.45). "
-                      "fem/README.md, \"Mixed formulation\".");
+                      "fem/doc/model.md, \"Mixed formulation\".");
     prm.declare_entry("surface map", "auto", Patterns::Selection("auto|off"),
                       "auto: a modulus vanishing at the surface like z^k, 0 < k <= 0.95, without jumps is resolved by "
                       "the singular depth map of fem/surface_map.h in the rigid frictionless normal scenes of the "
@@ -477,7 +481,7 @@ namespace gradcontact::cases
     prm.declare_entry("Holl ratio", "false", Patterns::Bool(),
                       "Use the decoupled pairing nu = 1 / (2 + k) of 9.3.1 instead of Material/nu; needs k in (0, 1).");
     prm.declare_entry("stick levels", "8", Patterns::Integer(0, 30),
-                      "Surface refinement levels toward the stick radii (the kink of tau at c; fem/README.md).");
+                      "Surface refinement levels toward the stick radii (the kink of tau at c; fem/doc/loads-and-contact.md).");
     prm.declare_entry("assumption tolerance", "1e-4", Patterns::Double(0.),
                       "Tolerance of the measured assumption error of 9.80 (relative spread of u_x over the stick "
                       "zone, max |u_y| / mean u_x), both compared with 0.");
@@ -682,7 +686,7 @@ namespace gradcontact::cases
                                     "need Load/contact = unilateral (with a disc the contact radius is Load/a)");
       if (c.curvature.empty() && !c.pressure.empty())
         // The pressure needs g'(x), a quadrature of f' and f'' nested in another one: finite-difference
-        // noise (1e-13) keeps both from meeting their tolerance, and the run takes minutes (measured: 325 s).
+        // noise keeps both from meeting their tolerance, and the nested quadratures make the run slow.
         throw std::invalid_argument("Candidate/profile curvature: needed for a pressure candidate (give f''(r))");
       const bool checks_something = !c.depth.empty() || !c.force.empty() ||
                                     (!c.pressure.empty() && !s.outputs.pressure_radii.empty()) ||
@@ -975,6 +979,111 @@ namespace gradcontact::cases
       FrictionParameters::declare(prm);
       MapParameters::declare(prm);
     }
+
+    /// deal.II's tree names with every character but [a-zA-Z0-9] written as _XX (hex; ParameterHandler docs).
+    std::string demangle(const std::string &name)
+    {
+      std::string out;
+      for (std::size_t i = 0; i < name.size(); ++i)
+        if (name[i] == '_' && i + 2 < name.size() && std::isxdigit(static_cast<unsigned char>(name[i + 1])) &&
+            std::isxdigit(static_cast<unsigned char>(name[i + 2])))
+          {
+            out += static_cast<char>(std::stoi(name.substr(i + 1, 2), nullptr, 16));
+            i += 2;
+          }
+        else
+          out += name[i];
+      return out;
+    }
+
+    /// Every declared entry as "Section/entry" (from the handler's JSON tree: an entry is an object with a "value").
+    void declared_paths(const nlohmann::json &node, const std::string &prefix, std::vector<std::string> &paths)
+    {
+      for (auto it = node.begin(); it != node.end(); ++it)
+        if (it.value().is_object())
+          {
+            const std::string path = prefix + demangle(it.key());
+            if (it.value().contains("value") && it.value().at("value").is_string())
+              paths.push_back(path);
+            else
+              declared_paths(it.value(), path + "/", paths);
+          }
+    }
+
+    /// Levenshtein distance, case-insensitive.
+    std::size_t edit_distance(const std::string &a, const std::string &b)
+    {
+      std::vector<std::size_t> row(b.size() + 1);
+      for (std::size_t j = 0; j <= b.size(); ++j)
+        row[j] = j;
+      for (std::size_t i = 1; i <= a.size(); ++i)
+        {
+          std::size_t diagonal = row[0];
+          row[0]               = i;
+          for (std::size_t j = 1; j <= b.size(); ++j)
+            {
+              const std::size_t up   = row[j];
+              const bool        same = std::tolower(a[i - 1]) == std::tolower(b[j - 1]);
+              row[j]                 = std::min({row[j] + 1, row[j - 1] + 1, diagonal + (same ? 0 : 1)});
+              diagonal               = up;
+            }
+        }
+      return row[b.size()];
+    }
+
+    /// The entries a .prm file sets ("set" lines under their "subsection"s), as "Section/entry".
+    std::vector<std::string> paths_set_in(const std::string &file)
+    {
+      std::vector<std::string> paths, stack;
+      std::ifstream            in(file);
+      const auto               trim = [](std::string t) {
+        t.erase(0, t.find_first_not_of(" \t"));
+        t.erase(t.find_last_not_of(" \t\r") + 1);
+        return t;
+      };
+      for (std::string line; std::getline(in, line);)
+        {
+          line = trim(line.substr(0, line.find('#')));
+          if (line.rfind("subsection ", 0) == 0)
+            stack.push_back(trim(line.substr(11)));
+          else if (line == "end" && !stack.empty())
+            stack.pop_back();
+          else if (line.rfind("set ", 0) == 0)
+            {
+              std::string path;
+              for (const std::string &section : stack)
+                path += section + "/";
+              paths.push_back(path + trim(line.substr(4, line.find('=') - 4)));
+            }
+        }
+      return paths;
+    }
+
+    /// " (did you mean 'Section/entry'?)" for the first path in `used` that is not declared, when a declared one
+    /// is close to it; else "".
+    std::string did_you_mean(const std::vector<std::string> &used)
+    {
+      ParameterHandler prm;
+      declare_all(prm);
+      std::ostringstream tree;
+      prm.print_parameters(tree, ParameterHandler::JSON);
+      std::vector<std::string> declared;
+      declared_paths(nlohmann::json::parse(tree.str()), "", declared);
+      for (const std::string &path : used)
+        {
+          if (std::find(declared.begin(), declared.end(), path) != declared.end())
+            continue;
+          std::string best;
+          std::size_t best_distance = std::numeric_limits<std::size_t>::max();
+          for (const std::string &candidate : declared)
+            if (const std::size_t d = edit_distance(path, candidate); d < best_distance)
+              best = candidate, best_distance = d;
+          if (best_distance <= std::max<std::size_t>(2, path.size() / 4))
+            return " ('" + path + "' is no scene entry; did you mean '" + best + "'?)";
+          return " ('" + path + "' is no scene entry; `gradcontact run --help-scene` lists them)";
+        }
+      return "";
+    }
   } // namespace
 
   Override parse_override(const std::string &text)
@@ -1011,8 +1120,9 @@ namespace gradcontact::cases
       }
     catch (const std::exception &e)
       {
-        // deal.II names the line, the entry and the pattern it violates.
-        throw std::invalid_argument("scene " + file + ": " + concise(e));
+        // deal.II names the line, the entry and the pattern it violates; a misspelt entry gets the closest one.
+        const bool prm_file = std::filesystem::path(file).extension() != ".json";
+        throw std::invalid_argument("scene " + file + ": " + concise(e) + (prm_file ? did_you_mean(paths_set_in(file)) : ""));
       }
     for (const Override &o : overrides)
       {
@@ -1029,7 +1139,8 @@ namespace gradcontact::cases
             std::string name;
             for (const std::string &p : o.path)
               name += (name.empty() ? "" : "/") + p;
-            throw std::invalid_argument("scene " + file + ": --set " + name + "=" + o.value + ": " + concise(e));
+            throw std::invalid_argument("scene " + file + ": --set " + name + "=" + o.value + ": " + concise(e) +
+                                        did_you_mean({name}));
           }
       }
     Scene s;
