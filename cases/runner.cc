@@ -290,8 +290,13 @@ namespace gradcontact::cases
             md << "| " << s.name << " | " << s.rows.size() << " | " << format(s.worst_error()) << " | " << failed
                << " | " << format(s.seconds) << " | [" << s.name << "/errors.md](" << s.name << "/errors.md) |\n";
           }
-        md << "\nThe chapter's figures, each FE point checked against the closed form: "
-              "[figures/index.md](figures/index.md) (written by `gradcontact figures`).\n";
+        // A link only to a file that exists: the figures are drawn by their own command.
+        if (fs::exists(o.reports / "figures" / "index.md"))
+          md << "\nThe chapter's figures, each FE point checked against the closed form: "
+                "[figures/index.md](figures/index.md) (written by `gradcontact figures`).\n";
+        else
+          md << "\nThe chapter's figures, each FE point checked against the closed form, are drawn by `gradcontact "
+                "figures cases/figures` (not drawn into this folder yet).\n";
       }
       fs::rename(tmp, summary);
       const bool all_pass = std::all_of(results.begin(), results.end(), [](const SceneResult &s) { return s.pass(); });
