@@ -193,7 +193,7 @@ namespace gradcontact::fem
     settings.discretization.formulation = Formulation::automatic;
     if (hp)
       settings.mesh.edge_refinements = std::max(settings.mesh.edge_refinements, hp_edge_refinements);
-    // A clamped far field (the surface map's, the mixed formulation's) far enough for its truncation error
+    // A clamped far field (the surface map's, a modulus that is no power law of depth) far enough for its truncation error
     // (a / L)^(1 + s) to stay below tol / 64 (the run refuses above tol / 4), and below that relative to w(r) at
     // the largest displacement radius r, whose share of the truncation is larger; the ladder cannot see this error.
     // The rings grow geometrically, so L costs little.
@@ -418,7 +418,7 @@ namespace gradcontact::fem
         const double next = before > 0 ? last * last / before : 0;
         if (kept + next > budget.max_factor_bytes)
           {
-            limit = "memory budget: the factorisations of levels 0-" + std::to_string(l - 1) + " hold " +
+            limit = "memory budget: the factorisations and matrices of levels 0-" + std::to_string(l - 1) + " hold " +
                     format(kept) + " bytes and level " + std::to_string(l) + "'s would add about " + format(next) +
                     ", above AccuracyBudget::max_factor_bytes = " + format(budget.max_factor_bytes);
             return nullptr;

@@ -53,8 +53,9 @@ namespace gradcontact::fem
     dealii::types::global_dof_index max_dofs = 1'200'000;
     /// Levels 0 .. max_levels - 1 at most (>= 2) of the uniform ladder; the hp ladder ends at max_contract_degree.
     unsigned int max_levels = 4;
-    /// The memory the factorisations of the levels a ContractSolver keeps may hold together (bytes). A level's is
-    /// predicted from the growth over the level before (high degrees fill the factor faster than the DoFs grow).
+    /// The memory the factorisations and matrices of the levels a ContractSolver keeps may hold together (bytes). A
+    /// level's is predicted from the growth over the level before (high degrees fill the factor faster than the DoFs
+    /// grow).
     double max_factor_bytes = 8e9;
 
     /// Throws std::invalid_argument naming the member, its value and the valid range.

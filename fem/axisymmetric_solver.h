@@ -138,7 +138,7 @@ namespace gradcontact::fem
     SurfaceFlexibility surface_flexibility();
 
     unsigned int n_dofs() const { return dof_handler.n_dofs(); }
-    /// The memory its factorisations hold (DirectSystem::factor_bytes; 0 before the first run).
+    /// The memory its factorisations and matrices hold (DirectSystem::factor_bytes; 0 before the first run).
     std::size_t factor_bytes() const { return system.factor_bytes(); }
     /// displacement or mixed (resolved from DiscretizationParameters::formulation and nu).
     Formulation formulation() const { return used_formulation; }

@@ -29,9 +29,8 @@ namespace gradcontact::fem
         cholmod_start(&common);
         common.print = 0; // a matrix that is not positive definite is handled by the caller, not printed
         // AMD alone (Amestoy, Davis and Duff, SIAM J. Matrix Anal. Appl. 17 (1996) 886): CHOLMOD's default also tries
-        // METIS and keeps the sparser factor, which took longer than the whole factorisation (k = 0.5 cohesive
-        // state, 72k DoFs: analysis and factorisation 0.27 s with AMD, 0.56-0.79 s with nested dissection or the
-        // default, UMFPACK 0.69 s).
+        // METIS and keeps the sparser factor, an analysis that costs more than it saves on the meridian meshes, whose
+        // graded rings AMD orders well (`fem_study` prints the analysis and factorisation times).
         common.nmethods           = 1;
         common.method[0].ordering = CHOLMOD_AMD;
         // Supernodal always: its LL^T stops at the first pivot <= 0. CHOLMOD's automatic choice takes the simplicial
@@ -309,7 +308,10 @@ namespace gradcontact::fem
 
   std::size_t DirectSystem::factor_bytes() const
   {
-    return (free_solver ? free_solver->bytes() : 0) + (prescribed_solver ? prescribed_solver->bytes() : 0);
+    if (!free_solver && !prescribed_solver)
+      return 0;
+    return (free_solver ? free_solver->bytes() : 0) + (prescribed_solver ? prescribed_solver->bytes() : 0) +
+           stiffness.memory_consumption() + eliminated.memory_consumption() + sparsity_pattern.memory_consumption();
   }
 
   void DirectSystem::reinit(const DoFHandler<2> &dof_handler, const AffineConstraints<double> &constraints_,
