@@ -141,9 +141,23 @@ namespace gradcontact::fem
                                       " are no scaled copy of those on max(r, z) = " + std::to_string(radius[0]) +
                                       " (the last rings of the mesh are not self-similar)");
       }
+    check_truncation_boundary();
+    pressure_entry.resize(outer_port[1].size());
+    for (std::size_t j = 0; j < outer_port[1].size(); ++j)
+      pressure_entry[j] = component[outer_port[1][j]] == pressure_component;
+    if (rings[0].interior.size() != rings[1].interior.size())
+      throw std::invalid_argument("FarFieldRings: the last two rings differ in their interior DoFs (" +
+                                  std::to_string(rings[0].interior.size()) + " and " +
+                                  std::to_string(rings[1].interior.size()) + ")");
+  }
+
+
+
+  void FarFieldRings::check_truncation_boundary() const
+  {
     // The outer port found by geometry is the truncation boundary of the mesh (boundary id far_field).
-    std::set<types::global_dof_index> truncation;
-    std::vector<types::global_dof_index> face_dofs(fe.n_dofs_per_face());
+    std::set<types::global_dof_index>    truncation;
+    std::vector<types::global_dof_index> face_dofs(dof_handler.get_fe().n_dofs_per_face());
     for (const auto &cell : rings[1].cells)
       for (const unsigned int f : cell->face_indices())
         if (cell->face(f)->at_boundary() && cell->face(f)->boundary_id() == boundary_id::far_field)
@@ -157,13 +171,6 @@ namespace gradcontact::fem
       throw std::invalid_argument("FarFieldRings: the " + std::to_string(outer_port[1].size()) +
                                   " DoFs on max(r, z) = L are not the " + std::to_string(truncation.size()) +
                                   " free DoFs of the far_field boundary (not a mesh of fem/mesh.h)");
-    pressure_entry.resize(outer_port[1].size());
-    for (std::size_t j = 0; j < outer_port[1].size(); ++j)
-      pressure_entry[j] = component[outer_port[1][j]] == pressure_component;
-    if (rings[0].interior.size() != rings[1].interior.size())
-      throw std::invalid_argument("FarFieldRings: the last two rings differ in their interior DoFs (" +
-                                  std::to_string(rings[0].interior.size()) + " and " +
-                                  std::to_string(rings[1].interior.size()) + ")");
   }
 
 

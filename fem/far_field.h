@@ -95,6 +95,8 @@ namespace gradcontact::fem
     /// The condensed two-port of ring `i`: rows and columns in the order inner_port[i], outer_port[i].
     dealii::FullMatrix<double> two_port(unsigned int i, const CellMatrix &cell_matrix) const;
 
+    /// Throws std::invalid_argument unless the last ring's outer port is the mesh's free far_field boundary.
+    void check_truncation_boundary() const;
     /// The scale sigma of T1 against T0 and, with pressure DoFs, their factor mu per ring (1 without).
     std::pair<double, double> fit_ring_scale(const dealii::FullMatrix<double> &T0,
                                              const dealii::FullMatrix<double> &T1) const;
