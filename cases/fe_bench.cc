@@ -611,18 +611,18 @@ namespace gradcontact::cases
           "1.6, 1.4, 1.3, 1.15, 1.15 (`fe_mesh_level` in `cases/fe_bench.cc`); L/a and the surface layer from "
           "`recommended_mesh_parameters(a, k)` (L/a = 1e16, 1.1e8, 2.3e5 for k = -0.5, 0, 0.5).\n"
        << "- `deal.II map` (k > 0, flat punch and paraboloid, degree >= 2): the same levels with the surface map "
-          "(`fem::use_surface_map`, fem/README.md \"Surface map\") instead of the z-halvings, L widened by its "
+          "(`fem::use_surface_map`, fem/doc/meshes.md \"Surface map\") instead of the z-halvings, L widened by its "
           "contraction.\n"
        << "- `deal.II condensed` (flat punch, paraboloid, tangential punch): the same levels with the half-space beyond L = 100 a "
-          "condensed onto max(r, z) = L (`fem::use_condensed_far_field`, fem/README.md \"Far field\"): no truncation "
+          "condensed onto max(r, z) = L (`fem::use_condensed_far_field`, fem/doc/meshes.md \"Far field\"): no truncation "
           "error and no rings beyond 100 a.\n"
        << "- Times: minimum and median wall time over the repetitions; `cold` is the first repetition, in which "
           "gmsh meshes the near field (later repetitions read its cached .msh, as repeated runs of a scene do); "
           "CPU is the process CPU time (minimum; gmsh's own process not included). The phase split is the "
           "minimum over the repetitions of `Result::time`: mesh / setup / assemble / factorize / solve / "
           "postprocess.\n"
-       << "- The machine is shared with other builds: wall times carry +-30 % noise; the minimum is the "
-          "least disturbed.\n\n";
+       << "- Wall times depend on the machine and on its load while the bench runs; the minimum over the "
+          "repetitions is the least disturbed.\n\n";
     if (peer || !peer_note.empty())
       md << "FreeFem++ peer rows (`cases/peers/freefem/`, P2, its own mesh ladder, the same L/a): see `peer.md`. "
          << peer_note << "\n\n";
@@ -718,9 +718,8 @@ namespace gradcontact::cases
                   "1e-4 a (k < 0) under the contact. A FreeFem++ engineer could add both (an anisotropic "
                   "adaptmesh metric, a mapped quadrature); these scripts do what the usual FreeFem++ "
                   "model does, as the issue asks.\n"
-               << "- k = 0: the peer converges (P2, edge grading); measured here it is within a factor 1-4 of "
-                  "ours in error at equal time up to about 1.5 s, then flattens at 1.6e-5 (flat punch) and 2e-5 "
-                  "(paraboloid) at its finest level (h_edge 1e-5 a, P2), where degree 3-4 reach 5e-8.\n";
+               << "- k = 0: the peer converges (P2, edge grading); the table above gives its error against ours at "
+                  "equal time, and where its finest level (h_edge 1e-5 a, P2) flattens.\n";
           }
         std::ofstream(folder / "peer.md") << pm.str();
       }

@@ -740,7 +740,7 @@ namespace gradcontact::cases
               "decouple, 9.80-9.86 assume the tangential traction along the load; Coulomb's law turns it with the slip "
               "in the annulus. The decoupled model against the same model with every tangential force along x "
               "(fem::along_load) is that assumption's effect (a difference on one mesh, in which its FE error largely "
-              "cancels; its mesh convergence: fem/README.md, \"3D model\"). The "
+              "cancels; its mesh convergence: fem/doc/distributed-and-3d.md, \"3D model\"). The "
            << tuple << " of the map (Holl's ratio included) where it is within each threshold:\n\n"
            << threshold_table_head({"quantity", "chapter"}, s.map.thresholds, "at");
         for (const MapQuantity &q : map_quantities())

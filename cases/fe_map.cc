@@ -796,7 +796,7 @@ namespace gradcontact::cases
           md << "k < 0 with a finite surface modulus: where z0 is thinner than the surface cells (outside r <= 1.05 a "
                 "they are not halved), the plain Gauss rule under-integrates E ~ (z + z0)^k near z = 0, so the FE "
                 "carries an error of about 1e-3 of the force at a/z0 >= 1e4 that one uniform refinement reduces only "
-                "in part (fem/README.md, \"Limits\"); read the thresholds below 1 % with that in mind.\n\n";
+                "in part (fem/doc/limits.md); read the thresholds below 1 % with that in mind.\n\n";
         const ExponentMap map = of_indenter   ? indenter_map(s, k, ratios, result, verbose)
                                 : of_friction ? friction_map(s, k, panel.nu, ratios, result, verbose)
                                               : grading_map(s, k, ratios, result, verbose);
