@@ -431,21 +431,42 @@ namespace gradcontact::fem
 
   namespace
   {
-    /// The normwise backward error of u as a solution of A u = b: |b - A u|_inf / (|A|_inf |u|_inf + |b|_inf)
-    /// (Rigal and Gaches; Higham, Accuracy and Stability of Numerical Algorithms, 2nd ed., thm. 7.1), with the
-    /// residual r = b - A u.
-    double normwise_backward_error(const SparseMatrix<double> &A, const double A_norm, const Vector<double> &b,
-                                   const Vector<double> &u, Vector<double> &r)
+    /// s + t = a + b exactly (Knuth's TwoSum).
+    inline void two_sum(const double a, const double b, double &s, double &t)
     {
-      A.residual(r, u, b);
-      const double scale = A_norm * u.linfty_norm() + b.linfty_norm();
-      return scale > 0 ? r.linfty_norm() / scale : 0.0;
+      s             = a + b;
+      const double z = s - a;
+      t             = (a - (s - z)) + (b - z);
     }
 
-    /// Refinement stops at this normwise backward error: far below any tolerance the suite asks (the forward error is
-    /// at most the condition number times it), and what a stable factorisation reaches in one or two steps.
-    constexpr double refinement_target = 1e-13;
-    /// At most this many refinement steps; a step that does not halve the backward error ends refinement.
+    /// r = b - A u, each row's sum as accurate as if computed in twice the working precision and rounded (Ogita, Rump
+    /// and Oishi, "Accurate sum and dot product", SIAM J. Sci. Comput. 26 (2005) 1955, algorithm Dot2: TwoProduct
+    /// by a fused multiply-add, TwoSum for the sum). A residual in working precision is polluted by eps |A| |u|,
+    /// which the back substitution amplifies by the condition number; the accurate one lets refinement converge to
+    /// the solution rounded to working precision while the condition number stays well below 1 / eps (Higham,
+    /// Accuracy and Stability of Numerical Algorithms, 2nd ed., sec. 12.1).
+    void accurate_residual(const SparseMatrix<double> &A, const Vector<double> &u, const Vector<double> &b,
+                           Vector<double> &r)
+    {
+      for (unsigned int i = 0; i < A.m(); ++i)
+        {
+          double sum = b[i], compensation = 0;
+          for (auto entry = A.begin(i); entry != A.end(i); ++entry)
+            {
+              const double p = -entry->value() * u[entry->column()];
+              const double p_error = std::fma(-entry->value(), u[entry->column()], -p);
+              double       s, t;
+              two_sum(sum, p, s, t);
+              sum = s;
+              compensation += t + p_error;
+            }
+          r[i] = sum + compensation;
+        }
+    }
+
+    /// Refinement stops when a correction is below this times |u| (the solution rounded to working precision).
+    constexpr double refinement_target = 4 * std::numeric_limits<double>::epsilon();
+    /// At most this many refinement steps; a step whose correction is not at most half the one before ends it.
     constexpr unsigned int max_refinement_steps = 10;
   } // namespace
 
@@ -454,29 +475,25 @@ namespace gradcontact::fem
   void DirectSystem::refine(const Factorization &direct, const SparseMatrix<double> &A, const Vector<double> &rhs,
                             Vector<double> &u) const
   {
-    // Iterative refinement in working precision (Higham, ch. 12): u += A^{-1} (rhs - A u). It makes the solve backward
-    // stable where the factorisation's pivots are not (an ill-conditioned saddle point whose LU depends on the
-    // rounding of the BLAS kernel), and costs one back substitution per step. A Cholesky solve takes its first step
-    // always.
-    Vector<double> r(u.size()), r_candidate(u.size());
-    double         omega = normwise_backward_error(A, direct.matrix_norm(), rhs, u, r);
+    // Iterative refinement with an accurate residual (Higham, ch. 12; Moler, J. ACM 14 (1967) 316):
+    // u += A^{-1} (rhs - A u) until the correction is at the rounding of u. It makes the solve backward stable where
+    // the factorisation's pivots are not (an ill-conditioned saddle point whose LU depends on the rounding of the BLAS
+    // kernel), and its forward error that of the rounding of the solution rather than the condition number times
+    // the working precision. Each step costs one back substitution.
+    Vector<double> r(u.size()), correction(u.size());
+    double         previous = std::numeric_limits<double>::infinity();
     for (unsigned int step = 0; step < max_refinement_steps; ++step)
       {
-        const bool forced = step == 0 && direct.cholesky();
-        if (omega <= refinement_target && !forced)
+        accurate_residual(A, u, rhs, r);
+        correction = r;
+        direct.solve(correction);
+        const double size = correction.linfty_norm();
+        if (!(size < previous))
+          return; // diverging or stalled: keep u
+        u += correction;
+        if (size <= refinement_target * u.linfty_norm() || size > 0.5 * previous)
           return;
-        Vector<double> candidate(r);
-        direct.solve(candidate);
-        candidate += u;
-        const double omega_candidate = normwise_backward_error(A, direct.matrix_norm(), rhs, candidate, r_candidate);
-        if (!(omega_candidate < omega) && !forced)
-          return; // no better: keep u
-        u.swap(candidate);
-        r.swap(r_candidate);
-        const bool halved = omega_candidate <= 0.5 * omega;
-        omega             = omega_candidate;
-        if (!halved)
-          return;
+        previous = size;
       }
   }
 
@@ -492,11 +509,10 @@ namespace gradcontact::fem
     Vector<double> u(n), rhs(b);
     if (prescribe)
       {
-        Vector<double> g_ext(n), Ag(n);
+        Vector<double> g_ext(n);
         for (unsigned int i = 0; i < prescribed.size(); ++i)
           g_ext[prescribed[i]] = g[i];
-        stiffness.vmult(Ag, g_ext);
-        rhs -= Ag;
+        accurate_residual(stiffness, g_ext, b, rhs);
         for (unsigned int i = 0; i < prescribed.size(); ++i)
           rhs[prescribed[i]] = eliminated.diag_element(prescribed[i]) * g[i];
       }
@@ -505,9 +521,10 @@ namespace gradcontact::fem
     refine(direct, prescribe ? eliminated : stiffness, rhs, u);
     constraints->distribute(u);
 
+    // R = A u - b, accurately: on a stiff surface its rows cancel large terms.
     reaction.reinit(n);
-    stiffness.vmult(reaction, u);
-    reaction -= b;
+    accurate_residual(stiffness, u, b, reaction);
+    reaction *= -1;
     return u;
   }
 

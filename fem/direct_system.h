@@ -13,10 +13,12 @@
 // ACM TOMS 30 (2004) 196) with the unsymmetric strategy: threshold partial pivoting over whole columns, not the
 // symmetric strategy's preference for the diagonal, which the saddle point's pressure block lacks.
 //
-// Every solve is refined against the true residual (DirectSystem::refine): u += A^{-1}(b - A u) until the normwise
-// backward error |b - A u| / (|A| |u| + |b|) reaches 1e-13 or stops halving (the Cholesky solves take at least
-// one step). So a solve is backward stable even where the factorisation's pivots are not, and its answer does not
-// depend on the rounding of the BLAS kernel the machine picks.
+// Every solve is refined against the true residual (DirectSystem::refine): u += A^{-1}(b - A u), the residual summed
+// as accurately as in twice the working precision, until the correction is at the rounding of u or stops halving. So
+// a solve is backward stable even where the factorisation's pivots are not, its answer does not depend on the
+// rounding of the BLAS kernel the machine picks, and its forward error is not the condition number times the working
+// precision (the stiff surface of k near -1 and the saddle point near nu = 1/2 make that large). The reactions
+// R = A u - b are summed the same way: on a stiff surface their rows cancel large terms.
 //
 // The energy check of fem/discretization.h compares u.Au, over the unconstrained DoFs, with the work
 // of the loads.
