@@ -1,6 +1,7 @@
 #include "fe_scene.h"
 
 #include "analytic_reference.h"
+#include "candidate.h"
 #include "convergence_report.h"
 #include "fe_model.h"
 
@@ -222,46 +223,6 @@ namespace gradcontact::cases
       return out;
     }
     // --- candidate closed forms of a user's profile ---------------------------------------------------
-    std::map<std::string, double> constants_of(const Scene &s)
-    {
-      const MaterialParameters &m = s.material;
-      std::map<std::string, double> c{{"E0", m.E0}, {"c0", m.c0}, {"k", m.k}, {"nu", m.nu},
-                                      {"cN0", medium(GradedHalfSpace{m.E0, m.c0, m.k, m.nu}).cN0},
-                                      {"pi", 3.14159265358979323846}};
-      for (const std::string &item : dealii::Utilities::split_string_list(s.candidate.constants))
-        {
-          const auto eq = item.find('=');
-          if (item.empty())
-            continue;
-          if (eq == std::string::npos)
-            throw std::invalid_argument("Candidate/constants: '" + item + "' is not name=value");
-          c[dealii::Utilities::trim(item.substr(0, eq))] = dealii::Utilities::string_to_double(item.substr(eq + 1));
-        }
-      return c;
-    }
-
-    /// An expression of the listed variables (muparser through deal.II's FunctionParser).
-    template <int dim>
-    std::shared_ptr<dealii::FunctionParser<dim>> parse_expression(const std::string &entry, const std::string &variables,
-                                                                  const std::string &expression,
-                                                                  const std::map<std::string, double> &constants)
-    {
-      auto f = std::make_shared<dealii::FunctionParser<dim>>(1);
-      try
-        {
-          f->initialize(variables, expression, constants);
-          dealii::Point<dim> p;
-          for (unsigned int d = 0; d < dim; ++d)
-            p[d] = 0.5;
-          f->value(p); // muparser reports some errors only on evaluation
-        }
-      catch (const std::exception &e)
-        {
-          throw std::invalid_argument("Candidate/" + entry + " = '" + expression + "': " + concise(e));
-        }
-      return f;
-    }
-
     /// Load/contact = unilateral: the candidate's closed forms against the FE with the contact set found (a
     /// disc, an annulus, several zones, or up to the indenter's edge), the profile a rigid (or Indenter) indenter
     /// of Candidate/indenter radius under Load/control depth or force. The expressions take the FE's depth d and
@@ -283,7 +244,7 @@ namespace gradcontact::cases
         }
       else
         {
-          const auto f = parse_expression<1>("profile", "r", c.profile, constants);
+          const auto f = parse_candidate_expression<1>("profile", "r", c.profile, constants);
           indenter = fem::Indenter{[f](const double r) { return f->value(dealii::Point<1>(r)); },
                                    std::numeric_limits<double>::infinity(), "candidate profile"};
         }
@@ -312,9 +273,9 @@ namespace gradcontact::cases
           return;
         try
           {
-            const double value = r ? parse_expression<3>(quantity, "r,d,F", expression, constants)
+            const double value = r ? parse_candidate_expression<3>(quantity, "r,d,F", expression, constants)
                                        ->value(dealii::Point<3>(*r, fe.depth, fe.force))
-                                   : parse_expression<2>(quantity, "d,F", expression, constants)
+                                   : parse_candidate_expression<2>(quantity, "d,F", expression, constants)
                                        ->value(dealii::Point<2>(fe.depth, fe.force));
             result.rows.push_back(compare(quantity, metric, "candidate", "FE (unilateral)", fe_value, value, scale,
                                           tolerance, fe.n_dofs, seconds));
@@ -353,30 +314,12 @@ namespace gradcontact::cases
     SceneResult run_candidate(const Scene &s)
     {
       const CandidateParameters &c = s.candidate;
-      const auto constants = constants_of(s);
+      const auto constants = candidate_constants(s);
       if (s.load.contact == LoadParameters::Contact::unilateral)
         return run_unilateral_candidate(s, constants);
-      const auto f = parse_expression<1>("profile", "r", c.profile, constants);
       SceneResult result;
       const auto at = [](const dealii::FunctionParser<1> &g, const double r) { return g.value(dealii::Point<1>(r)); };
-      mdr::Profile profile;
-      profile.f = [f, at](double r) { return at(*f, r); };
-      // f' and f'' given, or by fourth-order central differences with a step relative to r
-      if (!c.slope.empty())
-        {
-          const auto g = parse_expression<1>("profile slope", "r", c.slope, constants);
-          profile.df = [g, at](double r) { return at(*g, r); };
-        }
-      else
-        profile.df = [f, at](double r) {
-          const double h = 1e-3 * std::max(r, 1e-300);
-          return (8. * (at(*f, r + h) - at(*f, r - h)) - (at(*f, r + 2 * h) - at(*f, r - 2 * h))) / (12. * h);
-        };
-      if (!c.curvature.empty())
-        {
-          const auto g = parse_expression<1>("profile curvature", "r", c.curvature, constants);
-          profile.d2f = [g, at](double r) { return at(*g, r); };
-        }
+      const mdr::Profile profile = candidate_profile(s, constants);
       // (a pressure candidate without f'' is refused by scene_kind: see there why)
       const MaterialParameters &mp = s.material;
       const Medium m = medium(GradedHalfSpace{mp.E0, mp.c0, mp.k, mp.nu});
@@ -399,19 +342,19 @@ namespace gradcontact::cases
       };
       if (!c.depth.empty())
         {
-          const auto g = parse_expression<1>("depth", "a", c.depth, constants);
+          const auto g = parse_candidate_expression<1>("depth", "a", c.depth, constants);
           check("depth", "relative", [&] { return at(*g, a); }, [&] { return mdr::depth(w1d); });
         }
       if (!c.force.empty())
         {
-          const auto g = parse_expression<1>("force", "a", c.force, constants);
+          const auto g = parse_candidate_expression<1>("force", "a", c.force, constants);
           check("force", "relative", [&] { return at(*g, a); }, [&] { return mdr::force(w1d, m); });
         }
       const auto profile_rows = [&](const std::string &entry, const std::string &expression, const std::vector<double> &radii,
                                     const std::function<double(double)> &reference) {
         if (expression.empty())
           return;
-        const auto g = parse_expression<2>(entry, "r,a", expression, constants);
+        const auto g = parse_candidate_expression<2>(entry, "r,a", expression, constants);
         for (const double x : radii)
           check(entry, "r/a = " + format(x) + ", relative", [&] { return g->value(dealii::Point<2>(x * a, a)); },
                 [&] { return reference(x * a); });
@@ -436,8 +379,8 @@ namespace gradcontact::cases
               return;
             try
               {
-                const double value = r ? parse_expression<2>(quantity, "r,a", expression, constants)->value(dealii::Point<2>(*r, a))
-                                       : at(*parse_expression<1>(quantity, "a", expression, constants), a);
+                const double value = r ? parse_candidate_expression<2>(quantity, "r,a", expression, constants)->value(dealii::Point<2>(*r, a))
+                                       : at(*parse_candidate_expression<1>(quantity, "a", expression, constants), a);
                 result.rows.push_back(compare(quantity, metric, "candidate", "FE", fe_value, value, fe_value, tolerance,
                                               fe.n_dofs, seconds));
               }
@@ -533,7 +476,16 @@ namespace gradcontact::cases
       r.description += (r.description.empty() ? "" : " ") +
                        std::string("(unilateral contact: the candidate against the FE only; the numerical MDR assumes a "
                                    "disc and does not apply)");
-    r.rows = run_candidate(s).rows;
+    if (s.candidate.family() != CandidateParameters::Family::normal)
+      {
+        const bool  adhesive = s.candidate.family() == CandidateParameters::Family::adhesive;
+        SceneResult family   = adhesive ? run_adhesive_candidate(s, folder) : run_tangential_candidate(s, folder);
+        r.rows               = std::move(family.rows);
+        r.description += (r.description.empty() ? "" : " ") + std::string("(against the numerical MDR; ") +
+                         family.description + ")";
+      }
+    else
+      r.rows = run_candidate(s).rows;
     r.seconds = seconds_since(start);
     return r;
   }

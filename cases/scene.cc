@@ -377,9 +377,52 @@ namespace gradcontact::cases
                       "With unilateral contact every candidate takes the FE's depth d and force F instead of a "
                       "(d, F; r, d, F for p and w), is compared with the FE only (the MDR assumes a disc), and the "
                       "profile is indented under Load/control = depth or force.");
+    prm.declare_entry("adhesive depth", "", Patterns::Anything(),
+                      "JKR candidate d(a) on the adhesive branch (variable a; Adhesion/work of adhesion is dgamma), "
+                      "over the radii of `range`.");
+    prm.declare_entry("adhesive force", "", Patterns::Anything(), "JKR candidate F_N(a) (variable a), over `range`.");
+    prm.declare_entry("adhesive pressure", "", Patterns::Anything(),
+                      "JKR candidate p(r, a) (variables r, a) at Load/a and Outputs/pressure radii (needs f'').");
+    prm.declare_entry("critical control", "force", Patterns::Selection("force|displacement"),
+                      "The control of the critical state of the three entries below.");
+    prm.declare_entry("critical radius", "", Patterns::Anything(), "JKR candidate critical radius a_c (a constant).");
+    prm.declare_entry("critical force", "", Patterns::Anything(), "JKR candidate critical force F_c (a constant).");
+    prm.declare_entry("critical depth", "", Patterns::Anything(), "JKR candidate critical depth d_c (a constant).");
+    prm.declare_entry("tangential stiffness", "", Patterns::Anything(),
+                      "Candidate K_T(a) (variable a), over `range`; Tangential/friction coefficient is mu.");
+    prm.declare_entry("tangential force", "", Patterns::Anything(),
+                      "Candidate F_x(c, a) of partial slip with stick radius c (variables c, a) at Load/a.");
+    prm.declare_entry("tangential displacement", "", Patterns::Anything(),
+                      "Candidate u0(c, a) of partial slip (variables c, a) at Load/a.");
+    prm.declare_entry("stick radius", "", Patterns::Anything(),
+                      "Candidate c(Fx, a) (variables Fx, a), 0 < Fx < mu F_N(a).");
+    prm.declare_entry("dissipated energy", "", Patterns::Anything(),
+                      "Candidate energy dissipated per cycle of +-FA (variables FA, a), 0 < FA < mu F_N(a).");
+    prm.declare_entry("unloading displacement", "", Patterns::Anything(),
+                      "Candidate u0 on the unloading branch from FA (variables Fx, FA, a); FA = Tangential/amplitude "
+                      "mu F_N(a).");
+    prm.declare_entry("reloading displacement", "", Patterns::Anything(),
+                      "Candidate u0 on the reloading branch from -FA (variables Fx, FA, a).");
+    prm.declare_entry("range", "0.25, 4", Patterns::List(Patterns::Double(0.), 2, 2),
+                      "The contact radii of the curves over a (adhesive d(a), F(a); K_T(a)): from range[0] Load/a to "
+                      "range[1] Load/a.");
+    prm.declare_entry("points", "9", Patterns::Integer(2, 200), "Points on every candidate curve.");
     prm.declare_entry("tolerance", "1e-8", Patterns::Double(0.), "Relative tolerance of the candidate.");
     prm.leave_subsection();
   }
+  CandidateParameters::Family CandidateParameters::family() const
+  {
+    const bool adhesive = !(adhesive_depth.empty() && adhesive_force.empty() && adhesive_pressure.empty() &&
+                            critical_radius.empty() && critical_force.empty() && critical_depth.empty());
+    const bool tangential = !(tangential_stiffness.empty() && tangential_force.empty() &&
+                              tangential_displacement.empty() && stick_radius.empty() && dissipated_energy.empty() &&
+                              unloading_displacement.empty() && reloading_displacement.empty());
+    if (adhesive && tangential)
+      throw std::invalid_argument("Candidate: adhesive and tangential candidate entries in one scene; the two are "
+                                  "different contacts (tangential contact is non-adhesive): give one family per scene");
+    return adhesive ? Family::adhesive : tangential ? Family::tangential : Family::normal;
+  }
+
   void CandidateParameters::parse(ParameterHandler &prm)
   {
     prm.enter_subsection("Candidate");
@@ -395,6 +438,22 @@ namespace gradcontact::cases
     inner_radius = prm.get("inner radius");
     indenter_radius = prm.get_double("indenter radius");
     profile_table = prm.get("profile table");
+    adhesive_depth = prm.get("adhesive depth");
+    adhesive_force = prm.get("adhesive force");
+    adhesive_pressure = prm.get("adhesive pressure");
+    critical_force_control = prm.get("critical control") == "force";
+    critical_radius = prm.get("critical radius");
+    critical_force = prm.get("critical force");
+    critical_depth = prm.get("critical depth");
+    tangential_stiffness = prm.get("tangential stiffness");
+    tangential_force = prm.get("tangential force");
+    tangential_displacement = prm.get("tangential displacement");
+    stick_radius = prm.get("stick radius");
+    dissipated_energy = prm.get("dissipated energy");
+    unloading_displacement = prm.get("unloading displacement");
+    reloading_displacement = prm.get("reloading displacement");
+    range = to_doubles(prm.get("range"));
+    points = static_cast<unsigned int>(prm.get_integer("points"));
     tolerance = prm.get_double("tolerance");
     prm.leave_subsection();
   }
@@ -655,6 +714,54 @@ namespace gradcontact::cases
             throw std::invalid_argument(where + "Adhesion/Tabor parameter needs Material/modulus = power law (it is "
                                         "defined by the chapter's JKR state); give Adhesion/cohesive strength instead");
         }
+    }
+
+    /// An adhesive or tangential candidate: the profile as an expression on a disc, its family's physics, a range.
+    void check_family_candidate(const Scene &s, const std::string &where)
+    {
+      const CandidateParameters &c = s.candidate;
+      const bool adhesive = c.family() == CandidateParameters::Family::adhesive;
+      const std::string family = adhesive ? "an adhesive" : "a tangential";
+      if (c.profile.empty())
+        throw std::invalid_argument(where + family + " candidate needs Candidate/profile (an expression f(r))");
+      if (!c.depth.empty() || !c.force.empty() || !c.pressure.empty() || !c.displacement.empty() ||
+          !c.outer_radius.empty() || !c.inner_radius.empty())
+        throw std::invalid_argument(where + family + " candidate: Candidate/depth, force, pressure, displacement, "
+                                    "outer and inner radius are the non-adhesive normal family's; check them in a "
+                                    "scene of their own");
+      if (s.load.contact == LoadParameters::Contact::unilateral)
+        throw std::invalid_argument(where + family + " candidate needs Load/contact = disc");
+      if (s.material.modulus != MaterialParameters::Modulus::power_law)
+        throw std::invalid_argument(where + family + " candidate needs Material/modulus = power law (its reference "
+                                    "is the numerical MDR of the graded half-space)");
+      if (!(s.load.a > 0.))
+        throw std::invalid_argument(where + "Load/a = " + format(s.load.a) + " must be in (0, inf) for " + family +
+                                    " candidate");
+      if (!(c.range[0] > 0. && c.range[1] > c.range[0]))
+        throw std::invalid_argument(where + "Candidate/range = " + format(c.range[0]) + ", " + format(c.range[1]) +
+                                    ": needs 0 < range[0] < range[1]");
+      if (s.tangential.enabled())
+        throw std::invalid_argument(where + family + " candidate: leave Tangential/study = none (the candidate's "
+                                    "path is its own)");
+      if (adhesive)
+        {
+          if (!(s.adhesion.work_of_adhesion > 0.))
+            throw std::invalid_argument(where + "an adhesive candidate needs Adhesion/work of adhesion > 0 (it is " +
+                                        format(s.adhesion.work_of_adhesion) + ")");
+          if (s.adhesion.law != AdhesionParameters::Law::jkr)
+            throw std::invalid_argument(where + "an adhesive candidate is checked against JKR (the numerical MDR): "
+                                        "Adhesion/law = JKR");
+          if (!c.adhesive_pressure.empty() && c.curvature.empty())
+            throw std::invalid_argument("Candidate/profile curvature: needed for an adhesive pressure candidate "
+                                        "(give f''(r))");
+          return;
+        }
+      if (s.adhesion.enabled(s.load))
+        throw std::invalid_argument(where + "a tangential candidate is non-adhesive (9.75-9.87): Adhesion/work of "
+                                    "adhesion = 0");
+      if (!(s.tangential.friction_coefficient > 0.))
+        throw std::invalid_argument(where + "Tangential/friction coefficient = " +
+                                    format(s.tangential.friction_coefficient) + " must be in (0, inf)");
     }
 
     /// A candidate checks at least one formula at one point; a pressure needs f'' (see the message).
@@ -930,6 +1037,11 @@ namespace gradcontact::cases
       {
         check_normal_map(s, where);
         return SceneKind::map;
+      }
+    if (s.candidate.enabled() && s.candidate.family() != CandidateParameters::Family::normal)
+      {
+        check_family_candidate(s, where);
+        return SceneKind::candidate;
       }
     if (s.tangential.enabled())
       {

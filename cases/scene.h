@@ -210,6 +210,27 @@ namespace gradcontact::cases
     std::string outer_radius, inner_radius; ///< the outer edge and the inner edge (0 for a disc), of d, F
     double indenter_radius = 0.;            ///< the indenter's radius [m] (unilateral); 0: unbounded
     std::string profile_table; ///< a CSV file of r, f(r) rows (unilateral only; instead of `profile`)
+    /// Adhesive (JKR, Adhesion/work of adhesion) candidates: d(a), F(a) on the adhesive branch over `range`,
+    /// p(r, a) at Load/a, and the critical state under `critical_control` (constants).
+    std::string adhesive_depth, adhesive_force, adhesive_pressure;
+    std::string critical_radius, critical_force, critical_depth;
+    bool critical_force_control = true; ///< Candidate/critical control = force (else displacement)
+    /// Tangential (Ciavarella-Jaeger, Tangential/friction coefficient) candidates at Load/a: K_T(a) over `range`;
+    /// F_x(c, a), u0(c, a) over stick radii; c(Fx, a) and the dissipated energy W(FA, a) over forces and
+    /// amplitudes up to gross slip; u0(Fx, FA, a) on the unloading and reloading branches at Tangential/amplitude.
+    std::string tangential_stiffness, tangential_force, tangential_displacement, stick_radius, dissipated_energy;
+    std::string unloading_displacement, reloading_displacement;
+    /// Contact radii of the curves in a: range[0] a .. range[1] a, a = Load/a; `points` points on every curve.
+    std::vector<double> range{0.25, 4.};
+    unsigned int points = 9;
+    /// Which family the candidate's formulas belong to (one per scene).
+    enum class Family
+    {
+      normal,
+      adhesive,
+      tangential
+    };
+    Family family() const;
     /// A candidate scene: a profile expression or a profile table.
     bool enabled() const { return !profile.empty() || !profile_table.empty(); }
     double tolerance = 1e-8;

@@ -134,11 +134,12 @@ namespace gradcontact::fem
         state.depth                   = n.depth;
         state.force                   = n.force;
         state.profile_centre_pressure = n.pressure.at(0).value;
-        if (is_curved(profile) && !(state.depth > 0 && state.force > 0))
+        // Zero where the profile is flat on r <= a (a rounded punch inside its flat): no non-adhesive load.
+        if (is_curved(profile) && !(state.depth >= 0 && state.force >= 0))
           {
             std::ostringstream msg;
             msg << "AdhesiveContact: the non-adhesive state of radius " << a << " has depth " << state.depth
-                << " and force " << state.force << " (both must be positive for a convex profile)";
+                << " and force " << state.force << " (neither may be negative for a convex profile)";
             throw std::runtime_error(msg.str());
           }
       }
@@ -163,7 +164,7 @@ namespace gradcontact::fem
     // Radii much closer together than the stencil would turn the FE discretisation error into a large
     // derivative error (a 1e-8 difference over 1e-6 in s is 1e-2): keep nodes at least h/2 apart.
     const double spacing = 0.5 * std::log(parameters.stencil_ratio);
-    std::vector<double> t, lnK, lnd, lnF;
+    std::vector<double> t, lnK, depths, forces;
     for (const auto &[sn, st] : near)
       {
         if (t.size() == parameters.fit_points)
@@ -172,19 +173,25 @@ namespace gradcontact::fem
           continue;
         t.push_back(sn);
         lnK.push_back(std::log(st->stiffness));
-        if (is_curved(profile))
-          {
-            lnd.push_back(std::log(st->depth));
-            lnF.push_back(std::log(st->force));
-          }
+        depths.push_back(st->depth);
+        forces.push_back(st->force);
       }
     Local      l;
     const auto k = Interpolant(t, lnK)(s);
     l.lnK = k[0], l.dlnK = k[1], l.d2lnK = k[2];
     if (is_curved(profile))
       {
-        l.depth = std::exp(Interpolant(t, lnd)(s)[0]);
-        l.force = std::exp(Interpolant(t, lnF)(s)[0]);
+        // In the logarithm, where d_n and F_n are powers of a (the power law); the values themselves where one
+        // is not positive (a profile flat around the axis, f = 0 on r <= a: no non-adhesive load there).
+        const auto interpolated = [&](std::vector<double> values) {
+          if (std::any_of(values.begin(), values.end(), [](const double v) { return !(v > 0); }))
+            return Interpolant(t, values)(s)[0];
+          for (double &v : values)
+            v = std::log(v);
+          return std::exp(Interpolant(t, values)(s)[0]);
+        };
+        l.depth = interpolated(depths);
+        l.force = interpolated(forces);
       }
     return l;
   }

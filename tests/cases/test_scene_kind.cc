@@ -53,3 +53,31 @@ TEST_CASE("Contradicting entries shall be an error naming the file and the entri
                                   "Candidate/pressure=1"}),
                       Contains("Candidate: no candidate formula given"));
 }
+
+TEST_CASE("An adhesive or tangential candidate shall be a candidate scene, its family's physics checked by name",
+          "[cases][quick]")
+{
+  const std::string profile = "Candidate/profile=r^2/0.02";
+  CHECK(scene_with({"Load/a=1e-4", "Adhesion/work of adhesion=0.05", profile, "Candidate/adhesive force=1"}).kind ==
+        SceneKind::candidate);
+  CHECK(scene_with({"Load/a=1e-4", profile, "Candidate/tangential stiffness=1"}).kind == SceneKind::candidate);
+  CHECK(scene_with({"Load/a=1e-4", profile, "Candidate/tangential stiffness=1"}).candidate.family() ==
+        CandidateParameters::Family::tangential);
+
+  REQUIRE_THROWS_WITH(scene_with({"Load/a=1e-4", profile, "Candidate/critical force=1"}),
+                      Contains("an adhesive candidate needs Adhesion/work of adhesion > 0"));
+  REQUIRE_THROWS_WITH(scene_with({"Load/a=1e-4", "Adhesion/work of adhesion=0.05", profile,
+                                  "Candidate/adhesive force=1", "Candidate/stick radius=1"}),
+                      Contains("adhesive and tangential candidate entries in one scene"));
+  REQUIRE_THROWS_WITH(scene_with({"Load/a=1e-4", "Adhesion/work of adhesion=0.05", profile,
+                                  "Candidate/tangential force=1"}),
+                      Contains("a tangential candidate is non-adhesive"));
+  REQUIRE_THROWS_WITH(scene_with({"Load/a=1e-4", "Adhesion/work of adhesion=0.05", profile,
+                                  "Candidate/adhesive force=1", "Candidate/force=1"}),
+                      Contains("non-adhesive normal family's"));
+  REQUIRE_THROWS_WITH(scene_with({"Load/a=1e-4", profile, "Candidate/tangential stiffness=1", "Candidate/range=2, 1"}),
+                      Contains("Candidate/range = 2, 1") && Contains("0 < range[0] < range[1]"));
+  REQUIRE_THROWS_WITH(scene_with({"Load/a=1e-4", "Adhesion/work of adhesion=0.05", profile,
+                                  "Candidate/adhesive pressure=1"}),
+                      Contains("Candidate/profile curvature: needed for an adhesive pressure candidate"));
+}

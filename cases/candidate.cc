@@ -1,0 +1,480 @@
+#include "candidate.h"
+
+#include "fe_model.h"
+
+#include <fem/adhesion.h>
+
+#include <analytic/material.h>
+#include <analytic/mdr_contact.h>
+
+#include <deal.II/base/point.h>
+#include <deal.II/base/utilities.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <fstream>
+#include <functional>
+#include <limits>
+#include <optional>
+#include <stdexcept>
+#include <vector>
+
+namespace gradcontact::cases
+{
+  namespace fs = std::filesystem;
+
+  std::map<std::string, double> candidate_constants(const Scene &s)
+  {
+    const MaterialParameters &m = s.material;
+    const Medium medium_ = medium(GradedHalfSpace{m.E0, m.c0, m.k, m.nu});
+    std::map<std::string, double> c{{"E0", m.E0},
+                                    {"c0", m.c0},
+                                    {"k", m.k},
+                                    {"nu", m.nu},
+                                    {"pi", 3.14159265358979323846},
+                                    {"cN0", medium_.cN0},
+                                    {"c_N0", medium_.cN0},
+                                    {"cT0", medium_.cT0},
+                                    {"c_T0", medium_.cT0},
+                                    {"alpha", medium_.alpha()},
+                                    {"h_N", h_N(m.k, m.nu)},
+                                    {"h_T", h_T(m.k, m.nu)},
+                                    {"beta", beta(m.k, m.nu)},
+                                    {"C", C(m.k, m.nu)},
+                                    {"dgamma", s.adhesion.work_of_adhesion},
+                                    {"mu", s.tangential.friction_coefficient}};
+    for (const std::string &item : dealii::Utilities::split_string_list(s.candidate.constants))
+      {
+        const auto eq = item.find('=');
+        if (item.empty())
+          continue;
+        if (eq == std::string::npos)
+          throw std::invalid_argument("Candidate/constants: '" + item + "' is not name=value");
+        c[dealii::Utilities::trim(item.substr(0, eq))] = dealii::Utilities::string_to_double(item.substr(eq + 1));
+      }
+    return c;
+  }
+
+
+
+  template <int dim>
+  std::shared_ptr<dealii::FunctionParser<dim>> parse_candidate_expression(const std::string &entry,
+                                                                          const std::string &variables,
+                                                                          const std::string &expression,
+                                                                          const std::map<std::string, double> &constants)
+  {
+    auto f = std::make_shared<dealii::FunctionParser<dim>>(1);
+    try
+      {
+        f->initialize(variables, expression, constants);
+        dealii::Point<dim> p;
+        for (unsigned int d = 0; d < dim; ++d)
+          p[d] = 0.5;
+        f->value(p); // muparser reports some errors only on evaluation
+      }
+    catch (const std::exception &e)
+      {
+        throw std::invalid_argument("Candidate/" + entry + " = '" + expression + "' (variables " + variables +
+                                    "): " + concise(e));
+      }
+    return f;
+  }
+
+  template std::shared_ptr<dealii::FunctionParser<1>>
+  parse_candidate_expression<1>(const std::string &, const std::string &, const std::string &,
+                                const std::map<std::string, double> &);
+  template std::shared_ptr<dealii::FunctionParser<2>>
+  parse_candidate_expression<2>(const std::string &, const std::string &, const std::string &,
+                                const std::map<std::string, double> &);
+  template std::shared_ptr<dealii::FunctionParser<3>>
+  parse_candidate_expression<3>(const std::string &, const std::string &, const std::string &,
+                                const std::map<std::string, double> &);
+
+
+
+  mdr::Profile candidate_profile(const Scene &s, const std::map<std::string, double> &constants)
+  {
+    const CandidateParameters &c = s.candidate;
+    const auto at = [](const dealii::FunctionParser<1> &g, const double r) { return g.value(dealii::Point<1>(r)); };
+    const auto f  = parse_candidate_expression<1>("profile", "r", c.profile, constants);
+    mdr::Profile profile;
+    profile.f = [f, at](const double r) { return at(*f, r); };
+    if (!c.slope.empty())
+      {
+        const auto g = parse_candidate_expression<1>("profile slope", "r", c.slope, constants);
+        profile.df   = [g, at](const double r) { return at(*g, r); };
+      }
+    else
+      profile.df = [f, at](const double r) {
+        const double h = 1e-3 * std::max(r, 1e-300);
+        return (8. * (at(*f, r + h) - at(*f, r - h)) - (at(*f, r + 2 * h) - at(*f, r - 2 * h))) / (12. * h);
+      };
+    if (!c.curvature.empty())
+      {
+        const auto g  = parse_candidate_expression<1>("profile curvature", "r", c.curvature, constants);
+        profile.d2f   = [g, at](const double r) { return at(*g, r); };
+      }
+    return profile;
+  }
+
+
+
+  namespace
+  {
+    /// One candidate curve: the candidate and its reference at the points x of the varied quantity.
+    struct Curve
+    {
+      std::string quantity;  ///< "adhesive force", as in the Candidate entry
+      std::string variable;  ///< the varied quantity as the table names it: "a [m]", "c / a", ...
+      std::string unit;      ///< of the values, for the plot's axis
+      std::vector<double> x; ///< the varied quantity
+      std::function<double(std::size_t)> candidate, reference; ///< at point i
+      /// The scale of the deviation: false: |reference| at the point; true: max |reference| over the curve (the
+      /// adhesive branch's d(a) and F(a), and the branches of a loop, pass through zero).
+      bool relative_to_largest = false;
+    };
+
+    double elapsed(const std::chrono::steady_clock::time_point start)
+    {
+      return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    }
+
+    /// The rows of a curve (one per point), its table and plot in `folder`, and the sentence naming its largest
+    /// deviation (empty when no point was evaluated).
+    std::string report_curve(const Curve &curve, const double tolerance, const bool plots, const fs::path &folder,
+                             std::vector<Row> &rows)
+    {
+      const std::size_t n = curve.x.size();
+      std::vector<double> candidate(n, std::numeric_limits<double>::quiet_NaN()), reference(candidate);
+      std::vector<double> seconds(n, 0.);
+      std::vector<std::string> errors(n);
+      for (std::size_t i = 0; i < n; ++i)
+        try
+          {
+            reference[i] = curve.reference(i);
+            const auto start = std::chrono::steady_clock::now();
+            candidate[i]     = curve.candidate(i);
+            seconds[i]       = elapsed(start);
+          }
+        catch (const std::exception &e)
+          {
+            errors[i] = concise(e);
+          }
+      double largest = 0.;
+      for (const double r : reference)
+        if (std::isfinite(r))
+          largest = std::max(largest, std::abs(r));
+
+      const std::string stem = "candidate_" + dealii::Utilities::replace_in_string(curve.quantity, " ", "_");
+      std::ofstream table(folder / (stem + ".csv"));
+      table << csv_quote(curve.variable) << ",candidate,numerical MDR,deviation\n";
+      table.precision(16);
+      double worst = -1., worst_x = 0.;
+      for (std::size_t i = 0; i < n; ++i)
+        {
+          const std::string metric = curve.variable + " = " + format(curve.x[i]) +
+                                     (curve.relative_to_largest ? ", rel. to the largest |MDR| of the curve" :
+                                                                  ", relative");
+          if (!errors[i].empty())
+            {
+              rows.push_back(failed(curve.quantity, "candidate", "numerical MDR", errors[i]));
+              rows.back().metric = metric;
+              continue;
+            }
+          const double scale = curve.relative_to_largest ? largest : reference[i];
+          rows.push_back(compare(curve.quantity, metric, "candidate", "numerical MDR", reference[i], candidate[i],
+                                 scale, tolerance, 0, seconds[i]));
+          const double deviation = rows.back().rel_error;
+          table << curve.x[i] << ',' << candidate[i] << ',' << reference[i] << ',' << deviation << '\n';
+          if (!(deviation <= worst))
+            worst = deviation, worst_x = curve.x[i];
+        }
+      if (plots)
+        {
+          Series mdr_series{"numerical MDR", curve.x, reference, false, true};
+          Series candidate_series{"candidate", curve.x, candidate, true, false};
+          write_plot(folder, stem, "Candidate " + curve.quantity + " against the numerical MDR", curve.variable,
+                     curve.quantity + " " + curve.unit, {mdr_series, candidate_series});
+        }
+      if (worst < 0.)
+        return "";
+      return "largest deviation of the " + curve.quantity + ": " + format(worst) + " at " + curve.variable + " = " +
+             format(worst_x) + " (tolerance " + format(tolerance) + ")";
+    }
+
+    /// x_i = lo + (hi - lo) i / (n - 1).
+    std::vector<double> spaced(const double lo, const double hi, const unsigned int n)
+    {
+      std::vector<double> x(n);
+      for (unsigned int i = 0; i < n; ++i)
+        x[i] = lo + (hi - lo) * i / (n - 1);
+      return x;
+    }
+
+    /// The fractions (i + 1) / (n + 1), i < n, of an open interval (0, 1): stick radii c / a, forces F_x / (mu F_N)
+    /// and amplitudes F_A / (mu F_N) short of gross slip.
+    std::vector<double> fractions(const unsigned int n)
+    {
+      std::vector<double> x(n);
+      for (unsigned int i = 0; i < n; ++i)
+        x[i] = double(i + 1) / (n + 1);
+      return x;
+    }
+
+    /// A scalar candidate (an expression without variables) against its reference.
+    void scalar_row(const std::string &quantity, const std::string &expression,
+                    const std::map<std::string, double> &constants, const std::function<double()> &reference,
+                    const double tolerance, std::vector<Row> &rows)
+    {
+      if (expression.empty())
+        return;
+      try
+        {
+          const double ref   = reference();
+          const auto   start = std::chrono::steady_clock::now();
+          const double value = parse_candidate_expression<1>(quantity, "x", expression, constants)->value(
+            dealii::Point<1>(0.));
+          rows.push_back(compare(quantity, "relative", "candidate", "numerical MDR", ref, value, ref, tolerance, 0,
+                                 elapsed(start)));
+        }
+      catch (const std::exception &e)
+        {
+          rows.push_back(failed(quantity, "candidate", "numerical MDR", concise(e)));
+        }
+    }
+
+    void add_note(SceneResult &result, const std::string &note)
+    {
+      if (!note.empty())
+        result.description += (result.description.empty() ? "" : "; ") + note;
+    }
+
+    /// The adhesive family against the FE model of fem/adhesion.h (JKR by the FE's own energy release rate and
+    /// critical search; the profile a rigid custom indenter, the scene's mesh at its finest refinement at every
+    /// radius): d(a) and F(a) at the ends and the middle of the range, and the critical state. Each row against the
+    /// FE takes Tolerances/*: it includes the FE's own error.
+    void adhesive_fe_rows(const Scene &s, const mdr::Profile &profile, const std::vector<double> &radii,
+                          const std::map<std::string, double> &constants, std::vector<Row> &rows)
+    {
+      const CandidateParameters &c        = s.candidate;
+      const fem::Material        material = fe_material(s);
+      const unsigned int         level    = finest_refinement(s);
+      fem::AdhesiveContact model(material, fem::Profile::custom(profile.f, 2.), [&s, material, level](const double a) {
+        fem::Settings st = fe_settings(s, material, a, level);
+        condense_far_field(s, material, st);
+        return st;
+      });
+      const double dgamma = s.adhesion.work_of_adhesion;
+      const auto   row = [&](const std::string &quantity, const std::string &metric, const std::string &expression,
+                           const double x, const double fe_value, const double scale, const double tolerance,
+                           const double seconds) {
+        if (expression.empty())
+          return;
+        try
+          {
+            const double value =
+              parse_candidate_expression<1>(quantity, "a", expression, constants)->value(dealii::Point<1>(x));
+            rows.push_back(compare(quantity, metric, "candidate", "FE", fe_value, value, scale, tolerance, 0, seconds));
+          }
+        catch (const std::exception &e)
+          {
+            rows.push_back(failed(quantity, "candidate", "FE", concise(e)));
+          }
+      };
+      for (const std::size_t i : {std::size_t(0), radii.size() / 2, radii.size() - 1})
+        {
+          if (c.adhesive_depth.empty() && c.adhesive_force.empty())
+            break;
+          const auto start = std::chrono::steady_clock::now();
+          try
+            {
+              const fem::AdhesiveState st = model.adhesive_state(radii[i], dgamma);
+              const double seconds = elapsed(start);
+              const std::string metric = "a [m] = " + format(radii[i]) + ", relative";
+              row("adhesive depth", metric, c.adhesive_depth, radii[i], st.depth, st.depth, s.tolerances.depth, seconds);
+              row("adhesive force", metric, c.adhesive_force, radii[i], st.force, st.force, s.tolerances.force, seconds);
+            }
+          catch (const std::exception &e)
+            {
+              rows.push_back(failed("adhesive state", "candidate", "FE", concise(e)));
+            }
+        }
+      if (c.critical_radius.empty() && c.critical_force.empty() && c.critical_depth.empty())
+        return;
+      const std::string under = c.critical_force_control ? " (force control)" : " (displacement control)";
+      const auto start = std::chrono::steady_clock::now();
+      try
+        {
+          const fem::AdhesiveCriticalState critical = model.critical_state(
+            dgamma, c.critical_force_control ? fem::AdhesionControl::force : fem::AdhesionControl::displacement,
+            s.load.a);
+          const double seconds = elapsed(start);
+          const fem::AdhesiveState &st = critical.state;
+          row("critical radius" + under, "relative", c.critical_radius, 0, st.radius, st.radius,
+              s.tolerances.contact_radius, seconds);
+          row("critical force" + under, "relative", c.critical_force, 0, st.force, st.force, s.tolerances.force,
+              seconds);
+          row("critical depth" + under, "relative", c.critical_depth, 0, st.depth, st.depth, s.tolerances.depth,
+              seconds);
+        }
+      catch (const std::exception &e)
+        {
+          rows.push_back(failed("critical state" + under, "candidate", "FE", concise(e)));
+        }
+    }
+
+    Medium scene_medium(const Scene &s)
+    {
+      const MaterialParameters &m = s.material;
+      return medium(GradedHalfSpace{m.E0, m.c0, m.k, m.nu});
+    }
+  } // namespace
+
+
+
+  SceneResult run_adhesive_candidate(const Scene &s, const fs::path &folder)
+  {
+    const CandidateParameters &c         = s.candidate;
+    const auto                 constants = candidate_constants(s);
+    const mdr::Profile         profile   = candidate_profile(s, constants);
+    const Medium               m         = scene_medium(s);
+    const double               dgamma = s.adhesion.work_of_adhesion, a = s.load.a;
+    SceneResult                result;
+
+    // d(a) and F_N(a) on the adhesive branch (both branches of the JKR curve: every a has its state, 9.46).
+    const std::vector<double> radii = spaced(c.range[0] * a, c.range[1] * a, c.points);
+    const auto branch = [&](const std::string &quantity, const std::string &expression, const bool force) {
+      if (expression.empty())
+        return;
+      const auto g = parse_candidate_expression<1>(quantity, "a", expression, constants);
+      Curve curve{quantity, "a [m]", force ? "[N]" : "[m]", radii,
+                  [&, g](const std::size_t i) { return g->value(dealii::Point<1>(radii[i])); },
+                  [&](const std::size_t i) {
+                    const mdr::Foundation w1d = mdr::indentation(profile, m, radii[i], dgamma);
+                    return force ? mdr::force(w1d, m) : mdr::depth(w1d);
+                  },
+                  true};
+      add_note(result, report_curve(curve, c.tolerance, s.outputs.plots, folder, result.rows));
+    };
+    branch("adhesive depth", c.adhesive_depth, false);
+    branch("adhesive force", c.adhesive_force, true);
+
+    // p(r, a) of the adhesive state at Load/a, relative to the largest |p| of the radii asked (it is tensile at the
+    // edge, where it is singular).
+    if (!c.adhesive_pressure.empty() && !s.outputs.pressure_radii.empty())
+      {
+        const auto g = parse_candidate_expression<2>("adhesive pressure", "r,a", c.adhesive_pressure, constants);
+        const std::vector<double> &x   = s.outputs.pressure_radii;
+        const mdr::Foundation      w1d = mdr::indentation(profile, m, a, dgamma);
+        Curve curve{"adhesive pressure", "r / a", "[Pa]", x,
+                    [&, g](const std::size_t i) { return g->value(dealii::Point<2>(x[i] * a, a)); },
+                    [&](const std::size_t i) { return mdr::pressure(w1d, m, x[i] * a); }, true};
+        add_note(result, report_curve(curve, c.tolerance, s.outputs.plots, folder, result.rows));
+      }
+
+    // The critical state by the MDR's own search of the minimum of F_N(a) or d(a).
+    if (!(c.critical_radius.empty() && c.critical_force.empty() && c.critical_depth.empty()))
+      {
+        const Control control = c.critical_force_control ? Control::force : Control::displacement;
+        const std::string under = c.critical_force_control ? " (force control)" : " (displacement control)";
+        std::optional<mdr::CriticalState> state;
+        std::string                       why;
+        try
+          {
+            state = mdr::critical_state(profile, m, dgamma, control);
+          }
+        catch (const std::exception &e)
+          {
+            why = concise(e);
+          }
+        const auto critical = [&](const std::string &name, const std::string &expression, double mdr::CriticalState::*member) {
+          if (expression.empty())
+            return;
+          if (!state)
+            {
+              result.rows.push_back(failed(name + under, "candidate", "numerical MDR", why));
+              return;
+            }
+          scalar_row(name + under, expression, constants, [&] { return (*state).*member; }, c.tolerance, result.rows);
+        };
+        critical("critical radius", c.critical_radius, &mdr::CriticalState::radius);
+        critical("critical force", c.critical_force, &mdr::CriticalState::force);
+        critical("critical depth", c.critical_depth, &mdr::CriticalState::depth);
+      }
+    if (s.references.fem)
+      adhesive_fe_rows(s, profile, radii, constants, result.rows);
+    return result;
+  }
+
+
+
+  SceneResult run_tangential_candidate(const Scene &s, const fs::path &folder)
+  {
+    const CandidateParameters &c         = s.candidate;
+    const auto                 constants = candidate_constants(s);
+    const mdr::Profile         profile   = candidate_profile(s, constants);
+    const Medium               m         = scene_medium(s);
+    const double               mu = s.tangential.friction_coefficient, a = s.load.a;
+    const bool                 plots = s.outputs.plots;
+    SceneResult                result;
+    const auto note = [&](const Curve &curve) {
+      add_note(result, report_curve(curve, c.tolerance, plots, folder, result.rows));
+    };
+
+    // K_T(a) = K_N(a) / alpha (9.78), K_N(a) = dF_N/dd, the flat punch's stiffness at radius a (9.11 with w1D = 1).
+    if (!c.tangential_stiffness.empty())
+      {
+        const std::vector<double> radii = spaced(c.range[0] * a, c.range[1] * a, c.points);
+        const auto g = parse_candidate_expression<1>("tangential stiffness", "a", c.tangential_stiffness, constants);
+        note(Curve{"tangential stiffness", "a [m]", "[N/m]", radii,
+                   [&, g](const std::size_t i) { return g->value(dealii::Point<1>(radii[i])); },
+                   [&](const std::size_t i) { return mdr::force(mdr::flat(radii[i], 1.), m) / m.alpha(); }});
+      }
+
+    const mdr::PartialSlip slip(profile, m, mu, a);
+    const double           sliding = mu * slip.normal_force(a); // mu F_N(a): gross slip
+    const std::vector<double> f = fractions(c.points);
+    const auto of_c = [&](const std::string &quantity, const std::string &expression, const std::string &unit,
+                          const std::function<double(double)> &reference) {
+      if (expression.empty())
+        return;
+      const auto g = parse_candidate_expression<2>(quantity, "c,a", expression, constants);
+      note(Curve{quantity, "c / a", unit, f,
+                 [&, g](const std::size_t i) { return g->value(dealii::Point<2>(f[i] * a, a)); },
+                 [&](const std::size_t i) { return reference(f[i] * a); }});
+    };
+    of_c("tangential force", c.tangential_force, "[N]", [&](const double cc) { return slip.tangential_force(cc); });
+    of_c("tangential displacement", c.tangential_displacement, "[m]",
+         [&](const double cc) { return slip.tangential_displacement(cc); });
+
+    const auto of_force = [&](const std::string &quantity, const std::string &expression, const std::string &unit,
+                              const std::string &variable, const std::function<double(double)> &reference) {
+      if (expression.empty())
+        return;
+      const auto g = parse_candidate_expression<2>(quantity, variable + ",a", expression, constants);
+      note(Curve{quantity, variable + " / (mu F_N)", unit, f,
+                 [&, g](const std::size_t i) { return g->value(dealii::Point<2>(f[i] * sliding, a)); },
+                 [&](const std::size_t i) { return reference(f[i] * sliding); }});
+    };
+    of_force("stick radius", c.stick_radius, "[m]", "Fx", [&](const double F) { return slip.stick_radius(F); });
+    of_force("dissipated energy", c.dissipated_energy, "[J]", "FA",
+             [&](const double F) { return slip.dissipated_energy(F); });
+
+    // The branches of the loop between +-FA: u0 against F_x from FA down to -FA (unloading) and back (reloading).
+    const double FA = s.tangential.amplitude * sliding;
+    const std::vector<double> forces = spaced(-1., 1., c.points);
+    const auto loop = [&](const std::string &quantity, const std::string &expression, const Branch branch) {
+      if (expression.empty())
+        return;
+      const auto g = parse_candidate_expression<3>(quantity, "Fx,FA,a", expression, constants);
+      note(Curve{quantity, "Fx / FA", "[m]", forces,
+                 [&, g](const std::size_t i) { return g->value(dealii::Point<3>(forces[i] * FA, FA, a)); },
+                 [&](const std::size_t i) { return slip.tangential_displacement(FA, branch, forces[i] * FA); },
+                 true});
+    };
+    loop("unloading displacement", c.unloading_displacement, Branch::unloading);
+    loop("reloading displacement", c.reloading_displacement, Branch::reloading);
+    return result;
+  }
+} // namespace gradcontact::cases

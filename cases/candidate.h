@@ -1,0 +1,55 @@
+// gradcontact/cases: a user's candidate closed forms (the Candidate section of a scene), the expressions they are
+// written in, and the adhesive and tangential families.
+//
+// A candidate of the normal family (d(a), F(a), p(r, a), w(r, a) of non-adhesive contact) is run by fe_scene.h. The
+// adhesive family (JKR: d(a) and F_N(a) on the adhesive branch, p(r, a), the critical state) and the tangential
+// family (Ciavarella-Jaeger: K_T(a), F_x(c, a), u0(c, a), c(F_x, a), the dissipated energy W(F_A, a), u0 on the
+// unloading and reloading branches) are checked here against the numerical MDR of the same profile, over a range
+// of the varied quantity: contact radii, stick radii, forces, amplitudes. The references are the MDR engine's own
+// (analytic/mdr.h: the adhesive foundation w1D(a) = -Delta_l(a) of 9.46 and its critical state by a search of the
+// minimum, not 9.48; analytic/mdr_contact.h: PartialSlip), never the chapter's closed forms.
+//
+// Every curve gets a table (candidate_<quantity>.csv: x, candidate, MDR, deviation), a plot of candidate and MDR
+// against the varied quantity, and a row per point; the largest deviation and where it occurs go into the scene's
+// description.
+#ifndef GRADCONTACT_CASES_CANDIDATE_H
+#define GRADCONTACT_CASES_CANDIDATE_H
+
+#include "report.h"
+#include "scene.h"
+
+#include <analytic/mdr.h>
+
+#include <deal.II/base/function_parser.h>
+
+#include <filesystem>
+#include <map>
+#include <memory>
+#include <string>
+
+namespace gradcontact::cases
+{
+  /// The names a candidate's expressions may use: E0, c0, k, nu, pi; the chapter's coefficients of the material,
+  /// h_N (9.5), h_T (9.79), beta, C, cN0 = c_N0 (9.4), cT0 = c_T0 and alpha = cN0 / cT0 (9.78); dgamma
+  /// (Adhesion/work of adhesion) and mu (Tangential/friction coefficient); then Candidate/constants, which may
+  /// override them.
+  std::map<std::string, double> candidate_constants(const Scene &scene);
+
+  /// An expression of `variables` (muparser through deal.II's FunctionParser, dim = their number), evaluated once
+  /// at 0.5 to catch the errors muparser reports only then. std::invalid_argument naming Candidate/`entry`.
+  template <int dim>
+  std::shared_ptr<dealii::FunctionParser<dim>> parse_candidate_expression(const std::string &entry,
+                                                                          const std::string &variables,
+                                                                          const std::string &expression,
+                                                                          const std::map<std::string, double> &constants);
+
+  /// Candidate/profile for the MDR: f, and f' and f'' from Candidate/profile slope and curvature, or fourth-order
+  /// central differences of f where they are not given (f'' then stays empty).
+  mdr::Profile candidate_profile(const Scene &scene, const std::map<std::string, double> &constants);
+
+  /// Each runs a candidate scene of its family and writes its tables and plots into `folder`.
+  SceneResult run_adhesive_candidate(const Scene &scene, const std::filesystem::path &folder);
+  SceneResult run_tangential_candidate(const Scene &scene, const std::filesystem::path &folder);
+} // namespace gradcontact::cases
+
+#endif
