@@ -3,6 +3,7 @@
 #include "fe_model.h"
 
 #include <fem/adhesion.h>
+#include <fem/fourier_mode1_solver.h>
 
 #include <analytic/material.h>
 #include <analytic/mdr_contact.h>
@@ -324,6 +325,69 @@ namespace gradcontact::cases
         }
     }
 
+    /// The tangential family against the Fourier mode-1 FE model (fem/fourier_mode1_solver.h) at Load/a, the
+    /// scene's mesh at its finest refinement, refined toward the stick radii: K_T from the tangential flat punch, and
+    /// at three stick radii the FE under the theory's traction tau = mu [p(r; a) - p(r; c)] (9.77, p from the
+    /// numerical MDR): u0 as the mean u_x over the stick zone (the FE's own), F_x as the traction's integral (the
+    /// theory's load, integrated on the FE's surface). Tolerances/force and displacement.
+    void tangential_fe_rows(const Scene &s, const mdr::PartialSlip &slip, const std::vector<double> &fractions_c,
+                            const std::map<std::string, double> &constants, std::vector<Row> &rows)
+    {
+      const CandidateParameters &c = s.candidate;
+      const double               a = s.load.a;
+      std::vector<double>        stick;
+      for (const std::size_t i : {std::size_t(0), fractions_c.size() / 2, fractions_c.size() - 1})
+        stick.push_back(fractions_c[i] * a);
+      const bool of_c = !c.tangential_force.empty() || !c.tangential_displacement.empty();
+      if (c.tangential_stiffness.empty() && !of_c)
+        return;
+      const auto start = std::chrono::steady_clock::now();
+      const auto row   = [&](const std::string &quantity, const std::string &metric, const double value,
+                           const double fe_value, const double tolerance, const unsigned int dofs) {
+        rows.push_back(compare(quantity, metric, "candidate", "FE (mode 1)", fe_value, value, fe_value, tolerance, dofs,
+                               elapsed(start)));
+      };
+      try
+        {
+          const fem::Material material = fe_material(s);
+          fem::Settings       settings = fe_settings(s, material, a, finest_refinement(s));
+          condense_far_field(s, material, settings);
+          fem::SurfaceRefinement refinement;
+          refinement.radii  = stick;
+          refinement.levels = s.tangential.stick_levels;
+          fem::FourierMode1Solver solver(material, settings.mesh, settings.discretization, refinement);
+          if (!c.tangential_stiffness.empty())
+            {
+              const fem::TangentialResult r = solver.run(fem::TangentialLoad::flat_punch(1e-3 * a));
+              const double value = parse_candidate_expression<1>("tangential stiffness", "a", c.tangential_stiffness,
+                                                                 constants)->value(dealii::Point<1>(a));
+              row("tangential stiffness", "a [m] = " + format(a) + ", relative", value, r.stiffness,
+                  s.tolerances.force, r.n_dofs);
+            }
+          for (const double cc : of_c ? stick : std::vector<double>{})
+            {
+              // tau(r) = mu [p(r; a) - p(r; c)] as PartialSlip::traction forms it: one integral over [c, a] (9.12).
+              const fem::TangentialResult r = solver.run(fem::TangentialLoad::profile(
+                [&slip, cc](const double rr) { return slip.traction(cc, rr); }, a, cc, {cc}));
+              const std::string metric = "c / a = " + format(cc / a) + ", relative";
+              const dealii::Point<2> at(cc, a);
+              if (!c.tangential_force.empty())
+                row("tangential force", metric,
+                    parse_candidate_expression<2>("tangential force", "c,a", c.tangential_force, constants)->value(at),
+                    r.force, s.tolerances.force, r.n_dofs);
+              if (!c.tangential_displacement.empty())
+                row("tangential displacement", metric,
+                    parse_candidate_expression<2>("tangential displacement", "c,a", c.tangential_displacement,
+                                                  constants)->value(at),
+                    r.displacement, s.tolerances.displacement, r.n_dofs);
+            }
+        }
+      catch (const std::exception &e)
+        {
+          rows.push_back(failed("tangential FE", "candidate", "FE (mode 1)", concise(e)));
+        }
+    }
+
     Medium scene_medium(const Scene &s)
     {
       const MaterialParameters &m = s.material;
@@ -475,6 +539,8 @@ namespace gradcontact::cases
     };
     loop("unloading displacement", c.unloading_displacement, Branch::unloading);
     loop("reloading displacement", c.reloading_displacement, Branch::reloading);
+    if (s.references.fem)
+      tangential_fe_rows(s, slip, f, constants, result.rows);
     return result;
   }
 } // namespace gradcontact::cases

@@ -7,7 +7,10 @@
 // unloading and reloading branches) are checked here against the numerical MDR of the same profile, over a range
 // of the varied quantity: contact radii, stick radii, forces, amplitudes. The references are the MDR engine's own
 // (analytic/mdr.h: the adhesive foundation w1D(a) = -Delta_l(a) of 9.46 and its critical state by a search of the
-// minimum, not 9.48; analytic/mdr_contact.h: PartialSlip), never the chapter's closed forms.
+// minimum, not 9.48; analytic/mdr_contact.h: PartialSlip), never the chapter's closed forms. With References/fem
+// the same candidates meet the FE models at a few points, with Tolerances/*: the adhesive FE of fem/adhesion.h
+// (its own energy release rate and critical search, the profile a custom indenter) and the Fourier mode-1 FE of
+// fem/fourier_mode1_solver.h (K_T of the tangential flat punch; u0 and F_x under the theory's traction).
 //
 // Every curve gets a table (candidate_<quantity>.csv: x, candidate, MDR, deviation), a plot of candidate and MDR
 // against the varied quantity, and a row per point; the largest deviation and where it occurs go into the scene's
