@@ -265,6 +265,11 @@ namespace gradcontact::fem
   Estimated LadderRecord::estimate(const std::size_t i) const
   {
     Estimated e = estimate(history.at(i), last.at(i).scale);
+    // Two levels of the uniform ladder show one change and no ratio: the tail rests on the assumed ratio alone. A
+    // safety factor covers a slower approach (Roache's grid convergence index takes 3 for two grids, 1.25 for
+    // three; the assumed ratio here is already the stiff surface's slowest edge rate, 2^-(1 + s)).
+    if (ladder == Ladder::uniform && history[i].size() == 2)
+      e.error *= two_level_safety;
     e.error += truncation * std::pow(std::max(1.0, last[i].reach), 1 + deep_exponent) * e.scale;
     return e;
   }

@@ -19,11 +19,11 @@
 // Science and Engineering, 1998, ch. 5):
 //   |q_n - q_inf| = |d_n| rho / (1 - rho).
 // With two levels rho is the assumed ratio (of the ladder and the degree, and 2^-(1 + s) on a stiff surface
-// E ~ z^s, s < 0); from three on it is observed, |d_n| / |d_{n-1}|, kept within
-// [assumed, ratio_limit], at least oscillation_ratio when the two changes have opposite signs, and applied to
-// max(|d_n|, assumed^2 |d_{n-1}|): an accidental near-zero d_n (two levels on opposite sides of the limit) does not
-// pass for convergence. The hp ladder's estimates always take three levels (its first two are cheap). The ladder
-// stops at the first level whose estimates are
+// E ~ z^s, s < 0), and the uniform ladder's estimate is doubled (two_level_safety); from three on it is observed,
+// |d_n| / |d_{n-1}|, kept within [assumed, ratio_limit], at least oscillation_ratio when the two changes have
+// opposite signs, and applied to max(|d_n|, assumed^2 |d_{n-1}|): an accidental near-zero d_n (two levels on
+// opposite sides of the limit) does not pass for convergence. The hp ladder's estimates always take three levels
+// (its first two are cheap). The ladder stops at the first level whose estimates are
 // all within the tolerance, or refuses when the next level would exceed the DoF budget, or when the quantities stop
 // converging (observed ratio at ratio_limit or above), or when the levels the observed ratios still need would exceed
 // the budget (so that a refusal does not cost the largest solves), or when a level's solve is unreliable.
@@ -139,6 +139,10 @@ namespace gradcontact::fem
   /// The hp ladder's accident factor (estimate), smaller than its floor squared: a twentyfold fall from one level to
   /// the next is real there.
   inline constexpr double hp_accident = 0.04;
+
+  /// The factor on an estimate of the uniform ladder from two levels (ratio assumed, not observed; Roache, Verification
+  /// and Validation in Computational Science and Engineering, 1998, ch. 5: the grid convergence index's safety factor).
+  inline constexpr double two_level_safety = 2;
 
   /// Observed ratios above this are no convergence: the estimate would be 4 |d_n| or more.
   inline constexpr double ratio_limit = 0.8;
