@@ -330,15 +330,16 @@ namespace gradcontact::cases
     /// at three stick radii the FE under the theory's traction tau = mu [p(r; a) - p(r; c)] (9.77, p from the
     /// numerical MDR): u0 as the mean u_x over the stick zone (the FE's own), F_x as the traction's integral (the
     /// theory's load, integrated on the FE's surface). Tolerances/force and displacement.
-    void tangential_fe_rows(const Scene &s, const mdr::PartialSlip &slip, const std::vector<double> &fractions_c,
+    void tangential_fe_rows(const Scene &s, const mdr::PartialSlip *slip, const std::vector<double> &fractions_c,
                             const std::map<std::string, double> &constants, std::vector<Row> &rows)
     {
       const CandidateParameters &c = s.candidate;
       const double               a = s.load.a;
       std::vector<double>        stick;
-      for (const std::size_t i : {std::size_t(0), fractions_c.size() / 2, fractions_c.size() - 1})
-        stick.push_back(fractions_c[i] * a);
-      const bool of_c = !c.tangential_force.empty() || !c.tangential_displacement.empty();
+      if (slip && !fractions_c.empty())
+        for (const std::size_t i : {std::size_t(0), fractions_c.size() / 2, fractions_c.size() - 1})
+          stick.push_back(fractions_c[i] * a);
+      const bool of_c = slip && (!c.tangential_force.empty() || !c.tangential_displacement.empty());
       if (c.tangential_stiffness.empty() && !of_c)
         return;
       const auto start = std::chrono::steady_clock::now();
@@ -354,7 +355,7 @@ namespace gradcontact::cases
           condense_far_field(s, material, settings);
           fem::SurfaceRefinement refinement;
           refinement.radii  = stick;
-          refinement.levels = s.tangential.stick_levels;
+          refinement.levels = stick.empty() ? 0 : s.tangential.stick_levels;
           fem::FourierMode1Solver solver(material, settings.mesh, settings.discretization, refinement);
           if (!c.tangential_stiffness.empty())
             {
@@ -368,7 +369,7 @@ namespace gradcontact::cases
             {
               // tau(r) = mu [p(r; a) - p(r; c)] as PartialSlip::traction forms it: one integral over [c, a] (9.12).
               const fem::TangentialResult r = solver.run(fem::TangentialLoad::profile(
-                [&slip, cc](const double rr) { return slip.traction(cc, rr); }, a, cc, {cc}));
+                [slip, cc](const double rr) { return slip->traction(cc, rr); }, a, cc, {cc}));
               const std::string metric = "c / a = " + format(cc / a) + ", relative";
               const dealii::Point<2> at(cc, a);
               if (!c.tangential_force.empty())
@@ -405,9 +406,17 @@ namespace gradcontact::cases
     const Medium               m         = scene_medium(s);
     const double               dgamma = s.adhesion.work_of_adhesion, a = s.load.a;
     SceneResult                result;
+    const std::vector<double>  radii = spaced(c.range[0] * a, c.range[1] * a, c.points);
+    if (s.material.modulus != MaterialParameters::Modulus::power_law)
+      {
+        result.description = "a grading outside the chapter: against the FE only";
+        adhesive_fe_rows(s, profile, radii, constants, result.rows);
+        return result;
+      }
+
+    result.description = s.references.fem ? "against the numerical MDR and the FE" : "against the numerical MDR";
 
     // d(a) and F_N(a) on the adhesive branch (both branches of the JKR curve: every a has its state, 9.46).
-    const std::vector<double> radii = spaced(c.range[0] * a, c.range[1] * a, c.points);
     const auto branch = [&](const std::string &quantity, const std::string &expression, const bool force) {
       if (expression.empty())
         return;
@@ -482,6 +491,13 @@ namespace gradcontact::cases
     const double               mu = s.tangential.friction_coefficient, a = s.load.a;
     const bool                 plots = s.outputs.plots;
     SceneResult                result;
+    if (s.material.modulus != MaterialParameters::Modulus::power_law)
+      {
+        result.description = "a grading outside the chapter: its stiffness against the FE only";
+        tangential_fe_rows(s, nullptr, {}, constants, result.rows);
+        return result;
+      }
+    result.description = s.references.fem ? "against the numerical MDR and the FE" : "against the numerical MDR";
     const auto note = [&](const Curve &curve) {
       add_note(result, report_curve(curve, c.tolerance, plots, folder, result.rows));
     };
@@ -540,7 +556,7 @@ namespace gradcontact::cases
     loop("unloading displacement", c.unloading_displacement, Branch::unloading);
     loop("reloading displacement", c.reloading_displacement, Branch::reloading);
     if (s.references.fem)
-      tangential_fe_rows(s, slip, f, constants, result.rows);
+      tangential_fe_rows(s, &slip, f, constants, result.rows);
     return result;
   }
 } // namespace gradcontact::cases

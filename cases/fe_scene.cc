@@ -481,8 +481,7 @@ namespace gradcontact::cases
         const bool  adhesive = s.candidate.family() == CandidateParameters::Family::adhesive;
         SceneResult family   = adhesive ? run_adhesive_candidate(s, folder) : run_tangential_candidate(s, folder);
         r.rows               = std::move(family.rows);
-        r.description += (r.description.empty() ? "" : " ") + std::string("(against the numerical MDR; ") +
-                         family.description + ")";
+        r.description += (r.description.empty() ? "" : " ") + std::string("(") + family.description + ")";
       }
     else
       r.rows = run_candidate(s).rows;

@@ -731,9 +731,25 @@ namespace gradcontact::cases
                                     "scene of their own");
       if (s.load.contact == LoadParameters::Contact::unilateral)
         throw std::invalid_argument(where + family + " candidate needs Load/contact = disc");
+      // A grading the chapter does not cover is checked against the FE only: the adhesive family entirely, the
+      // tangential one by its stiffness (the partial-slip FE is loaded with the MDR's traction of a power law).
       if (s.material.modulus != MaterialParameters::Modulus::power_law)
-        throw std::invalid_argument(where + family + " candidate needs Material/modulus = power law (its reference "
-                                    "is the numerical MDR of the graded half-space)");
+        {
+          if (!s.references.fem)
+            throw std::invalid_argument(where + family + " candidate with Material/modulus other than power law is "
+                                        "checked against the FE only (the numerical MDR needs the power law): "
+                                        "References/fem must be true");
+          if (!adhesive && !(c.tangential_force.empty() && c.tangential_displacement.empty() &&
+                             c.stick_radius.empty() && c.dissipated_energy.empty() &&
+                             c.unloading_displacement.empty() && c.reloading_displacement.empty()))
+            throw std::invalid_argument(where + "a tangential candidate with Material/modulus other than power law: "
+                                        "only Candidate/tangential stiffness can be checked (against the FE; partial "
+                                        "slip needs the MDR's traction of the power law)");
+          if (adhesive && !c.adhesive_pressure.empty())
+            throw std::invalid_argument(where + "an adhesive candidate with Material/modulus other than power law: "
+                                        "Candidate/adhesive pressure is checked against the numerical MDR only, "
+                                        "which needs the power law");
+        }
       if (!(s.load.a > 0.))
         throw std::invalid_argument(where + "Load/a = " + format(s.load.a) + " must be in (0, inf) for " + family +
                                     " candidate");

@@ -80,4 +80,14 @@ TEST_CASE("An adhesive or tangential candidate shall be a candidate scene, its f
   REQUIRE_THROWS_WITH(scene_with({"Load/a=1e-4", "Adhesion/work of adhesion=0.05", profile,
                                   "Candidate/adhesive pressure=1"}),
                       Contains("Candidate/profile curvature: needed for an adhesive pressure candidate"));
+
+  // A grading outside the chapter: against the FE only, and the tangential family by its stiffness alone.
+  const std::string shifted = "Material/modulus=shifted power law", depth = "Material/surface depth=1e-5";
+  CHECK(scene_with({"Load/a=1e-4", shifted, depth, profile, "Candidate/tangential stiffness=1"}).kind ==
+        SceneKind::candidate);
+  REQUIRE_THROWS_WITH(scene_with({"Load/a=1e-4", shifted, depth, profile, "Candidate/tangential force=1"}),
+                      Contains("only Candidate/tangential stiffness can be checked"));
+  REQUIRE_THROWS_WITH(scene_with({"Load/a=1e-4", shifted, depth, "References/fem=false", profile,
+                                  "Candidate/tangential stiffness=1"}),
+                      Contains("checked against the FE only") && Contains("References/fem must be true"));
 }
