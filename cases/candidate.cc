@@ -136,16 +136,22 @@ namespace gradcontact::cases
       bool relative_to_largest = false;
     };
 
+    /// FE values of the candidate's quantities at points of their curves: quantity -> x -> value.
+    using FeValues = std::map<std::string, std::map<double, double>>;
+
     double elapsed(const std::chrono::steady_clock::time_point start)
     {
       return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     }
 
-    /// The rows of a curve (one per point), its table and plot in `folder`, and the sentence naming its largest
-    /// deviation (empty when no point was evaluated).
+    /// The rows of a curve (one per point), its table and plot in `folder` (with the FE values `fe` of its quantity
+    /// where there are any), and the sentence naming its largest deviation (empty when no point was evaluated).
     std::string report_curve(const Curve &curve, const double tolerance, const bool plots, const fs::path &folder,
-                             std::vector<Row> &rows)
+                             const FeValues &fe_values, std::vector<Row> &rows)
     {
+      static const std::map<double, double> none;
+      const auto found = fe_values.find(curve.quantity);
+      const std::map<double, double> &fe = found == fe_values.end() ? none : found->second;
       const std::size_t n = curve.x.size();
       std::vector<double> candidate(n, std::numeric_limits<double>::quiet_NaN()), reference(candidate);
       std::vector<double> seconds(n, 0.);
@@ -169,7 +175,7 @@ namespace gradcontact::cases
 
       const std::string stem = "candidate_" + dealii::Utilities::replace_in_string(curve.quantity, " ", "_");
       std::ofstream table(folder / (stem + ".csv"));
-      table << csv_quote(curve.variable) << ",candidate,numerical MDR,deviation\n";
+      table << csv_quote(curve.variable) << ",candidate,numerical MDR,deviation,FE\n";
       table.precision(16);
       double worst = -1., worst_x = 0.;
       for (std::size_t i = 0; i < n; ++i)
@@ -187,7 +193,10 @@ namespace gradcontact::cases
           rows.push_back(compare(curve.quantity, metric, "candidate", "numerical MDR", reference[i], candidate[i],
                                  scale, tolerance, 0, seconds[i]));
           const double deviation = rows.back().rel_error;
-          table << curve.x[i] << ',' << candidate[i] << ',' << reference[i] << ',' << deviation << '\n';
+          table << curve.x[i] << ',' << candidate[i] << ',' << reference[i] << ',' << deviation << ',';
+          if (const auto at = fe.find(curve.x[i]); at != fe.end())
+            table << at->second;
+          table << '\n';
           if (!(deviation <= worst))
             worst = deviation, worst_x = curve.x[i];
         }
@@ -195,8 +204,17 @@ namespace gradcontact::cases
         {
           Series mdr_series{"numerical MDR", curve.x, reference, false, true};
           Series candidate_series{"candidate", curve.x, candidate, true, false};
-          write_plot(folder, stem, "Candidate " + curve.quantity + " against the numerical MDR", curve.variable,
-                     curve.quantity + " " + curve.unit, {mdr_series, candidate_series});
+          std::vector<Series> series{mdr_series, candidate_series};
+          if (!fe.empty())
+            {
+              Series fe_series{"FE", {}, {}, true, false};
+              for (const auto &[x, y] : fe)
+                fe_series.x.push_back(x), fe_series.y.push_back(y);
+              series.push_back(fe_series);
+            }
+          write_plot(folder, stem,
+                     "Candidate " + curve.quantity + " against the numerical MDR" + (fe.empty() ? "" : " and the FE"),
+                     curve.variable, curve.quantity + " " + curve.unit, series);
         }
       if (worst < 0.)
         return "";
@@ -256,7 +274,7 @@ namespace gradcontact::cases
     /// radius): d(a) and F(a) at the ends and the middle of the range, and the critical state. Each row against the
     /// FE takes Tolerances/*: it includes the FE's own error.
     void adhesive_fe_rows(const Scene &s, const mdr::Profile &profile, const std::vector<double> &radii,
-                          const std::map<std::string, double> &constants, std::vector<Row> &rows)
+                          const std::map<std::string, double> &constants, std::vector<Row> &rows, FeValues &fe)
     {
       const CandidateParameters &c        = s.candidate;
       const fem::Material        material = fe_material(s);
@@ -295,6 +313,8 @@ namespace gradcontact::cases
               const std::string metric = "a [m] = " + format(radii[i]) + ", relative";
               row("adhesive depth", metric, c.adhesive_depth, radii[i], st.depth, st.depth, s.tolerances.depth, seconds);
               row("adhesive force", metric, c.adhesive_force, radii[i], st.force, st.force, s.tolerances.force, seconds);
+              fe["adhesive depth"][radii[i]] = st.depth;
+              fe["adhesive force"][radii[i]] = st.force;
             }
           catch (const std::exception &e)
             {
@@ -331,14 +351,18 @@ namespace gradcontact::cases
     /// numerical MDR): u0 as the mean u_x over the stick zone (the FE's own), F_x as the traction's integral (the
     /// theory's load, integrated on the FE's surface). Tolerances/force and displacement.
     void tangential_fe_rows(const Scene &s, const mdr::PartialSlip *slip, const std::vector<double> &fractions_c,
-                            const std::map<std::string, double> &constants, std::vector<Row> &rows)
+                            const std::map<std::string, double> &constants, std::vector<Row> &rows, FeValues &fe)
     {
       const CandidateParameters &c = s.candidate;
       const double               a = s.load.a;
       std::vector<double>        stick;
+      std::map<double, double>   fraction_of; ///< the curve's c / a of a stick radius (its x, not c / a rounded)
       if (slip && !fractions_c.empty())
         for (const std::size_t i : {std::size_t(0), fractions_c.size() / 2, fractions_c.size() - 1})
-          stick.push_back(fractions_c[i] * a);
+          {
+            stick.push_back(fractions_c[i] * a);
+            fraction_of[stick.back()] = fractions_c[i];
+          }
       const bool of_c = slip && (!c.tangential_force.empty() || !c.tangential_displacement.empty());
       if (c.tangential_stiffness.empty() && !of_c)
         return;
@@ -364,6 +388,7 @@ namespace gradcontact::cases
                                                                  constants)->value(dealii::Point<1>(a));
               row("tangential stiffness", "a [m] = " + format(a) + ", relative", value, r.stiffness,
                   s.tolerances.force, r.n_dofs);
+              fe["tangential stiffness"][a] = r.stiffness;
             }
           for (const double cc : of_c ? stick : std::vector<double>{})
             {
@@ -381,6 +406,8 @@ namespace gradcontact::cases
                     parse_candidate_expression<2>("tangential displacement", "c,a", c.tangential_displacement,
                                                   constants)->value(at),
                     r.displacement, s.tolerances.displacement, r.n_dofs);
+              fe["tangential force"][fraction_of.at(cc)]        = r.force;
+              fe["tangential displacement"][fraction_of.at(cc)] = r.displacement;
             }
         }
       catch (const std::exception &e)
@@ -407,13 +434,17 @@ namespace gradcontact::cases
     const double               dgamma = s.adhesion.work_of_adhesion, a = s.load.a;
     SceneResult                result;
     const std::vector<double>  radii = spaced(c.range[0] * a, c.range[1] * a, c.points);
+    FeValues fe;
     if (s.material.modulus != MaterialParameters::Modulus::power_law)
       {
         result.description = "a grading outside the chapter: against the FE only";
-        adhesive_fe_rows(s, profile, radii, constants, result.rows);
+        adhesive_fe_rows(s, profile, radii, constants, result.rows, fe);
         return result;
       }
-
+    // The FE first, so that the curves' plots carry its points; its rows follow the MDR's.
+    std::vector<Row> fe_rows;
+    if (s.references.fem)
+      adhesive_fe_rows(s, profile, radii, constants, fe_rows, fe);
     result.description = s.references.fem ? "against the numerical MDR and the FE" : "against the numerical MDR";
 
     // d(a) and F_N(a) on the adhesive branch (both branches of the JKR curve: every a has its state, 9.46).
@@ -428,7 +459,7 @@ namespace gradcontact::cases
                     return force ? mdr::force(w1d, m) : mdr::depth(w1d);
                   },
                   true};
-      add_note(result, report_curve(curve, c.tolerance, s.outputs.plots, folder, result.rows));
+      add_note(result, report_curve(curve, c.tolerance, s.outputs.plots, folder, fe, result.rows));
     };
     branch("adhesive depth", c.adhesive_depth, false);
     branch("adhesive force", c.adhesive_force, true);
@@ -443,7 +474,7 @@ namespace gradcontact::cases
         Curve curve{"adhesive pressure", "r / a", "[Pa]", x,
                     [&, g](const std::size_t i) { return g->value(dealii::Point<2>(x[i] * a, a)); },
                     [&](const std::size_t i) { return mdr::pressure(w1d, m, x[i] * a); }, true};
-        add_note(result, report_curve(curve, c.tolerance, s.outputs.plots, folder, result.rows));
+        add_note(result, report_curve(curve, c.tolerance, s.outputs.plots, folder, fe, result.rows));
       }
 
     // The critical state by the MDR's own search of the minimum of F_N(a) or d(a).
@@ -475,8 +506,7 @@ namespace gradcontact::cases
         critical("critical force", c.critical_force, &mdr::CriticalState::force);
         critical("critical depth", c.critical_depth, &mdr::CriticalState::depth);
       }
-    if (s.references.fem)
-      adhesive_fe_rows(s, profile, radii, constants, result.rows);
+    result.rows.insert(result.rows.end(), fe_rows.begin(), fe_rows.end());
     return result;
   }
 
@@ -491,15 +521,23 @@ namespace gradcontact::cases
     const double               mu = s.tangential.friction_coefficient, a = s.load.a;
     const bool                 plots = s.outputs.plots;
     SceneResult                result;
+    FeValues fe;
     if (s.material.modulus != MaterialParameters::Modulus::power_law)
       {
         result.description = "a grading outside the chapter: its stiffness against the FE only";
-        tangential_fe_rows(s, nullptr, {}, constants, result.rows);
+        tangential_fe_rows(s, nullptr, {}, constants, result.rows, fe);
         return result;
       }
+    const mdr::PartialSlip    slip(profile, m, mu, a);
+    const double              sliding = mu * slip.normal_force(a); // mu F_N(a): gross slip
+    const std::vector<double> f       = fractions(c.points);
+    // The FE first, so that the curves' plots carry its points; its rows follow the MDR's.
+    std::vector<Row> fe_rows;
+    if (s.references.fem)
+      tangential_fe_rows(s, &slip, f, constants, fe_rows, fe);
     result.description = s.references.fem ? "against the numerical MDR and the FE" : "against the numerical MDR";
     const auto note = [&](const Curve &curve) {
-      add_note(result, report_curve(curve, c.tolerance, plots, folder, result.rows));
+      add_note(result, report_curve(curve, c.tolerance, plots, folder, fe, result.rows));
     };
 
     // K_T(a) = K_N(a) / alpha (9.78), K_N(a) = dF_N/dd, the flat punch's stiffness at radius a (9.11 with w1D = 1).
@@ -512,9 +550,6 @@ namespace gradcontact::cases
                    [&](const std::size_t i) { return mdr::force(mdr::flat(radii[i], 1.), m) / m.alpha(); }});
       }
 
-    const mdr::PartialSlip slip(profile, m, mu, a);
-    const double           sliding = mu * slip.normal_force(a); // mu F_N(a): gross slip
-    const std::vector<double> f = fractions(c.points);
     const auto of_c = [&](const std::string &quantity, const std::string &expression, const std::string &unit,
                           const std::function<double(double)> &reference) {
       if (expression.empty())
@@ -555,8 +590,7 @@ namespace gradcontact::cases
     };
     loop("unloading displacement", c.unloading_displacement, Branch::unloading);
     loop("reloading displacement", c.reloading_displacement, Branch::reloading);
-    if (s.references.fem)
-      tangential_fe_rows(s, &slip, f, constants, result.rows);
+    result.rows.insert(result.rows.end(), fe_rows.begin(), fe_rows.end());
     return result;
   }
 } // namespace gradcontact::cases
