@@ -3,6 +3,7 @@
 #include "fe_model.h"
 
 #include <fem/adhesion.h>
+#include <fem/cohesive_zone.h>
 #include <fem/fourier_mode1_solver.h>
 
 #include <analytic/material.h>
@@ -345,6 +346,73 @@ namespace gradcontact::cases
         }
     }
 
+    /// Adhesion/law = Dugdale: the adhesive family against the cohesive-zone FE of fem/cohesive_zone.h (adhesion of
+    /// the finite range dgamma / sigma_0; no JKR assumption), at the three radii of adhesive_fe_rows and the critical
+    /// state: how far the candidate's JKR-type form is from that adhesive. Its rows say "(JKR idealisation)" and take
+    /// Tolerances/*: a deviation there measures the JKR assumption, not the candidate's algebra.
+    void dugdale_fe_rows(const Scene &s, const mdr::Profile &profile, const std::vector<double> &radii,
+                         const std::map<std::string, double> &constants, std::vector<Row> &rows)
+    {
+      const CandidateParameters &c        = s.candidate;
+      const fem::Material        material = fe_material(s);
+      const unsigned int         level    = finest_refinement(s);
+      fem::CohesiveContact model(material, fem::Profile::custom(profile.f, 2.),
+                                 fem::DugdaleLaw{s.adhesion.cohesive_strength, s.adhesion.work_of_adhesion},
+                                 [&s, material, level](const double a) {
+                                   fem::Settings st = fe_settings(s, material, a, level);
+                                   condense_far_field(s, material, st);
+                                   return st;
+                                 });
+      const std::string method = "FE (Dugdale)";
+      const auto row = [&](const std::string &quantity, const std::string &metric, const std::string &expression,
+                           const double x, const double fe_value, const double tolerance, const unsigned int dofs,
+                           const double seconds) {
+        if (expression.empty())
+          return;
+        const double value =
+          parse_candidate_expression<1>(quantity, "a", expression, constants)->value(dealii::Point<1>(x));
+        rows.push_back(compare(quantity, metric + " (JKR idealisation)", "candidate", method, fe_value, value,
+                               fe_value, tolerance, dofs, seconds));
+      };
+      for (const std::size_t i : {std::size_t(0), radii.size() / 2, radii.size() - 1})
+        {
+          if (c.adhesive_depth.empty() && c.adhesive_force.empty())
+            break;
+          try
+            {
+              const fem::CohesiveState &st = model.state(radii[i]);
+              const std::string metric = "a [m] = " + format(radii[i]) + ", relative";
+              row("adhesive depth", metric, c.adhesive_depth, radii[i], st.depth, s.tolerances.depth, st.n_dofs,
+                  st.seconds);
+              row("adhesive force", metric, c.adhesive_force, radii[i], st.force, s.tolerances.force, st.n_dofs,
+                  st.seconds);
+            }
+          catch (const std::exception &e)
+            {
+              rows.push_back(failed("adhesive state", "candidate", method, concise(e)));
+            }
+        }
+      if (c.critical_radius.empty() && c.critical_force.empty() && c.critical_depth.empty())
+        return;
+      const std::string under = c.critical_force_control ? " (force control)" : " (displacement control)";
+      try
+        {
+          const fem::CohesiveCriticalState critical = model.critical_state(
+            c.critical_force_control ? fem::AdhesionControl::force : fem::AdhesionControl::displacement, s.load.a);
+          const fem::CohesiveState &st = critical.state;
+          row("critical radius" + under, "relative", c.critical_radius, 0, st.radius, s.tolerances.contact_radius,
+              critical.max_dofs, critical.seconds);
+          row("critical force" + under, "relative", c.critical_force, 0, st.force, s.tolerances.force,
+              critical.max_dofs, critical.seconds);
+          row("critical depth" + under, "relative", c.critical_depth, 0, st.depth, s.tolerances.depth,
+              critical.max_dofs, critical.seconds);
+        }
+      catch (const std::exception &e)
+        {
+          rows.push_back(failed("critical state" + under, "candidate", method, concise(e)));
+        }
+    }
+
     /// The tangential family against the Fourier mode-1 FE model (fem/fourier_mode1_solver.h) at Load/a, the
     /// scene's mesh at its finest refinement, refined toward the stick radii: K_T from the tangential flat punch, and
     /// at three stick radii the FE under the theory's traction tau = mu [p(r; a) - p(r; c)] (9.77, p from the
@@ -439,6 +507,8 @@ namespace gradcontact::cases
       {
         result.description = "a grading outside the chapter: against the FE only";
         adhesive_fe_rows(s, profile, radii, constants, result.rows, fe);
+        if (s.adhesion.law == AdhesionParameters::Law::dugdale)
+          dugdale_fe_rows(s, profile, radii, constants, result.rows);
         return result;
       }
     // The FE first, so that the curves' plots carry its points; its rows follow the MDR's.
@@ -507,6 +577,8 @@ namespace gradcontact::cases
         critical("critical depth", c.critical_depth, &mdr::CriticalState::depth);
       }
     result.rows.insert(result.rows.end(), fe_rows.begin(), fe_rows.end());
+    if (s.references.fem && s.adhesion.law == AdhesionParameters::Law::dugdale)
+      dugdale_fe_rows(s, profile, radii, constants, result.rows);
     return result;
   }
 

@@ -764,9 +764,15 @@ namespace gradcontact::cases
           if (!(s.adhesion.work_of_adhesion > 0.))
             throw std::invalid_argument(where + "an adhesive candidate needs Adhesion/work of adhesion > 0 (it is " +
                                         format(s.adhesion.work_of_adhesion) + ")");
-          if (s.adhesion.law != AdhesionParameters::Law::jkr)
-            throw std::invalid_argument(where + "an adhesive candidate is checked against JKR (the numerical MDR): "
-                                        "Adhesion/law = JKR");
+          if (s.adhesion.law == AdhesionParameters::Law::lennard_jones)
+            throw std::invalid_argument(where + "an adhesive candidate takes Adhesion/law = JKR or Dugdale (the "
+                                        "Lennard-Jones FE runs in Tabor-parameter maps only)");
+          if (s.adhesion.law == AdhesionParameters::Law::dugdale &&
+              !(s.adhesion.cohesive_strength > 0. && s.adhesion.tabor_parameter == 0. && s.references.fem))
+            throw std::invalid_argument(where + "an adhesive candidate with Adhesion/law = Dugdale needs Adhesion/"
+                                        "cohesive strength > 0 (not the Tabor parameter, which is defined for the "
+                                        "chapter's profiles) and References/fem = true: its rows are the "
+                                        "cohesive-zone FE's");
           if (!c.adhesive_pressure.empty() && c.curvature.empty())
             throw std::invalid_argument("Candidate/profile curvature: needed for an adhesive pressure candidate "
                                         "(give f''(r))");

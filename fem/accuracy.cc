@@ -253,10 +253,13 @@ namespace gradcontact::fem
 
 
 
-  Estimated LadderRecord::estimate(const std::vector<double> &values, const double scale) const
+  Estimated LadderRecord::estimate(const std::vector<double> &values, const double scale, const bool local) const
   {
     if (ladder == Ladder::hp)
-      return fem::estimate(values, hp_assumed_ratio(surface_exponent), scale, hp_accident);
+      {
+        const double floor = hp_assumed_ratio(surface_exponent);
+        return fem::estimate(values, local ? std::max(floor, hp_local_floor) : floor, scale, hp_accident);
+      }
     return fem::estimate(values, assumed_ratio(first_degree, surface_exponent), scale);
   }
 
@@ -264,7 +267,7 @@ namespace gradcontact::fem
 
   Estimated LadderRecord::estimate(const std::size_t i) const
   {
-    Estimated e = estimate(history.at(i), last.at(i).scale);
+    Estimated e = estimate(history.at(i), last.at(i).scale, last.at(i).local);
     // Two levels of the uniform ladder show one change and no ratio: the tail rests on the assumed ratio alone. A
     // safety factor covers a slower approach (Roache's grid convergence index takes 3 for two grids, 1.25 for
     // three; the assumed ratio here is already the stiff surface's slowest edge rate, 2^-(1 + s)).

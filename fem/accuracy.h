@@ -139,6 +139,9 @@ namespace gradcontact::fem
   /// The hp ladder's accident factor (estimate), smaller than its floor squared: a twentyfold fall from one level to
   /// the next is real there.
   inline constexpr double hp_accident = 0.04;
+  /// The hp ladder's floor for a recovered pressure sample (LadderValue::local): the L2 recovery spreads the edge
+  /// singularity's error into the contact, and a sample's changes fall less regularly than an integral's.
+  inline constexpr double hp_local_floor = 0.5;
 
   /// The factor on an estimate of the uniform ladder from two levels (ratio assumed, not observed; Roache, Verification
   /// and Validation in Computational Science and Engineering, 1998, ch. 5: the grid convergence index's safety factor).
@@ -196,8 +199,8 @@ namespace gradcontact::fem
     /// truncation of a clamped far field, which no level reduces: (a / L)^(1 + s) relative, (r / L)^(1 + s) for w(r),
     /// s the exponent deep below.
     Estimated estimate(std::size_t i) const;
-    /// The estimate of values `values` of one quantity on this ladder.
-    Estimated estimate(const std::vector<double> &values, double scale) const;
+    /// The estimate of values `values` of one quantity on this ladder (`local`: a recovered pressure sample).
+    Estimated estimate(const std::vector<double> &values, double scale, bool local = false) const;
 
   private:
     Ladder                           ladder;

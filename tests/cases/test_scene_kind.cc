@@ -81,6 +81,13 @@ TEST_CASE("An adhesive or tangential candidate shall be a candidate scene, its f
                                   "Candidate/adhesive pressure=1"}),
                       Contains("Candidate/profile curvature: needed for an adhesive pressure candidate"));
 
+  REQUIRE_THROWS_WITH(scene_with({"Load/a=1e-4", "Adhesion/work of adhesion=0.05", "Adhesion/law=Dugdale", profile,
+                                  "Candidate/adhesive force=1"}),
+                      Contains("Adhesion/law = Dugdale needs Adhesion/cohesive strength > 0"));
+  CHECK(scene_with({"Load/a=1e-4", "Adhesion/work of adhesion=0.05", "Adhesion/law=Dugdale",
+                    "Adhesion/cohesive strength=1e6", profile, "Candidate/adhesive force=1"})
+          .kind == SceneKind::candidate);
+
   // A grading outside the chapter: against the FE only, and the tangential family by its stiffness alone.
   const std::string shifted = "Material/modulus=shifted power law", depth = "Material/surface depth=1e-5";
   CHECK(scene_with({"Load/a=1e-4", shifted, depth, profile, "Candidate/tangential stiffness=1"}).kind ==
