@@ -270,122 +270,56 @@ namespace gradcontact::cases
         result.description += (result.description.empty() ? "" : "; ") + note;
     }
 
-    /// The adhesive family against the FE model of fem/adhesion.h (JKR by the FE's own energy release rate and
-    /// critical search; the profile a rigid custom indenter, the scene's mesh at its finest refinement at every
-    /// radius): d(a) and F(a) at the ends and the middle of the range, and the critical state. Each row against the
-    /// FE takes Tolerances/*: it includes the FE's own error.
-    void adhesive_fe_rows(const Scene &s, const mdr::Profile &profile, const std::vector<double> &radii,
-                          const std::map<std::string, double> &constants, std::vector<Row> &rows, FeValues &fe)
+    /// An adhesive FE state as the family's rows compare it, and what it cost.
+    struct FeAdhesiveState
     {
-      const CandidateParameters &c        = s.candidate;
-      const fem::Material        material = fe_material(s);
-      const unsigned int         level    = finest_refinement(s);
-      fem::AdhesiveContact model(material, fem::Profile::custom(profile.f, 2.), [&s, material, level](const double a) {
-        fem::Settings st = fe_settings(s, material, a, level);
-        condense_far_field(s, material, st);
-        return st;
-      });
-      const double dgamma = s.adhesion.work_of_adhesion;
-      const auto   row = [&](const std::string &quantity, const std::string &metric, const std::string &expression,
-                           const double x, const double fe_value, const double scale, const double tolerance,
-                           const double seconds) {
+      double       radius = 0, depth = 0, force = 0;
+      unsigned int dofs    = 0;
+      double       seconds = 0;
+    };
+
+    /// The adhesive family against one adhesive FE model: d(a) and F(a) at the ends and the middle of the range
+    /// (`state(a)`) and the critical state under Candidate/critical control (`critical(force_control)`). Each row is
+    /// against `method` with Tolerances/* (it includes the FE's own error) and `suffix` ends its metric; the FE's
+    /// d(a), F(a) go into `fe` when it is given (the curves' plots).
+    void adhesive_model_rows(const Scene &s, const std::string &method, const std::string &suffix,
+                             const std::function<FeAdhesiveState(double)> &state,
+                             const std::function<FeAdhesiveState(bool)> &critical, const std::vector<double> &radii,
+                             const std::map<std::string, double> &constants, std::vector<Row> &rows, FeValues *fe)
+    {
+      const CandidateParameters &c   = s.candidate;
+      const auto                 row = [&](const std::string &quantity, const std::string &metric,
+                           const std::string &expression, const double x, const double fe_value,
+                           const double tolerance, const FeAdhesiveState &st) {
         if (expression.empty())
           return;
         try
           {
             const double value =
               parse_candidate_expression<1>(quantity, "a", expression, constants)->value(dealii::Point<1>(x));
-            rows.push_back(compare(quantity, metric, "candidate", "FE", fe_value, value, scale, tolerance, 0, seconds));
+            rows.push_back(compare(quantity, metric + suffix, "candidate", method, fe_value, value, fe_value,
+                                   tolerance, st.dofs, st.seconds));
           }
         catch (const std::exception &e)
           {
-            rows.push_back(failed(quantity, "candidate", "FE", concise(e)));
+            rows.push_back(failed(quantity, "candidate", method, concise(e)));
           }
       };
       for (const std::size_t i : {std::size_t(0), radii.size() / 2, radii.size() - 1})
         {
           if (c.adhesive_depth.empty() && c.adhesive_force.empty())
             break;
-          const auto start = std::chrono::steady_clock::now();
           try
             {
-              const fem::AdhesiveState st = model.adhesive_state(radii[i], dgamma);
-              const double seconds = elapsed(start);
-              const std::string metric = "a [m] = " + format(radii[i]) + ", relative";
-              row("adhesive depth", metric, c.adhesive_depth, radii[i], st.depth, st.depth, s.tolerances.depth, seconds);
-              row("adhesive force", metric, c.adhesive_force, radii[i], st.force, st.force, s.tolerances.force, seconds);
-              fe["adhesive depth"][radii[i]] = st.depth;
-              fe["adhesive force"][radii[i]] = st.force;
-            }
-          catch (const std::exception &e)
-            {
-              rows.push_back(failed("adhesive state", "candidate", "FE", concise(e)));
-            }
-        }
-      if (c.critical_radius.empty() && c.critical_force.empty() && c.critical_depth.empty())
-        return;
-      const std::string under = c.critical_force_control ? " (force control)" : " (displacement control)";
-      const auto start = std::chrono::steady_clock::now();
-      try
-        {
-          const fem::AdhesiveCriticalState critical = model.critical_state(
-            dgamma, c.critical_force_control ? fem::AdhesionControl::force : fem::AdhesionControl::displacement,
-            s.load.a);
-          const double seconds = elapsed(start);
-          const fem::AdhesiveState &st = critical.state;
-          row("critical radius" + under, "relative", c.critical_radius, 0, st.radius, st.radius,
-              s.tolerances.contact_radius, seconds);
-          row("critical force" + under, "relative", c.critical_force, 0, st.force, st.force, s.tolerances.force,
-              seconds);
-          row("critical depth" + under, "relative", c.critical_depth, 0, st.depth, st.depth, s.tolerances.depth,
-              seconds);
-        }
-      catch (const std::exception &e)
-        {
-          rows.push_back(failed("critical state" + under, "candidate", "FE", concise(e)));
-        }
-    }
-
-    /// Adhesion/law = Dugdale: the adhesive family against the cohesive-zone FE of fem/cohesive_zone.h (adhesion of
-    /// the finite range dgamma / sigma_0; no JKR assumption), at the three radii of adhesive_fe_rows and the critical
-    /// state: how far the candidate's JKR-type form is from that adhesive. Its rows say "(JKR idealisation)" and take
-    /// Tolerances/*: a deviation there measures the JKR assumption, not the candidate's algebra.
-    void dugdale_fe_rows(const Scene &s, const mdr::Profile &profile, const std::vector<double> &radii,
-                         const std::map<std::string, double> &constants, std::vector<Row> &rows)
-    {
-      const CandidateParameters &c        = s.candidate;
-      const fem::Material        material = fe_material(s);
-      const unsigned int         level    = finest_refinement(s);
-      fem::CohesiveContact model(material, fem::Profile::custom(profile.f, 2.),
-                                 fem::DugdaleLaw{s.adhesion.cohesive_strength, s.adhesion.work_of_adhesion},
-                                 [&s, material, level](const double a) {
-                                   fem::Settings st = fe_settings(s, material, a, level);
-                                   condense_far_field(s, material, st);
-                                   return st;
-                                 });
-      const std::string method = "FE (Dugdale)";
-      const auto row = [&](const std::string &quantity, const std::string &metric, const std::string &expression,
-                           const double x, const double fe_value, const double tolerance, const unsigned int dofs,
-                           const double seconds) {
-        if (expression.empty())
-          return;
-        const double value =
-          parse_candidate_expression<1>(quantity, "a", expression, constants)->value(dealii::Point<1>(x));
-        rows.push_back(compare(quantity, metric + " (JKR idealisation)", "candidate", method, fe_value, value,
-                               fe_value, tolerance, dofs, seconds));
-      };
-      for (const std::size_t i : {std::size_t(0), radii.size() / 2, radii.size() - 1})
-        {
-          if (c.adhesive_depth.empty() && c.adhesive_force.empty())
-            break;
-          try
-            {
-              const fem::CohesiveState &st = model.state(radii[i]);
-              const std::string metric = "a [m] = " + format(radii[i]) + ", relative";
-              row("adhesive depth", metric, c.adhesive_depth, radii[i], st.depth, s.tolerances.depth, st.n_dofs,
-                  st.seconds);
-              row("adhesive force", metric, c.adhesive_force, radii[i], st.force, s.tolerances.force, st.n_dofs,
-                  st.seconds);
+              const FeAdhesiveState st     = state(radii[i]);
+              const std::string     metric = "a [m] = " + format(radii[i]) + ", relative";
+              row("adhesive depth", metric, c.adhesive_depth, radii[i], st.depth, s.tolerances.depth, st);
+              row("adhesive force", metric, c.adhesive_force, radii[i], st.force, s.tolerances.force, st);
+              if (fe)
+                {
+                  (*fe)["adhesive depth"][radii[i]] = st.depth;
+                  (*fe)["adhesive force"][radii[i]] = st.force;
+                }
             }
           catch (const std::exception &e)
             {
@@ -397,20 +331,74 @@ namespace gradcontact::cases
       const std::string under = c.critical_force_control ? " (force control)" : " (displacement control)";
       try
         {
-          const fem::CohesiveCriticalState critical = model.critical_state(
-            c.critical_force_control ? fem::AdhesionControl::force : fem::AdhesionControl::displacement, s.load.a);
-          const fem::CohesiveState &st = critical.state;
-          row("critical radius" + under, "relative", c.critical_radius, 0, st.radius, s.tolerances.contact_radius,
-              critical.max_dofs, critical.seconds);
-          row("critical force" + under, "relative", c.critical_force, 0, st.force, s.tolerances.force,
-              critical.max_dofs, critical.seconds);
-          row("critical depth" + under, "relative", c.critical_depth, 0, st.depth, s.tolerances.depth,
-              critical.max_dofs, critical.seconds);
+          const FeAdhesiveState st = critical(c.critical_force_control);
+          row("critical radius" + under, "relative", c.critical_radius, 0, st.radius, s.tolerances.contact_radius, st);
+          row("critical force" + under, "relative", c.critical_force, 0, st.force, s.tolerances.force, st);
+          row("critical depth" + under, "relative", c.critical_depth, 0, st.depth, s.tolerances.depth, st);
         }
       catch (const std::exception &e)
         {
           rows.push_back(failed("critical state" + under, "candidate", method, concise(e)));
         }
+    }
+
+    /// The scene's FE settings at contact radius a (the adhesive searches solve at many), at its finest refinement.
+    fem::AdhesiveContact::SettingsFunction settings_at(const Scene &s, const fem::Material &material)
+    {
+      const unsigned int level = finest_refinement(s);
+      return [&s, material, level](const double a) {
+        fem::Settings st = fe_settings(s, material, a, level);
+        condense_far_field(s, material, st);
+        return st;
+      };
+    }
+
+    fem::AdhesionControl fe_control(const bool force_control)
+    {
+      return force_control ? fem::AdhesionControl::force : fem::AdhesionControl::displacement;
+    }
+
+    /// The adhesive family against the JKR FE of fem/adhesion.h (the FE's own energy release rate and critical
+    /// search; the profile a rigid custom indenter).
+    void adhesive_fe_rows(const Scene &s, const mdr::Profile &profile, const std::vector<double> &radii,
+                          const std::map<std::string, double> &constants, std::vector<Row> &rows, FeValues &fe)
+    {
+      const fem::Material  material = fe_material(s);
+      const double         dgamma   = s.adhesion.work_of_adhesion;
+      fem::AdhesiveContact model(material, fem::Profile::custom(profile.f, 2.), settings_at(s, material));
+      const auto state = [&](const double a) {
+        const auto                start = std::chrono::steady_clock::now();
+        const fem::AdhesiveState st    = model.adhesive_state(a, dgamma);
+        return FeAdhesiveState{st.radius, st.depth, st.force, 0, elapsed(start)};
+      };
+      const auto critical = [&](const bool force_control) {
+        const auto                   start = std::chrono::steady_clock::now();
+        const fem::AdhesiveState st = model.critical_state(dgamma, fe_control(force_control), s.load.a).state;
+        return FeAdhesiveState{st.radius, st.depth, st.force, 0, elapsed(start)};
+      };
+      adhesive_model_rows(s, "FE", "", state, critical, radii, constants, rows, &fe);
+    }
+
+    /// Adhesion/law = Dugdale: the adhesive family against the cohesive-zone FE of fem/cohesive_zone.h (adhesion of
+    /// the finite range dgamma / sigma_0; no JKR assumption): how far the candidate's JKR-type form is from that
+    /// adhesive. Its rows say "(JKR idealisation)": a deviation there measures the JKR assumption, not the
+    /// candidate's algebra.
+    void dugdale_fe_rows(const Scene &s, const mdr::Profile &profile, const std::vector<double> &radii,
+                         const std::map<std::string, double> &constants, std::vector<Row> &rows)
+    {
+      const fem::Material  material = fe_material(s);
+      fem::CohesiveContact model(material, fem::Profile::custom(profile.f, 2.),
+                                 fem::DugdaleLaw{s.adhesion.cohesive_strength, s.adhesion.work_of_adhesion},
+                                 settings_at(s, material));
+      const auto state = [&](const double a) {
+        const fem::CohesiveState &st = model.state(a);
+        return FeAdhesiveState{st.radius, st.depth, st.force, st.n_dofs, st.seconds};
+      };
+      const auto critical = [&](const bool force_control) {
+        const fem::CohesiveCriticalState c = model.critical_state(fe_control(force_control), s.load.a);
+        return FeAdhesiveState{c.state.radius, c.state.depth, c.state.force, c.max_dofs, c.seconds};
+      };
+      adhesive_model_rows(s, "FE (Dugdale)", " (JKR idealisation)", state, critical, radii, constants, rows, nullptr);
     }
 
     /// The tangential family against the Fourier mode-1 FE model (fem/fourier_mode1_solver.h) at Load/a, the
