@@ -13,6 +13,7 @@
 #include <deal.II/base/utilities.h>
 
 #include <algorithm>
+#include <cctype>
 #include <chrono>
 #include <cmath>
 #include <fstream>
@@ -46,14 +47,41 @@ namespace gradcontact::cases
                                     {"C", C(m.k, m.nu)},
                                     {"dgamma", s.adhesion.work_of_adhesion},
                                     {"mu", s.tangential.friction_coefficient}};
-    for (const std::string &item : dealii::Utilities::split_string_list(s.candidate.constants))
+    // name = expression, ...: each expression may use the names before it and the functions; commas inside
+    // parentheses belong to a function's arguments
+    std::vector<std::string> items(1);
+    int depth = 0;
+    for (const char ch : s.candidate.constants)
       {
-        const auto eq = item.find('=');
+        depth += (ch == '(') - (ch == ')');
+        if (ch == ',' && depth == 0)
+          items.emplace_back();
+        else
+          items.back() += ch;
+      }
+    for (const std::string &entry : items)
+      {
+        const std::string item = dealii::Utilities::trim(entry);
         if (item.empty())
           continue;
-        if (eq == std::string::npos)
-          throw std::invalid_argument("Candidate/constants: '" + item + "' is not name=value");
-        c[dealii::Utilities::trim(item.substr(0, eq))] = dealii::Utilities::string_to_double(item.substr(eq + 1));
+        const auto eq = item.find('=');
+        if (eq == std::string::npos || eq == 0)
+          throw std::invalid_argument("Candidate/constants: '" + item + "' is not name = expression");
+        const std::string name = dealii::Utilities::trim(item.substr(0, eq));
+        if (!(std::isalpha(static_cast<unsigned char>(name[0])) || name[0] == '_') ||
+            !std::all_of(name.begin(), name.end(),
+                         [](const char ch) { return std::isalnum(static_cast<unsigned char>(ch)) || ch == '_'; }))
+          throw std::invalid_argument("Candidate/constants: '" + name +
+                                      "' is no name (a letter or '_', then letters, digits or '_')");
+        try
+          {
+            c[name] = Expression(item.substr(eq + 1), {}, c).value(std::vector<double>{});
+          }
+        catch (const std::exception &e)
+          {
+            throw std::invalid_argument("Candidate/constants: " + name + " = '" +
+                                        dealii::Utilities::trim(item.substr(eq + 1)) + "': " + e.what());
+          }
       }
     return c;
   }
@@ -61,35 +89,63 @@ namespace gradcontact::cases
 
 
   template <int dim>
-  std::shared_ptr<dealii::FunctionParser<dim>> parse_candidate_expression(const std::string &entry,
+  CandidateFunction<dim>::CandidateFunction(const std::string &entry, const std::vector<std::string> &variables,
+                                            const std::string &expression,
+                                            const std::map<std::string, double> &constants)
+    : entry(entry)
+    , expression(expression, variables, constants)
+  {
+    if (variables.size() != dim)
+      throw std::logic_error("CandidateFunction<" + std::to_string(dim) + ">: " + std::to_string(variables.size()) +
+                             " variables");
+  }
+
+  template <int dim>
+  double CandidateFunction<dim>::value(const dealii::Point<dim> &p) const
+  {
+    double x[dim];
+    for (unsigned int d = 0; d < dim; ++d)
+      x[d] = p[d];
+    try
+      {
+        return expression.value(x);
+      }
+    catch (const std::domain_error &e)
+      {
+        throw std::domain_error("Candidate/" + entry + " = " + e.what());
+      }
+  }
+
+  template <int dim>
+  std::shared_ptr<const CandidateFunction<dim>> parse_candidate_expression(const std::string &entry,
                                                                           const std::string &variables,
                                                                           const std::string &expression,
                                                                           const std::map<std::string, double> &constants)
   {
-    auto f = std::make_shared<dealii::FunctionParser<dim>>(1);
+    std::vector<std::string> names;
+    for (const std::string &name : dealii::Utilities::split_string_list(variables))
+      names.push_back(name);
     try
       {
-        f->initialize(variables, expression, constants);
-        dealii::Point<dim> p;
-        for (unsigned int d = 0; d < dim; ++d)
-          p[d] = 0.5;
-        f->value(p); // muparser reports some errors only on evaluation
+        return std::make_shared<const CandidateFunction<dim>>(entry, names, expression, constants);
       }
-    catch (const std::exception &e)
+    catch (const ExpressionError &e)
       {
         throw std::invalid_argument("Candidate/" + entry + " = '" + expression + "' (variables " + variables +
-                                    "): " + concise(e));
+                                    "): " + e.what());
       }
-    return f;
   }
 
-  template std::shared_ptr<dealii::FunctionParser<1>>
+  template class CandidateFunction<1>;
+  template class CandidateFunction<2>;
+  template class CandidateFunction<3>;
+  template std::shared_ptr<const CandidateFunction<1>>
   parse_candidate_expression<1>(const std::string &, const std::string &, const std::string &,
                                 const std::map<std::string, double> &);
-  template std::shared_ptr<dealii::FunctionParser<2>>
+  template std::shared_ptr<const CandidateFunction<2>>
   parse_candidate_expression<2>(const std::string &, const std::string &, const std::string &,
                                 const std::map<std::string, double> &);
-  template std::shared_ptr<dealii::FunctionParser<3>>
+  template std::shared_ptr<const CandidateFunction<3>>
   parse_candidate_expression<3>(const std::string &, const std::string &, const std::string &,
                                 const std::map<std::string, double> &);
 
@@ -98,7 +154,7 @@ namespace gradcontact::cases
   mdr::Profile candidate_profile(const Scene &s, const std::map<std::string, double> &constants)
   {
     const CandidateParameters &c = s.candidate;
-    const auto at = [](const dealii::FunctionParser<1> &g, const double r) { return g.value(dealii::Point<1>(r)); };
+    const auto at = [](const CandidateFunction<1> &g, const double r) { return g.value(dealii::Point<1>(r)); };
     const auto f  = parse_candidate_expression<1>("profile", "r", c.profile, constants);
     mdr::Profile profile;
     profile.f = [f, at](const double r) { return at(*f, r); };

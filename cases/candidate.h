@@ -18,17 +18,19 @@
 #ifndef GRADCONTACT_CASES_CANDIDATE_H
 #define GRADCONTACT_CASES_CANDIDATE_H
 
+#include "expression.h"
 #include "report.h"
 #include "scene.h"
 
 #include <analytic/mdr.h>
 
-#include <deal.II/base/function_parser.h>
+#include <deal.II/base/point.h>
 
 #include <filesystem>
 #include <map>
 #include <memory>
 #include <string>
+#include <vector>
 
 namespace gradcontact::cases
 {
@@ -38,10 +40,25 @@ namespace gradcontact::cases
   /// override them.
   std::map<std::string, double> candidate_constants(const Scene &scene);
 
-  /// An expression of `variables` (muparser through deal.II's FunctionParser, dim = their number), evaluated once
-  /// at 0.5 to catch the errors muparser reports only then. std::invalid_argument naming Candidate/`entry`.
+  /// A candidate's expression of dim variables (cases/expression.h), named by its entry. value() throws
+  /// std::domain_error naming Candidate/`entry`, the expression and the point where it is not a finite number.
   template <int dim>
-  std::shared_ptr<dealii::FunctionParser<dim>> parse_candidate_expression(const std::string &entry,
+  class CandidateFunction
+  {
+  public:
+    CandidateFunction(const std::string &entry, const std::vector<std::string> &variables,
+                      const std::string &expression, const std::map<std::string, double> &constants);
+    double value(const dealii::Point<dim> &p) const;
+
+  private:
+    std::string entry;
+    Expression expression;
+  };
+
+  /// The expression of Candidate/`entry` over `variables` (comma-separated, dim of them). A syntax or name error
+  /// is std::invalid_argument naming Candidate/`entry`, the expression, the column and the available names.
+  template <int dim>
+  std::shared_ptr<const CandidateFunction<dim>> parse_candidate_expression(const std::string &entry,
                                                                           const std::string &variables,
                                                                           const std::string &expression,
                                                                           const std::map<std::string, double> &constants);

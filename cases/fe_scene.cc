@@ -12,7 +12,6 @@
 #include <fem/axisymmetric_solver.h>
 #include <fem/unilateral_contact.h>
 
-#include <deal.II/base/function_parser.h>
 #include <deal.II/base/point.h>
 #include <deal.II/base/utilities.h>
 
@@ -318,7 +317,7 @@ namespace gradcontact::cases
       if (s.load.contact == LoadParameters::Contact::unilateral)
         return run_unilateral_candidate(s, constants);
       SceneResult result;
-      const auto at = [](const dealii::FunctionParser<1> &g, const double r) { return g.value(dealii::Point<1>(r)); };
+      const auto at = [](const CandidateFunction<1> &g, const double r) { return g.value(dealii::Point<1>(r)); };
       const mdr::Profile profile = candidate_profile(s, constants);
       // (a pressure candidate without f'' is refused by scene_kind: see there why)
       const MaterialParameters &mp = s.material;

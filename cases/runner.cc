@@ -1,5 +1,7 @@
 #include "runner.h"
 
+#include "expression.h"
+
 #include "fe_adhesion.h"
 #include "fe_cohesive.h"
 #include "fe_map.h"
@@ -128,6 +130,12 @@ namespace gradcontact::cases
               std::cout << scene_documentation();
               std::exit(0);
             }
+          else if (a == "--help-functions")
+            {
+              std::cout << "The functions of candidate expressions (Candidate/*, cases/expression.h):\n"
+                        << Expression::function_list();
+              std::exit(0);
+            }
           else if (rest && a == "--over")
             {
               rest->push_back(a);
@@ -253,7 +261,18 @@ namespace gradcontact::cases
       scene.info.name += suffix;
       if (o.verbose)
         std::cout << "# " << file.string() << " resolved:\n" << scene.resolved;
-      return run_report(scene, o.reports, o.verbose);
+      try
+        {
+          return run_report(scene, o.reports, o.verbose);
+        }
+      catch (const std::invalid_argument &e)
+        {
+          // an entry found bad only when the scene runs (a candidate's expression): name the file as the
+          // validation of read_scene does
+          if (std::string(e.what()).find(file.string()) != std::string::npos)
+            throw;
+          throw std::invalid_argument("scene " + file.string() + ": " + e.what());
+        }
     }
 
     void print(const SceneResult &s, const Options &o)

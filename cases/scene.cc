@@ -1,5 +1,7 @@
 #include "scene.h"
 
+#include "expression.h"
+
 #include "fe_cohesive.h"
 #include "report.h"
 
@@ -353,12 +355,18 @@ namespace gradcontact::cases
   {
     prm.enter_subsection("Candidate");
     prm.declare_entry("profile", "", Patterns::Anything(),
-                      "A profile f(r) (muparser, variable r; f(0) = 0) whose candidate closed forms below are checked "
-                      "against the numerical MDR. Empty: no candidate check.");
+                      std::string("A profile f(r) (variable r; f(0) = 0) whose candidate closed forms below are checked "
+                                  "against the numerical MDR. Empty: no candidate check. Every candidate entry is an "
+                                  "expression: numbers, names, + - * / ^ (power), comparisons, && || !, c ? x : y, "
+                                  "and the functions ") + Expression::function_names() +
+                        " (`gradcontact run --help-functions` says what each is).");
     prm.declare_entry("profile slope", "", Patterns::Anything(), "f'(r); empty: finite differences of f.");
     prm.declare_entry("profile curvature", "", Patterns::Anything(), "f''(r); required for a pressure candidate.");
     prm.declare_entry("constants", "", Patterns::Anything(),
-                      "Constants of the expressions, \"name=value, ...\"; E0, c0, k, nu, cN0 (9.4) and pi are always defined.");
+                      "Constants of the expressions, \"name = expression, ...\", each of which may use the names before "
+                      "it and the functions (kappa = n/2 * beta(n/2, (1+k)/2)). Always defined: E0, c0, k, nu, pi, "
+                      "the coefficients h_N (9.5), h_T (9.79), beta, C, cN0 = c_N0 (9.4), cT0 = c_T0, alpha = "
+                      "cN0/cT0 (9.78), dgamma (Adhesion/work of adhesion) and mu (Tangential/friction coefficient).");
     prm.declare_entry("depth", "", Patterns::Anything(), "Candidate d(a) (variable a).");
     prm.declare_entry("force", "", Patterns::Anything(), "Candidate F_N(a) (variable a).");
     prm.declare_entry("pressure", "", Patterns::Anything(), "Candidate p(r, a) (variables r, a), at Outputs/pressure radii.");
