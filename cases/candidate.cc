@@ -537,6 +537,40 @@ namespace gradcontact::cases
 
 
 
+  void normal_candidate_curves(const Scene &s, const std::map<std::string, double> &constants,
+                               const mdr::Profile &profile, const std::map<std::string, double> &fe_at_a,
+                               const fs::path &folder, SceneResult &result)
+  {
+    const CandidateParameters &c = s.candidate;
+    const Medium               m = scene_medium(s);
+    const double               a = s.load.a;
+    std::vector<double>        radii = spaced(c.range[0] * a, c.range[1] * a, c.points);
+    radii.push_back(a); // the FE's radius is a point of every curve
+    std::sort(radii.begin(), radii.end());
+    radii.erase(std::unique(radii.begin(), radii.end(),
+                            [](const double x, const double y) { return std::abs(x - y) <= 1e-12 * std::abs(y); }),
+                radii.end());
+    FeValues fe;
+    for (const auto &[quantity, value] : fe_at_a)
+      fe[quantity][a] = value;
+    const auto curve = [&](const std::string &quantity, const std::string &expression, const bool force) {
+      if (expression.empty())
+        return;
+      const auto g = parse_candidate_expression<1>(quantity, "a", expression, constants);
+      Curve curve{quantity, "a [m]", force ? "[N]" : "[m]", radii,
+                  [&, g](const std::size_t i) { return g->value(dealii::Point<1>(radii[i])); },
+                  [&](const std::size_t i) {
+                    const mdr::Foundation w1d = mdr::indentation(profile, m, radii[i]);
+                    return force ? mdr::force(w1d, m) : mdr::depth(w1d);
+                  }};
+      add_note(result, report_curve(curve, c.tolerance, s.outputs.plots, folder, fe, result.rows));
+    };
+    curve("depth", c.depth, false);
+    curve("force", c.force, true);
+  }
+
+
+
   SceneResult run_adhesive_candidate(const Scene &s, const fs::path &folder)
   {
     const CandidateParameters &c         = s.candidate;

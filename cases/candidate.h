@@ -67,6 +67,13 @@ namespace gradcontact::cases
   /// central differences of f where they are not given (f'' then stays empty).
   mdr::Profile candidate_profile(const Scene &scene, const std::map<std::string, double> &constants);
 
+  /// The normal family's d(a) and F_N(a) over Candidate/range times Load/a (and at Load/a) against the numerical MDR
+  /// of `profile`: a row per point, a table and a plot per curve with the FE's value at Load/a (`fe_at_a`, by
+  /// quantity) as its point; the largest deviations go into result.description.
+  void normal_candidate_curves(const Scene &scene, const std::map<std::string, double> &constants,
+                               const mdr::Profile &profile, const std::map<std::string, double> &fe_at_a,
+                               const std::filesystem::path &folder, SceneResult &result);
+
   /// Each runs a candidate scene of its family and writes its tables and plots into `folder`.
   SceneResult run_adhesive_candidate(const Scene &scene, const std::filesystem::path &folder);
   SceneResult run_tangential_candidate(const Scene &scene, const std::filesystem::path &folder);

@@ -150,27 +150,6 @@ namespace gradcontact::cases
       return s.str();
     }
 
-    /// Levenshtein distance, case-insensitive.
-    std::size_t edit_distance(const std::string &a, const std::string &b)
-    {
-      std::vector<std::size_t> row(b.size() + 1);
-      for (std::size_t j = 0; j <= b.size(); ++j)
-        row[j] = j;
-      for (std::size_t i = 1; i <= a.size(); ++i)
-        {
-          std::size_t diagonal = row[0];
-          row[0]               = i;
-          for (std::size_t j = 1; j <= b.size(); ++j)
-            {
-              const std::size_t up   = row[j];
-              const bool        same = std::tolower(a[i - 1]) == std::tolower(b[j - 1]);
-              row[j]                 = std::min({row[j] + 1, row[j - 1] + 1, diagonal + (same ? 0 : 1)});
-              diagonal               = up;
-            }
-        }
-      return row[b.size()];
-    }
-
     /// Recursive descent over the text, one level per row of the grammar in expression.h; each level appends its
     /// nodes to `nodes` and returns the index of its root.
     class Parser
@@ -493,6 +472,26 @@ namespace gradcontact::cases
       std::size_t                           position = 0;
     };
   } // namespace
+
+  std::size_t edit_distance(const std::string &a, const std::string &b)
+  {
+    std::vector<std::size_t> row(b.size() + 1);
+    for (std::size_t j = 0; j <= b.size(); ++j)
+      row[j] = j;
+    for (std::size_t i = 1; i <= a.size(); ++i)
+      {
+        std::size_t diagonal = row[0];
+        row[0]               = i;
+        for (std::size_t j = 1; j <= b.size(); ++j)
+          {
+            const std::size_t up   = row[j];
+            const bool        same = std::tolower(a[i - 1]) == std::tolower(b[j - 1]);
+            row[j]                 = std::min({row[j] + 1, row[j - 1] + 1, diagonal + (same ? 0 : 1)});
+            diagonal               = up;
+          }
+      }
+    return row[b.size()];
+  }
 
   ExpressionError::ExpressionError(const std::string &what, const unsigned int column)
     : std::invalid_argument("column " + std::to_string(column) + ": " + what)

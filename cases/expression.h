@@ -23,6 +23,7 @@
 #ifndef GRADCONTACT_CASES_EXPRESSION_H
 #define GRADCONTACT_CASES_EXPRESSION_H
 
+#include <cstddef>
 #include <map>
 #include <stdexcept>
 #include <string>
@@ -30,6 +31,9 @@
 
 namespace gradcontact::cases
 {
+  /// Levenshtein distance of two names, case-insensitive: what "did you mean" messages choose by.
+  std::size_t edit_distance(const std::string &a, const std::string &b);
+
   /// A syntax or name error: what went wrong and the 1-based column where it starts.
   class ExpressionError : public std::invalid_argument
   {

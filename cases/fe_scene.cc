@@ -310,19 +310,67 @@ namespace gradcontact::cases
       return result;
     }
 
-    SceneResult run_candidate(const Scene &s)
+    /// The normal family against the FE model: the profile as a custom indenter under contact-radius control at
+    /// Load/a on the recommended mesh, one solve for every quantity; its rows go into `rows`, and its depth and force
+    /// are returned by name for the curves' plots.
+    std::map<std::string, double> candidate_fe_rows(const Scene &s, const std::map<std::string, double> &constants,
+                                                    const mdr::Profile &profile, std::vector<Row> &rows)
+    {
+      const CandidateParameters &c = s.candidate;
+      const double a = s.load.a;
+      const auto at = [](const CandidateFunction<1> &g, const double r) { return g.value(dealii::Point<1>(r)); };
+      const auto t0 = std::chrono::steady_clock::now();
+      FeModel model = candidate_fe_model(s, fem::Profile::custom(profile.f, 2.));
+      condense_far_field(s, model.material, model.settings);
+      fem::AxisymmetricSolver solver(model.material, model.settings.mesh, model.settings.discretization);
+      const fem::Result fe = solver.run(model.load, output_request(s));
+      const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+      const auto fe_row = [&](const std::string &quantity, const std::string &metric, const std::string &expression,
+                              const double fe_value, const double tolerance, const std::optional<double> r) {
+        if (expression.empty())
+          return;
+        try
+          {
+            const double value = r ? parse_candidate_expression<2>(quantity, "r,a", expression, constants)->value(dealii::Point<2>(*r, a))
+                                   : at(*parse_candidate_expression<1>(quantity, "a", expression, constants), a);
+            rows.push_back(compare(quantity, metric, "candidate", "FE", fe_value, value, fe_value, tolerance,
+                                          fe.n_dofs, seconds));
+          }
+        catch (const std::exception &e)
+          {
+            rows.push_back(failed(quantity, "candidate", "FE", concise(e)));
+          }
+      };
+      fe_row("depth", "relative", c.depth, fe.depth, s.tolerances.depth, std::nullopt);
+      fe_row("force", "relative", c.force, fe.force, s.tolerances.force, std::nullopt);
+      for (const fem::Sample &p : fe.pressure)
+        fe_row("pressure", "r/a = " + format(p.r / a) + ", relative", c.pressure, p.value, s.tolerances.pressure, p.r);
+      for (const fem::Sample &w : fe.displacement)
+        fe_row("displacement", "r/a = " + format(w.r / a) + ", relative", c.displacement, w.value,
+               s.tolerances.displacement, w.r);
+      return {{"depth", fe.depth}, {"force", fe.force}};
+    }
+
+    /// The normal family (not unilateral): the FE at Load/a first, so that the curves' plots carry its points; then
+    /// d(a) and F_N(a) over Candidate/range and p, w at Load/a against the numerical MDR; the FE's rows last.
+    SceneResult run_candidate(const Scene &s, const fs::path &folder)
     {
       const CandidateParameters &c = s.candidate;
       const auto constants = candidate_constants(s);
       if (s.load.contact == LoadParameters::Contact::unilateral)
         return run_unilateral_candidate(s, constants);
       SceneResult result;
-      const auto at = [](const CandidateFunction<1> &g, const double r) { return g.value(dealii::Point<1>(r)); };
       const mdr::Profile profile = candidate_profile(s, constants);
       // (a pressure candidate without f'' is refused by scene_kind: see there why)
       const MaterialParameters &mp = s.material;
       const Medium m = medium(GradedHalfSpace{mp.E0, mp.c0, mp.k, mp.nu});
       const double a = s.load.a;
+      std::vector<Row> fe_rows;
+      std::map<std::string, double> fe_at_a;
+      if (s.references.fem)
+        fe_at_a = candidate_fe_rows(s, constants, profile, fe_rows);
+      normal_candidate_curves(s, constants, profile, fe_at_a, folder, result);
+
       const mdr::Foundation w1d = mdr::indentation(profile, m, a);
       const auto check = [&](const std::string &quantity, const std::string &metric, const std::function<double()> &candidate,
                              const std::function<double()> &reference) {
@@ -339,16 +387,6 @@ namespace gradcontact::cases
             result.rows.push_back(failed(quantity, "candidate", "numerical MDR", concise(e)));
           }
       };
-      if (!c.depth.empty())
-        {
-          const auto g = parse_candidate_expression<1>("depth", "a", c.depth, constants);
-          check("depth", "relative", [&] { return at(*g, a); }, [&] { return mdr::depth(w1d); });
-        }
-      if (!c.force.empty())
-        {
-          const auto g = parse_candidate_expression<1>("force", "a", c.force, constants);
-          check("force", "relative", [&] { return at(*g, a); }, [&] { return mdr::force(w1d, m); });
-        }
       const auto profile_rows = [&](const std::string &entry, const std::string &expression, const std::vector<double> &radii,
                                     const std::function<double(double)> &reference) {
         if (expression.empty())
@@ -361,41 +399,7 @@ namespace gradcontact::cases
       profile_rows("pressure", c.pressure, s.outputs.pressure_radii, [&](double r) { return mdr::pressure(w1d, m, r); });
       profile_rows("displacement", c.displacement, s.outputs.displacement_radii,
                    [&](double r) { return mdr::displacement(w1d, m, r); });
-
-      // The same candidate against the FE model: the profile as a custom indenter under contact-radius
-      // control on the recommended mesh, one solve for every quantity.
-      if (s.references.fem)
-        {
-          const auto t0 = std::chrono::steady_clock::now();
-          FeModel model = candidate_fe_model(s, fem::Profile::custom(profile.f, 2.));
-          condense_far_field(s, model.material, model.settings);
-          fem::AxisymmetricSolver solver(model.material, model.settings.mesh, model.settings.discretization);
-          const fem::Result fe = solver.run(model.load, output_request(s));
-          const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-          const auto fe_row = [&](const std::string &quantity, const std::string &metric, const std::string &expression,
-                                  const double fe_value, const double tolerance, const std::optional<double> r) {
-            if (expression.empty())
-              return;
-            try
-              {
-                const double value = r ? parse_candidate_expression<2>(quantity, "r,a", expression, constants)->value(dealii::Point<2>(*r, a))
-                                       : at(*parse_candidate_expression<1>(quantity, "a", expression, constants), a);
-                result.rows.push_back(compare(quantity, metric, "candidate", "FE", fe_value, value, fe_value, tolerance,
-                                              fe.n_dofs, seconds));
-              }
-            catch (const std::exception &e)
-              {
-                result.rows.push_back(failed(quantity, "candidate", "FE", concise(e)));
-              }
-          };
-          fe_row("depth", "relative", c.depth, fe.depth, s.tolerances.depth, std::nullopt);
-          fe_row("force", "relative", c.force, fe.force, s.tolerances.force, std::nullopt);
-          for (const fem::Sample &p : fe.pressure)
-            fe_row("pressure", "r/a = " + format(p.r / a) + ", relative", c.pressure, p.value, s.tolerances.pressure, p.r);
-          for (const fem::Sample &w : fe.displacement)
-            fe_row("displacement", "r/a = " + format(w.r / a) + ", relative", c.displacement, w.value,
-                   s.tolerances.displacement, w.r);
-        }
+      result.rows.insert(result.rows.end(), fe_rows.begin(), fe_rows.end());
       return result;
     }
   } // namespace
@@ -483,7 +487,12 @@ namespace gradcontact::cases
         r.description += (r.description.empty() ? "" : " ") + std::string("(") + family.description + ")";
       }
     else
-      r.rows = run_candidate(s).rows;
+      {
+        SceneResult normal = run_candidate(s, folder);
+        r.rows             = std::move(normal.rows);
+        if (!normal.description.empty())
+          r.description += (r.description.empty() ? "" : " ") + std::string("(") + normal.description + ")";
+      }
     r.seconds = seconds_since(start);
     return r;
   }

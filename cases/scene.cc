@@ -412,8 +412,9 @@ namespace gradcontact::cases
     prm.declare_entry("reloading displacement", "", Patterns::Anything(),
                       "Candidate u0 on the reloading branch from -FA (variables Fx, FA, a).");
     prm.declare_entry("range", "0.25, 4", Patterns::List(Patterns::Double(0.), 2, 2),
-                      "The contact radii of the curves over a (adhesive d(a), F(a); K_T(a)): from range[0] Load/a to "
-                      "range[1] Load/a.");
+                      "The contact radii of the curves over a (d(a), F(a) of the normal and the adhesive family; K_T(a)): "
+                      "from range[0] Load/a to range[1] Load/a, and Load/a itself for the normal family (where the FE "
+                      "solves). A profile that needs a > b (a flat punch of radius b) sets range[0] so.");
     prm.declare_entry("points", "9", Patterns::Integer(2, 200), "Points on every candidate curve.");
     prm.declare_entry("tolerance", "1e-8", Patterns::Double(0.), "Relative tolerance of the candidate.");
     prm.leave_subsection();
@@ -1150,27 +1151,6 @@ namespace gradcontact::cases
             else
               declared_paths(it.value(), path + "/", paths);
           }
-    }
-
-    /// Levenshtein distance, case-insensitive.
-    std::size_t edit_distance(const std::string &a, const std::string &b)
-    {
-      std::vector<std::size_t> row(b.size() + 1);
-      for (std::size_t j = 0; j <= b.size(); ++j)
-        row[j] = j;
-      for (std::size_t i = 1; i <= a.size(); ++i)
-        {
-          std::size_t diagonal = row[0];
-          row[0]               = i;
-          for (std::size_t j = 1; j <= b.size(); ++j)
-            {
-              const std::size_t up   = row[j];
-              const bool        same = std::tolower(a[i - 1]) == std::tolower(b[j - 1]);
-              row[j]                 = std::min({row[j] + 1, row[j - 1] + 1, diagonal + (same ? 0 : 1)});
-              diagonal               = up;
-            }
-        }
-      return row[b.size()];
     }
 
     /// The entries a .prm file sets ("set" lines under their "subsection"s), as "Section/entry".
