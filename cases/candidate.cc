@@ -5,6 +5,7 @@
 #include <fem/adhesion.h>
 #include <fem/cohesive_zone.h>
 #include <fem/fourier_mode1_solver.h>
+#include <fem/smooth_cohesion.h>
 
 #include <analytic/material.h>
 #include <analytic/mdr_contact.h>
@@ -457,6 +458,93 @@ namespace gradcontact::cases
       adhesive_model_rows(s, "FE (Dugdale)", " (JKR idealisation)", state, critical, radii, constants, rows, nullptr);
     }
 
+    /// The Lennard-Jones path's state at contact radius a: linear between the two states of the contact branch
+    /// whose peak radii (the adhesive zone's inner end, JKR's a as the Tabor parameter grows) bracket a, the last such
+    /// pair along the path (the branch toward the pressed contact, past the jumps of snap-in); its depth shifted by
+    /// the law's equilibrium separation (the approach beyond the touching of the surfaces, JKR's depth).
+    FeAdhesiveState lennard_jones_state(const fem::SmoothCohesionPath &path, const double separation, const double a)
+    {
+      const std::vector<fem::SmoothCohesionState> &st = path.states;
+      for (std::size_t i = st.size(); i-- > 1;)
+        {
+          const double r0 = st[i - 1].peak_radius, r1 = st[i].peak_radius;
+          if (r0 > 0. && r1 > r0 && r0 <= a && a <= r1)
+            {
+              const double t = (a - r0) / (r1 - r0);
+              return FeAdhesiveState{a, (1 - t) * st[i - 1].depth + t * st[i].depth + separation,
+                                     (1 - t) * st[i - 1].force + t * st[i].force, path.n_dofs, path.seconds};
+            }
+        }
+      double largest = 0.;
+      for (const fem::SmoothCohesionState &x : st)
+        largest = std::max(largest, x.peak_radius);
+      throw std::runtime_error("the Lennard-Jones path does not reach the contact radius a = " + format(a) +
+                               " on its contact branch (its largest peak radius is " + format(largest) + ")");
+    }
+
+    /// Adhesion/law = Lennard-Jones: the adhesive family against the smooth Lennard-Jones FE of fem/smooth_cohesion.h
+    /// (repulsion included, its largest attraction Adhesion/cohesive strength): one path from the surfaces apart
+    /// through snap-in and both pull-offs to the force of the largest radius of the range. Its rows say "(JKR
+    /// idealisation)": a deviation there measures the JKR assumption against a finite-range adhesive.
+    void lennard_jones_fe_rows(const Scene &s, const mdr::Profile &profile, const Medium &m,
+                               const std::vector<double> &radii, const std::map<std::string, double> &constants,
+                               std::vector<Row> &rows)
+    {
+      const double               dgamma   = s.adhesion.work_of_adhesion;
+      const fem::Material        material = fe_material(s);
+      const fem::LennardJonesLaw law = fem::LennardJonesLaw::with_max_stress(s.adhesion.cohesive_strength, dgamma);
+      fem::SmoothCohesionParameters parameters;
+      parameters.follow_edge = true;
+      parameters.max_steps   = 20000;
+      // past the largest radius of the range: its JKR force, and a margin for the finite range's lower force
+      parameters.stop_force =
+        std::max(0., 1.1 * mdr::force(mdr::indentation(profile, m, radii.back(), dgamma), m));
+      const double a_c = mdr::critical_state(profile, m, dgamma, Control::force).radius;
+      const std::string method = "FE (Lennard-Jones)";
+      // The adhesive zone narrows as the cohesive strength grows; a path whose F(d) folds at the nodes (the edge's
+      // cells too coarse for the zone) or that does not converge is traced again with the edge's cells halved, up
+      // to fem::max_edge_refinement.
+      fem::SmoothCohesionPath path;
+      std::string             why;
+      for (double edge_refinement = 1; edge_refinement <= fem::max_edge_refinement; edge_refinement *= 2)
+        {
+          fem::SmoothCohesionParameters refined = parameters;
+          refined.edge_band = parameters.edge_band / std::sqrt(edge_refinement);
+          try
+            {
+              fem::SmoothCohesiveContact model(material, fem::Profile::custom(profile.f, 2.),
+                                               fem::smooth_cohesion_settings(material, a_c,
+                                                                             std::pow(2.0, finest_refinement(s)),
+                                                                             edge_refinement),
+                                               refined);
+              path = model.trace(law);
+              why  = path.converged ? "" : path.message;
+            }
+          catch (const std::exception &e)
+            {
+              why = concise(e);
+            }
+          if (why.empty())
+            break;
+          why += " (edge refinement " + format(edge_refinement) + ")";
+        }
+      if (!why.empty())
+        {
+          rows.push_back(failed("Lennard-Jones path", "candidate", method, why));
+          return;
+        }
+      const auto state    = [&](const double a) { return lennard_jones_state(path, law.separation, a); };
+      const auto critical = [&](const bool force_control) {
+        if (force_control ? !path.has_force_minimum : !path.has_depth_jump)
+          throw std::runtime_error(force_control ? "the Lennard-Jones path has no minimum of F before the contact" :
+                                                   "the Lennard-Jones path has no jump under displacement control "
+                                                   "(d grows monotonically: a small Tabor parameter)");
+        const fem::SmoothCohesionState &c = force_control ? path.force_pull_off : path.depth_pull_off;
+        return FeAdhesiveState{c.peak_radius, c.depth + law.separation, c.force, path.n_dofs, path.seconds};
+      };
+      adhesive_model_rows(s, method, " (JKR idealisation)", state, critical, radii, constants, rows, nullptr);
+    }
+
     /// The tangential family against the Fourier mode-1 FE model (fem/fourier_mode1_solver.h) at Load/a, the
     /// scene's mesh at its finest refinement, refined toward the stick radii: K_T from the tangential flat punch, and
     /// at three stick radii the FE under the theory's traction tau = mu [p(r; a) - p(r; c)] (9.77, p from the
@@ -587,6 +675,8 @@ namespace gradcontact::cases
         adhesive_fe_rows(s, profile, radii, constants, result.rows, fe);
         if (s.adhesion.law == AdhesionParameters::Law::dugdale)
           dugdale_fe_rows(s, profile, radii, constants, result.rows);
+        if (s.adhesion.law == AdhesionParameters::Law::lennard_jones)
+          lennard_jones_fe_rows(s, profile, m, radii, constants, result.rows);
         return result;
       }
     // The FE first, so that the curves' plots carry its points; its rows follow the MDR's.
@@ -657,6 +747,8 @@ namespace gradcontact::cases
     result.rows.insert(result.rows.end(), fe_rows.begin(), fe_rows.end());
     if (s.references.fem && s.adhesion.law == AdhesionParameters::Law::dugdale)
       dugdale_fe_rows(s, profile, radii, constants, result.rows);
+    if (s.references.fem && s.adhesion.law == AdhesionParameters::Law::lennard_jones)
+      lennard_jones_fe_rows(s, profile, m, radii, constants, result.rows);
     return result;
   }
 

@@ -500,7 +500,7 @@ namespace gradcontact::cases
                       "\"(JKR idealisation)\" (paraboloid or power law). Lennard-Jones: the smooth law of "
                       "fem/smooth_cohesion.h (repulsion included, its largest attraction the Dugdale sigma_0 of the "
                       "Tabor parameter), in Tabor-parameter maps (Map/parameter = Tabor parameter; without it the "
-                      "map is Dugdale's).");
+                      "map is Dugdale's) and for adhesive candidates (with the cohesive strength).");
     prm.declare_entry("Tabor parameter", "0", Patterns::Double(0.),
                       "Dugdale: lambda (cases/fe_cohesive.h; Maugis' at k = 0), which sets sigma_0; or give the "
                       "cohesive strength.");
@@ -773,15 +773,14 @@ namespace gradcontact::cases
           if (!(s.adhesion.work_of_adhesion > 0.))
             throw std::invalid_argument(where + "an adhesive candidate needs Adhesion/work of adhesion > 0 (it is " +
                                         format(s.adhesion.work_of_adhesion) + ")");
-          if (s.adhesion.law == AdhesionParameters::Law::lennard_jones)
-            throw std::invalid_argument(where + "an adhesive candidate takes Adhesion/law = JKR or Dugdale (the "
-                                        "Lennard-Jones FE runs in Tabor-parameter maps only)");
-          if (s.adhesion.law == AdhesionParameters::Law::dugdale &&
+          if (s.adhesion.law != AdhesionParameters::Law::jkr &&
               !(s.adhesion.cohesive_strength > 0. && s.adhesion.tabor_parameter == 0. && s.references.fem))
-            throw std::invalid_argument(where + "an adhesive candidate with Adhesion/law = Dugdale needs Adhesion/"
-                                        "cohesive strength > 0 (not the Tabor parameter, which is defined for the "
-                                        "chapter's profiles) and References/fem = true: its rows are the "
-                                        "cohesive-zone FE's");
+            throw std::invalid_argument(
+              where + "an adhesive candidate with Adhesion/law = " +
+              (s.adhesion.law == AdhesionParameters::Law::dugdale ? "Dugdale" : "Lennard-Jones") +
+              " needs Adhesion/cohesive strength > 0 (not the Tabor parameter, which is defined for the chapter's "
+              "profiles) and References/fem = true: its rows are the " +
+              (s.adhesion.law == AdhesionParameters::Law::dugdale ? "cohesive-zone" : "Lennard-Jones") + " FE's");
           if (!c.adhesive_pressure.empty() && c.curvature.empty())
             throw std::invalid_argument("Candidate/profile curvature: needed for an adhesive pressure candidate "
                                         "(give f''(r))");
@@ -864,8 +863,11 @@ namespace gradcontact::cases
     /// friction, elastic indenters, and Map/nu values without a map.
     void check_common(const Scene &s, const std::string &where)
     {
-      if (s.adhesion.law == AdhesionParameters::Law::lennard_jones && s.map.parameter != MapParameters::Parameter::tabor_parameter)
-        throw std::invalid_argument(where + "Adhesion/law = Lennard-Jones runs in Tabor-parameter maps only (Map/parameter "
+      if (s.adhesion.law == AdhesionParameters::Law::lennard_jones &&
+          s.map.parameter != MapParameters::Parameter::tabor_parameter &&
+          s.candidate.family() != CandidateParameters::Family::adhesive)
+        throw std::invalid_argument(where + "Adhesion/law = Lennard-Jones runs in Tabor-parameter maps and adhesive "
+                                    "candidates only (Map/parameter "
                                     "= Tabor parameter, which gives its lambdas)");
       // The edge's cells of the Lennard-Jones path shrink like lambda^-2 (lennard_jones_edge_refinement).
       if (s.adhesion.law == AdhesionParameters::Law::lennard_jones)

@@ -466,7 +466,7 @@ TEST_CASE("A Lennard-Jones Tabor map shall follow the path from DMT toward JKR a
 
   using testing::scene_with;
   CHECK_THROWS_WITH(scene_with({"Load/type=paraboloid", "Adhesion/work of adhesion=0.05", "Adhesion/law=Lennard-Jones"}),
-                    Catch::Contains("Lennard-Jones runs in Tabor-parameter maps only"));
+                    Catch::Contains("Lennard-Jones runs in Tabor-parameter maps and adhesive candidates only"));
   CHECK_THROWS_WITH(scene_with({"Load/type=paraboloid", "Adhesion/work of adhesion=0.05", "Adhesion/law=Lennard-Jones",
                                 "Map/parameter=Tabor parameter", "Map/ratios=1", "Adhesion/Tabor parameter=2"}),
                     Catch::Contains("Map/ratios gives the lambdas"));

@@ -87,6 +87,16 @@ TEST_CASE("An adhesive or tangential candidate shall be a candidate scene, its f
   CHECK(scene_with({"Load/a=1e-4", "Adhesion/work of adhesion=0.05", "Adhesion/law=Dugdale",
                     "Adhesion/cohesive strength=1e6", profile, "Candidate/adhesive force=1"})
           .kind == SceneKind::candidate);
+  REQUIRE_THROWS_WITH(scene_with({"Load/a=1e-4", "Adhesion/work of adhesion=0.05", "Adhesion/law=Lennard-Jones",
+                                  profile, "Candidate/adhesive force=1"}),
+                      Contains("Adhesion/law = Lennard-Jones needs Adhesion/cohesive strength > 0"));
+  CHECK(scene_with({"Load/a=1e-4", "Adhesion/work of adhesion=0.05", "Adhesion/law=Lennard-Jones",
+                    "Adhesion/cohesive strength=1e5", profile, "Candidate/adhesive force=1"})
+          .kind == SceneKind::candidate);
+  // Lennard-Jones outside a Tabor-parameter map and an adhesive candidate stays refused
+  REQUIRE_THROWS_WITH(scene_with({"Load/type=paraboloid", "Adhesion/work of adhesion=0.05", "Adhesion/law=Lennard-Jones",
+                                  "Adhesion/cohesive strength=1e5"}),
+                      Contains("Lennard-Jones runs in Tabor-parameter maps and adhesive candidates only"));
 
   // A grading outside the chapter: against the FE only, and the tangential family by its stiffness alone.
   const std::string shifted = "Material/modulus=shifted power law", depth = "Material/surface depth=1e-5";
