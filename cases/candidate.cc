@@ -415,6 +415,52 @@ namespace gradcontact::cases
       return force_control ? fem::AdhesionControl::force : fem::AdhesionControl::displacement;
     }
 
+    /// The adhesive pressure candidate against the JKR FE's own p(r) at Load/a (p_n - delta p_1 with the FE's
+    /// pull-back delta(a), 9.53 for the paraboloid) at Outputs/pressure radii, relative to the largest |p| among them
+    /// (the pressure is tensile and singular at the edge); Tolerances/pressure.
+    void adhesive_pressure_fe_rows(const Scene &s, fem::AdhesiveContact &model,
+                                   const std::map<std::string, double> &constants, std::vector<Row> &rows,
+                                   FeValues &fe)
+    {
+      const CandidateParameters &c = s.candidate;
+      const std::vector<double> &x = s.outputs.pressure_radii;
+      const double               a = s.load.a;
+      if (c.adhesive_pressure.empty() || x.empty())
+        return;
+      try
+        {
+          const auto          start = std::chrono::steady_clock::now();
+          std::vector<double> r;
+          for (const double xi : x)
+            r.push_back(xi * a);
+          const std::vector<fem::Sample> p = model.profiles(a, s.adhesion.work_of_adhesion, r, {}).pressure;
+          const double seconds = elapsed(start);
+          double       largest = 0.;
+          for (const fem::Sample &sample : p)
+            largest = std::max(largest, std::abs(sample.value));
+          const auto g = parse_candidate_expression<2>("adhesive pressure", "r,a", c.adhesive_pressure, constants);
+          for (std::size_t i = 0; i < p.size(); ++i)
+            {
+              fe["adhesive pressure"][x[i]] = p[i].value;
+              try
+                {
+                  const double value = g->value(dealii::Point<2>(p[i].r, a));
+                  rows.push_back(compare("adhesive pressure", "r/a = " + format(x[i]) + ", rel. to the largest |p|",
+                                         "candidate", "FE", p[i].value, value, largest, s.tolerances.pressure, 0,
+                                         seconds));
+                }
+              catch (const std::exception &e)
+                {
+                  rows.push_back(failed("adhesive pressure", "candidate", "FE", concise(e)));
+                }
+            }
+        }
+      catch (const std::exception &e)
+        {
+          rows.push_back(failed("adhesive pressure", "candidate", "FE", concise(e)));
+        }
+    }
+
     /// The adhesive family against the JKR FE of fem/adhesion.h (the FE's own energy release rate and critical
     /// search; the profile a rigid custom indenter).
     void adhesive_fe_rows(const Scene &s, const mdr::Profile &profile, const std::vector<double> &radii,
@@ -434,6 +480,7 @@ namespace gradcontact::cases
         return FeAdhesiveState{st.radius, st.depth, st.force, 0, elapsed(start)};
       };
       adhesive_model_rows(s, "FE", "", state, critical, radii, constants, rows, &fe);
+      adhesive_pressure_fe_rows(s, model, constants, rows, fe);
     }
 
     /// Adhesion/law = Dugdale: the adhesive family against the cohesive-zone FE of fem/cohesive_zone.h (adhesion of
