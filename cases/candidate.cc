@@ -21,6 +21,7 @@
 #include <functional>
 #include <limits>
 #include <optional>
+#include <tuple>
 #include <stdexcept>
 #include <vector>
 
@@ -592,6 +593,58 @@ namespace gradcontact::cases
       adhesive_model_rows(s, method, " (JKR idealisation)", state, critical, radii, constants, rows, nullptr);
     }
 
+    /// The branches of the loop between +-FA on the mode-1 FE, at F_x / FA = -1/2, 0, 1/2 of each branch asked. The
+    /// branch's traction of the theory is the loading's at the stick radius c_A of FA less twice the loading's at the
+    /// reversal's front b, mu [F_N(a) - F_N(b)] = (FA -+ F_x) / 2 (Ciavarella-Jaeger, 9.81-9.84). The FE is linear,
+    /// so its u0 on the branch is u0(c_A) - 2 u0(b) of the FE's loading states under those tractions (each the mean u_x
+    /// over its stick zone, which contains the zone that never slipped): one solve per radius, the unloading and the
+    /// reloading branch sharing theirs. Tolerances/displacement, relative to u0(FA).
+    void loop_fe_rows(const Scene &s, const mdr::PartialSlip &slip, fem::FourierMode1Solver &solver,
+                      const std::map<std::string, double> &constants, std::vector<Row> &rows, FeValues &fe)
+    {
+      const CandidateParameters &c  = s.candidate;
+      const double               a  = s.load.a;
+      const double FA  = s.tangential.amplitude * s.tangential.friction_coefficient * slip.normal_force(a);
+      const double c_A = slip.stick_radius(FA);
+      std::map<double, fem::TangentialResult> loading; // by stick radius
+      double                                  seconds = 0;
+      const auto                              u0      = [&](const double rho) -> const fem::TangentialResult & {
+        auto found = loading.find(rho);
+        if (found == loading.end())
+          {
+            const auto start = std::chrono::steady_clock::now();
+            found            = loading
+                      .emplace(rho, solver.run(fem::TangentialLoad::profile(
+                                      [&slip, rho](const double r) { return slip.traction(rho, r); }, a, rho, {rho})))
+                      .first;
+            seconds += elapsed(start);
+          }
+        return found->second;
+      };
+      const double largest = slip.tangential_displacement(c_A);
+      for (const auto &[quantity, expression, branch] :
+           {std::tuple<std::string, std::string, Branch>{"unloading displacement", c.unloading_displacement,
+                                                         Branch::unloading},
+            {"reloading displacement", c.reloading_displacement, Branch::reloading}})
+        {
+          if (expression.empty())
+            continue;
+          const auto g = parse_candidate_expression<3>(quantity, "Fx,FA,a", expression, constants);
+          for (const double x : {-0.5, 0.0, 0.5})
+            {
+              const double Fx   = x * FA;
+              const double b    = slip.radius_for(branch == Branch::unloading ? (FA - Fx) / 2 : (FA + Fx) / 2);
+              const double sign = branch == Branch::unloading ? 1 : -1; // the reloading loop is the mirror image
+              const fem::TangentialResult &A = u0(c_A), &B = u0(b);
+              const double                 u = sign * (A.displacement - 2 * B.displacement);
+              rows.push_back(compare(quantity, "Fx / FA = " + format(x) + ", rel. to u0(FA)", "candidate",
+                                     "FE (mode 1)", u, g->value(dealii::Point<3>(Fx, FA, a)), largest,
+                                     s.tolerances.displacement, B.n_dofs, seconds));
+              fe[quantity][x] = u;
+            }
+        }
+    }
+
     /// The tangential family against the Fourier mode-1 FE model (fem/fourier_mode1_solver.h) at Load/a, the
     /// scene's mesh at its finest refinement, refined toward the stick radii: K_T from the tangential flat punch, and
     /// at three stick radii the FE under the theory's traction tau = mu [p(r; a) - p(r; c)] (9.77, p from the
@@ -656,6 +709,8 @@ namespace gradcontact::cases
               fe["tangential force"][fraction_of.at(cc)]        = r.force;
               fe["tangential displacement"][fraction_of.at(cc)] = r.displacement;
             }
+          if (slip)
+            loop_fe_rows(s, *slip, solver, constants, rows, fe);
         }
       catch (const std::exception &e)
         {
