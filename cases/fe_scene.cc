@@ -55,6 +55,8 @@ namespace gradcontact::cases
       double seconds;
       /// Discretization/accuracy = contract: the ladder's estimates (result is its finest level's run).
       std::optional<fem::ContractResult> contract;
+      /// The memory of the direct solver's factorisation and matrices (bytes); 0 where not known (unilateral).
+      double factor_bytes = 0;
     };
 
     /// Load/contact = unilateral: the contact set found on meshes graded toward the edge found (from Load/a),
@@ -191,10 +193,13 @@ namespace gradcontact::cases
       fem::OutputRequest out = output_request(s);
       if (s.outputs.vtu)
         out.vtu_file = (folder / ("fields-" + std::to_string(refinement) + ".vtu")).string();
-      const fem::Result r = s.load.contact == LoadParameters::Contact::unilateral ? run_unilateral(s, model, out, folder, refinement) :
-                            fem::AxisymmetricSolver(model.material, model.settings.mesh,
-                                                    model.settings.discretization).run(model.load, out);
-      return {refinement, r, std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), {}};
+      if (s.load.contact == LoadParameters::Contact::unilateral)
+        return {refinement, run_unilateral(s, model, out, folder, refinement),
+                std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), {}};
+      fem::AxisymmetricSolver solver(model.material, model.settings.mesh, model.settings.discretization);
+      const fem::Result       r = solver.run(model.load, out);
+      return {refinement, r, std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), {},
+              double(solver.factor_bytes())};
     }
 
     // The scalar quantities a scene compares, with the FE value and the reference quantity name.
@@ -537,13 +542,73 @@ namespace gradcontact::cases
 
   namespace
   {
-    /// One FE solve per entry of Discretization/refinements (a failed level is a failed row).
+    /// The memory this machine has free for a solve: MemAvailable of /proc/meminfo, in bytes; infinity where it
+    /// cannot be read.
+    double available_memory()
+    {
+      std::ifstream meminfo("/proc/meminfo");
+      std::string   key, unit;
+      double        kib = 0;
+      while (meminfo >> key >> kib >> unit)
+        if (key == "MemAvailable:")
+          return kib * 1024;
+      return std::numeric_limits<double>::infinity();
+    }
+
+    /// A level's size before it is solved, from a coarser level solved before it: uniform refinement of the 2D mesh
+    /// multiplies the DoFs by 4 per level, and the fill of a sparse direct factorisation of such a mesh grows like
+    /// N log N (nested dissection; George, SIAM J. Numer. Anal. 10 (1973) 345).
+    struct LevelForecast
+    {
+      double dofs = 0, bytes = 0;
+    };
+    LevelForecast forecast(const FeRun &from, const unsigned int level)
+    {
+      const double growth = std::pow(4.0, double(level) - double(from.refinement));
+      const double n0 = std::max<double>(from.result.n_dofs, 2), n = n0 * growth;
+      return {n, from.factor_bytes * growth * std::log(n) / std::log(n0)};
+    }
+
+    /// One FE solve per entry of Discretization/refinements (a failed level is a failed row). Each level beyond the
+    /// first is forecast from the finest solved before it (a first level of 2 or more from a solve of level 0, which
+    /// is cheap): its DoFs are said before it starts when it is large, and a level whose factorisation would not fit
+    /// in the memory this machine has available is refused before it starts, with the levels above it.
     std::vector<FeRun> solve_levels(const Scene &s, const fs::path &folder, const bool verbose, SceneResult &result)
     {
       std::vector<FeRun> runs;
+      std::optional<FeRun> calibration;
+      const double available = available_memory();
       for (const unsigned int level : s.discretization.refinements)
         {
-          if (verbose)
+          std::optional<FeRun> from;
+          for (const FeRun &run : runs)
+            if (run.refinement < level && (!from || run.refinement > from->refinement))
+              from = run;
+          if (!from && level >= 2 && s.load.contact != LoadParameters::Contact::unilateral)
+            {
+              if (!calibration)
+                calibration = run_fe(s, 0, fs::temp_directory_path());
+              from = calibration;
+            }
+          if (from && from->factor_bytes > 0)
+            {
+              const LevelForecast f = forecast(*from, level);
+              if (f.bytes > 0.8 * available)
+                {
+                  result.rows.push_back(failed(
+                    "FE solve", "FE", "-",
+                    "refinement " + std::to_string(level) + " refused before it started: about " + format(f.dofs) +
+                      " DoFs, whose direct factorisation needs about " + format(f.bytes / 1e9) + " GB (forecast from "
+                      "refinement " + std::to_string(from->refinement) + "'s " + format(from->factor_bytes / 1e9) +
+                      " GB), above 80 % of the " + format(available / 1e9) + " GB this machine has available; use "
+                      "fewer refinements, or Discretization/accuracy = contract with a force tolerance"));
+                  break;
+                }
+              if (verbose || f.dofs > 1e6)
+                std::cerr << "  " << s.info.name << ": FE solve, " << level << " refinement(s): about "
+                          << format(f.dofs) << " DoFs, " << format(f.bytes / 1e9) << " GB\n";
+            }
+          else if (verbose)
             std::cerr << "  " << s.info.name << ": FE solve, " << level << " refinement(s)\n";
           try
             {

@@ -240,8 +240,11 @@ namespace gradcontact::cases
   {
     prm.enter_subsection("Discretization");
     prm.declare_entry("degree", "3", Patterns::Integer(1, 8), "FE_Q degree.");
-    prm.declare_entry("refinements", "0", Patterns::List(Patterns::Integer(0, 6), 1, 7),
-                      "Uniform refinements of the recommended mesh; several values make a convergence study.");
+    prm.declare_entry("refinements", "0", Patterns::List(Patterns::Integer(), 1, 12),
+                      "Uniform refinements of the recommended mesh, each in 0..10; several values make a convergence "
+                      "study. Each level has about 4 times the DoFs of the one before: the run forecasts a level's DoFs "
+                      "and memory from a coarser one and refuses, before it starts, a level that would not fit in "
+                      "this machine's free memory.");
     prm.declare_entry("force tolerance", "1e-6", Patterns::Double(1e-12, 1.),
                       "The wanted relative force error: selects the recommended mesh (fem/doc/meshes.md).");
     prm.declare_entry("accuracy", "levels", Patterns::Selection("levels|contract"),
@@ -276,7 +279,14 @@ namespace gradcontact::cases
     degree = prm.get_integer("degree");
     refinements.clear();
     for (const std::string &s : dealii::Utilities::split_string_list(prm.get("refinements")))
-      refinements.push_back(dealii::Utilities::string_to_int(s));
+      {
+        const int level = dealii::Utilities::string_to_int(s);
+        if (level < 0 || level > 10)
+          throw std::invalid_argument("Discretization/refinements = " + s +
+                                      ": the valid range is 0..10 (each refinement multiplies the DoFs by about 4; "
+                                      "the run also refuses a level that would not fit in memory)");
+        refinements.push_back(static_cast<unsigned int>(level));
+      }
     force_tolerance = prm.get_double("force tolerance");
     contract = prm.get("accuracy") == "contract";
     far_field = prm.get_double("far field");
