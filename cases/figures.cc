@@ -733,6 +733,11 @@ namespace gradcontact::cases
           const std::vector<CheckedPoint> rows = check_points(points, c.at("check"), analytic, file.string());
           checked.insert(checked.end(), rows.begin(), rows.end());
           why[points.title] = c.at("check").value("why", "(no reason given)");
+          // a point set checked against one curve is drawn in that curve's colour
+          if (c.at("check").at("curves").size() == 1)
+            for (std::size_t i = 0; i < series.size(); ++i)
+              if (series[i].title == c.at("check").at("curves").front().get<std::string>())
+                points.colour_of = static_cast<int>(i);
           series.push_back(points);
         }
 

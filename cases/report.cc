@@ -225,6 +225,19 @@ namespace gradcontact::cases
       }
   }
 
+  namespace
+  {
+    thread_local std::string plot_subtitle;
+  }
+
+  PlotSubtitle::PlotSubtitle(std::string line)
+    : previous(std::move(plot_subtitle))
+  {
+    plot_subtitle = std::move(line);
+  }
+
+  PlotSubtitle::~PlotSubtitle() { plot_subtitle = std::move(previous); }
+
   bool write_plot(const fs::path &folder, const std::string &stem, const std::string &title, const std::string &xlabel,
                   const std::string &ylabel, const std::vector<Series> &series, const bool logx, const bool logy)
   {
@@ -241,16 +254,23 @@ namespace gradcontact::cases
     std::ofstream gp(folder / (stem + ".gp"));
     gp << "# gnuplot script: `gnuplot " << stem << ".gp` in this folder remakes " << stem << ".png and " << stem
        << ".svg\n"
-       << "set title \"" << title << "\" noenhanced\nset xlabel \"" << xlabel << "\" noenhanced\nset ylabel \"" << ylabel
+       << "set title \"" << title << (plot_subtitle.empty() ? "" : "\\n" + plot_subtitle)
+       << "\" noenhanced\nset xlabel \"" << xlabel << "\" noenhanced\nset ylabel \"" << ylabel
        << "\" noenhanced\nset grid\n"
        // the legend outside the plot area, right of it: it cannot cover data
        << "set key outside right top vertical Left reverse\n"
        << (logx ? "set logscale x\nset format x \"%g\"\n" : "") << (logy ? "set logscale y\nset format y \"%.0e\"\n" : "");
     std::string plot = "plot ";
+    // Each series of its own colour takes the next of gnuplot's 8 line types' colours; one with colour_of takes that
+    // series' colour (FE points drawn in their curve's).
+    std::vector<std::size_t> colour(series.size());
+    std::size_t              own = 0;
+    for (std::size_t i = 0; i < series.size(); ++i)
+      colour[i] = series[i].colour_of >= 0 && std::size_t(series[i].colour_of) < i ? colour[series[i].colour_of] : own++;
     for (std::size_t i = 0; i < series.size(); ++i)
       {
-        // gnuplot cycles through 8 colours: from the 9th series on, another point shape and dash tell them apart
-        const std::size_t round = i / 8;
+        // from the 9th colour on, another point shape and dash tell the series apart
+        const std::size_t round = colour[i] / 8;
         constexpr int     shapes[] = {7, 5, 9, 11, 13};
         const std::string shape    = std::to_string(shapes[round % 5]);
         const std::string dash  = " dt " + std::to_string(round % 5 + 1);
@@ -258,7 +278,7 @@ namespace gradcontact::cases
                 (series[i].linespoints ? "linespoints lw 2 pt " + shape + " ps 1" + dash
                  : series[i].points    ? "points pt " + shape + " ps 1.2"
                                        : "lines lw 2" + dash) +
-                " title \"" + series[i].title + "\" noenhanced";
+                " lc " + std::to_string(colour[i] % 8 + 1) + " title \"" + series[i].title + "\" noenhanced";
       }
     gp << "set terminal pngcairo size 1100,600\nset output '" << stem << ".png'\n" << plot << "\n"
        << "set terminal svg size 1100,600\nset output '" << stem << ".svg'\n" << plot << "\n";

@@ -58,6 +58,23 @@ namespace gradcontact::cases
     std::vector<double> x, y;
     bool points = false;
     bool linespoints = false; ///< line through the points, each marked (a sweep of runs)
+    /// The index of the series (before this one) whose colour it takes, e.g. FE points their closed-form curve's;
+    /// -1: a colour of its own.
+    int colour_of = -1;
+  };
+
+  /// While one lives, every plot of this thread carries `line` under its title (the parameters a scene ran with, so
+  /// that a plot of a --set variant says what it shows).
+  class PlotSubtitle
+  {
+  public:
+    explicit PlotSubtitle(std::string line);
+    ~PlotSubtitle();
+    PlotSubtitle(const PlotSubtitle &) = delete;
+    PlotSubtitle &operator=(const PlotSubtitle &) = delete;
+
+  private:
+    std::string previous;
   };
   bool write_plot(const std::filesystem::path &folder, const std::string &stem, const std::string &title,
                   const std::string &xlabel, const std::string &ylabel, const std::vector<Series> &series,

@@ -15,6 +15,7 @@
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
+#include <map>
 #include <chrono>
 #include <cmath>
 #include <filesystem>
@@ -259,6 +260,20 @@ namespace gradcontact::cases
         }
       Scene scene = read_scene(file.string(), overrides);
       scene.info.name += suffix;
+      // a variant says so in its report: the description was written for the file's own values
+      if (!overrides.empty())
+        {
+          std::string set;
+          for (const Override &ov : overrides)
+            {
+              std::string path;
+              for (const std::string &part : ov.path)
+                path += (path.empty() ? "" : "/") + part;
+              set += (set.empty() ? "" : ", ") + path + " = " + ov.value;
+            }
+          scene.info.description += (scene.info.description.empty() ? "" : " ") + std::string("[run with --set ") +
+                                    set + "]";
+        }
       if (o.verbose)
         std::cout << "# " << file.string() << " resolved:\n" << scene.resolved;
       try
@@ -325,8 +340,36 @@ namespace gradcontact::cases
     }
   } // namespace
 
+  namespace
+  {
+    /// The parameters a scene ran with, under every plot's title: the medium, and the FE's degree where the FE runs.
+    /// A map varies them itself and gets none.
+    std::string plot_subtitle(const Scene &s)
+    {
+      if (s.kind == SceneKind::map)
+        return "";
+      using Modulus = MaterialParameters::Modulus;
+      const MaterialParameters &m = s.material;
+      const std::map<Modulus, std::string> names{{Modulus::power_law, "power law"},
+                                                 {Modulus::layered, "layered power law"},
+                                                 {Modulus::expression, "expression"},
+                                                 {Modulus::shifted_power_law, "shifted power law"},
+                                                 {Modulus::coating, "graded coating"},
+                                                 {Modulus::table, "table"},
+                                                 {Modulus::error_function, "error function"}};
+      std::string line = "E(z) " + names.at(m.modulus);
+      if (m.modulus == Modulus::power_law || m.modulus == Modulus::layered || m.modulus == Modulus::coating)
+        line += ", k = " + format(m.k);
+      line += ", nu = " + format(m.nu);
+      if (s.references.fem)
+        line += ", FE degree " + std::to_string(s.discretization.degree);
+      return line;
+    }
+  } // namespace
+
   SceneResult run_report(const Scene &scene, const fs::path &reports, const bool verbose)
   {
+    const PlotSubtitle subtitle(plot_subtitle(scene));
     SceneResult s;
     atomic_folder(reports / scene.info.name, [&](const fs::path &tmp) {
       s = run_scene(scene, tmp, verbose);
