@@ -800,11 +800,53 @@ namespace gradcontact::cases
     }
   } // namespace
 
-  SceneResult run_normal_scene(const Scene &s, const fs::path &folder, const bool verbose)
+  namespace
   {
-    require_kind(s, SceneKind::normal, "run_normal_scene");
+    /// Depth or force control of a curved profile on a grading without a closed form: the FE's mesh is graded toward
+    /// a contact radius (its finest cells at the edge, where the depth- and force-controlled search of
+    /// fem/axisymmetric_solver.h moves the edge within a bounded number of surface DoFs), so that radius must be near
+    /// the answer. It is found by the FE itself: a secant in ln a on ln d(a) or ln F(a) of radius-controlled solves
+    /// on the coarsest mesh, from Load/a (d ~ a^n for a profile ~ r^n). The scene comes back with Load/a there.
+    Scene with_mesh_at_the_answer(const Scene &s, const bool verbose)
+    {
+      const LoadParameters &l = s.load;
+      if (l.control == Control::contact_radius || !curved(l) || l.contact != LoadParameters::Contact::disc ||
+          s.material.modulus == MaterialParameters::Modulus::power_law || s.discretization.contract)
+        return s;
+      const bool by_depth = l.control == Control::depth;
+      const double target = std::log(by_depth ? l.depth : l.force);
+      const double n      = l.type == Type::paraboloid ? 2. : l.type == Type::cone ? 1. : l.n;
+      Scene probe = s;
+      probe.load.control = Control::contact_radius;
+      probe.outputs.vtu  = false;
+      const auto misfit  = [&](const double ln_a) {
+        probe.load.a          = std::exp(ln_a);
+        const fem::Result r   = run_fe(probe, 0, fs::temp_directory_path()).result;
+        return std::log(by_depth ? r.depth : r.force) - target;
+      };
+      double x0 = std::log(l.a), f0 = misfit(x0);
+      double x1 = x0 - f0 / (by_depth ? n : n + 1.), f1 = misfit(x1);
+      for (unsigned int i = 0; i < 8 && std::abs(x1 - x0) > 1e-4; ++i)
+        {
+          const double x2 = x1 - f1 * (x1 - x0) / (f1 - f0);
+          x0 = x1, f0 = f1;
+          x1 = x2, f1 = misfit(x1);
+        }
+      Scene out  = s;
+      out.load.a = std::exp(x1);
+      if (verbose)
+        std::cerr << "  " << s.info.name << ": the mesh's contact radius from the FE's own "
+                  << (by_depth ? "d(a)" : "F(a)") << ": " << format(out.load.a) << " (Load/a = " << format(l.a) << ")\n";
+      return out;
+    }
+  } // namespace
+
+  SceneResult run_normal_scene(const Scene &scene, const fs::path &folder, const bool verbose)
+  {
+    require_kind(scene, SceneKind::normal, "run_normal_scene");
     const auto start = std::chrono::steady_clock::now();
-    SceneResult result = started(s, folder);
+    SceneResult result = started(scene, folder);
+    const Scene s = with_mesh_at_the_answer(scene, verbose);
     const References references = references_of(s, result);
 
     // The FE solves, shared by every quantity and every reference.
