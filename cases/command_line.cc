@@ -9,8 +9,11 @@
 #include <analytic/batch.h>
 
 #include <algorithm>
+#include <cstdlib>
+#include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <optional>
 #include <stdexcept>
 
 namespace gradcontact::cases
@@ -30,35 +33,56 @@ namespace gradcontact::cases
       // --batch: read the whole input first (cases/fe_oracle.h, EvalReading); else each line answered at once.
       std::vector<std::string> args;
       EvalReading              reading = EvalReading::per_line;
+      bool                     use_cache = true;
       for (const std::string &a : args_in)
         if (a == "--batch")
           reading = EvalReading::whole_input;
+        else if (a == "--no-cache")
+          use_cache = false;
         else
           args.push_back(a);
+      // FE answers kept between processes (per line only): in GRADCONTACT_EVAL_CACHE (set but empty: none), else in
+      // the user's cache folder
+      std::optional<ResultCache> cache;
+      if (use_cache && reading == EvalReading::per_line)
+        {
+          const char *own = std::getenv("GRADCONTACT_EVAL_CACHE"), *xdg = std::getenv("XDG_CACHE_HOME"),
+                     *home = std::getenv("HOME");
+          const std::filesystem::path folder =
+            own ? std::filesystem::path(own) // empty: no cache
+            : xdg && *xdg ? std::filesystem::path(xdg) / "gradcontact" / "eval"
+            : home && *home ? std::filesystem::path(home) / ".cache" / "gradcontact" / "eval"
+                            : std::filesystem::path();
+          if (!folder.empty())
+            cache.emplace(folder);
+        }
+      const ResultCache *kept = cache ? &*cache : nullptr;
       if (args.size() > 1)
         throw std::invalid_argument("eval: takes at most one file (got " + std::to_string(args.size()) + ")");
       FeOracle oracle; // "method": "fe" (cases/fe_oracle.h)
       if (args.empty() || args[0] == "-")
         {
-          evaluate_stream(std::cin, std::cout, oracle, reading);
+          evaluate_stream(std::cin, std::cout, oracle, reading, kept);
           return 0;
         }
       std::ifstream in(args[0]);
       if (!in)
         throw std::invalid_argument("eval: cannot open file '" + args[0] + "'");
-      evaluate_stream(in, std::cout, oracle, reading);
+      evaluate_stream(in, std::cout, oracle, reading, kept);
       return 0;
     }
 
     const std::vector<Command> &commands()
     {
       static const std::vector<Command> list = {
-        {"eval", "[--batch] [file]",
+        {"eval", "[--batch] [--no-cache] [file]",
          "evaluate JSON Lines requests from file (or stdin), one answer\n"
          "line per request, each written as soon as its line is read (vocabulary:\n"
          "analytic/README.md; \"method\": \"fe\" answers by the FE model with an error\n"
          "estimate, cases/fe_oracle.h); --batch reads the whole input first, so that\n"
-         "the FE samples all pressures and displacements of one state together",
+         "the FE samples all pressures and displacements of one state together;\n"
+         "read per line, FE answers are kept between runs in GRADCONTACT_EVAL_CACHE\n"
+         "(default ~/.cache/gradcontact/eval) unless --no-cache",
          eval},
         {"run", "<scene|folder> ... [--set Section/key=value] [--reports DIR] [--quiet]\n"
                 "    [--verbose] [--shard i/N] [--map-shard i/N] [--help-scene] [--help-functions]",

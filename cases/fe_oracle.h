@@ -20,6 +20,8 @@
 #ifndef GRADCONTACT_CASES_FE_ORACLE_H
 #define GRADCONTACT_CASES_FE_ORACLE_H
 
+#include "result_cache.h"
+
 #include <fem/axisymmetric_solver.h>
 
 #include <nlohmann/json_fwd.hpp>
@@ -83,9 +85,11 @@ namespace gradcontact::cases
   /// `gradcontact eval`: one answer line per request line, in order; a request with "method": "fe" goes to
   /// `oracle` (its answer adds "error_estimate", "relative_error_estimate", "dofs" and "formulation"), any other to
   /// the closed forms or the numerical MDR (analytic/batch.h). Never throws on a request: an error becomes
-  /// {"id", "error"}. Returns the number of errors.
+  /// {"id", "error"}. Returns the number of errors. With `cache` (read per line only: a batch's pressure estimates
+  /// share their scale), an FE answer is kept under its request without "id" and the program's build, so that a
+  /// later process answers the same request without solving (cases/result_cache.h).
   int evaluate_stream(std::istream &in, std::ostream &out, FeOracle &oracle,
-                      EvalReading reading = EvalReading::whole_input);
+                      EvalReading reading = EvalReading::whole_input, const ResultCache *cache = nullptr);
 } // namespace gradcontact::cases
 
 #endif
