@@ -718,6 +718,27 @@ namespace gradcontact::cases
         }
     }
 
+    /// A candidate's d(a) or F_N(a) against the numerical MDR at `radii` (9.10, 9.11; with dgamma > 0 the adhesive
+    /// foundation of 9.46): a row per radius, a table and a plot, the largest deviation noted. The adhesive branch
+    /// passes through F = 0, so its deviations are relative to the curve's largest |MDR|.
+    void indentation_curve(const std::string &quantity, const std::string &expression, const bool force,
+                           const std::vector<double> &radii, const mdr::Profile &profile, const Medium &m,
+                           const double dgamma, const std::map<std::string, double> &constants, const Scene &s,
+                           const FeValues &fe, const fs::path &folder, SceneResult &result)
+    {
+      if (expression.empty())
+        return;
+      const auto g = parse_candidate_expression<1>(quantity, "a", expression, constants);
+      Curve      curve{quantity, "a [m]", force ? "[N]" : "[m]", radii,
+                  [&, g](const std::size_t i) { return g->value(dealii::Point<1>(radii[i])); },
+                  [&](const std::size_t i) {
+                    const mdr::Foundation w1d = mdr::indentation(profile, m, radii[i], dgamma);
+                    return force ? mdr::force(w1d, m) : mdr::depth(w1d);
+                  },
+                  dgamma > 0};
+      add_note(result, report_curve(curve, s.candidate.tolerance, s.outputs.plots, folder, fe, result.rows));
+    }
+
     Medium scene_medium(const Scene &s)
     {
       const MaterialParameters &m = s.material;
@@ -743,20 +764,8 @@ namespace gradcontact::cases
     FeValues fe;
     for (const auto &[quantity, value] : fe_at_a)
       fe[quantity][a] = value;
-    const auto curve = [&](const std::string &quantity, const std::string &expression, const bool force) {
-      if (expression.empty())
-        return;
-      const auto g = parse_candidate_expression<1>(quantity, "a", expression, constants);
-      Curve curve{quantity, "a [m]", force ? "[N]" : "[m]", radii,
-                  [&, g](const std::size_t i) { return g->value(dealii::Point<1>(radii[i])); },
-                  [&](const std::size_t i) {
-                    const mdr::Foundation w1d = mdr::indentation(profile, m, radii[i]);
-                    return force ? mdr::force(w1d, m) : mdr::depth(w1d);
-                  }};
-      add_note(result, report_curve(curve, c.tolerance, s.outputs.plots, folder, fe, result.rows));
-    };
-    curve("depth", c.depth, false);
-    curve("force", c.force, true);
+    indentation_curve("depth", c.depth, false, radii, profile, m, 0., constants, s, fe, folder, result);
+    indentation_curve("force", c.force, true, radii, profile, m, 0., constants, s, fe, folder, result);
   }
 
 
@@ -788,21 +797,10 @@ namespace gradcontact::cases
     result.description = s.references.fem ? "against the numerical MDR and the FE" : "against the numerical MDR";
 
     // d(a) and F_N(a) on the adhesive branch (both branches of the JKR curve: every a has its state, 9.46).
-    const auto branch = [&](const std::string &quantity, const std::string &expression, const bool force) {
-      if (expression.empty())
-        return;
-      const auto g = parse_candidate_expression<1>(quantity, "a", expression, constants);
-      Curve curve{quantity, "a [m]", force ? "[N]" : "[m]", radii,
-                  [&, g](const std::size_t i) { return g->value(dealii::Point<1>(radii[i])); },
-                  [&](const std::size_t i) {
-                    const mdr::Foundation w1d = mdr::indentation(profile, m, radii[i], dgamma);
-                    return force ? mdr::force(w1d, m) : mdr::depth(w1d);
-                  },
-                  true};
-      add_note(result, report_curve(curve, c.tolerance, s.outputs.plots, folder, fe, result.rows));
-    };
-    branch("adhesive depth", c.adhesive_depth, false);
-    branch("adhesive force", c.adhesive_force, true);
+    indentation_curve("adhesive depth", c.adhesive_depth, false, radii, profile, m, dgamma, constants, s, fe, folder,
+                      result);
+    indentation_curve("adhesive force", c.adhesive_force, true, radii, profile, m, dgamma, constants, s, fe, folder,
+                      result);
 
     // p(r, a) of the adhesive state at Load/a, relative to the largest |p| of the radii asked (it is tensile at the
     // edge, where it is singular).
