@@ -457,68 +457,89 @@ namespace gradcontact::cases
     return ratios;
   }
 
-  std::vector<WorkPrecisionRow> run_fe_bench(const FeBenchOptions &o, const fs::path &folder, const std::string &machine)
+  namespace
   {
-    const std::vector<double> ks = o.quick ? std::vector<double>{0.0} : std::vector<double>(all_k.begin(), all_k.end());
-    const unsigned int max_degree = o.quick ? 2 : 4;
-    // quick: the two coarsest levels of the normal scenes, the coarsest of the adhesive and tangential ones
-    const auto n_levels = [&](const std::string &load) {
-      return o.quick ? (peer_models(load) ? 2u : quick_levels_new_scenes) : levels_of(load);
+    /// What a bench run measures: the exponents, degrees and levels, the scenes, and whether the peer runs.
+    struct BenchPlan
+    {
+      std::vector<double>      ks;
+      unsigned int             max_degree = 0, n_peer_levels = 0;
+      std::vector<std::string> run_loads;
+      fs::path                 mesh_cache;
+      bool                     peer = false;
+      std::string              peer_note;
     };
-    for (const auto &scene : o.scenes)
-      if (std::find(loads.begin(), loads.end(), scene) == loads.end())
-        throw std::invalid_argument("bench: --scene = '" + scene +
-                                    "' is not one of flat_punch, paraboloid, jkr_paraboloid, tangential_punch");
-    const auto selected = [&](const std::string &load) {
+
+    /// Whether `load` is among the --scene options (all when none).
+    bool selected(const FeBenchOptions &o, const std::string &load)
+    {
       return o.scenes.empty() || std::find(o.scenes.begin(), o.scenes.end(), load) != o.scenes.end();
-    };
-    const unsigned int n_peer_levels = o.quick ? 2 : peer_levels;
-    const fs::path mesh_cache = folder / "mesh-cache";
-    bool peer = o.with_peer && freefem_available(o.freefem);
-    std::string peer_note;
-    if (o.with_peer && !peer)
-      peer_note = "`" + o.freefem + "` is not on PATH: the peer was skipped (`./vv deps` installs Debian's freefem++).";
+    }
 
-    std::vector<WorkPrecisionRow> rows;
-    const auto start = std::chrono::steady_clock::now();
-    std::vector<std::string> run_loads;
-    for (const std::string load : loads)
-      if (selected(load) && (!o.quick || peer_models(load) || quick_levels_new_scenes > 0))
-        run_loads.push_back(load);
-    for (const std::string &load : run_loads)
-      for (const double k : ks)
+    /// The mesh levels of our model per scene; quick: the two coarsest levels of the normal scenes, the coarsest of
+    /// the adhesive and tangential ones.
+    unsigned int n_levels(const FeBenchOptions &o, const std::string &load)
+    {
+      return o.quick ? (peer_models(load) ? 2u : quick_levels_new_scenes) : levels_of(load);
+    }
+
+    BenchPlan plan_fe_bench(const FeBenchOptions &o, const fs::path &folder)
+    {
+      BenchPlan plan;
+      plan.ks = o.quick ? std::vector<double>{0.0} : std::vector<double>(all_k.begin(), all_k.end());
+      plan.max_degree = o.quick ? 2 : 4;
+      for (const auto &scene : o.scenes)
+        if (std::find(loads.begin(), loads.end(), scene) == loads.end())
+          throw std::invalid_argument("bench: --scene = '" + scene +
+                                      "' is not one of flat_punch, paraboloid, jkr_paraboloid, tangential_punch");
+      plan.n_peer_levels = o.quick ? 2 : peer_levels;
+      plan.mesh_cache = folder / "mesh-cache";
+      plan.peer = o.with_peer && freefem_available(o.freefem);
+      if (o.with_peer && !plan.peer)
+        plan.peer_note =
+          "`" + o.freefem + "` is not on PATH: the peer was skipped (`./vv deps` installs Debian's freefem++).";
+      for (const std::string load : loads)
+        if (selected(o, load) && (!o.quick || peer_models(load) || quick_levels_new_scenes > 0))
+          plan.run_loads.push_back(load);
+      return plan;
+    }
+
+    /// Our model's runs of one scene and k: every degree, level and variant that applies.
+    void run_our_rows(const FeBenchOptions &o, const BenchPlan &plan, const std::string &load, const double k,
+                      std::vector<WorkPrecisionRow> &rows)
+    {
+      for (unsigned int degree = 1; degree <= plan.max_degree; ++degree)
+        for (unsigned int level = 0; level < n_levels(o, load); ++level)
+          for (const Variant variant : {Variant::plain, Variant::map, Variant::condensed})
+            {
+              if (variant == Variant::map && (!map_models(load, k) || degree < 2))
+                continue;
+              if (variant == Variant::condensed && !condensed_models(load))
+                continue;
+              rows.push_back(run_ours(load, k, degree, level, repeats_of(load, o.repeat), plan.mesh_cache, variant));
+              const auto &r = rows.back();
+              std::cerr << "bench fe: " << load << " k=" << k << " " << r.model << " degree " << degree << " level "
+                        << level << ": " << r.dofs << " DoFs, error " << fmt(r.error) << ", " << fmt(r.wall_min) << " s"
+                        << (r.note.empty() ? "" : " (" + r.note + ")") << "\n";
+            }
+    }
+
+    /// The peer's runs of one scene and k, every level, with our coarsest level's far field.
+    void run_peer_rows(const FeBenchOptions &o, const BenchPlan &plan, const std::string &load, const double k,
+                       std::vector<WorkPrecisionRow> &rows)
+    {
+      for (unsigned int level = 0; level < plan.n_peer_levels; ++level)
         {
-          if (o.with_fe)
-            for (unsigned int degree = 1; degree <= max_degree; ++degree)
-              for (unsigned int level = 0; level < n_levels(load); ++level)
-                {
-                  for (const Variant variant : {Variant::plain, Variant::map, Variant::condensed})
-                    {
-                      if (variant == Variant::map && (!map_models(load, k) || degree < 2))
-                        continue;
-                      if (variant == Variant::condensed && !condensed_models(load))
-                        continue;
-                      rows.push_back(run_ours(load, k, degree, level, repeats_of(load, o.repeat), mesh_cache, variant));
-                      const auto &r = rows.back();
-                      std::cerr << "bench fe: " << load << " k=" << k << " " << r.model << " degree " << degree
-                                << " level " << level << ": " << r.dofs << " DoFs, error " << fmt(r.error) << ", "
-                                << fmt(r.wall_min) << " s" << (r.note.empty() ? "" : " (" + r.note + ")") << "\n";
-                    }
-                }
-          if (peer && peer_models(load))
-            for (unsigned int level = 0; level < n_peer_levels; ++level)
-              {
-                rows.push_back(run_peer(o, load, k, level, fe_mesh_level(a, k, 0).far_field_size));
-                const auto &r = rows.back();
-                std::cerr << "bench peer: " << load << " k=" << k << " level " << level << ": " << r.dofs
-                          << " DoFs, error " << fmt(r.error) << ", " << fmt(r.wall_min) << " s"
-                          << (r.note.empty() ? "" : " (" + r.note + ")") << "\n";
-              }
+          rows.push_back(run_peer(o, load, k, level, fe_mesh_level(a, k, 0).far_field_size));
+          const auto &r = rows.back();
+          std::cerr << "bench peer: " << load << " k=" << k << " level " << level << ": " << r.dofs << " DoFs, error "
+                    << fmt(r.error) << ", " << fmt(r.wall_min) << " s" << (r.note.empty() ? "" : " (" + r.note + ")")
+                    << "\n";
         }
-    const double total = seconds_since(start);
-    fs::remove_all(mesh_cache);
+    }
 
-    // CSV: every number of every row.
+    /// fe_work_precision.csv: every number of every row.
+    void write_bench_csv(const fs::path &folder, const std::vector<WorkPrecisionRow> &rows)
     {
       std::ofstream csv(folder / "fe_work_precision.csv");
       csv << "load,k,model,degree,level,h_edge,ring_growth,L_over_a,dofs,force_error,depth_error,error,"
@@ -537,192 +558,260 @@ namespace gradcontact::cases
         }
     }
 
-    // Plots: per scene, error against wall time (min) and against DoFs, one curve per degree (+ peer).
-    std::vector<std::string> plots;
-    for (const std::string load : loads)
-      for (const double k : ks)
+    /// The curves of a plot, each in the order of its runs (mesh level), not of x: timing noise would zig-zag it.
+    std::vector<Series> ordered_series(const std::map<std::string, Series> &m)
+    {
+      std::vector<Series> v;
+      for (const auto &s : m)
         {
-          std::map<std::string, Series> by_time, by_dofs;
-          for (const auto &r : rows)
-            if (r.load == load && r.k == k && std::isfinite(r.error) && r.error > 0)
-              {
-                for (auto *m : {&by_time, &by_dofs})
-                  (*m)[label(r)].title = label(r);
-                by_time[label(r)].x.push_back(r.wall_min);
-                by_time[label(r)].y.push_back(r.error);
-                by_dofs[label(r)].x.push_back(r.dofs);
-                by_dofs[label(r)].y.push_back(r.error);
-              }
-          if (by_time.empty())
-            continue;
-          // each curve in the order of its runs (mesh level), not of x: timing noise would zig-zag it
-          const auto series = [](const std::map<std::string, Series> &m) {
-            std::vector<Series> v;
-            for (const auto &s : m)
-              {
-                std::vector<std::size_t> idx(s.second.x.size());
-                for (std::size_t i = 0; i < idx.size(); ++i)
-                  idx[i] = i;
-                Series c{s.second.title, {}, {}, false};
-                c.linespoints = true;
-                for (const auto i : idx)
-                  {
-                    c.x.push_back(s.second.x[i]);
-                    c.y.push_back(s.second.y[i]);
-                  }
-                v.push_back(c);
-              }
-            return v;
-          };
-          const std::string stem = "fe_" + load + "_k" + k_name(k);
-          const std::string scene = load + ", k = " + fmt(k, "%g") + ", nu = 0.3";
-          write_plot(folder, stem + "_error_vs_time", scene + ": relative error against wall time (min)",
-                     "wall time [s]", "relative error", series(by_time), true, true);
-          write_plot(folder, stem + "_error_vs_dofs", scene + ": relative error against DoFs", "DoFs",
-                     "relative error", series(by_dofs), true, true);
-          plots.push_back(stem);
+          std::vector<std::size_t> idx(s.second.x.size());
+          for (std::size_t i = 0; i < idx.size(); ++i)
+            idx[i] = i;
+          Series c{s.second.title, {}, {}, false};
+          c.linespoints = true;
+          for (const auto i : idx)
+            {
+              c.x.push_back(s.second.x[i]);
+              c.y.push_back(s.second.y[i]);
+            }
+          v.push_back(c);
         }
+      return v;
+    }
 
-    // Markdown.
-    std::ostringstream md;
-    md << "# FE work-precision benchmarks (`gradcontact bench --part fe`)\n\n"
-       << "Machine: " << machine << ". Repetitions per run: " << o.repeat << (o.quick ? " (quick set)" : "")
-       << ". Whole run: " << fmt(total, "%.0f") << " s.\n\n"
-       << "## What is measured\n\n"
-       << "Each row is one FE model on one mesh: the relative error of its answer against the closed forms of "
-          "`analytic/normal.h` (an independent path: the MDR closed forms, themselves checked against 34-digit "
-          "references), and the wall time from the construction of the solver (mesh, DoFs, assembly, "
-          "factorisation) to the answer, including post-processing.\n\n"
-       << "- Scenes: flat punch (radius a, depth 1e-3 a, force against (9.16)); paraboloid R = 50 a under "
-          "contact-radius control (force F(a) and depth d(a) against the Hertz-type closed forms; the error is the "
-          "larger of the two). E0 = 2 GPa, c0 = 3 a, a = 0.1 mm, nu = 0.3.\n"
-       << "- jkr_paraboloid: the JKR pull-off force of the paraboloid R = 50 a, dgamma = 0.05 J/m^2, under force "
-          "control, from `AdhesiveContact::critical_state` (`fem/adhesion.h`: one FE model per contact radius, "
-          "each on the level's mesh graded toward that radius; the search starts 1.2 a_c off), against F_c of "
-          "(9.55)-(9.56) (`jkr::critical_state` of `analytic/adhesion.h`; at k = 0 JKR's -3/2 pi dgamma R). "
-          "The time is the whole search (all radii, noted in the row); DoFs are those of the largest model; "
-          "there is no phase split. Levels 0-1, one repetition (7 FE radii per row).\n"
-       << "- tangential_punch: the tangential flat punch (U = V = delta = 1e-3 a on r <= a, W free) of "
-          "`FourierMode1Solver` (`fem/fourier_mode1_solver.h`, Fourier mode 1, 3 fields), force F_x = K_T delta "
-          "against the MDR K_T = 2 h_T E0 a^(1+k) / ((1+k) c0^k) (9.78)-(9.79) (`h_T` of "
-          "`analytic/material.h`; at k = 0 Mindlin's 8 G a / (2 - nu)). Levels 0-2 (the mode-1 system has "
-          "3/2 the DoFs), one repetition.\n"
-       << "- deal.II model (`fem/`): FE_Q degree 1-4; mesh level 0-4 = h_edge 1e-2 .. 1e-6 a, ring growth "
-          "1.6, 1.4, 1.3, 1.15, 1.15 (`fe_mesh_level` in `cases/fe_bench.cc`); L/a and the surface layer from "
-          "`recommended_mesh_parameters(a, k)` (L/a = 1e16, 1.1e8, 2.3e5 for k = -0.5, 0, 0.5).\n"
-       << "- `deal.II map` (k > 0, flat punch and paraboloid, degree >= 2): the same levels with the surface map "
-          "(`fem::use_surface_map`, fem/doc/meshes.md \"Surface map\") instead of the z-halvings, L widened by its "
-          "contraction.\n"
-       << "- `deal.II condensed` (flat punch, paraboloid, tangential punch): the same levels with the half-space beyond L = 100 a "
-          "condensed onto max(r, z) = L (`fem::use_condensed_far_field`, fem/doc/meshes.md \"Far field\"): no truncation "
-          "error and no rings beyond 100 a.\n"
-       << "- Times: minimum and median wall time over the repetitions; `cold` is the first repetition, in which "
-          "gmsh meshes the near field (later repetitions read its cached .msh, as repeated runs of a scene do); "
-          "CPU is the process CPU time (minimum; gmsh's own process not included). The phase split is the "
-          "minimum over the repetitions of `Result::time`: mesh / setup / assemble / factorize / solve / "
-          "postprocess.\n"
-       << "- Wall times depend on the machine and on its load while the bench runs; the minimum over the "
-          "repetitions is the least disturbed.\n\n";
-    if (peer || !peer_note.empty())
-      md << "FreeFem++ peer rows (`cases/peers/freefem/`, P2, its own mesh ladder, the same L/a): see `peer.md`. "
-         << peer_note << "\n\n";
-    md << "## Results\n\n"
-       << "| scene | k | model | degree | level | h_edge/a | DoFs | force error | depth error | wall min [s] | "
-          "median [s] | cold [s] | CPU [s] | mesh / setup / assemble / factorize / solve / post [s] | note |\n"
-       << "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
-    for (const auto &r : rows)
-      md << "| " << r.load << " | " << fmt(r.k, "%g") << " | " << r.model << " | " << r.degree << " | " << r.level
-         << " | " << fmt(r.h_edge, "%.0e") << " | " << r.dofs << " | " << fmt(r.force_error, "%.2e") << " | "
-         << (r.load == "paraboloid" ? fmt(r.depth_error, "%.2e") : "-") << " | " << fmt(r.wall_min, "%.3f") << " | "
-         << fmt(r.wall_median, "%.3f") << " | " << fmt(r.wall_cold, "%.3f") << " | " << fmt(r.cpu_min, "%.3f")
-         << " | " << phase_split(r) << " | " << r.note << " |\n";
-    md << "\n## Plots\n\n";
-    for (const auto &p : plots)
-      md << "- `" << p << "_error_vs_time.png` / `" << p << "_error_vs_dofs.png` (SVG, data and gnuplot script "
-         << "beside)\n";
-    std::ofstream(folder / "fe_work_precision.md") << md.str();
-
-    if (o.with_peer)
-      {
-        std::ostringstream pm;
-        pm << "# deal.II model against a FreeFem++ peer\n\n"
-           << "Machine: " << machine << ". Repetitions per run: " << o.repeat << ".\n\n";
-        if (!peer)
-          pm << peer_note << "\n";
-        else
+    /// Plots per scene and k: error against wall time (min) and against DoFs, one curve per degree (+ peer).
+    /// Returns the stems of the plots written.
+    std::vector<std::string> plot_bench(const fs::path &folder, const std::vector<double> &ks,
+                                        const std::vector<WorkPrecisionRow> &rows)
+    {
+      std::vector<std::string> plots;
+      for (const std::string load : loads)
+        for (const double k : ks)
           {
-            pm << "The peer (`cases/peers/freefem/flat_punch.edp`, `paraboloid.edp`, `common.idp`) is written the way "
-                  "an engineer would model the scenes in FreeFem++: axisymmetric P2 in the meridian plane (weight "
-                  "r, hoop strain u_r/r), E(z) evaluated at every quadrature point (qforder 5, FreeFem's default; 9 changes the force by 5e-4 at k = 0.5), a near field "
-                  "R1 = 4 a meshed by buildmesh with border points graded geometrically toward the contact edge "
-                  "(h_edge = 1e-1 .. 1e-5 a for levels 0-4), a far field to the same L/a as ours made of "
-                  "conformal log-polar rings (a square() grid of (ln rho, theta) entering the weak form through "
-                  "the map), the force from the nodal reactions, the paraboloid by superposing a unit punch and "
-                  "the profile solution with the edge-force-zero condition (one factorisation, two solves), "
-                  "UMFPACK. Its errors are measured against the same closed forms as ours, by this program.\n\n"
-               << "Times: wall time of the whole FreeFem++ process (including its start, about 0.02 s), "
-                  "minimum over the repetitions; CPU is the child's CPU time. deal.II: wall time of solver "
-                  "construction + run (warm mesh cache), as in `fe_work_precision.md`.\n\n"
-               << "## Peer runs\n\n| scene | k | level | h_edge/a | DoFs | force error | depth error | wall min [s] | "
-                  "CPU [s] | mesh / assemble+factorize / solve / reactions [s] | note |\n|---|---|---|---|---|---|---|---|---|---|---|\n";
+            std::map<std::string, Series> by_time, by_dofs;
             for (const auto &r : rows)
-              if (r.model == "FreeFem++")
-                pm << "| " << r.load << " | " << fmt(r.k, "%g") << " | " << r.level << " | " << fmt(r.h_edge, "%.0e")
-                   << " | " << r.dofs << " | " << fmt(r.force_error, "%.2e") << " | "
-                   << (r.load == "paraboloid" ? fmt(r.depth_error, "%.2e") : "-") << " | " << fmt(r.wall_min, "%.3f")
-                   << " | " << fmt(r.cpu_min, "%.3f") << " | " << fmt(r.mesh, "%.3f") << " / " << fmt(r.assemble, "%.3f")
-                   << " / " << fmt(r.solve, "%.3f") << " / " << fmt(r.postprocess, "%.3f") << " | " << r.note << " |\n";
-            pm << "\n## Headline ratios\n\n"
-               << "Each model's curve is its lower envelope over all its runs (all degrees and variants for deal.II): the best "
-                  "error reached within a given wall time. Error ratio at equal time: at each point of the peer's "
-                  "envelope, peer error / deal.II error interpolated log-log at the same time. Time ratio at equal "
-                  "error: peer time / deal.II time interpolated at the peer's error. Only points inside the range "
-                  "of the deal.II envelope are used; `-` means no overlap (the peer is faster than our fastest run, "
-                  "or less accurate than our least accurate run).\n\n"
-               << "| scene | k | peer best error | deal.II best error | error ratio at equal time (each peer point) | "
-                  "time ratio at equal error (each peer point) |\n|---|---|---|---|---|---|\n";
-            for (const std::string load : loads)
-              for (const double k : ks)
+              if (r.load == load && r.k == k && std::isfinite(r.error) && r.error > 0)
                 {
-                  if (!peer_models(load) || !selected(load))
-                    continue;
-                  std::vector<double> ot, oe, pt, pe;
-                  double best_ours = inf, best_peer = inf;
-                  for (const auto &r : rows)
-                    if (r.load == load && r.k == k && std::isfinite(r.error))
-                      {
-                        // Ours: every deal.II variant (plain, map, condensed), as a user picks the best.
-                        const bool peer_row = r.model == "FreeFem++";
-                        (peer_row ? pt : ot).push_back(r.wall_min);
-                        (peer_row ? pe : oe).push_back(r.error);
-                        double &best = peer_row ? best_peer : best_ours;
-                        best         = std::min(best, r.error);
-                      }
-                  const auto list = [](const std::vector<PeerRatio> &v, const char *unit) {
-                    std::string s;
-                    for (const auto &p : v)
-                      s += (s.empty() ? "" : ", ") + fmt(p.ratio, "%.3g") + " (" + unit + fmt(p.at, "%.2g") + ")";
-                    return s.empty() ? std::string("-") : s;
-                  };
-                  pm << "| " << load << " | " << fmt(k, "%g") << " | " << fmt(best_peer, "%.2e") << " | "
-                     << fmt(best_ours, "%.2e") << " | " << list(error_ratio_at_equal_time(ot, oe, pt, pe), "t=")
-                     << " | " << list(time_ratio_at_equal_error(ot, oe, pt, pe), "e=") << " |\n";
+                  for (auto *m : {&by_time, &by_dofs})
+                    (*m)[label(r)].title = label(r);
+                  by_time[label(r)].x.push_back(r.wall_min);
+                  by_time[label(r)].y.push_back(r.error);
+                  by_dofs[label(r)].x.push_back(r.dofs);
+                  by_dofs[label(r)].y.push_back(r.error);
                 }
-            pm << "\nThe plots `fe_<scene>_k<k>_error_vs_time.png` carry both models.\n\n"
-               << "## Where the peer stops converging, and why\n\n"
-               << "- k != 0: the peer evaluates E(z) = E0 (z/c0)^k at the Gauss points of qf5pT; in the cells on "
-                  "the surface E is singular (k < 0) or vanishes (k > 0) like z^k, which a Gauss rule does not "
-                  "integrate well, and u_z ~ d - c z^(1-k) under the punch needs thin surface cells, which the "
-                  "peer's isotropic Delaunay mesh does not have. The deal.II model integrates those cells with a "
-                  "Gauss-Jacobi rule exact for z^k times a polynomial and halves them in z to 1e-10 a (k > 0) or "
-                  "1e-4 a (k < 0) under the contact. A FreeFem++ engineer could add both (an anisotropic "
-                  "adaptmesh metric, a mapped quadrature); these scripts do what the usual FreeFem++ "
-                  "model does, as the issue asks.\n"
-               << "- k = 0: the peer converges (P2, edge grading); the table above gives its error against ours at "
-                  "equal time, and where its finest level (h_edge 1e-5 a, P2) flattens.\n";
+            if (by_time.empty())
+              continue;
+            const std::string stem = "fe_" + load + "_k" + k_name(k);
+            const std::string scene = load + ", k = " + fmt(k, "%g") + ", nu = 0.3";
+            write_plot(folder, stem + "_error_vs_time", scene + ": relative error against wall time (min)",
+                       "wall time [s]", "relative error", ordered_series(by_time), true, true);
+            write_plot(folder, stem + "_error_vs_dofs", scene + ": relative error against DoFs", "DoFs",
+                       "relative error", ordered_series(by_dofs), true, true);
+            plots.push_back(stem);
           }
-        std::ofstream(folder / "peer.md") << pm.str();
-      }
+      return plots;
+    }
+
+    /// The section of fe_work_precision.md on what is measured: the scenes, the models and the times.
+    std::string bench_method_text()
+    {
+      return "## What is measured\n\n"
+             "Each row is one FE model on one mesh: the relative error of its answer against the closed forms of "
+             "`analytic/normal.h` (an independent path: the MDR closed forms, themselves checked against 34-digit "
+             "references), and the wall time from the construction of the solver (mesh, DoFs, assembly, "
+             "factorisation) to the answer, including post-processing.\n\n"
+             "- Scenes: flat punch (radius a, depth 1e-3 a, force against (9.16)); paraboloid R = 50 a under "
+             "contact-radius control (force F(a) and depth d(a) against the Hertz-type closed forms; the error is the "
+             "larger of the two). E0 = 2 GPa, c0 = 3 a, a = 0.1 mm, nu = 0.3.\n"
+             "- jkr_paraboloid: the JKR pull-off force of the paraboloid R = 50 a, dgamma = 0.05 J/m^2, under force "
+             "control, from `AdhesiveContact::critical_state` (`fem/adhesion.h`: one FE model per contact radius, "
+             "each on the level's mesh graded toward that radius; the search starts 1.2 a_c off), against F_c of "
+             "(9.55)-(9.56) (`jkr::critical_state` of `analytic/adhesion.h`; at k = 0 JKR's -3/2 pi dgamma R). "
+             "The time is the whole search (all radii, noted in the row); DoFs are those of the largest model; "
+             "there is no phase split. Levels 0-1, one repetition (7 FE radii per row).\n"
+             "- tangential_punch: the tangential flat punch (U = V = delta = 1e-3 a on r <= a, W free) of "
+             "`FourierMode1Solver` (`fem/fourier_mode1_solver.h`, Fourier mode 1, 3 fields), force F_x = K_T delta "
+             "against the MDR K_T = 2 h_T E0 a^(1+k) / ((1+k) c0^k) (9.78)-(9.79) (`h_T` of "
+             "`analytic/material.h`; at k = 0 Mindlin's 8 G a / (2 - nu)). Levels 0-2 (the mode-1 system has "
+             "3/2 the DoFs), one repetition.\n"
+             "- deal.II model (`fem/`): FE_Q degree 1-4; mesh level 0-4 = h_edge 1e-2 .. 1e-6 a, ring growth "
+             "1.6, 1.4, 1.3, 1.15, 1.15 (`fe_mesh_level` in `cases/fe_bench.cc`); L/a and the surface layer from "
+             "`recommended_mesh_parameters(a, k)` (L/a = 1e16, 1.1e8, 2.3e5 for k = -0.5, 0, 0.5).\n"
+             "- `deal.II map` (k > 0, flat punch and paraboloid, degree >= 2): the same levels with the surface map "
+             "(`fem::use_surface_map`, fem/doc/meshes.md \"Surface map\") instead of the z-halvings, L widened by its "
+             "contraction.\n"
+             "- `deal.II condensed` (flat punch, paraboloid, tangential punch): the same levels with the half-space beyond L = 100 a "
+             "condensed onto max(r, z) = L (`fem::use_condensed_far_field`, fem/doc/meshes.md \"Far field\"): no truncation "
+             "error and no rings beyond 100 a.\n"
+             "- Times: minimum and median wall time over the repetitions; `cold` is the first repetition, in which "
+             "gmsh meshes the near field (later repetitions read its cached .msh, as repeated runs of a scene do); "
+             "CPU is the process CPU time (minimum; gmsh's own process not included). The phase split is the "
+             "minimum over the repetitions of `Result::time`: mesh / setup / assemble / factorize / solve / "
+             "postprocess.\n"
+             "- Wall times depend on the machine and on its load while the bench runs; the minimum over the "
+             "repetitions is the least disturbed.\n\n";
+    }
+
+    /// Writes fe_work_precision.md: the run, what is measured, every row, and the plots.
+    void write_bench_md(const FeBenchOptions &o, const fs::path &folder, const std::string &machine,
+                        const BenchPlan &plan, const double total, const std::vector<WorkPrecisionRow> &rows,
+                        const std::vector<std::string> &plots)
+    {
+      std::ostringstream md;
+      md << "# FE work-precision benchmarks (`gradcontact bench --part fe`)\n\n"
+         << "Machine: " << machine << ". Repetitions per run: " << o.repeat << (o.quick ? " (quick set)" : "")
+         << ". Whole run: " << fmt(total, "%.0f") << " s.\n\n"
+         << bench_method_text();
+      if (plan.peer || !plan.peer_note.empty())
+        md << "FreeFem++ peer rows (`cases/peers/freefem/`, P2, its own mesh ladder, the same L/a): see `peer.md`. "
+           << plan.peer_note << "\n\n";
+      md << "## Results\n\n"
+         << "| scene | k | model | degree | level | h_edge/a | DoFs | force error | depth error | wall min [s] | "
+            "median [s] | cold [s] | CPU [s] | mesh / setup / assemble / factorize / solve / post [s] | note |\n"
+         << "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
+      for (const auto &r : rows)
+        md << "| " << r.load << " | " << fmt(r.k, "%g") << " | " << r.model << " | " << r.degree << " | " << r.level
+           << " | " << fmt(r.h_edge, "%.0e") << " | " << r.dofs << " | " << fmt(r.force_error, "%.2e") << " | "
+           << (r.load == "paraboloid" ? fmt(r.depth_error, "%.2e") : "-") << " | " << fmt(r.wall_min, "%.3f") << " | "
+           << fmt(r.wall_median, "%.3f") << " | " << fmt(r.wall_cold, "%.3f") << " | " << fmt(r.cpu_min, "%.3f")
+           << " | " << phase_split(r) << " | " << r.note << " |\n";
+      md << "\n## Plots\n\n";
+      for (const auto &p : plots)
+        md << "- `" << p << "_error_vs_time.png` / `" << p << "_error_vs_dofs.png` (SVG, data and gnuplot script "
+           << "beside)\n";
+      std::ofstream(folder / "fe_work_precision.md") << md.str();
+    }
+
+    /// The table of the peer's runs.
+    std::string peer_runs_table(const std::vector<WorkPrecisionRow> &rows)
+    {
+      std::ostringstream pm;
+      pm << "## Peer runs\n\n| scene | k | level | h_edge/a | DoFs | force error | depth error | wall min [s] | "
+            "CPU [s] | mesh / assemble+factorize / solve / reactions [s] | note |\n|---|---|---|---|---|---|---|---|---|---|---|\n";
+      for (const auto &r : rows)
+        if (r.model == "FreeFem++")
+          pm << "| " << r.load << " | " << fmt(r.k, "%g") << " | " << r.level << " | " << fmt(r.h_edge, "%.0e")
+             << " | " << r.dofs << " | " << fmt(r.force_error, "%.2e") << " | "
+             << (r.load == "paraboloid" ? fmt(r.depth_error, "%.2e") : "-") << " | " << fmt(r.wall_min, "%.3f")
+             << " | " << fmt(r.cpu_min, "%.3f") << " | " << fmt(r.mesh, "%.3f") << " / " << fmt(r.assemble, "%.3f")
+             << " / " << fmt(r.solve, "%.3f") << " / " << fmt(r.postprocess, "%.3f") << " | " << r.note << " |\n";
+      return pm.str();
+    }
+
+    /// `v` as "ratio (unit at), ..."; "-" when empty.
+    std::string ratio_list(const std::vector<PeerRatio> &v, const char *unit)
+    {
+      std::string s;
+      for (const auto &p : v)
+        s += (s.empty() ? "" : ", ") + fmt(p.ratio, "%.3g") + " (" + unit + fmt(p.at, "%.2g") + ")";
+      return s.empty() ? std::string("-") : s;
+    }
+
+    /// The headline ratios' row of one scene and k: the best errors and the ratios of the two envelopes.
+    std::string headline_row(const std::string &load, const double k, const std::vector<WorkPrecisionRow> &rows)
+    {
+      std::vector<double> ot, oe, pt, pe;
+      double best_ours = inf, best_peer = inf;
+      for (const auto &r : rows)
+        if (r.load == load && r.k == k && std::isfinite(r.error))
+          {
+            // Ours: every deal.II variant (plain, map, condensed), as a user picks the best.
+            const bool peer_row = r.model == "FreeFem++";
+            (peer_row ? pt : ot).push_back(r.wall_min);
+            (peer_row ? pe : oe).push_back(r.error);
+            double &best = peer_row ? best_peer : best_ours;
+            best         = std::min(best, r.error);
+          }
+      return "| " + load + " | " + fmt(k, "%g") + " | " + fmt(best_peer, "%.2e") + " | " + fmt(best_ours, "%.2e") +
+             " | " + ratio_list(error_ratio_at_equal_time(ot, oe, pt, pe), "t=") + " | " +
+             ratio_list(time_ratio_at_equal_error(ot, oe, pt, pe), "e=") + " |\n";
+    }
+
+    /// How the peer is written and timed.
+    std::string peer_method_text()
+    {
+      return "The peer (`cases/peers/freefem/flat_punch.edp`, `paraboloid.edp`, `common.idp`) is written the way "
+             "an engineer would model the scenes in FreeFem++: axisymmetric P2 in the meridian plane (weight "
+             "r, hoop strain u_r/r), E(z) evaluated at every quadrature point (qforder 5, FreeFem's default; 9 changes the force by 5e-4 at k = 0.5), a near field "
+             "R1 = 4 a meshed by buildmesh with border points graded geometrically toward the contact edge "
+             "(h_edge = 1e-1 .. 1e-5 a for levels 0-4), a far field to the same L/a as ours made of "
+             "conformal log-polar rings (a square() grid of (ln rho, theta) entering the weak form through "
+             "the map), the force from the nodal reactions, the paraboloid by superposing a unit punch and "
+             "the profile solution with the edge-force-zero condition (one factorisation, two solves), "
+             "UMFPACK. Its errors are measured against the same closed forms as ours, by this program.\n\n"
+             "Times: wall time of the whole FreeFem++ process (including its start, about 0.02 s), "
+             "minimum over the repetitions; CPU is the child's CPU time. deal.II: wall time of solver "
+             "construction + run (warm mesh cache), as in `fe_work_precision.md`.\n\n";
+    }
+
+    /// Why the peer stops converging.
+    std::string peer_limits_text()
+    {
+      return "## Where the peer stops converging, and why\n\n"
+             "- k != 0: the peer evaluates E(z) = E0 (z/c0)^k at the Gauss points of qf5pT; in the cells on "
+             "the surface E is singular (k < 0) or vanishes (k > 0) like z^k, which a Gauss rule does not "
+             "integrate well, and u_z ~ d - c z^(1-k) under the punch needs thin surface cells, which the "
+             "peer's isotropic Delaunay mesh does not have. The deal.II model integrates those cells with a "
+             "Gauss-Jacobi rule exact for z^k times a polynomial and halves them in z to 1e-10 a (k > 0) or "
+             "1e-4 a (k < 0) under the contact. A FreeFem++ engineer could add both (an anisotropic "
+             "adaptmesh metric, a mapped quadrature); these scripts do what the usual FreeFem++ "
+             "model does, as the issue asks.\n"
+             "- k = 0: the peer converges (P2, edge grading); the table above gives its error against ours at "
+             "equal time, and where its finest level (h_edge 1e-5 a, P2) flattens.\n";
+    }
+
+    /// Writes peer.md: the peer's runs, the headline ratios against our envelope, and the peer's limits (or why
+    /// the peer was skipped).
+    void write_peer_md(const FeBenchOptions &o, const fs::path &folder, const std::string &machine,
+                       const BenchPlan &plan, const std::vector<WorkPrecisionRow> &rows)
+    {
+      std::ostringstream pm;
+      pm << "# deal.II model against a FreeFem++ peer\n\n"
+         << "Machine: " << machine << ". Repetitions per run: " << o.repeat << ".\n\n";
+      if (!plan.peer)
+        pm << plan.peer_note << "\n";
+      else
+        {
+          pm << peer_method_text() << peer_runs_table(rows);
+          pm << "\n## Headline ratios\n\n"
+             << "Each model's curve is its lower envelope over all its runs (all degrees and variants for deal.II): the best "
+                "error reached within a given wall time. Error ratio at equal time: at each point of the peer's "
+                "envelope, peer error / deal.II error interpolated log-log at the same time. Time ratio at equal "
+                "error: peer time / deal.II time interpolated at the peer's error. Only points inside the range "
+                "of the deal.II envelope are used; `-` means no overlap (the peer is faster than our fastest run, "
+                "or less accurate than our least accurate run).\n\n"
+             << "| scene | k | peer best error | deal.II best error | error ratio at equal time (each peer point) | "
+                "time ratio at equal error (each peer point) |\n|---|---|---|---|---|---|\n";
+          for (const std::string load : loads)
+            for (const double k : plan.ks)
+              if (peer_models(load) && selected(o, load))
+                pm << headline_row(load, k, rows);
+          pm << "\nThe plots `fe_<scene>_k<k>_error_vs_time.png` carry both models.\n\n" << peer_limits_text();
+        }
+      std::ofstream(folder / "peer.md") << pm.str();
+    }
+  } // namespace
+
+  std::vector<WorkPrecisionRow> run_fe_bench(const FeBenchOptions &o, const fs::path &folder, const std::string &machine)
+  {
+    const BenchPlan plan = plan_fe_bench(o, folder);
+    std::vector<WorkPrecisionRow> rows;
+    const auto start = std::chrono::steady_clock::now();
+    for (const std::string &load : plan.run_loads)
+      for (const double k : plan.ks)
+        {
+          if (o.with_fe)
+            run_our_rows(o, plan, load, k, rows);
+          if (plan.peer && peer_models(load))
+            run_peer_rows(o, plan, load, k, rows);
+        }
+    const double total = seconds_since(start);
+    fs::remove_all(plan.mesh_cache);
+    write_bench_csv(folder, rows);
+    const std::vector<std::string> plots = plot_bench(folder, plan.ks, rows);
+    write_bench_md(o, folder, machine, plan, total, rows, plots);
+    if (o.with_peer)
+      write_peer_md(o, folder, machine, plan, rows);
     return rows;
   }
 } // namespace gradcontact::cases

@@ -439,6 +439,224 @@ namespace gradcontact::cases
       return out;
     }
 
+    /// The change of p(r) of `r` from `reference` at friction_pressure_radii in the area-weighted L2 norm
+    /// (trapezoidal in r dr), relative to the reference's, with the sign of the change at r = 0.5 a; a radius beyond
+    /// the contact is an error (the sampler leaves it out).
+    double pressure_change(const fem::UnilateralResult &r, const std::vector<double> &reference)
+    {
+      if (r.pressure.size() != reference.size())
+        throw std::runtime_error("p(r) sampled at " + std::to_string(r.pressure.size()) + " of " +
+                                 std::to_string(reference.size()) + " radii (beyond the contact?)");
+      const std::vector<double> &x = friction_pressure_radii;
+      double change = 0, norm = 0, sign = 1;
+      for (std::size_t i = 0; i < x.size(); ++i)
+        {
+          const double weight = x[i] * (x[std::min(i + 1, x.size() - 1)] - x[i == 0 ? 0 : i - 1]) / 2;
+          const double dp     = r.pressure[i].value - reference[i];
+          change += weight * dp * dp;
+          norm += weight * reference[i] * reference[i];
+          if (x[i] == 0.5)
+            sign = dp < 0 ? -1 : 1;
+        }
+      return sign * std::sqrt(change / norm);
+    }
+
+    /// The path's error is first order in the step (a vertex that comes into contact during a step carries no
+    /// shear in it): a point extrapolated from N and 2N steps, 2 X(2N) - X(N) (c/a: at 2N).
+    MapPoint extrapolated(const MapPoint &coarse, const MapPoint &fine)
+    {
+      MapPoint p = fine;
+      p.seconds += coarse.seconds;
+      if (!coarse.error.empty() && p.error.empty())
+        p.error = coarse.error;
+      if (p.error.empty())
+        {
+          p.force = 2 * fine.force - coarse.force;
+          p.radius = 2 * fine.radius - coarse.radius;
+          p.pressure = 2 * fine.pressure - coarse.pressure;
+        }
+      return p;
+    }
+
+    /// A failed map point at `ratio`.
+    MapPoint failed_point(const double ratio, const std::string &error)
+    {
+      MapPoint p;
+      p.ratio = ratio;
+      p.error = error;
+      return p;
+    }
+
+    /// The friction map's one solver at (k, nu) (the shear operator built once), its load with the sampled radii
+    /// of p(r), the last result and the seconds of its setup.
+    struct FrictionSolver
+    {
+      std::unique_ptr<fem::UnilateralContactSolver> solver;
+      fem::UnilateralLoad load;
+      fem::OutputRequest request;
+      fem::UnilateralResult r;
+      double setup = 0.;
+    };
+
+    FrictionSolver friction_solver(const Scene &s, const UnilateralPanel &panel)
+    {
+      FrictionSolver f;
+      f.load = panel.load;
+      f.load.friction.load_steps = s.friction.load_steps;
+      for (const double x : friction_pressure_radii)
+        f.request.pressure_radii.push_back(x * s.load.a);
+      f.setup = seconds_of([&] {
+        f.solver = std::make_unique<fem::UnilateralContactSolver>(panel.model.material, panel.model.settings.mesh,
+                                                                  panel.model.settings.discretization, 1.6 * s.load.a);
+      });
+      return f;
+    }
+
+    /// Runs `f` at friction coefficient mu: its seconds, or the error.
+    std::pair<double, std::string> run_friction(FrictionSolver &f, const double mu)
+    {
+      f.load.friction.coefficient = mu;
+      try
+        {
+          return std::make_pair(seconds_of([&] { f.r = f.solver->run(f.load, f.request); }), std::string());
+        }
+      catch (const std::exception &e)
+        {
+          return std::make_pair(0., concise(e));
+        }
+    }
+
+    /// One point of f's last result: deviations from `force`, `radius` and `pressure` (the closed forms, or the
+    /// frictionless FE on the same mesh).
+    MapPoint friction_point(const FrictionSolver &f, const double mu, const double seconds, const double force,
+                            const double radius, const std::vector<double> &pressure)
+    {
+      MapPoint p;
+      p.ratio = mu;
+      p.dofs = f.solver->n_dofs();
+      p.seconds = seconds;
+      p.error = disc_contact_error(f.r);
+      if (p.error.empty())
+        {
+          p.force = f.r.force / force - 1;
+          p.radius = f.r.outer_edge / radius - 1;
+          p.pressure = pressure_change(f.r, pressure);
+          if (mu > 0)
+            p.stick = f.r.stick_radius / f.r.outer_edge;
+        }
+      return p;
+    }
+
+    /// The sharp check: the frictionless FE (f's first run, its setup included) against the closed forms.
+    MapPoint frictionless_check(FrictionSolver &f, const AnalyticReference &frictionless, const double a)
+    {
+      auto [seconds, error] = run_friction(f, 0.);
+      seconds += f.setup;
+      MapPoint check;
+      if (error.empty())
+        try
+          {
+            std::vector<double> closed_pressure;
+            for (const double x : friction_pressure_radii)
+              closed_pressure.push_back(frictionless.at("pressure", x * a));
+            check = friction_point(f, 0., seconds, frictionless.get("force"), frictionless.radius(), closed_pressure);
+          }
+        catch (const std::exception &e)
+          {
+            error = concise(e);
+          }
+      check.error += error;
+      return check;
+    }
+
+    /// A frictional point at `steps` load steps: FE(mu) against the frictionless FE `smooth` on the same mesh.
+    MapPoint friction_at_steps(FrictionSolver &f, const fem::UnilateralResult &smooth, const double mu,
+                               const unsigned int steps)
+    {
+      f.load.friction.load_steps = steps;
+      const auto [seconds, error] = run_friction(f, mu);
+      if (!error.empty())
+        return failed_point(mu, error);
+      std::vector<double> smooth_pressure;
+      for (const fem::Sample &x : smooth.pressure)
+        smooth_pressure.push_back(x.value);
+      try
+        {
+          return friction_point(f, mu, seconds, smooth.force, smooth.outer_edge, smooth_pressure);
+        }
+      catch (const std::exception &e)
+        {
+          return failed_point(mu, concise(e));
+        }
+    }
+
+    /// The map's points: every mu of `ratios` (and full stick), each extrapolated from N and 2N steps. At Holl's
+    /// ratio every point is a sharp check: the decoupled pairing's frictional FE against the frictionless FE.
+    std::vector<MapPoint> friction_points(const Scene &s, FrictionSolver &f, const fem::UnilateralResult &smooth,
+                                          const std::vector<double> &ratios, const bool holl, const std::string &metric,
+                                          SceneResult &result)
+    {
+      const unsigned int steps = s.friction.load_steps;
+      std::vector<double> mus = ratios;
+      if (s.map.full_stick)
+        mus.push_back(std::numeric_limits<double>::infinity());
+      std::vector<MapPoint> points;
+      for (const double mu : mus)
+        {
+          points.push_back(
+            extrapolated(friction_at_steps(f, smooth, mu, steps), friction_at_steps(f, smooth, mu, 2 * steps)));
+          const MapPoint &p = points.back();
+          if (holl && p.error.empty())
+            {
+              const std::string what = metric + "mu = " + format(mu) + " against mu = 0 (decoupled: equal)";
+              result.rows.push_back(compare("force at the depth (friction)", what, "FE", "FE frictionless", 1.,
+                                            1. + p.force, 1., s.tolerances.force, p.dofs, p.seconds));
+              result.rows.push_back(compare("contact radius (friction)", what, "FE", "FE frictionless", 1.,
+                                            1. + p.radius, 1., s.tolerances.contact_radius, p.dofs, p.seconds));
+            }
+        }
+      return points;
+    }
+
+    /// The FE resolution of a friction map into `out`: the change of the extrapolation from N/2 and N steps to N and
+    /// 2N at the largest finite mu solved, where slip and stick meet (full stick only when no finite mu was solved;
+    /// the mesh's error is the frictionless check's, which the text quotes).
+    void friction_resolution(FrictionSolver &f, const fem::UnilateralResult &smooth, const unsigned int steps,
+                             const bool holl, const MapPoint &smooth_check, ExponentMap &out)
+    {
+      auto largest = std::find_if(out.points.rbegin(), out.points.rend(), [](const MapPoint &p) {
+        return p.error.empty() && std::isfinite(p.ratio);
+      });
+      if (largest == out.points.rend())
+        largest = std::find_if(out.points.rbegin(), out.points.rend(), [](const MapPoint &p) { return p.error.empty(); });
+      std::ostringstream md;
+      if (largest != out.points.rend() && steps >= 2)
+        {
+          const MapPoint coarser = extrapolated(friction_at_steps(f, smooth, largest->ratio, steps / 2),
+                                                friction_at_steps(f, smooth, largest->ratio, steps));
+          if (coarser.error.empty())
+            for (const std::string q : {"force", "contact radius", "pressure"})
+              out.resolution[q] = std::abs(deviation_of(*largest, q) - deviation_of(coarser, q));
+          md << "Every point is extrapolated from " << steps << " and " << 2 * steps
+             << " load steps (the path's error is first order). FE resolution (the change of that extrapolation from "
+             << steps / 2 << " and " << steps << " steps, at mu = " << format(largest->ratio) << "; stick radius "
+             << format(coarser.stick) << " at " << steps << " steps against " << format(largest->stick) << " at "
+             << 2 * steps << "):";
+          if (!coarser.error.empty())
+            md << " not measured (" << cell(coarser.error) << ")";
+        }
+      else
+        md << "FE resolution: not measured (" << (steps < 2 ? "Friction/load steps < 2" : "no frictional point was solved")
+           << ")";
+      for (const auto &[q, change] : out.resolution)
+        md << " " << quantity_label(q, true) << " " << format(change) << ";";
+      if (holl)
+        md << " Holl's ratio: every deviation below is the FE's own error (exact: 0).";
+      md << " " << f.solver->n_dofs() << " DoFs; the frictionless FE against the closed forms: force "
+         << format(smooth_check.force) << ", contact radius " << format(smooth_check.radius) << ".";
+      out.resolution_text = md.str();
+    }
+
     /// Coulomb friction mu = ratio (and full stick, ratio inf) between a rigid indenter and the power law at
     /// exponent k and Poisson ratio nu during loading to the rigid closed form's depth of Load/a: one solver for
     /// the frictionless run and every mu (fem::UnilateralContactSolver, the shear operator built once). A point is
@@ -451,90 +669,13 @@ namespace gradcontact::cases
                              SceneResult &result, const bool verbose)
     {
       ExponentMap out;
-      const double a = s.load.a;
       const bool holl = std::abs(nu - 1. / (2. + k)) <= 1e-12;
       const std::string metric = "k = " + format(k) + ", nu = " + (holl ? "1/(2 + k) = " : "") + format(nu) + ", ";
       try
         {
           const UnilateralPanel panel = unilateral_panel(s, k, nu);
-          const FeModel &model = panel.model;
-          const AnalyticReference &frictionless = *panel.reference;
-          fem::UnilateralLoad load = panel.load;
-          load.friction.load_steps = s.friction.load_steps;
-          fem::OutputRequest request;
-          for (const double x : friction_pressure_radii)
-            request.pressure_radii.push_back(x * a);
-          std::unique_ptr<fem::UnilateralContactSolver> solver;
-          fem::UnilateralResult r;
-          // The change of p(r) from `reference` at the sampled radii in the area-weighted L2 norm (trapezoidal in
-          // r dr), relative to the reference's, with the sign of the change at r = 0.5 a; a radius beyond the
-          // contact is an error (the sampler leaves it out).
-          const auto pressure_change = [&](const std::vector<double> &reference) {
-            if (r.pressure.size() != reference.size())
-              throw std::runtime_error("p(r) sampled at " + std::to_string(r.pressure.size()) + " of " +
-                                       std::to_string(reference.size()) + " radii (beyond the contact?)");
-            const std::vector<double> &x = friction_pressure_radii;
-            double change = 0, norm = 0, sign = 1;
-            for (std::size_t i = 0; i < x.size(); ++i)
-              {
-                const double weight = x[i] * (x[std::min(i + 1, x.size() - 1)] - x[i == 0 ? 0 : i - 1]) / 2;
-                const double dp     = r.pressure[i].value - reference[i];
-                change += weight * dp * dp;
-                norm += weight * reference[i] * reference[i];
-                if (x[i] == 0.5)
-                  sign = dp < 0 ? -1 : 1;
-              }
-            return sign * std::sqrt(change / norm);
-          };
-          const double setup = seconds_of([&] {
-            solver = std::make_unique<fem::UnilateralContactSolver>(model.material, model.settings.mesh,
-                                                                    model.settings.discretization, 1.6 * a);
-          });
-          // One point: deviations from `base` (the closed forms, or the frictionless FE on the same mesh).
-          const auto point = [&](const double mu, const double seconds, const double force, const double radius,
-                                 const std::vector<double> &pressure) {
-            MapPoint p;
-            p.ratio = mu;
-            p.dofs = solver->n_dofs();
-            p.seconds = seconds;
-            p.error = disc_contact_error(r);
-            if (p.error.empty())
-              {
-                p.force = r.force / force - 1;
-                p.radius = r.outer_edge / radius - 1;
-                p.pressure = pressure_change(pressure);
-                if (mu > 0)
-                  p.stick = r.stick_radius / r.outer_edge;
-              }
-            return p;
-          };
-          const auto solve = [&](const double mu) {
-            load.friction.coefficient = mu;
-            try
-              {
-                return std::make_pair(seconds_of([&] { r = solver->run(load, request); }), std::string());
-              }
-            catch (const std::exception &e)
-              {
-                return std::make_pair(0., concise(e));
-              }
-          };
-          auto [seconds, error] = solve(0.);
-          seconds += setup;
-          MapPoint smooth_check;
-          if (error.empty())
-            try
-              {
-                std::vector<double> closed_pressure;
-                for (const double x : friction_pressure_radii)
-                  closed_pressure.push_back(frictionless.at("pressure", x * a));
-                smooth_check = point(0., seconds, frictionless.get("force"), frictionless.radius(), closed_pressure);
-              }
-            catch (const std::exception &e)
-              {
-                error = concise(e);
-              }
-          smooth_check.error += error;
+          FrictionSolver f = friction_solver(s, panel);
+          const MapPoint smooth_check = frictionless_check(f, *panel.reference, s.load.a);
           add_check_rows(s, smooth_check, metric + "frictionless", result,
                          "pressure, L2 change over r/a in [" + format(friction_pressure_radii.front()) + ", " +
                            format(friction_pressure_radii.back()) + "] (area-weighted, relative)");
@@ -543,102 +684,9 @@ namespace gradcontact::cases
               out.resolution_text = "not measured (the frictionless FE failed: " + cell(smooth_check.error) + ")";
               return out;
             }
-          const fem::UnilateralResult smooth = r;
-          const auto relative = [&](const double mu, const double seconds_mu, const std::string &error_mu) {
-            if (!error_mu.empty())
-              {
-                MapPoint p;
-                p.ratio = mu;
-                p.error = error_mu;
-                return p;
-              }
-            std::vector<double> smooth_pressure;
-            for (const fem::Sample &x : smooth.pressure)
-              smooth_pressure.push_back(x.value);
-            try
-              {
-                return point(mu, seconds_mu, smooth.force, smooth.outer_edge, smooth_pressure);
-              }
-            catch (const std::exception &e)
-              {
-                MapPoint p;
-                p.ratio = mu;
-                p.error = concise(e);
-                return p;
-              }
-          };
-          // A frictional point at `steps` load steps.
-          const auto at_steps = [&](const double mu, const unsigned int steps) {
-            load.friction.load_steps = steps;
-            const auto [seconds_mu, error_mu] = solve(mu);
-            return relative(mu, seconds_mu, error_mu);
-          };
-          // The path's error is first order in the step (a vertex that comes into contact during a step carries no
-          // shear in it): each point is extrapolated from N and 2N steps, 2 X(2N) - X(N) (c/a: at 2N).
-          const auto extrapolated = [](const MapPoint &coarse, const MapPoint &fine) {
-            MapPoint p = fine;
-            p.seconds += coarse.seconds;
-            if (!coarse.error.empty() && p.error.empty())
-              p.error = coarse.error;
-            if (p.error.empty())
-              {
-                p.force = 2 * fine.force - coarse.force;
-                p.radius = 2 * fine.radius - coarse.radius;
-                p.pressure = 2 * fine.pressure - coarse.pressure;
-              }
-            return p;
-          };
-          const unsigned int steps = s.friction.load_steps;
-          std::vector<double> mus = ratios;
-          if (s.map.full_stick)
-            mus.push_back(std::numeric_limits<double>::infinity());
-          for (const double mu : mus)
-            {
-              out.points.push_back(extrapolated(at_steps(mu, steps), at_steps(mu, 2 * steps)));
-              const MapPoint &p = out.points.back();
-              if (holl && p.error.empty())
-                {
-                  // The decoupled pairing: the frictional FE against the frictionless FE (a sharp check).
-                  const std::string what = metric + "mu = " + format(mu) + " against mu = 0 (decoupled: equal)";
-                  result.rows.push_back(compare("force at the depth (friction)", what, "FE", "FE frictionless", 1.,
-                                                1. + p.force, 1., s.tolerances.force, p.dofs, p.seconds));
-                  result.rows.push_back(compare("contact radius (friction)", what, "FE", "FE frictionless", 1.,
-                                                1. + p.radius, 1., s.tolerances.contact_radius, p.dofs, p.seconds));
-                }
-            }
-          // The FE resolution: the change of the extrapolation from N/2 and N steps to N and 2N at the largest
-          // finite mu solved, where slip and stick meet (full stick only when no finite mu was solved; the mesh's
-          // error is the frictionless check's, below).
-          auto largest = std::find_if(out.points.rbegin(), out.points.rend(), [](const MapPoint &p) {
-            return p.error.empty() && std::isfinite(p.ratio);
-          });
-          if (largest == out.points.rend())
-            largest = std::find_if(out.points.rbegin(), out.points.rend(), [](const MapPoint &p) { return p.error.empty(); });
-          std::ostringstream md;
-          if (largest != out.points.rend() && steps >= 2)
-            {
-              const MapPoint coarser = extrapolated(at_steps(largest->ratio, steps / 2), at_steps(largest->ratio, steps));
-              if (coarser.error.empty())
-                for (const std::string q : {"force", "contact radius", "pressure"})
-                  out.resolution[q] = std::abs(deviation_of(*largest, q) - deviation_of(coarser, q));
-              md << "Every point is extrapolated from " << steps << " and " << 2 * steps
-                 << " load steps (the path's error is first order). FE resolution (the change of that extrapolation from "
-                 << steps / 2 << " and " << steps << " steps, at mu = " << format(largest->ratio) << "; stick radius "
-                 << format(coarser.stick) << " at " << steps << " steps against " << format(largest->stick) << " at "
-                 << 2 * steps << "):";
-              if (!coarser.error.empty())
-                md << " not measured (" << cell(coarser.error) << ")";
-            }
-          else
-            md << "FE resolution: not measured (" << (steps < 2 ? "Friction/load steps < 2" : "no frictional point was solved")
-               << ")";
-          for (const auto &[q, change] : out.resolution)
-            md << " " << quantity_label(q, true) << " " << format(change) << ";";
-          if (holl)
-            md << " Holl's ratio: every deviation below is the FE's own error (exact: 0).";
-          md << " " << solver->n_dofs() << " DoFs; the frictionless FE against the closed forms: force "
-             << format(smooth_check.force) << ", contact radius " << format(smooth_check.radius) << ".";
-          out.resolution_text = md.str();
+          const fem::UnilateralResult smooth = f.r;
+          out.points = friction_points(s, f, smooth, ratios, holl, metric, result);
+          friction_resolution(f, smooth, s.friction.load_steps, holl, smooth_check, out);
           if (verbose)
             std::cerr << "  k = " << k << ", nu = " << nu << ": frictionless force " << smooth_check.force << '\n';
         }
@@ -683,6 +731,340 @@ namespace gradcontact::cases
     return finite;
   }
 
+  namespace
+  {
+    /// One panel of a map: an exponent k, and for a friction map a Poisson ratio nu.
+    struct Panel
+    {
+      double k, nu;
+    };
+
+    /// What a map scene compares: its ratios (ascending) and their name, the quantities, the reference, and the
+    /// panels.
+    struct MapPlan
+    {
+      std::vector<double> ratios;
+      std::string x;
+      bool indenter = false, of_indenter = false, of_friction = false;
+      /// The chapter's idealisation is the limit a/z0 -> inf of a finite surface modulus (a/w -> inf of the error
+      /// function), a/H -> 0 of a coating, E1/E0 -> inf of the indenter and mu -> 0 of friction.
+      bool toward_large = true;
+      std::vector<std::string> quantities;
+      std::string reference_name;
+      std::vector<Panel> panels;
+    };
+
+    /// The plan of a map scene: every k, and for a friction map every nu of Map/nu values (and Holl's ratio).
+    MapPlan plan_map(const Scene &s)
+    {
+      MapPlan plan;
+      const std::vector<double> ks = s.map.exponents.empty() ? std::vector<double>{s.material.k} : s.map.exponents;
+      plan.ratios = s.map.ratios;
+      std::sort(plan.ratios.begin(), plan.ratios.end());
+      plan.x = ratio_name(s);
+      plan.indenter = is_indenter(s);
+      plan.quantities = plan.indenter ? std::vector<std::string>{"force", "contact radius", "pressure"}
+                                      : std::vector<std::string>{"force", "pressure"};
+      plan.of_indenter = s.map.parameter == MapParameters::Parameter::indenter_modulus;
+      plan.of_friction = s.map.parameter == MapParameters::Parameter::friction_coefficient;
+      plan.reference_name = plan.of_indenter   ? "closed form (rigid indenter)"
+                            : plan.of_friction ? "FE frictionless"
+                                               : "closed form (power-law idealisation E0, c0, k)";
+      plan.toward_large = s.map.parameter != MapParameters::Parameter::coating_thickness && !plan.of_friction;
+      for (const double k : ks)
+        {
+          std::vector<double> nus = plan.of_friction && !s.map.poisson_ratios.empty() ? s.map.poisson_ratios
+                                                                                      : std::vector<double>{s.material.nu};
+          if (plan.of_friction && s.map.holl_ratio && 1. / (2. + k) <= 0.5 &&
+              std::none_of(nus.begin(), nus.end(), [k](const double nu) { return std::abs(nu - 1. / (2. + k)) <= 1e-12; }))
+            nus.push_back(1. / (2. + k));
+          for (const double nu : nus)
+            plan.panels.push_back({k, nu});
+        }
+      return plan;
+    }
+
+    std::string panel_name(const MapPlan &plan, const Panel &p)
+    {
+      return "k = " + format(p.k) +
+             (plan.of_friction
+                ? ", nu = " + std::string(std::abs(p.nu - 1. / (2. + p.k)) <= 1e-12 ? "1/(2 + k) = " : "") + format(p.nu)
+                : "");
+    }
+
+    /// The header of map.csv.
+    std::string map_csv_head(const MapPlan &plan)
+    {
+      const std::string &x = plan.x;
+      const bool of_friction = plan.of_friction;
+      std::ostringstream csv;
+      csv << "k," << (of_friction ? "nu," : "")
+          << (x == "a/z0" ? "a_over_z0" : x == "a/w" ? "a_over_w" : x == "a/H" ? "a_over_H" : x == "mu" ? "mu" : "E1_over_E0")
+          << ",force_deviation,contact_radius_deviation,pressure_deviation," << (of_friction ? "stick_radius_over_a," : "")
+          << "dofs,seconds,error\n";
+      return csv.str();
+    }
+
+    /// The title of map.md and what the map compares.
+    std::string map_intro(const Scene &s, const MapPlan &plan)
+    {
+      const std::string &x = plan.x;
+      std::ostringstream md;
+      md << "# " << s.info.name << ": applicability map\n\n" << (s.info.description.empty() ? "" : s.info.description + "\n\n");
+      if (plan.of_indenter)
+        md << "The FE model of a homogeneous elastic indenter (E1 = ratio E0, nu = " << format(s.indenter.nu)
+           << ", a half-space carrying the profile) on E0 (z/c0)^k, at the depth where the rigid indenter's closed form "
+              "has the contact radius Load/a = "
+           << format(s.load.a) << " m: deviation = FE(E1) / FE(rigid indenter) - 1 on one mesh (force, contact radius, "
+              "pressure at r = "
+           << format(axis_sample) << " a), the deviation from the rigid indenter's closed forms up to the rigid FE's "
+              "own error (the sharp-check rows of errors.csv). One mesh and solver per k (fem::UnilateralContactSolver, "
+              "the contact set found); E1 enters as the scale of the indenter's compliance.\n\n";
+      else if (plan.of_friction)
+        md << "The FE model of a rigid indenter with Coulomb friction mu between it and E0 (z/c0)^k, loaded from zero "
+              "(in "
+           << s.friction.load_steps << " and " << 2 * s.friction.load_steps
+           << " steps, extrapolated) to the depth where the frictionless closed form has the contact radius Load/a = "
+           << format(s.load.a) << " m: deviation = FE(mu) / FE(frictionless) - 1 on one mesh (force at the depth, "
+              "contact radius; for the pressure the change of p(r) sampled at r/a = "
+           << format(friction_pressure_radii.front()) << ", ..., " << format(friction_pressure_radii.back())
+           << " in the area-weighted L2 norm relative to p's, with the sign of the change at r = 0.5 a), the error of the "
+              "chapter's frictionless closed forms up to the frictionless "
+              "FE's own error (the sharp-check rows of errors.csv); c/a is the radius of the stick zone around the axis "
+              "over the contact radius (slip outside it). One mesh and solver per (k, nu) (fem::UnilateralContactSolver, "
+              "the contact, stick and slip sets found at every step). At Holl's ratio nu = 1/(2 + k) pressure causes no "
+              "radial displacement and friction must change nothing: those rows are sharp checks.\n\n";
+      else
+        md << "The FE model of "
+           << (x == "a/z0"  ? "E(z) = E0 ((z + z0)/c0)^k (a finite surface modulus)"
+               : x == "a/w" ? "E(z) = E0 [1 + (m - 1) erfc(z/w)], m = " + format(s.material.surface_modulus_ratio) +
+                                " (the error-function grading of Lee, Barber & Thouless 2009)"
+                            : "a graded coating E0 (z/c0)^k on 0 < z <= H over the substrate E0 (H/c0)^k")
+           << " against the power-law closed forms (E0, c0, k; 9.1) at the FE depth: deviation = FE / closed form - 1"
+           << " (force at the depth" << (plan.indenter ? ", contact radius at the depth" : "") << ", pressure at r = "
+           << format(axis_sample) << " a). Load/a = " << format(s.load.a) << " m, the FE under contact-radius control.\n\n";
+      return md.str();
+    }
+
+    /// The heads of map.md's threshold table and (friction) of its table of the largest effects.
+    std::string thresholds_head(const Scene &s, const MapPlan &plan)
+    {
+      std::ostringstream md;
+      md << "## Where " << (plan.of_indenter   ? "the rigid indenter's closed forms hold"
+                            : plan.of_friction ? "the frictionless closed forms hold"
+                                               : "the power law holds")
+         << "\n\n"
+         << threshold_table_head(plan.of_friction ? std::vector<std::string>{"k", "nu", "quantity"}
+                                                  : std::vector<std::string>{"k", "quantity"},
+                                 s.map.thresholds, "when " + plan.x);
+      return md.str();
+    }
+
+    std::string largest_head(const Scene &s)
+    {
+      std::ostringstream md;
+      md << "## The largest effect of friction\n\nOver the map's mu" << (s.map.full_stick ? " and full stick" : "")
+         << ": the largest |FE(mu) / FE(frictionless) - 1| and the stick radius c/a at the largest finite mu.\n\n"
+            "| k | nu | force | contact radius | "
+         << quantity_label("pressure", true) << " | c/a at the largest finite mu |\n|---|---|---|---|---|---|\n";
+      return md.str();
+    }
+
+    /// The outputs of a map scene as its panels fill them: map.csv, map.md's parts, and the plots' curves.
+    struct MapTables
+    {
+      std::ofstream csv;
+      std::ostringstream md, thresholds_md, largest_md;
+      std::map<std::string, std::vector<Series>> plots;
+    };
+
+    /// The points of one panel: rows of map.csv and of the panel's table in map.md, and a failed row for each
+    /// point that failed.
+    void tabulate_points(const MapPlan &plan, const Panel &panel, const std::vector<MapPoint> &points, MapTables &t,
+                         SceneResult &result, const bool verbose)
+    {
+      const std::string &x = plan.x;
+      const bool indenter = plan.indenter, of_friction = plan.of_friction;
+      t.md << "## " << panel_name(plan, panel) << "\n\n| " << x << " | force | " << (indenter ? "contact radius | " : "")
+           << quantity_label("pressure", of_friction) << " | " << (of_friction ? "c/a | " : "") << "DoFs | s |\n|---|---|"
+           << (indenter ? "---|" : "") << (of_friction ? "---|" : "") << "---|---|---|\n";
+      for (const MapPoint &p : points)
+        {
+          t.csv << panel.k << ',' << (of_friction ? std::to_string(panel.nu) + "," : "") << p.ratio << ',' << p.force
+                << ',' << (indenter ? p.radius : std::nan("")) << ',' << p.pressure << ','
+                << (of_friction ? format(p.stick) + "," : "") << p.dofs << ',' << p.seconds << ',' << csv_quote(p.error)
+                << '\n';
+          t.md << "| " << (std::isinf(p.ratio) ? std::string("inf (full stick)") : format(p.ratio));
+          if (p.error.empty())
+            t.md << " | " << format(p.force) << " | " << (indenter ? format(p.radius) + " | " : "") << format(p.pressure)
+                 << (of_friction ? " | " + format(p.stick) : "");
+          else
+            t.md << " | failed: " << cell(p.error) << " | " << (indenter ? "- | " : "") << "-" << (of_friction ? " | -" : "");
+          t.md << " | " << p.dofs << " | " << format(p.seconds) << " |\n";
+          if (verbose)
+            std::cerr << "  " << panel_name(plan, panel) << ", " << x << " = " << p.ratio << ": force " << p.force
+                      << ", radius " << p.radius << ", pressure " << p.pressure
+                      << (of_friction ? ", c/a " + format(p.stick) : "") << (p.error.empty() ? "" : " (" + p.error + ")")
+                      << ", " << p.seconds << " s\n";
+          if (!p.error.empty())
+            result.rows.push_back(failed("map point", "FE", plan.reference_name,
+                                         panel_name(plan, panel) + ", " + x + " = " + format(p.ratio) + ": " + p.error));
+        }
+    }
+
+    /// A friction panel's row of the largest effects: the largest |deviation| of each quantity, and c/a at the
+    /// largest finite mu.
+    void tabulate_largest(const MapPlan &plan, const Panel &panel, const std::vector<MapPoint> &points,
+                          std::ostringstream &largest_md)
+    {
+      largest_md << "| " << format(panel.k) << " | " << format(panel.nu) << " |";
+      for (const std::string &q : plan.quantities)
+        {
+          double largest = -1;
+          for (const MapPoint &p : points)
+            if (p.error.empty())
+              largest = std::max(largest, std::abs(deviation_of(p, q)));
+          largest_md << " " << (largest < 0 ? std::string("no point") : format(largest)) << " |";
+        }
+      const auto last = std::find_if(points.rbegin(), points.rend(),
+                                     [](const MapPoint &p) { return p.error.empty() && std::isfinite(p.ratio); });
+      largest_md << " " << (last == points.rend() ? std::string("-") : format(last->stick)) << " |\n";
+    }
+
+    /// One threshold cell: where |deviation| stays within t toward the idealisation, unless the FE resolution
+    /// cannot place it (a deviation that changes by more than t/3 with the resolution's step).
+    std::string threshold_entry(const MapPlan &plan, const std::vector<double> &r, const std::vector<double> &d,
+                                const std::optional<double> full_stick, const std::map<std::string, double> &resolution,
+                                const std::string &q, const double t)
+    {
+      if (r.empty() && !full_stick)
+        return " no point |";
+      if (resolution.count(q) == 0)
+        return " FE resolution not measured |";
+      if (!(resolution.at(q) <= t / 3))
+        return " below the FE resolution (" + format(resolution.at(q)) + ") |";
+      return " " +
+             (plan.of_friction ? friction_threshold_cell(r, d, full_stick, t) : threshold_cell(r, d, t, plan.toward_large)) +
+             " |";
+    }
+
+    /// A panel's rows of the threshold table, one per quantity, and its curves of |deviation| for the plots.
+    void tabulate_thresholds(const Scene &s, const MapPlan &plan, const Panel &panel, const ExponentMap &map,
+                             MapTables &t)
+    {
+      for (const std::string &q : plan.quantities)
+        {
+          std::vector<double> r, d;
+          std::optional<double> full_stick;
+          Series curve{panel_name(plan, panel), {}, {}, false, true};
+          for (const MapPoint &p : map.points)
+            if (p.error.empty() && std::isinf(p.ratio))
+              full_stick = deviation_of(p, q);
+            else if (p.error.empty())
+              {
+                r.push_back(p.ratio);
+                d.push_back(deviation_of(p, q));
+                curve.x.push_back(p.ratio);
+                curve.y.push_back(std::max(std::abs(deviation_of(p, q)), 1e-16));
+              }
+          t.plots[q].push_back(curve);
+          t.thresholds_md << "| " << format(panel.k) << " |" << (plan.of_friction ? " " + format(panel.nu) + " |" : "")
+                          << " " << quantity_label(q, plan.of_friction) << " |";
+          for (const double threshold : s.map.thresholds)
+            t.thresholds_md << threshold_entry(plan, r, d, full_stick, map.resolution, q, threshold);
+          t.thresholds_md << '\n';
+        }
+    }
+
+    /// A friction panel's curve of the stick radius c/a over the finite mu.
+    Series stick_curve(const MapPlan &plan, const Panel &panel, const std::vector<MapPoint> &points)
+    {
+      Series curve{panel_name(plan, panel), {}, {}, false, true};
+      for (const MapPoint &p : points)
+        if (p.error.empty() && !std::isinf(p.ratio))
+          {
+            curve.x.push_back(p.ratio);
+            curve.y.push_back(p.stick);
+          }
+      return curve;
+    }
+
+    /// An erf-width panel's comparison with the published results, from its own points.
+    std::string erf_published(const Scene &s, const std::vector<MapPoint> &points)
+    {
+      std::vector<double> r, force, radius;
+      for (const MapPoint &p : points)
+        if (p.error.empty())
+          {
+            r.push_back(p.ratio);
+            force.push_back(p.force);
+            radius.push_back(p.radius);
+          }
+      return published_comparison(s, r, force, radius);
+    }
+
+    /// Solves one panel of the map and adds it to the tables.
+    void run_panel(const Scene &s, const MapPlan &plan, const Panel &panel, MapTables &t, SceneResult &result,
+                   const bool verbose)
+    {
+      const double k = panel.k;
+      if (plan.toward_large && !plan.of_indenter && k < 0)
+        t.md << "k < 0 with a finite surface modulus: where z0 is thinner than the surface cells (outside r <= 1.05 a "
+                "they are not halved), the plain Gauss rule under-integrates E ~ (z + z0)^k near z = 0, so the FE "
+                "carries an error of about 1e-3 of the force at a/z0 >= 1e4 that one uniform refinement reduces only "
+                "in part (fem/doc/limits.md); read the thresholds below 1 % with that in mind.\n\n";
+      const ExponentMap map = plan.of_indenter   ? indenter_map(s, k, plan.ratios, result, verbose)
+                              : plan.of_friction ? friction_map(s, k, panel.nu, plan.ratios, result, verbose)
+                                                 : grading_map(s, k, plan.ratios, result, verbose);
+      tabulate_points(plan, panel, map.points, t, result, verbose);
+      t.md << map.resolution_text << "\n\n";
+      if (plan.of_friction)
+        tabulate_largest(plan, panel, map.points, t.largest_md);
+      tabulate_thresholds(s, plan, panel, map, t);
+      if (plan.of_friction)
+        t.plots["stick radius"].push_back(stick_curve(plan, panel, map.points));
+      if (s.map.parameter == MapParameters::Parameter::erf_width)
+        t.md << erf_published(s, map.points);
+    }
+
+    /// Writes map.md: the panels, the largest effects (friction), the thresholds and how they are read.
+    void write_map_md(const fs::path &folder, const MapPlan &plan, const MapTables &t)
+    {
+      const bool of_friction = plan.of_friction;
+      std::ofstream(folder / "map.md") << t.md.str() << t.largest_md.str() << (of_friction ? "\n" : "")
+                                       << t.thresholds_md.str()
+                                       << "\nThe thresholds interpolate log-log between the last ratio outside and the "
+                                          "next one toward the chapter's idealisation; every ratio of the map beyond it "
+                                          "is within."
+                                       << (of_friction ? " Full stick (mu = inf) is read on its own: \"full stick "
+                                                         "included\" when it is within too."
+                                                       : "")
+                                       << "\n";
+    }
+
+    /// The plots of |deviation| against the ratio with the thresholds as lines, and of friction's stick radius.
+    void plot_map(const Scene &s, const fs::path &folder, const MapPlan &plan,
+                  std::map<std::string, std::vector<Series>> &plots)
+    {
+      for (auto &[q, series] : plots)
+        {
+          const bool stick = q == "stick radius";
+          if (!stick)
+            for (const double t : s.map.thresholds)
+              series.push_back(Series{percent(t), {plan.ratios.front(), plan.ratios.back()}, {t, t}, false, false});
+          std::string stem = "map-" + q;
+          std::replace(stem.begin(), stem.end(), ' ', '_');
+          write_plot(folder, stem,
+                     stick ? s.info.name + ": stick radius c/a"
+                           : s.info.name + ": |" + quantity_label(q, plan.of_friction) +
+                               (plan.of_indenter   ? " / rigid indenter - 1|"
+                                : plan.of_friction ? " / frictionless - 1|"
+                                                   : " / power law - 1|"),
+                     plan.x, stick ? "c/a" : "|deviation|", series, true, !stick);
+        }
+    }
+  } // namespace
+
   SceneResult run_map_scene(const Scene &s, const fs::path &folder, const bool verbose)
   {
     require_kind(s, SceneKind::map, "run_map_scene");
@@ -695,244 +1077,20 @@ namespace gradcontact::cases
       }
     const auto start = std::chrono::steady_clock::now();
     SceneResult result = started(s, folder);
-
-    const std::vector<double> ks = s.map.exponents.empty() ? std::vector<double>{s.material.k} : s.map.exponents;
-    std::vector<double> ratios = s.map.ratios;
-    std::sort(ratios.begin(), ratios.end());
-    const std::string x = ratio_name(s);
-    const bool indenter = is_indenter(s);
-    const std::vector<std::string> quantities =
-      indenter ? std::vector<std::string>{"force", "contact radius", "pressure"} : std::vector<std::string>{"force", "pressure"};
-    const bool of_indenter = s.map.parameter == MapParameters::Parameter::indenter_modulus;
-    const bool of_friction = s.map.parameter == MapParameters::Parameter::friction_coefficient;
-    const std::string reference_name = of_indenter   ? "closed form (rigid indenter)"
-                                       : of_friction ? "FE frictionless"
-                                                     : "closed form (power-law idealisation E0, c0, k)";
-
-    // The panels of the map: every k, and for a friction map every nu of Map/nu values (and Holl's ratio).
-    struct Panel
-    {
-      double k, nu;
-    };
-    std::vector<Panel> panels;
-    for (const double k : ks)
-      {
-        std::vector<double> nus = of_friction && !s.map.poisson_ratios.empty() ? s.map.poisson_ratios
-                                                                                 : std::vector<double>{s.material.nu};
-        if (of_friction && s.map.holl_ratio && 1. / (2. + k) <= 0.5 &&
-            std::none_of(nus.begin(), nus.end(), [k](const double nu) { return std::abs(nu - 1. / (2. + k)) <= 1e-12; }))
-          nus.push_back(1. / (2. + k));
-        for (const double nu : nus)
-          panels.push_back({k, nu});
-      }
-    const auto panel_name = [&](const Panel &p) {
-      return "k = " + format(p.k) +
-             (of_friction ? ", nu = " + std::string(std::abs(p.nu - 1. / (2. + p.k)) <= 1e-12 ? "1/(2 + k) = " : "") +
-                              format(p.nu)
-                          : "");
-    };
-
-    std::ofstream csv(folder / "map.csv");
-    csv << "k," << (of_friction ? "nu," : "")
-        << (x == "a/z0" ? "a_over_z0" : x == "a/w" ? "a_over_w" : x == "a/H" ? "a_over_H" : x == "mu" ? "mu" : "E1_over_E0")
-        << ",force_deviation,contact_radius_deviation,pressure_deviation," << (of_friction ? "stick_radius_over_a," : "")
-        << "dofs,seconds,error\n";
-    csv.precision(10);
-    std::ostringstream md, thresholds_md, largest_md;
-    md << "# " << s.info.name << ": applicability map\n\n" << (s.info.description.empty() ? "" : s.info.description + "\n\n");
-    if (of_indenter)
-      md << "The FE model of a homogeneous elastic indenter (E1 = ratio E0, nu = " << format(s.indenter.nu)
-         << ", a half-space carrying the profile) on E0 (z/c0)^k, at the depth where the rigid indenter's closed form "
-            "has the contact radius Load/a = "
-         << format(s.load.a) << " m: deviation = FE(E1) / FE(rigid indenter) - 1 on one mesh (force, contact radius, "
-            "pressure at r = "
-         << format(axis_sample) << " a), the deviation from the rigid indenter's closed forms up to the rigid FE's "
-            "own error (the sharp-check rows of errors.csv). One mesh and solver per k (fem::UnilateralContactSolver, "
-            "the contact set found); E1 enters as the scale of the indenter's compliance.\n\n";
-    else if (of_friction)
-      md << "The FE model of a rigid indenter with Coulomb friction mu between it and E0 (z/c0)^k, loaded from zero "
-            "(in "
-         << s.friction.load_steps << " and " << 2 * s.friction.load_steps
-         << " steps, extrapolated) to the depth where the frictionless closed form has the contact radius Load/a = "
-         << format(s.load.a) << " m: deviation = FE(mu) / FE(frictionless) - 1 on one mesh (force at the depth, "
-            "contact radius; for the pressure the change of p(r) sampled at r/a = "
-         << format(friction_pressure_radii.front()) << ", ..., " << format(friction_pressure_radii.back())
-         << " in the area-weighted L2 norm relative to p's, with the sign of the change at r = 0.5 a), the error of the "
-            "chapter's frictionless closed forms up to the frictionless "
-            "FE's own error (the sharp-check rows of errors.csv); c/a is the radius of the stick zone around the axis "
-            "over the contact radius (slip outside it). One mesh and solver per (k, nu) (fem::UnilateralContactSolver, "
-            "the contact, stick and slip sets found at every step). At Holl's ratio nu = 1/(2 + k) pressure causes no "
-            "radial displacement and friction must change nothing: those rows are sharp checks.\n\n";
-    else
-      md << "The FE model of "
-         << (x == "a/z0"  ? "E(z) = E0 ((z + z0)/c0)^k (a finite surface modulus)"
-             : x == "a/w" ? "E(z) = E0 [1 + (m - 1) erfc(z/w)], m = " + format(s.material.surface_modulus_ratio) +
-                              " (the error-function grading of Lee, Barber & Thouless 2009)"
-                          : "a graded coating E0 (z/c0)^k on 0 < z <= H over the substrate E0 (H/c0)^k")
-         << " against the power-law closed forms (E0, c0, k; 9.1) at the FE depth: deviation = FE / closed form - 1"
-         << " (force at the depth" << (indenter ? ", contact radius at the depth" : "") << ", pressure at r = "
-         << format(axis_sample) << " a). Load/a = " << format(s.load.a) << " m, the FE under contact-radius control.\n\n";
-    // The chapter's idealisation is the limit a/z0 -> inf of a finite surface modulus (a/w -> inf of the error
-    // function), a/H -> 0 of a coating, E1/E0 -> inf of the indenter and mu -> 0 of friction.
-    const bool toward_large = s.map.parameter != MapParameters::Parameter::coating_thickness && !of_friction;
-    thresholds_md << "## Where " << (of_indenter   ? "the rigid indenter's closed forms hold"
-                                     : of_friction ? "the frictionless closed forms hold"
-                                                   : "the power law holds")
-                  << "\n\n"
-                  << threshold_table_head(of_friction ? std::vector<std::string>{"k", "nu", "quantity"}
-                                                      : std::vector<std::string>{"k", "quantity"},
-                                          s.map.thresholds, "when " + x);
-    if (of_friction)
-      largest_md << "## The largest effect of friction\n\nOver the map's mu" << (s.map.full_stick ? " and full stick" : "")
-                 << ": the largest |FE(mu) / FE(frictionless) - 1| and the stick radius c/a at the largest finite mu.\n\n"
-                    "| k | nu | force | contact radius | "
-                 << quantity_label("pressure", true) << " | c/a at the largest finite mu |\n|---|---|---|---|---|---|\n";
-
-    std::map<std::string, std::vector<Series>> plots;
-    for (const Panel &panel : panels)
-      {
-        const double k = panel.k;
-        if (toward_large && !of_indenter && k < 0)
-          md << "k < 0 with a finite surface modulus: where z0 is thinner than the surface cells (outside r <= 1.05 a "
-                "they are not halved), the plain Gauss rule under-integrates E ~ (z + z0)^k near z = 0, so the FE "
-                "carries an error of about 1e-3 of the force at a/z0 >= 1e4 that one uniform refinement reduces only "
-                "in part (fem/doc/limits.md); read the thresholds below 1 % with that in mind.\n\n";
-        const ExponentMap map = of_indenter   ? indenter_map(s, k, ratios, result, verbose)
-                                : of_friction ? friction_map(s, k, panel.nu, ratios, result, verbose)
-                                              : grading_map(s, k, ratios, result, verbose);
-        const std::vector<MapPoint> &points = map.points;
-        std::map<std::string, double> resolution = map.resolution;
-        md << "## " << panel_name(panel) << "\n\n| " << x << " | force | " << (indenter ? "contact radius | " : "")
-           << quantity_label("pressure", of_friction) << " | " << (of_friction ? "c/a | " : "") << "DoFs | s |\n|---|---|"
-           << (indenter ? "---|" : "") << (of_friction ? "---|" : "") << "---|---|---|\n";
-        for (const MapPoint &p : points)
-          {
-            csv << k << ',' << (of_friction ? std::to_string(panel.nu) + "," : "") << p.ratio << ',' << p.force << ','
-                << (indenter ? p.radius : std::nan("")) << ',' << p.pressure << ','
-                << (of_friction ? format(p.stick) + "," : "") << p.dofs << ',' << p.seconds << ',' << csv_quote(p.error)
-                << '\n';
-            md << "| " << (std::isinf(p.ratio) ? std::string("inf (full stick)") : format(p.ratio));
-            if (p.error.empty())
-              md << " | " << format(p.force) << " | " << (indenter ? format(p.radius) + " | " : "") << format(p.pressure)
-                 << (of_friction ? " | " + format(p.stick) : "");
-            else
-              md << " | failed: " << cell(p.error) << " | " << (indenter ? "- | " : "") << "-" << (of_friction ? " | -" : "");
-            md << " | " << p.dofs << " | " << format(p.seconds) << " |\n";
-            if (verbose)
-              std::cerr << "  " << panel_name(panel) << ", " << x << " = " << p.ratio << ": force " << p.force
-                        << ", radius " << p.radius << ", pressure " << p.pressure
-                        << (of_friction ? ", c/a " + format(p.stick) : "")
-                        << (p.error.empty() ? "" : " (" + p.error + ")") << ", " << p.seconds << " s\n";
-            if (!p.error.empty())
-              result.rows.push_back(
-                failed("map point", "FE", reference_name, panel_name(panel) + ", " + x + " = " + format(p.ratio) + ": " + p.error));
-          }
-        md << map.resolution_text << "\n\n";
-        if (of_friction)
-          {
-            largest_md << "| " << format(k) << " | " << format(panel.nu) << " |";
-            for (const std::string &q : quantities)
-              {
-                double largest = -1;
-                for (const MapPoint &p : points)
-                  if (p.error.empty())
-                    largest = std::max(largest, std::abs(deviation_of(p, q)));
-                largest_md << " " << (largest < 0 ? std::string("no point") : format(largest)) << " |";
-              }
-            const auto last = std::find_if(points.rbegin(), points.rend(),
-                                           [](const MapPoint &p) { return p.error.empty() && std::isfinite(p.ratio); });
-            largest_md << " " << (last == points.rend() ? std::string("-") : format(last->stick)) << " |\n";
-          }
-        for (const std::string &q : quantities)
-          {
-            std::vector<double> r, d;
-            std::optional<double> full_stick;
-            Series curve{panel_name(panel), {}, {}, false, true};
-            for (const MapPoint &p : points)
-              if (p.error.empty() && std::isinf(p.ratio))
-                full_stick = deviation_of(p, q);
-              else if (p.error.empty())
-                {
-                  r.push_back(p.ratio);
-                  d.push_back(deviation_of(p, q));
-                  curve.x.push_back(p.ratio);
-                  curve.y.push_back(std::max(std::abs(deviation_of(p, q)), 1e-16));
-                }
-            plots[q].push_back(curve);
-            thresholds_md << "| " << format(k) << " |" << (of_friction ? " " + format(panel.nu) + " |" : "") << " "
-                          << quantity_label(q, of_friction) << " |";
-            for (const double t : s.map.thresholds)
-              {
-                if (r.empty() && !full_stick)
-                  {
-                    thresholds_md << " no point |";
-                    continue;
-                  }
-                if (resolution.count(q) == 0)
-                  {
-                    thresholds_md << " FE resolution not measured |";
-                    continue;
-                  }
-                if (!(resolution[q] <= t / 3))
-                  {
-                    thresholds_md << " below the FE resolution (" << format(resolution[q]) << ") |";
-                    continue;
-                  }
-                thresholds_md << " "
-                              << (of_friction ? friction_threshold_cell(r, d, full_stick, t)
-                                              : threshold_cell(r, d, t, toward_large))
-                              << " |";
-              }
-            thresholds_md << '\n';
-          }
-        if (of_friction)
-          {
-            Series curve{panel_name(panel), {}, {}, false, true};
-            for (const MapPoint &p : points)
-              if (p.error.empty() && !std::isinf(p.ratio))
-                {
-                  curve.x.push_back(p.ratio);
-                  curve.y.push_back(p.stick);
-                }
-            plots["stick radius"].push_back(curve);
-          }
-        if (s.map.parameter == MapParameters::Parameter::erf_width)
-          {
-            std::vector<double> r, force, radius;
-            for (const MapPoint &p : points)
-              if (p.error.empty())
-                {
-                  r.push_back(p.ratio);
-                  force.push_back(p.force);
-                  radius.push_back(p.radius);
-                }
-            md << published_comparison(s, r, force, radius);
-          }
-      }
-    std::ofstream(folder / "map.md") << md.str() << largest_md.str() << (of_friction ? "\n" : "") << thresholds_md.str()
-                                     << "\nThe thresholds interpolate log-log between the last ratio outside and the next "
-                                        "one toward the chapter's idealisation; every ratio of the map beyond it is within."
-                                     << (of_friction ? " Full stick (mu = inf) is read on its own: \"full stick included\" "
-                                                       "when it is within too."
-                                                     : "")
-                                     << "\n";
+    const MapPlan plan = plan_map(s);
+    MapTables t;
+    t.csv.open(folder / "map.csv");
+    t.csv << map_csv_head(plan);
+    t.csv.precision(10);
+    t.md << map_intro(s, plan);
+    t.thresholds_md << thresholds_head(s, plan);
+    if (plan.of_friction)
+      t.largest_md << largest_head(s);
+    for (const Panel &panel : plan.panels)
+      run_panel(s, plan, panel, t, result, verbose);
+    write_map_md(folder, plan, t);
     if (s.outputs.plots)
-      for (auto &[q, series] : plots)
-        {
-          const bool stick = q == "stick radius";
-          if (!stick)
-            for (const double t : s.map.thresholds)
-              series.push_back(Series{percent(t), {ratios.front(), ratios.back()}, {t, t}, false, false});
-          std::string stem = "map-" + q;
-          std::replace(stem.begin(), stem.end(), ' ', '_');
-          write_plot(folder, stem,
-                     stick ? s.info.name + ": stick radius c/a"
-                           : s.info.name + ": |" + quantity_label(q, of_friction) +
-                               (of_indenter   ? " / rigid indenter - 1|"
-                                : of_friction ? " / frictionless - 1|"
-                                              : " / power law - 1|"),
-                     x, stick ? "c/a" : "|deviation|", series, true, !stick);
-        }
+      plot_map(s, folder, plan, t.plots);
     result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     return result;
   }

@@ -268,101 +268,102 @@ namespace gradcontact::cases
   } // namespace
 
 
-
-  int stress(const std::vector<std::string> &args)
+  namespace
   {
-    const Options o = parse(args);
-    if (!fs::exists(o.references))
-      throw std::invalid_argument("stress: cannot open the references '" + o.references.string() + "'");
-    const auto start = std::chrono::steady_clock::now();
-
-    // The absolute-scale variants: (modulus exponent j, length exponent m) and their label. The
-    // references use E0 ~ 1e9 Pa and lengths ~ 1e-4 m.
-    struct Variant
+    /// An absolute-scale variant: the modulus times 2^j and every length times 2^m, and its label.
+    struct ScaleVariant
     {
       std::string label;
       int j, m;
     };
-    const std::vector<Variant> variants = {{"as generated (E0 ~ 1e9 Pa, lengths ~ 1e-4 m)", 0, 0},
-                                           {"E0 x 2^-40 (~1e-3 Pa)", -40, 0},
-                                           {"E0 x 2^10 (~1e12 Pa)", 10, 0},
-                                           {"lengths x 2^-17 (~1e-9 m)", 0, -17},
-                                           {"lengths x 2^23 (~1e3 m)", 0, 23},
-                                           {"E0 x 2^-40, lengths x 2^-17", -40, -17},
-                                           {"E0 x 2^10, lengths x 2^23", 10, 23}};
-    // (method, region) -> tally; the scale variants are regions of their own.
-    std::map<std::pair<std::string, std::string>, Tally> table;
-    std::size_t line_no = 0, evaluated = 0;
-    for (const batch::ReferenceRow &row : batch::read_reference_rows(o.references.string()))
-      {
-        ++line_no;
-        const double reference = row.reference;
-        const double conditioning = row.conditioning;
-        const std::string quantity = row.request.at("quantity");
-        const Dimension dim = quantity_dimension(quantity);
-        json request = row.request;
-        request.erase("id");
-        const std::vector<std::string> where = regions(request);
-        for (const Variant &v : variants)
-          {
-            const bool base = v.j == 0 && v.m == 0;
-            for (const std::string method : {"closed_form", "numerical_mdr"})
-              {
-                if (method == "numerical_mdr" && line_no % (base ? o.mdr_stride : 10 * o.mdr_stride) != 0)
-                  continue;
-                json q = scaled(request, v.j, v.m);
-                q["method"] = method;
-                const double expected = std::ldexp(reference, dim.first * v.j + dim.second * v.m);
-                double value = 0;
-                bool refused = false;
-                std::string why;
-                try
-                  {
-                    value = batch::evaluate(batch::parse(q));
-                  }
-                catch (const std::exception &e)
-                  {
-                    why = e.what();
-                    if (why.find("is not available for case") != std::string::npos)
-                      continue; // the method has no path for this quantity: not a refusal
-                    refused = true;
-                  }
-                ++evaluated;
-                const std::vector<std::string> keys = base ? where : std::vector<std::string>{v.label};
-                for (const std::string &region : keys)
-                  {
-                    Tally &t = table[{method == "closed_form" ? "closed form" : "numerical MDR", region}];
-                    ++t.rows;
-                    if (refused)
-                      {
-                        ++t.refused;
-                        if (t.refusal_example.empty())
-                          t.refusal_example = why.substr(0, 160);
-                        continue;
-                      }
-                    if (!std::isfinite(value))
-                      {
-                        ++t.nonfinite;
-                        continue;
-                      }
-                    const double err = expected == 0. ? std::abs(value) : std::abs(value / expected - 1.);
-                    const double allowance =
-                      conditioning + (method == "closed_form" ? closed_form_floor : numerical_mdr_floor);
-                    std::ostringstream r;
-                    r << "id " << row.request.at("id") << " " << row.request.at("case").get<std::string>() << "." << quantity
-                      << " k=" << request["material"]["k"] << " nu=" << request["material"]["nu"];
-                    t.add(err, allowance, r.str());
-                  }
-              }
-          }
-      }
 
-    // k closer to +-1 than the reference grid (+-0.990234375): the closed form against the numerical MDR,
-    // two independent double-precision paths (special functions vs quadrature of 9.2, 9.10-9.13).
+    /// The absolute-scale variants. The references use E0 ~ 1e9 Pa and lengths ~ 1e-4 m.
+    const std::vector<ScaleVariant> &scale_variants()
     {
-      const json material = {{"E0", 1e9}, {"c0", 1e-4}, {"nu", 0.3}};
+      static const std::vector<ScaleVariant> variants = {{"as generated (E0 ~ 1e9 Pa, lengths ~ 1e-4 m)", 0, 0},
+                                                         {"E0 x 2^-40 (~1e-3 Pa)", -40, 0},
+                                                         {"E0 x 2^10 (~1e12 Pa)", 10, 0},
+                                                         {"lengths x 2^-17 (~1e-9 m)", 0, -17},
+                                                         {"lengths x 2^23 (~1e3 m)", 0, 23},
+                                                         {"E0 x 2^-40, lengths x 2^-17", -40, -17},
+                                                         {"E0 x 2^10, lengths x 2^23", 10, 23}};
+      return variants;
+    }
+
+    /// (method, region) -> tally; the scale variants are regions of their own.
+    using StressTable = std::map<std::pair<std::string, std::string>, Tally>;
+
+    /// One reference row at every scale variant and method (the numerical MDR on every mdr_stride-th row as
+    /// generated, every 10 mdr_stride-th of the variants), tallied in its regions (as generated) or its variant.
+    void tally_reference_row(const Options &o, const batch::ReferenceRow &row, const std::size_t line_no,
+                             StressTable &table, std::size_t &evaluated)
+    {
+      const double reference = row.reference;
+      const double conditioning = row.conditioning;
+      const std::string quantity = row.request.at("quantity");
+      const Dimension dim = quantity_dimension(quantity);
+      json request = row.request;
+      request.erase("id");
+      const std::vector<std::string> where = regions(request);
+      for (const ScaleVariant &v : scale_variants())
+        {
+          const bool base = v.j == 0 && v.m == 0;
+          for (const std::string method : {"closed_form", "numerical_mdr"})
+            {
+              if (method == "numerical_mdr" && line_no % (base ? o.mdr_stride : 10 * o.mdr_stride) != 0)
+                continue;
+              json q = scaled(request, v.j, v.m);
+              q["method"] = method;
+              const double expected = std::ldexp(reference, dim.first * v.j + dim.second * v.m);
+              double value = 0;
+              bool refused = false;
+              std::string why;
+              try
+                {
+                  value = batch::evaluate(batch::parse(q));
+                }
+              catch (const std::exception &e)
+                {
+                  why = e.what();
+                  if (why.find("is not available for case") != std::string::npos)
+                    continue; // the method has no path for this quantity: not a refusal
+                  refused = true;
+                }
+              ++evaluated;
+              const std::vector<std::string> keys = base ? where : std::vector<std::string>{v.label};
+              for (const std::string &region : keys)
+                {
+                  Tally &t = table[{method == "closed_form" ? "closed form" : "numerical MDR", region}];
+                  ++t.rows;
+                  if (refused)
+                    {
+                      ++t.refused;
+                      if (t.refusal_example.empty())
+                        t.refusal_example = why.substr(0, 160);
+                      continue;
+                    }
+                  if (!std::isfinite(value))
+                    {
+                      ++t.nonfinite;
+                      continue;
+                    }
+                  const double err = expected == 0. ? std::abs(value) : std::abs(value / expected - 1.);
+                  const double allowance =
+                    conditioning + (method == "closed_form" ? closed_form_floor : numerical_mdr_floor);
+                  std::ostringstream r;
+                  r << "id " << row.request.at("id") << " " << row.request.at("case").get<std::string>() << "." << quantity
+                    << " k=" << request["material"]["k"] << " nu=" << request["material"]["nu"];
+                  t.add(err, allowance, r.str());
+                }
+            }
+        }
+    }
+
+    /// The requests probed at k near +-1 (material set per k).
+    std::vector<json> near_one_probes()
+    {
       const double a = 1e-4;
-      const std::vector<json> probes = {
+      return {
         {{"case", "flat_punch"}, {"quantity", "force"}, {"a", a}, {"d", 1e-6}},
         {{"case", "flat_punch"}, {"quantity", "displacement"}, {"a", a}, {"d", 1e-6}, {"r", 1.5 * a}},
         {{"case", "paraboloid"}, {"quantity", "force"}, {"geometry", {{"R", 1e-2}}}, {"a", a}},
@@ -375,6 +376,14 @@ namespace gradcontact::cases
          {"control", "force"}},
         {{"case", "tangential_sphere"}, {"quantity", "tangential_force"}, {"geometry", {{"R", 1e-2}}}, {"a", a},
          {"mu", 0.3}, {"c", 0.5 * a}}};
+    }
+
+    /// k closer to +-1 than the reference grid (+-0.990234375): the closed form against the numerical MDR,
+    /// two independent double-precision paths (special functions vs quadrature of 9.2, 9.10-9.13).
+    void tally_near_one(StressTable &table, std::size_t &evaluated)
+    {
+      const json material = {{"E0", 1e9}, {"c0", 1e-4}, {"nu", 0.3}};
+      const std::vector<json> probes = near_one_probes();
       for (const double k : {-0.999999, -0.999, 0.999, 0.999999})
         for (json q : probes)
           {
@@ -413,65 +422,99 @@ namespace gradcontact::cases
           }
     }
 
-    bool ok = true;
-    std::ostringstream md;
-    md << "# Numerical stability of the analytic module\n\n"
-       << "Every row of `" << o.references.filename().string() << "` (" << line_no
-       << " rows, 34-digit references of the MDR integrals from mpmath) by region of parameter space, and the same rows "
-          "at other absolute scales by exact similarity (lengths and moduli times powers of two; the reference times "
-          "the power of two of the quantity's dimension). Closed forms on every row; the numerical MDR on every "
-       << o.mdr_stride << "th row as generated and every " << 10 * o.mdr_stride
-       << "th row of the scale variants. A refusal is an explicit error that explains a limit (e.g. no critical "
-          "state, gross slip, p(0) of a tip whose integrand lies below the smallest double).\n\n"
-       << "Each row is held to its own allowance: its conditioning (the `conditioning` column of the references: the "
-          "relative change of the 34-digit value when each input alone moves by half an ulp, summed over the inputs) "
-          "plus the method's floor ("
-       << format(closed_form_floor) << " closed form, " << format(numerical_mdr_floor)
-       << " numerical MDR). A loss of digits beyond what the inputs justify makes error/allowance exceed 1 and fails "
-          "the run. Near k = +-1 (closed form vs numerical MDR, no reference) the allowance is 10 eps / (1 - |k|) plus "
-          "the numerical MDR's floor: an ulp of k changes 1 -+ k by eps / (1 - |k|) relative, which every quantity "
-          "inherits.\n\n"
-       << "| method | region | rows | refused | NaN/inf | worst rel. error | worst error/allowance (its allowance) | "
-          "row of the worst ratio | within allowance |\n"
-       << "|---|---|---|---|---|---|---|---|---|\n";
-    std::ostringstream csv;
-    csv << "method,region,rows,refused,nonfinite,worst_relative_error,worst_error_over_allowance,allowance_of_worst,"
-           "worst_row,refusal_example\n";
-    // a | inside a cell (|k|) would end it
-    const auto cell = [](std::string text) {
+    /// The head of stability.md: what is evaluated and what each row is held to.
+    std::string stability_head(const Options &o, const std::size_t line_no)
+    {
+      std::ostringstream md;
+      md << "# Numerical stability of the analytic module\n\n"
+         << "Every row of `" << o.references.filename().string() << "` (" << line_no
+         << " rows, 34-digit references of the MDR integrals from mpmath) by region of parameter space, and the same rows "
+            "at other absolute scales by exact similarity (lengths and moduli times powers of two; the reference times "
+            "the power of two of the quantity's dimension). Closed forms on every row; the numerical MDR on every "
+         << o.mdr_stride << "th row as generated and every " << 10 * o.mdr_stride
+         << "th row of the scale variants. A refusal is an explicit error that explains a limit (e.g. no critical "
+            "state, gross slip, p(0) of a tip whose integrand lies below the smallest double).\n\n"
+         << "Each row is held to its own allowance: its conditioning (the `conditioning` column of the references: the "
+            "relative change of the 34-digit value when each input alone moves by half an ulp, summed over the inputs) "
+            "plus the method's floor ("
+         << format(closed_form_floor) << " closed form, " << format(numerical_mdr_floor)
+         << " numerical MDR). A loss of digits beyond what the inputs justify makes error/allowance exceed 1 and fails "
+            "the run. Near k = +-1 (closed form vs numerical MDR, no reference) the allowance is 10 eps / (1 - |k|) plus "
+            "the numerical MDR's floor: an ulp of k changes 1 -+ k by eps / (1 - |k|) relative, which every quantity "
+            "inherits.\n\n"
+         << "| method | region | rows | refused | NaN/inf | worst rel. error | worst error/allowance (its allowance) | "
+            "row of the worst ratio | within allowance |\n"
+         << "|---|---|---|---|---|---|---|---|---|\n";
+      return md.str();
+    }
+
+    /// `text` for a markdown table cell: a | inside it (|k|) would end it.
+    std::string md_cell(std::string text)
+    {
       for (std::size_t i = text.find('|'); i != std::string::npos; i = text.find('|', i + 2))
         text.replace(i, 1, "\\|");
       return text;
-    };
-    for (const auto &[key, t] : table)
-      {
-        const bool pass = t.nonfinite == 0 && t.worst_ratio <= 1.;
-        ok = ok && pass;
-        md << "| " << key.first << " | " << cell(key.second) << " | " << t.rows << " | " << t.refused << " | " << t.nonfinite
-           << " | " << format(t.worst) << " | " << format(t.worst_ratio) << " (" << format(t.worst_allowance) << ") | "
-           << t.worst_row << " | " << (pass ? "yes" : "**NO**") << " |\n";
-        csv << key.first << ",\"" << key.second << "\"," << t.rows << ',' << t.refused << ',' << t.nonfinite << ','
-            << t.worst << ',' << t.worst_ratio << ',' << t.worst_allowance << ",\"" << t.worst_row << "\",\""
-            << t.refusal_example << "\"\n";
-      }
-    md << "\nRefusals, one example per region:\n\n";
-    for (const auto &[key, t] : table)
-      if (!t.refusal_example.empty())
-        md << "- " << key.first << ", " << key.second << ": " << t.refusal_example << "\n";
+    }
+
+    /// The rows of every (method, region) into stability.md and stability.csv, and the refusals' examples; true
+    /// when every cell is within its allowance.
+    bool tabulate_stress(const StressTable &table, std::ostream &md, std::ostream &csv)
+    {
+      bool ok = true;
+      csv << "method,region,rows,refused,nonfinite,worst_relative_error,worst_error_over_allowance,allowance_of_worst,"
+             "worst_row,refusal_example\n";
+      for (const auto &[key, t] : table)
+        {
+          const bool pass = t.nonfinite == 0 && t.worst_ratio <= 1.;
+          ok = ok && pass;
+          md << "| " << key.first << " | " << md_cell(key.second) << " | " << t.rows << " | " << t.refused << " | "
+             << t.nonfinite << " | " << format(t.worst) << " | " << format(t.worst_ratio) << " ("
+             << format(t.worst_allowance) << ") | " << t.worst_row << " | " << (pass ? "yes" : "**NO**") << " |\n";
+          csv << key.first << ",\"" << key.second << "\"," << t.rows << ',' << t.refused << ',' << t.nonfinite << ','
+              << t.worst << ',' << t.worst_ratio << ',' << t.worst_allowance << ",\"" << t.worst_row << "\",\""
+              << t.refusal_example << "\"\n";
+        }
+      md << "\nRefusals, one example per region:\n\n";
+      for (const auto &[key, t] : table)
+        if (!t.refusal_example.empty())
+          md << "- " << key.first << ", " << key.second << ": " << t.refusal_example << "\n";
+      return ok;
+    }
+
+    /// Writes stability.md and stability.csv under temporary names, renamed when complete.
+    fs::path write_stability(const Options &o, const std::string &md, const std::string &csv)
+    {
+      const fs::path folder = o.reports / "benchmarks";
+      fs::create_directories(folder);
+      remove_stale_temporaries(folder); // what a killed run left
+      for (const auto &[name, text] : {std::pair<std::string, std::string>{"stability.md", md},
+                                       std::pair<std::string, std::string>{"stability.csv", csv}})
+        {
+          const fs::path tmp = temporary_sibling(folder / name);
+          std::ofstream(tmp) << text;
+          fs::rename(tmp, folder / name);
+        }
+      return folder;
+    }
+  } // namespace
+
+  int stress(const std::vector<std::string> &args)
+  {
+    const Options o = parse(args);
+    if (!fs::exists(o.references))
+      throw std::invalid_argument("stress: cannot open the references '" + o.references.string() + "'");
+    const auto start = std::chrono::steady_clock::now();
+    StressTable table;
+    std::size_t line_no = 0, evaluated = 0;
+    for (const batch::ReferenceRow &row : batch::read_reference_rows(o.references.string()))
+      tally_reference_row(o, row, ++line_no, table, evaluated);
+    tally_near_one(table, evaluated);
+    std::ostringstream md, csv;
+    md << stability_head(o, line_no);
+    const bool ok = tabulate_stress(table, md, csv);
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     md << "\n" << evaluated << " evaluations in " << format(seconds) << " s.\n";
-
-    const fs::path folder = o.reports / "benchmarks";
-    fs::create_directories(folder);
-    remove_stale_temporaries(folder); // what a killed run left
-    // Written under temporary names, renamed when complete.
-    for (const auto &[name, text] : {std::pair<std::string, std::string>{"stability.md", md.str()},
-                                     std::pair<std::string, std::string>{"stability.csv", csv.str()}})
-      {
-        const fs::path tmp = temporary_sibling(folder / name);
-        std::ofstream(tmp) << text;
-        fs::rename(tmp, folder / name);
-      }
+    const fs::path folder = write_stability(o, md.str(), csv.str());
     std::cout << "wrote " << (folder / "stability.md").string() << " (" << table.size() << " method x region cells, "
               << evaluated << " evaluations, " << format(seconds) << " s)" << (ok ? "" : ": a region FAILS its bound")
               << "\n";
