@@ -766,6 +766,39 @@ namespace gradcontact::cases
       fe[quantity][a] = value;
     indentation_curve("depth", c.depth, false, radii, profile, m, 0., constants, s, fe, folder, result);
     indentation_curve("force", c.force, true, radii, profile, m, 0., constants, s, fe, folder, result);
+    // A profile whose indentation pulls (a sign slip in its constants) has no non-adhesive contact to check.
+    for (const double r : radii)
+      if (const double F = mdr::force(mdr::indentation(profile, m, r), m); F < 0)
+        {
+          result.rows.push_back(failed("contact state", "candidate", "numerical MDR",
+                                       "the profile gives a tensile contact, F_N(a) = " + format(F) + " < 0 at a = " +
+                                         format(r) + " m, which frictionless contact without adhesion cannot "
+                                         "hold: check the signs of the profile's constants"));
+          break;
+        }
+  }
+
+  void normal_profile_curves(const Scene &s, const std::map<std::string, double> &constants,
+                             const mdr::Profile &profile, const std::map<std::string, std::map<double, double>> &fe,
+                             const fs::path &folder, SceneResult &result)
+  {
+    const CandidateParameters &c   = s.candidate;
+    const Medium               m   = scene_medium(s);
+    const double               a   = s.load.a;
+    const mdr::Foundation      w1d = mdr::indentation(profile, m, a);
+    const auto curve = [&](const std::string &quantity, const std::string &expression, const std::vector<double> &x,
+                           const std::string &unit, const std::function<double(double)> &reference) {
+      if (expression.empty() || x.empty())
+        return;
+      const auto g = parse_candidate_expression<2>(quantity, "r,a", expression, constants);
+      Curve curve{quantity, "r / a", unit, x,
+                  [&, g](const std::size_t i) { return g->value(dealii::Point<2>(x[i] * a, a)); },
+                  [&](const std::size_t i) { return reference(x[i] * a); }};
+      add_note(result, report_curve(curve, c.tolerance, s.outputs.plots, folder, fe, result.rows));
+    };
+    curve("pressure", c.pressure, s.outputs.pressure_radii, "[Pa]", [&](const double r) { return mdr::pressure(w1d, m, r); });
+    curve("displacement", c.displacement, s.outputs.displacement_radii, "[m]",
+          [&](const double r) { return mdr::displacement(w1d, m, r); });
   }
 
 

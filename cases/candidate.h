@@ -71,10 +71,18 @@ namespace gradcontact::cases
 
   /// The normal family's d(a) and F_N(a) over Candidate/range times Load/a (and at Load/a) against the numerical MDR
   /// of `profile`: a row per point, a table and a plot per curve with the FE's value at Load/a (`fe_at_a`, by
-  /// quantity) as its point; the largest deviations go into result.description.
+  /// quantity) as its point; the largest deviations go into result.description. A profile whose indentation pulls
+  /// (F_N < 0: a sign slip in its constants) is a failed row.
   void normal_candidate_curves(const Scene &scene, const std::map<std::string, double> &constants,
                                const mdr::Profile &profile, const std::map<std::string, double> &fe_at_a,
                                const std::filesystem::path &folder, SceneResult &result);
+
+  /// The normal family's p(r, a) and w(r, a) at Load/a against the numerical MDR at Outputs/pressure and
+  /// displacement radii (r / a): a row per radius, a table and a plot each, with the FE's samples (`fe`, by quantity
+  /// and r / a) as its points.
+  void normal_profile_curves(const Scene &scene, const std::map<std::string, double> &constants,
+                             const mdr::Profile &profile, const std::map<std::string, std::map<double, double>> &fe,
+                             const std::filesystem::path &folder, SceneResult &result);
 
   /// Each runs a candidate scene of its family and writes its tables and plots into `folder`.
   SceneResult run_adhesive_candidate(const Scene &scene, const std::filesystem::path &folder);

@@ -321,7 +321,8 @@ namespace gradcontact::cases
     /// Load/a on the recommended mesh, one solve for every quantity; its rows go into `rows`, and its depth and force
     /// are returned by name for the curves' plots.
     std::map<std::string, double> candidate_fe_rows(const Scene &s, const std::map<std::string, double> &constants,
-                                                    const mdr::Profile &profile, std::vector<Row> &rows)
+                                                    const mdr::Profile &profile, std::vector<Row> &rows,
+                                                    std::map<std::string, std::map<double, double>> &profiles)
     {
       const CandidateParameters &c = s.candidate;
       const double a = s.load.a;
@@ -355,6 +356,10 @@ namespace gradcontact::cases
       for (const fem::Sample &w : fe.displacement)
         fe_row("displacement", "r/a = " + format(w.r / a) + ", relative", c.displacement, w.value,
                s.tolerances.displacement, w.r);
+      for (const fem::Sample &p : fe.pressure)
+        profiles["pressure"][p.r / a] = p.value;
+      for (const fem::Sample &w : fe.displacement)
+        profiles["displacement"][w.r / a] = w.value;
       return {{"depth", fe.depth}, {"force", fe.force}};
     }
 
@@ -362,50 +367,19 @@ namespace gradcontact::cases
     /// d(a) and F_N(a) over Candidate/range and p, w at Load/a against the numerical MDR; the FE's rows last.
     SceneResult run_candidate(const Scene &s, const fs::path &folder)
     {
-      const CandidateParameters &c = s.candidate;
       const auto constants = candidate_constants(s);
       if (s.load.contact == LoadParameters::Contact::unilateral)
         return run_unilateral_candidate(s, constants);
       SceneResult result;
       const mdr::Profile profile = candidate_profile(s, constants);
       // (a pressure candidate without f'' is refused by scene_kind: see there why)
-      const MaterialParameters &mp = s.material;
-      const Medium m = medium(GradedHalfSpace{mp.E0, mp.c0, mp.k, mp.nu});
-      const double a = s.load.a;
       std::vector<Row> fe_rows;
       std::map<std::string, double> fe_at_a;
+      std::map<std::string, std::map<double, double>> fe_profiles;
       if (s.references.fem)
-        fe_at_a = candidate_fe_rows(s, constants, profile, fe_rows);
+        fe_at_a = candidate_fe_rows(s, constants, profile, fe_rows, fe_profiles);
       normal_candidate_curves(s, constants, profile, fe_at_a, folder, result);
-
-      const mdr::Foundation w1d = mdr::indentation(profile, m, a);
-      const auto check = [&](const std::string &quantity, const std::string &metric, const std::function<double()> &candidate,
-                             const std::function<double()> &reference) {
-        try
-          {
-            const auto t0 = std::chrono::steady_clock::now();
-            const double value = candidate();
-            const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-            const double ref = reference();
-            result.rows.push_back(compare(quantity, metric, "candidate", "numerical MDR", ref, value, ref, c.tolerance, 0, seconds));
-          }
-        catch (const std::exception &e)
-          {
-            result.rows.push_back(failed(quantity, "candidate", "numerical MDR", concise(e)));
-          }
-      };
-      const auto profile_rows = [&](const std::string &entry, const std::string &expression, const std::vector<double> &radii,
-                                    const std::function<double(double)> &reference) {
-        if (expression.empty())
-          return;
-        const auto g = parse_candidate_expression<2>(entry, "r,a", expression, constants);
-        for (const double x : radii)
-          check(entry, "r/a = " + format(x) + ", relative", [&] { return g->value(dealii::Point<2>(x * a, a)); },
-                [&] { return reference(x * a); });
-      };
-      profile_rows("pressure", c.pressure, s.outputs.pressure_radii, [&](double r) { return mdr::pressure(w1d, m, r); });
-      profile_rows("displacement", c.displacement, s.outputs.displacement_radii,
-                   [&](double r) { return mdr::displacement(w1d, m, r); });
+      normal_profile_curves(s, constants, profile, fe_profiles, folder, result);
       result.rows.insert(result.rows.end(), fe_rows.begin(), fe_rows.end());
       return result;
     }
