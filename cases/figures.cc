@@ -621,9 +621,9 @@ namespace gradcontact::cases
       return md.str();
     }
 
-    FigureSummary draw(const fs::path &file, const fs::path &reports, PointCache &cache)
+    /// The figure file as JSON; a file that cannot be read or parsed is an error naming it.
+    json read_figure(const fs::path &file)
     {
-      const auto start = std::chrono::steady_clock::now();
       std::ifstream in(file);
       if (!in)
         throw std::runtime_error("figures: cannot open " + file.string());
@@ -636,18 +636,14 @@ namespace gradcontact::cases
         {
           throw std::invalid_argument("figures: " + file.string() + " is not valid JSON (" + e.what() + ")");
         }
-      const std::string name = fig.value("name", file.stem().string());
-      const std::string title = fig.value("title", name);
-      if (title.size() > max_title_characters)
-        throw std::invalid_argument("figures: " + file.string() + ": title has " + std::to_string(title.size()) +
-                                    " characters; valid: at most " + std::to_string(max_title_characters) +
-                                    " (longer titles are cut off in the plot; put the rest in \"caption\")");
-      FigureSummary summary{name, fig.value("figure", ""), fig.value("caption", "")};
+      return fig;
+    }
 
-      // Analytic curves first: the point sets are checked against them by title.
-      std::vector<Series> series;
-      std::map<std::string, AnalyticCurve> analytic;
-      std::size_t skipped = 0;
+    /// The analytic curves of the figure (its "sweep" entries), sampled where their formulas are defined, into
+    /// `series` and by title into `analytic`; `skipped` counts the points outside a formula's domain.
+    void analytic_curves(const json &fig, const fs::path &file, std::vector<Series> &series,
+                         std::map<std::string, AnalyticCurve> &analytic, std::size_t &skipped)
+    {
       for (const json &c : fig.at("curves"))
         {
           if (!c.contains("sweep"))
@@ -690,10 +686,15 @@ namespace gradcontact::cases
           series.push_back({t, curve.x, curve.y, c.value("points", false)});
           analytic.emplace(t, std::move(curve));
         }
+    }
 
-      // Point sets (FE or tabulated), each checked against the closed form.
-      std::vector<CheckedPoint> checked;
-      std::map<std::string, std::string> why;
+    /// The point sets of the figure (FE or tabulated; prescribed inputs are drawn, not checked), each checked
+    /// against its analytic curves into `checked` with the reason of its tolerance in `why`, and drawn in its curve's
+    /// colour when it is checked against one.
+    void point_sets(const json &fig, const fs::path &file, const fs::path &reports, PointCache &cache,
+                    const std::map<std::string, AnalyticCurve> &analytic, std::vector<Series> &series,
+                    std::vector<CheckedPoint> &checked, std::map<std::string, std::string> &why)
+    {
       for (const json &c : fig.at("curves"))
         {
           if (c.contains("sweep"))
@@ -740,6 +741,52 @@ namespace gradcontact::cases
                 points.colour_of = static_cast<int>(i);
           series.push_back(points);
         }
+    }
+
+    /// The figure's line on the terminal: what was drawn, the worst error, every failed point.
+    void print_summary(const FigureSummary &summary, const bool ok, const fs::path &png, const std::size_t curves,
+                       const std::size_t skipped, const std::vector<CheckedPoint> &checked)
+    {
+      std::cout << (ok ? "drew " : "wrote data and script (gnuplot failed) ") << png.string()
+                << " (" << curves << " curves"
+                << (skipped ? ", " + std::to_string(skipped) + " points outside the domain" : "");
+      if (summary.points)
+        std::cout << ", " << summary.points << " checked points, worst error " << format(summary.worst);
+      if (summary.measured)
+        std::cout << ", " << summary.measured << " measured points, largest deviation "
+                  << format(summary.largest_deviation);
+      if (summary.failed)
+        std::cout << ", " << summary.failed << " FAILED";
+      std::cout << ", " << format(summary.seconds) << " s)\n";
+      for (const CheckedPoint &p : checked)
+        if (!p.pass)
+          std::cout << "  FAIL " << p.series << " at x = " << format(p.x) << ": " << p.note << " (value "
+                    << format(p.y) << ", reference " << format(p.reference) << ", error " << format(p.error)
+                    << ", tolerance " << format(p.tolerance) << ")\n";
+    }
+
+    FigureSummary draw(const fs::path &file, const fs::path &reports, PointCache &cache)
+    {
+      const auto start = std::chrono::steady_clock::now();
+      const json fig = read_figure(file);
+      const std::string name = fig.value("name", file.stem().string());
+      const std::string title = fig.value("title", name);
+      if (title.size() > max_title_characters)
+        throw std::invalid_argument("figures: " + file.string() + ": title has " + std::to_string(title.size()) +
+                                    " characters; valid: at most " + std::to_string(max_title_characters) +
+                                    " (longer titles are cut off in the plot; put the rest in \"caption\")");
+      FigureSummary summary{name, fig.value("figure", ""), fig.value("caption", "")};
+
+      // Analytic curves first: the point sets are checked against them by title.
+      std::vector<Series> series;
+      std::map<std::string, AnalyticCurve> analytic;
+      std::size_t skipped = 0;
+      analytic_curves(fig, file, series, analytic, skipped);
+
+      // Point sets (FE or tabulated), each checked against the closed form.
+      std::vector<CheckedPoint> checked;
+      std::map<std::string, std::string> why;
+      point_sets(fig, file, reports, cache, analytic, series, checked, why);
 
       const fs::path folder = reports / "figures";
       fs::create_directories(folder);
@@ -782,22 +829,7 @@ namespace gradcontact::cases
           throw;
         }
 
-      std::cout << (ok ? "drew " : "wrote data and script (gnuplot failed) ") << (folder / (name + ".png")).string()
-                << " (" << series.size() << " curves"
-                << (skipped ? ", " + std::to_string(skipped) + " points outside the domain" : "");
-      if (summary.points)
-        std::cout << ", " << summary.points << " checked points, worst error " << format(summary.worst);
-      if (summary.measured)
-        std::cout << ", " << summary.measured << " measured points, largest deviation "
-                  << format(summary.largest_deviation);
-      if (summary.failed)
-        std::cout << ", " << summary.failed << " FAILED";
-      std::cout << ", " << format(summary.seconds) << " s)\n";
-      for (const CheckedPoint &p : checked)
-        if (!p.pass)
-          std::cout << "  FAIL " << p.series << " at x = " << format(p.x) << ": " << p.note << " (value "
-                    << format(p.y) << ", reference " << format(p.reference) << ", error " << format(p.error)
-                    << ", tolerance " << format(p.tolerance) << ")\n";
+      print_summary(summary, ok, folder / (name + ".png"), series.size(), skipped, checked);
       return summary;
     }
 
