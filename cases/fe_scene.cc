@@ -843,13 +843,28 @@ namespace gradcontact::cases
         const fem::Result r   = run_fe(probe, 0, fs::temp_directory_path()).result;
         return std::log(by_depth ? r.depth : r.force) - target;
       };
-      double x0 = std::log(l.a), f0 = misfit(x0);
-      double x1 = x0 - f0 / (by_depth ? n : n + 1.), f1 = misfit(x1);
-      for (unsigned int i = 0; i < 8 && std::abs(x1 - x0) > 1e-4; ++i)
+      double x1 = std::log(l.a);
+      try
         {
-          const double x2 = x1 - f1 * (x1 - x0) / (f1 - f0);
-          x0 = x1, f0 = f1;
-          x1 = x2, f1 = misfit(x1);
+          double x0 = x1, f0 = misfit(x0);
+          x1        = x0 - f0 / (by_depth ? n : n + 1.);
+          double f1 = misfit(x1);
+          for (unsigned int i = 0; i < 8 && std::abs(x1 - x0) > 1e-4 && f1 != f0; ++i)
+            {
+              const double x2 = x1 - f1 * (x1 - x0) / (f1 - f0);
+              x0 = x1, f0 = f1;
+              x1 = x2, f1 = misfit(x1);
+            }
+          if (!std::isfinite(x1))
+            throw std::runtime_error("the secant left the finite numbers");
+        }
+      catch (const std::exception &e)
+        {
+          // the solve itself then says what limits it, on the mesh of Load/a
+          if (verbose)
+            std::cerr << "  " << s.info.name << ": no contact radius from the FE's own "
+                      << (by_depth ? "d(a)" : "F(a)") << " (" << concise(e) << "); the mesh stays at Load/a\n";
+          return s;
         }
       Scene out  = s;
       out.load.a = std::exp(x1);
