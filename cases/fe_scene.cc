@@ -606,7 +606,16 @@ namespace gradcontact::cases
           if (!from && level >= 2 && s.load.contact != LoadParameters::Contact::unilateral)
             {
               if (!calibration)
-                calibration = run_fe(s, 0, fs::temp_directory_path());
+                try
+                  {
+                    Scene coarse       = s;
+                    coarse.outputs.vtu = false;
+                    calibration        = run_fe(coarse, 0, fs::temp_directory_path());
+                  }
+                catch (const std::exception &)
+                  {
+                    calibration = FeRun{0, {}, 0, {}}; // no forecast: the level's own solve says what fails
+                  }
               from = calibration;
             }
           if (from && from->factor_bytes > 0)
