@@ -17,6 +17,7 @@
 #include <cctype>
 #include <chrono>
 #include <cmath>
+#include <exception>
 #include <fstream>
 #include <functional>
 #include <limits>
@@ -718,24 +719,58 @@ namespace gradcontact::cases
         }
     }
 
-    /// A candidate's d(a) or F_N(a) against the numerical MDR at `radii` (9.10, 9.11; with dgamma > 0 the adhesive
-    /// foundation of 9.46): a row per radius, a table and a plot, the largest deviation noted. The adhesive branch
-    /// passes through F = 0, so its deviations are relative to the curve's largest |MDR|.
+    /// The numerical MDR's d(a) and F_N(a) at each radius of a curve (9.10, 9.11; with dgamma > 0 the adhesive
+    /// foundation of 9.46), one indentation per radius for both; a radius where it fails keeps its error, which the
+    /// curves' rows report at that point.
+    struct IndentationStates
+    {
+      std::vector<double>             radii, depth, force;
+      std::vector<std::exception_ptr> error;
+      double                          dgamma = 0;
+
+      IndentationStates(const std::vector<double> &radii, const mdr::Profile &profile, const Medium &m,
+                        const double dgamma)
+        : radii(radii)
+        , depth(radii.size())
+        , force(radii.size())
+        , error(radii.size())
+        , dgamma(dgamma)
+      {
+        for (std::size_t i = 0; i < radii.size(); ++i)
+          try
+            {
+              const mdr::Foundation w1d = mdr::indentation(profile, m, radii[i], dgamma);
+              depth[i]                  = mdr::depth(w1d);
+              force[i]                  = mdr::force(w1d, m);
+            }
+          catch (...)
+            {
+              error[i] = std::current_exception();
+            }
+      }
+
+      double at(const std::size_t i, const bool of_force) const
+      {
+        if (error[i])
+          std::rethrow_exception(error[i]);
+        return of_force ? force[i] : depth[i];
+      }
+    };
+
+    /// A candidate's d(a) or F_N(a) against the numerical MDR's at the states' radii: a row per radius, a table and a
+    /// plot, the largest deviation noted. The adhesive branch passes through F = 0, so its deviations are relative to
+    /// the curve's largest |MDR|.
     void indentation_curve(const std::string &quantity, const std::string &expression, const bool force,
-                           const std::vector<double> &radii, const mdr::Profile &profile, const Medium &m,
-                           const double dgamma, const std::map<std::string, double> &constants, const Scene &s,
-                           const FeValues &fe, const fs::path &folder, SceneResult &result)
+                           const IndentationStates &states, const std::map<std::string, double> &constants,
+                           const Scene &s, const FeValues &fe, const fs::path &folder, SceneResult &result)
     {
       if (expression.empty())
         return;
       const auto g = parse_candidate_expression<1>(quantity, "a", expression, constants);
-      Curve      curve{quantity, "a [m]", force ? "[N]" : "[m]", radii,
-                  [&, g](const std::size_t i) { return g->value(dealii::Point<1>(radii[i])); },
-                  [&](const std::size_t i) {
-                    const mdr::Foundation w1d = mdr::indentation(profile, m, radii[i], dgamma);
-                    return force ? mdr::force(w1d, m) : mdr::depth(w1d);
-                  },
-                  dgamma > 0};
+      Curve      curve{quantity, "a [m]", force ? "[N]" : "[m]", states.radii,
+                  [&, g](const std::size_t i) { return g->value(dealii::Point<1>(states.radii[i])); },
+                  [&](const std::size_t i) { return states.at(i, force); },
+                  states.dgamma > 0};
       add_note(result, report_curve(curve, s.candidate.tolerance, s.outputs.plots, folder, fe, result.rows));
     }
 
@@ -764,16 +799,17 @@ namespace gradcontact::cases
     FeValues fe;
     for (const auto &[quantity, value] : fe_at_a)
       fe[quantity][a] = value;
-    indentation_curve("depth", c.depth, false, radii, profile, m, 0., constants, s, fe, folder, result);
-    indentation_curve("force", c.force, true, radii, profile, m, 0., constants, s, fe, folder, result);
+    const IndentationStates states(radii, profile, m, 0.);
+    indentation_curve("depth", c.depth, false, states, constants, s, fe, folder, result);
+    indentation_curve("force", c.force, true, states, constants, s, fe, folder, result);
     // A profile whose indentation pulls (a sign slip in its constants) has no non-adhesive contact to check.
-    for (const double r : radii)
-      if (const double F = mdr::force(mdr::indentation(profile, m, r), m); F < 0)
+    for (std::size_t i = 0; i < radii.size(); ++i)
+      if (!states.error[i] && states.force[i] < 0)
         {
           result.rows.push_back(failed("contact state", "candidate", "numerical MDR",
-                                       "the profile gives a tensile contact, F_N(a) = " + format(F) + " < 0 at a = " +
-                                         format(r) + " m, which frictionless contact without adhesion cannot "
-                                         "hold: check the signs of the profile's constants"));
+                                       "the profile gives a tensile contact, F_N(a) = " + format(states.force[i]) +
+                                         " < 0 at a = " + format(radii[i]) + " m, which frictionless contact "
+                                         "without adhesion cannot hold: check the signs of the profile's constants"));
           break;
         }
   }
@@ -830,10 +866,12 @@ namespace gradcontact::cases
     result.description = s.references.fem ? "against the numerical MDR and the FE" : "against the numerical MDR";
 
     // d(a) and F_N(a) on the adhesive branch (both branches of the JKR curve: every a has its state, 9.46).
-    indentation_curve("adhesive depth", c.adhesive_depth, false, radii, profile, m, dgamma, constants, s, fe, folder,
-                      result);
-    indentation_curve("adhesive force", c.adhesive_force, true, radii, profile, m, dgamma, constants, s, fe, folder,
-                      result);
+    if (!(c.adhesive_depth.empty() && c.adhesive_force.empty()))
+      {
+        const IndentationStates states(radii, profile, m, dgamma);
+        indentation_curve("adhesive depth", c.adhesive_depth, false, states, constants, s, fe, folder, result);
+        indentation_curve("adhesive force", c.adhesive_force, true, states, constants, s, fe, folder, result);
+      }
 
     // p(r, a) of the adhesive state at Load/a, relative to the largest |p| of the radii asked (it is tensile at the
     // edge, where it is singular).

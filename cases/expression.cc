@@ -12,6 +12,7 @@
 #include <array>
 #include <cctype>
 #include <cmath>
+#include <initializer_list>
 #include <limits>
 #include <sstream>
 
@@ -232,80 +233,57 @@ namespace gradcontact::cases
         return add(std::move(node), at);
       }
 
-      int logical_or()
+      /// One row of a left-associative level of the grammar: a token and its operator, or a token that is an error
+      /// (a misuse the user should be told about, listed before the token it starts with).
+      struct Infix
       {
-        int left = logical_and();
-        for (std::size_t at = position; accept("||"); at = position)
-          left = binary(Operator::logical_or, left, logical_and(), at);
-        return left;
+        const char  *token;
+        unsigned int op;
+        const char  *error = nullptr;
+      };
+
+      /// operand (token operand)*, left-associative: the levels ||, &&, comparison, sum and product.
+      int left_associative(int (Parser::*operand)(), const std::initializer_list<Infix> operators)
+      {
+        int left = (this->*operand)();
+        for (;;)
+          {
+            const std::size_t at    = position;
+            const Infix      *found = nullptr;
+            for (const Infix &infix : operators)
+              if (text.compare(position, std::char_traits<char>::length(infix.token), infix.token) == 0)
+                {
+                  found = &infix;
+                  break;
+                }
+            if (!found)
+              return left;
+            if (found->error)
+              fail_at(found->error, at);
+            accept(found->token);
+            left = binary(found->op, left, (this->*operand)(), at);
+          }
       }
 
-      int logical_and()
-      {
-        int left = comparison();
-        for (std::size_t at = position; accept("&&"); at = position)
-          left = binary(Operator::logical_and, left, comparison(), at);
-        return left;
-      }
-
+      int logical_or() { return left_associative(&Parser::logical_and, {{"||", Operator::logical_or}}); }
+      int logical_and() { return left_associative(&Parser::comparison, {{"&&", Operator::logical_and}}); }
       int comparison()
       {
-        int left = sum();
-        for (;;)
-          {
-            const std::size_t at = position;
-            // the two-character operators first, so that '<=' is not read as '<' then '='
-            if (accept("<="))
-              left = binary(Operator::less_equal, left, sum(), at);
-            else if (accept(">="))
-              left = binary(Operator::greater_equal, left, sum(), at);
-            else if (accept("=="))
-              left = binary(Operator::equal, left, sum(), at);
-            else if (accept("!="))
-              left = binary(Operator::not_equal, left, sum(), at);
-            else if (accept("<"))
-              left = binary(Operator::less, left, sum(), at);
-            else if (accept(">"))
-              left = binary(Operator::greater, left, sum(), at);
-            else if (!at_end() && text[position] == '=')
-              fail("'=' is no operator (a comparison is '==')");
-            else
-              return left;
-          }
+        // the two-character operators first, so that '<=' is not read as '<' then '='
+        return left_associative(&Parser::sum, {{"<=", Operator::less_equal},
+                                               {">=", Operator::greater_equal},
+                                               {"==", Operator::equal},
+                                               {"!=", Operator::not_equal},
+                                               {"<", Operator::less},
+                                               {">", Operator::greater},
+                                               {"=", 0, "'=' is no operator (a comparison is '==')"}});
       }
-
-      int sum()
-      {
-        int left = product();
-        for (;;)
-          {
-            const std::size_t at = position;
-            if (accept("+"))
-              left = binary(Operator::add, left, product(), at);
-            else if (accept("-"))
-              left = binary(Operator::subtract, left, product(), at);
-            else
-              return left;
-          }
-      }
-
+      int sum() { return left_associative(&Parser::product, {{"+", Operator::add}, {"-", Operator::subtract}}); }
       int product()
       {
-        int left = unary();
-        for (;;)
-          {
-            const std::size_t at = position;
-            if (accept("*"))
-              {
-                if (!at_end() && text[position] == '*')
-                  fail_at("'**' is no operator (a power is '^')", at);
-                left = binary(Operator::multiply, left, unary(), at);
-              }
-            else if (accept("/"))
-              left = binary(Operator::divide, left, unary(), at);
-            else
-              return left;
-          }
+        return left_associative(&Parser::unary, {{"**", 0, "'**' is no operator (a power is '^')"},
+                                                 {"*", Operator::multiply},
+                                                 {"/", Operator::divide}});
       }
 
       int unary()

@@ -350,14 +350,7 @@ namespace gradcontact::cases
         return "";
       using Modulus = MaterialParameters::Modulus;
       const MaterialParameters &m = s.material;
-      const std::map<Modulus, std::string> names{{Modulus::power_law, "power law"},
-                                                 {Modulus::layered, "layered power law"},
-                                                 {Modulus::expression, "expression"},
-                                                 {Modulus::shifted_power_law, "shifted power law"},
-                                                 {Modulus::coating, "graded coating"},
-                                                 {Modulus::table, "table"},
-                                                 {Modulus::error_function, "error function"}};
-      std::string line = "E(z) " + names.at(m.modulus);
+      std::string line = "E(z) " + to_string(m.modulus);
       if (m.modulus == Modulus::power_law || m.modulus == Modulus::layered || m.modulus == Modulus::coating)
         line += ", k = " + format(m.k);
       line += ", nu = " + format(m.nu);

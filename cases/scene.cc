@@ -83,6 +83,21 @@ namespace gradcontact::cases
                       "constant below the last); a relative path is taken from the scene's folder.");
     prm.leave_subsection();
   }
+  namespace
+  {
+    /// Material/modulus: each representation of E(z) and its name in a scene.
+    const std::map<MaterialParameters::Modulus, std::string> modulus_names{
+      {MaterialParameters::Modulus::power_law, "power law"},
+      {MaterialParameters::Modulus::layered, "layered"},
+      {MaterialParameters::Modulus::expression, "expression"},
+      {MaterialParameters::Modulus::shifted_power_law, "shifted power law"},
+      {MaterialParameters::Modulus::coating, "coating"},
+      {MaterialParameters::Modulus::table, "table"},
+      {MaterialParameters::Modulus::error_function, "error function"}};
+  } // namespace
+
+  std::string to_string(const MaterialParameters::Modulus modulus) { return modulus_names.at(modulus); }
+
   void MaterialParameters::parse(ParameterHandler &prm)
   {
     prm.enter_subsection("Material");
@@ -91,14 +106,8 @@ namespace gradcontact::cases
     k = prm.get_double("k");
     nu = prm.get_double("nu");
     const std::string m = prm.get("modulus");
-    const std::map<std::string, Modulus> moduli{{"power law", Modulus::power_law},
-                                                {"layered", Modulus::layered},
-                                                {"expression", Modulus::expression},
-                                                {"shifted power law", Modulus::shifted_power_law},
-                                                {"coating", Modulus::coating},
-                                                {"table", Modulus::table},
-                                                {"error function", Modulus::error_function}};
-    modulus = moduli.at(m);
+    modulus = std::find_if(modulus_names.begin(), modulus_names.end(), [&](const auto &n) { return n.second == m; })
+                ->first;
     layers = prm.get_integer("layers");
     layered_depth = prm.get_double("layered depth");
     expression = prm.get("expression");

@@ -303,6 +303,8 @@ namespace gradcontact::cases
 
   /// The name of a kind, for reports ("normal", "analytic", "candidate", "adhesion", "tangential", "map").
   std::string to_string(SceneKind kind);
+  /// The name of Material/modulus in a scene ("power law", "table", ...).
+  std::string to_string(MaterialParameters::Modulus modulus);
 
   struct Scene
   {
