@@ -331,6 +331,8 @@ namespace gradcontact::mdr
     return mu_ * pressure_drop(a_ - c, r); // 9.77
   }
 
+  double PartialSlip::normal_force_slope(const double b) const { return force_drop_slope(a_ - b); }
+
   double PartialSlip::tangential_force(const double c) const { return mu_ * force_drop(a_ - c); }
 
   double PartialSlip::tangential_displacement(const double c) const

@@ -68,6 +68,8 @@ namespace gradcontact::mdr
     double normal_force(double b) const;
     double depth(double b) const;
     double pressure(double b, double r) const;
+    /// dF_N/db at b in [0, a]: 9.11 differentiated, 2 cN0 b^(k+1) g'(b) / (c0^k (k+1)).
+    double normal_force_slope(double b) const;
     /// The radius b in [0, a] with mu [F_N(a) - F_N(b)] = dF; DomainError for gross slip.
     double radius_for(double dF) const;
     /// Its gap a - b, accurate relative to itself.

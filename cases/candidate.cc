@@ -1,5 +1,6 @@
 #include "candidate.h"
 
+#include "candidate_coulomb.h"
 #include "fe_model.h"
 
 #include <fem/adhesion.h>
@@ -11,6 +12,7 @@
 #include <analytic/mdr_contact.h>
 
 #include <deal.II/base/point.h>
+#include <deal.II/base/quadrature_lib.h>
 #include <deal.II/base/utilities.h>
 
 #include <algorithm>
@@ -594,35 +596,107 @@ namespace gradcontact::cases
       adhesive_model_rows(s, method, " (JKR idealisation)", state, critical, radii, constants, rows, nullptr);
     }
 
-    /// The branches of the loop between +-FA on the mode-1 FE, at F_x / FA = -1/2, 0, 1/2 of each branch asked. The
-    /// branch's traction of the theory is the loading's at the stick radius c_A of FA less twice the loading's at the
-    /// reversal's front b, mu [F_N(a) - F_N(b)] = (FA -+ F_x) / 2 (Ciavarella-Jaeger, 9.81-9.84). The FE is linear,
-    /// so its u0 on the branch is u0(c_A) - 2 u0(b) of the FE's loading states under those tractions (each the mean u_x
-    /// over its stick zone, which contains the zone that never slipped): one solve per radius, the unloading and the
-    /// reloading branch sharing theirs. Tolerances/displacement, relative to u0(FA).
-    void loop_fe_rows(const Scene &s, const mdr::PartialSlip &slip, fem::FourierMode1Solver &solver,
-                      const std::map<std::string, double> &constants, std::vector<Row> &rows, FeValues &fe)
+    /// The mode-1 FE's loading states under the theory's traction tau = mu [p(r; a) - p(r; rho)] of stick radius rho
+    /// (9.77), each solved once: the branches and the dissipated energy of the oscillation are sums of them, since
+    /// the FE is linear (Ciavarella-Jaeger, 9.81-9.84).
+    class LoadingStates
     {
-      const CandidateParameters &c  = s.candidate;
-      const double               a  = s.load.a;
-      const double FA  = s.tangential.amplitude * s.tangential.friction_coefficient * slip.normal_force(a);
-      const double c_A = slip.stick_radius(FA);
-      std::map<double, fem::TangentialResult> loading; // by stick radius
-      double                                  seconds = 0;
-      const auto                              u0      = [&](const double rho) -> const fem::TangentialResult & {
-        auto found = loading.find(rho);
-        if (found == loading.end())
+    public:
+      LoadingStates(const mdr::PartialSlip &slip, fem::FourierMode1Solver &solver, const double a)
+        : slip(slip), solver(solver), a(a)
+      {}
+      /// u0 (the mean u_x over the stick zone) and the DoFs of the loading to stick radius rho.
+      const fem::TangentialResult &at(const double rho)
+      {
+        auto found = states.find(rho);
+        if (found == states.end())
           {
             const auto start = std::chrono::steady_clock::now();
-            found            = loading
+            const mdr::PartialSlip &theory = slip;
+            found = states
                       .emplace(rho, solver.run(fem::TangentialLoad::profile(
-                                      [&slip, rho](const double r) { return slip.traction(rho, r); }, a, rho, {rho})))
+                                      [&theory, rho](const double r) { return theory.traction(rho, r); }, a, rho,
+                                      {rho})))
                       .first;
-            seconds += elapsed(start);
+            spent += elapsed(start);
           }
         return found->second;
-      };
-      const double largest = slip.tangential_displacement(c_A);
+      }
+      double seconds() const { return spent; }
+
+    private:
+      const mdr::PartialSlip                   &slip;
+      fem::FourierMode1Solver                  &solver;
+      const double                              a;
+      std::map<double, fem::TangentialResult>   states;
+      double                                    spent = 0;
+    };
+
+    /// The stick radii at which the mode-1 FE's loading states give the loop of the oscillation +-FA, FA =
+    /// Tangential/amplitude mu F_N(a). With G(c) the u0 of the loading to stick radius c, whose force is
+    /// t(c) = mu [F_N(a) - F_N(c)] (9.78), the unloading branch is G(c_A) - 2 G(b) at F_x = FA - 2 t(b) and the
+    /// reloading one its mirror (Ciavarella-Jaeger, 9.81-9.84), so the loop's area is
+    ///   W = 2 int_{-FA}^{FA} u0_unloading dF_x = 4 FA G(c_A) - 8 int_0^FA G dt
+    ///     = 4 FA G(c_A) - 8 int_{c_A}^a G(c) mu F_N'(c) dc
+    /// (Masing's rule). In c the integrand is smooth up to gross slip, where in t it is not; the rule is the smallest
+    /// n-point Gauss-Legendre rule on [c_A, a], 2 <= n <= 8, whose W on the numerical MDR's G meets a tenth of
+    /// Tolerances/force against the MDR's own W (PartialSlip::dissipated_energy, a non-cancelling integral). Its
+    /// nodes are also the points of the branches' rows, so the loop and its energy share the FE's solves.
+    struct LoopRule
+    {
+      double              FA = 0, c_A = 0;
+      std::vector<double> radii, weights; ///< nodes b in (c_A, a); weights of int_0^FA G dt (mu F_N'(b) included)
+      unsigned int        n = 0;
+      double              error = 0;      ///< of the rule's W on the MDR, relative
+
+      LoopRule(const Scene &s, const mdr::PartialSlip &slip)
+      {
+        const double a = s.load.a;
+        FA             = s.tangential.amplitude * s.tangential.friction_coefficient * slip.normal_force(a);
+        c_A            = slip.stick_radius(FA);
+        const double exact = slip.dissipated_energy(FA);
+        for (n = 2;; ++n)
+          {
+            const dealii::QGauss<1> gauss(n);
+            radii.assign(n, 0.), weights.assign(n, 0.);
+            for (unsigned int q = 0; q < n; ++q)
+              {
+                radii[q]   = c_A + (a - c_A) * gauss.point(q)[0];
+                weights[q] = (a - c_A) * gauss.weight(q) * s.tangential.friction_coefficient *
+                             slip.normal_force_slope(radii[q]);
+              }
+            error = energy([&](const double c) { return slip.tangential_displacement(c); }) / exact - 1;
+            if (n == 8 || std::abs(error) <= 0.1 * s.tolerances.force)
+              break;
+          }
+      }
+      /// W of the rule from G(c).
+      double energy(const std::function<double(double)> &G) const
+      {
+        double integral = 0;
+        for (unsigned int q = 0; q < n; ++q)
+          integral += weights[q] * G(radii[q]);
+        return 4 * FA * G(c_A) - 8 * integral;
+      }
+      /// How much the rule's cancellation magnifies a relative error of G: sum |terms| / |W|, on G of the MDR.
+      double magnification(const mdr::PartialSlip &slip) const
+      {
+        double terms = 4 * FA * std::abs(slip.tangential_displacement(c_A));
+        for (unsigned int q = 0; q < n; ++q)
+          terms += 8 * std::abs(weights[q] * slip.tangential_displacement(radii[q]));
+        return terms / std::abs(energy([&](const double c) { return slip.tangential_displacement(c); }));
+      }
+    };
+
+    /// The branches of the loop between +-FA on the mode-1 FE at the rule's nodes b, F_x = +-(FA - 2 t(b)): u0 =
+    /// G(c_A) - 2 G(b) of the FE's loading states (each u0 the mean u_x over its stick zone, which contains the zone
+    /// that never slipped), the FE being linear. Tolerances/displacement, relative to u0(FA).
+    void loop_fe_rows(const Scene &s, const mdr::PartialSlip &slip, const LoopRule &rule, LoadingStates &loading,
+                      const std::map<std::string, double> &constants, std::vector<Row> &rows, FeValues &fe)
+    {
+      const CandidateParameters &c       = s.candidate;
+      const double               a       = s.load.a, FA = rule.FA;
+      const double               largest = slip.tangential_displacement(rule.c_A);
       for (const auto &[quantity, expression, branch] :
            {std::tuple<std::string, std::string, Branch>{"unloading displacement", c.unloading_displacement,
                                                          Branch::unloading},
@@ -630,20 +704,44 @@ namespace gradcontact::cases
         {
           if (expression.empty())
             continue;
-          const auto g = parse_candidate_expression<3>(quantity, "Fx,FA,a", expression, constants);
-          for (const double x : {-0.5, 0.0, 0.5})
+          const auto   g    = parse_candidate_expression<3>(quantity, "Fx,FA,a", expression, constants);
+          const double sign = branch == Branch::unloading ? 1 : -1; // the reloading loop is the mirror image
+          for (const double b : rule.radii)
             {
-              const double Fx   = x * FA;
-              const double b    = slip.radius_for(branch == Branch::unloading ? (FA - Fx) / 2 : (FA + Fx) / 2);
-              const double sign = branch == Branch::unloading ? 1 : -1; // the reloading loop is the mirror image
-              const fem::TangentialResult &A = u0(c_A), &B = u0(b);
+              const double Fx = sign * (FA - 2 * slip.tangential_force(b));
+              const fem::TangentialResult &A = loading.at(rule.c_A), &B = loading.at(b);
               const double                 u = sign * (A.displacement - 2 * B.displacement);
-              rows.push_back(compare(quantity, "Fx / FA = " + format(x) + ", rel. to u0(FA)", "candidate",
+              rows.push_back(compare(quantity, "Fx / FA = " + format(Fx / FA) + ", rel. to u0(FA)", "candidate",
                                      "FE (mode 1)", u, g->value(dealii::Point<3>(Fx, FA, a)), largest,
-                                     s.tolerances.displacement, B.n_dofs, seconds));
-              fe[quantity][x] = u;
+                                     s.tolerances.displacement, B.n_dofs, loading.seconds()));
+              fe[quantity][Fx / FA] = u;
             }
         }
+    }
+
+    /// The dissipated energy of the oscillation +-FA on the mode-1 FE: the rule's W on the FE's G. W is a difference
+    /// of u0 values, so its tolerance is Tolerances/displacement (the u0's) times the rule's magnification of a
+    /// relative error of G. The row names the rule, its error on the MDR and the magnification.
+    void energy_fe_rows(const Scene &s, const mdr::PartialSlip &slip, const LoopRule &rule, LoadingStates &loading,
+                        const std::map<std::string, double> &constants, std::vector<Row> &rows, FeValues &fe)
+    {
+      unsigned int dofs  = 0;
+      const double value = rule.energy([&](const double c) {
+        const fem::TangentialResult &r = loading.at(c);
+        dofs                           = r.n_dofs;
+        return r.displacement;
+      });
+      const double candidate = parse_candidate_expression<2>("dissipated energy", "FA,a", s.candidate.dissipated_energy,
+                                                             constants)->value(dealii::Point<2>(rule.FA, s.load.a));
+      const double magnification = rule.magnification(slip);
+      rows.push_back(compare("dissipated energy",
+                             "FA / (mu F_N) = " + format(s.tangential.amplitude) + ", relative (" +
+                               std::to_string(rule.n) + "-point Gauss rule in the stick radius over the FE's "
+                               "loading states, its error on the MDR " + format(rule.error) + "; tolerance " +
+                               format(magnification) + " x that of u0, the rule's cancellation)",
+                             "candidate", "FE (mode 1)", value, candidate, value,
+                             magnification * s.tolerances.displacement, dofs, loading.seconds()));
+      fe["dissipated energy"][s.tangential.amplitude] = value;
     }
 
     /// The tangential family against the Fourier mode-1 FE model (fem/fourier_mode1_solver.h) at Load/a, the
@@ -665,7 +763,9 @@ namespace gradcontact::cases
             fraction_of[stick.back()] = fractions_c[i];
           }
       const bool of_c = slip && (!c.tangential_force.empty() || !c.tangential_displacement.empty());
-      if (c.tangential_stiffness.empty() && !of_c)
+      const bool loop = slip && (!c.unloading_displacement.empty() || !c.reloading_displacement.empty() ||
+                                 !c.dissipated_energy.empty());
+      if (c.tangential_stiffness.empty() && !of_c && !loop)
         return;
       const auto start = std::chrono::steady_clock::now();
       const auto row   = [&](const std::string &quantity, const std::string &metric, const double value,
@@ -710,8 +810,14 @@ namespace gradcontact::cases
               fe["tangential force"][fraction_of.at(cc)]        = r.force;
               fe["tangential displacement"][fraction_of.at(cc)] = r.displacement;
             }
-          if (slip)
-            loop_fe_rows(s, *slip, solver, constants, rows, fe);
+          if (loop)
+            {
+              LoadingStates  loading(*slip, solver, a);
+              const LoopRule rule(s, *slip);
+              loop_fe_rows(s, *slip, rule, loading, constants, rows, fe);
+              if (!c.dissipated_energy.empty())
+                energy_fe_rows(s, *slip, rule, loading, constants, rows, fe);
+            }
         }
       catch (const std::exception &e)
         {
@@ -863,7 +969,9 @@ namespace gradcontact::cases
     std::vector<Row> fe_rows;
     if (s.references.fem)
       adhesive_fe_rows(s, profile, radii, constants, fe_rows, fe);
-    result.description = s.references.fem ? "against the numerical MDR and the FE" : "against the numerical MDR";
+    result.description = !s.references.fem ? "against the numerical MDR"
+                         : c.coulomb_3d ? "against the numerical MDR, the FE (mode 1) and the 3D Coulomb model"
+                                        : "against the numerical MDR and the FE";
 
     // d(a) and F_N(a) on the adhesive branch (both branches of the JKR curve: every a has its state, 9.46).
     if (!(c.adhesive_depth.empty() && c.adhesive_force.empty()))
@@ -939,6 +1047,10 @@ namespace gradcontact::cases
       {
         result.description = "a grading outside the chapter: its stiffness against the FE only";
         tangential_fe_rows(s, nullptr, {}, constants, result.rows, fe);
+        if (c.coulomb_3d)
+          result.rows.push_back(failed("3D Coulomb path", "candidate", "FE (3D Coulomb)",
+                                       "Candidate/Coulomb 3D takes its depth and amplitude from the numerical MDR, "
+                                       "which needs Material/modulus = power law"));
         return result;
       }
     const mdr::PartialSlip    slip(profile, m, mu, a);
@@ -948,7 +1060,11 @@ namespace gradcontact::cases
     std::vector<Row> fe_rows;
     if (s.references.fem)
       tangential_fe_rows(s, &slip, f, constants, fe_rows, fe);
-    result.description = s.references.fem ? "against the numerical MDR and the FE" : "against the numerical MDR";
+    if (s.references.fem && c.coulomb_3d)
+      coulomb_3d_candidate_rows(s, profile, slip, constants, fe_rows);
+    result.description = !s.references.fem ? "against the numerical MDR"
+                         : c.coulomb_3d ? "against the numerical MDR, the FE (mode 1) and the 3D Coulomb model"
+                                        : "against the numerical MDR and the FE";
     const auto note = [&](const Curve &curve) {
       add_note(result, report_curve(curve, c.tolerance, plots, folder, fe, result.rows));
     };

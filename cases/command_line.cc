@@ -85,10 +85,11 @@ namespace gradcontact::cases
          "(default ~/.cache/gradcontact/eval) unless --no-cache",
          eval},
         {"run", "<scene|folder> ... [--set Section/key=value] [--reports DIR] [--quiet]\n"
-                "    [--verbose] [--shard i/N] [--map-shard i/N] [--help-scene] [--help-functions]",
+                "    [--verbose] [--force] [--shard i/N] [--map-shard i/N] [--help-scene] [--help-functions]",
          "run scenes (.prm, .json, .jsonl) and write reports/<scene>/ and\n"
          "reports/summary.md; --help-scene lists every scene entry, --help-functions\n"
-         "the functions of candidate expressions; --shard i/N runs\n"
+         "the functions of candidate expressions; --force solves a refinement level\n"
+         "that the memory forecast would refuse; --shard i/N runs\n"
          "only the scenes at positions j with j % N == i, 0-based; --map-shard i/N\n"
          "solves only those (k, lambda) points of a Tabor-parameter map into its point\n"
          "cache (a run without it then writes the report)",

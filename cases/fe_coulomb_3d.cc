@@ -561,32 +561,6 @@ namespace gradcontact::cases
       return s.discretization.far_field > 0 ? s.discretization.far_field : (k < 0 ? 1e5 : 1e3);
     }
 
-    /// The 3D case of one body (k, nu), its friction, depth and delta set per mu.
-    CoulombSphereCase coulomb_case(const Scene &s, const double k, const double nu)
-    {
-      CoulombSphereCase c;
-      c.E0 = s.material.E0;
-      c.c0 = s.material.c0;
-      c.k  = k;
-      c.nu = nu;
-      c.R  = s.load.R;
-      c.mesh.contact_radius          = s.load.a;
-      c.mesh.sectors                 = 4;
-      c.mesh.h_edge                  = 1e-2;
-      c.mesh.far_field_size          = far_field(s, k);
-      c.mesh.surface_layer_thickness = k > 0 ? 1e-4 : 0.;
-      c.mesh.inner_ring_width        = 0.025; // the stick-slip boundary resolved anywhere in the contact
-      c.candidates                   = 1.15;
-      c.discretization.degree        = s.discretization.degree;
-      // nu = 1/2 (Holl's ratio at k = 0) has only the mixed formulation; the others keep the scene's.
-      c.discretization.formulation = nu >= 0.5 ? fem::Formulation::mixed : fe_formulation(s);
-      c.normal_steps = c.tangential_steps = s.tangential.load_steps;
-      c.cycle               = true;
-      c.decoupled_reference = true;
-      c.idealised_reference = true;
-      return c;
-    }
-
     /// The panels of one body (k, nu), one per mu, on one surface compliance; a body that cannot be built fails
     /// every mu.
     void solve_body(const Scene &s, const MPI_Comm world, const CoulombMapPlan &plan, const double k, const double nu,
@@ -926,4 +900,30 @@ namespace gradcontact::cases
     result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     return result;
   }
+
+  CoulombSphereCase coulomb_case(const Scene &s, const double k, const double nu)
+  {
+    CoulombSphereCase c;
+    c.E0 = s.material.E0;
+    c.c0 = s.material.c0;
+    c.k  = k;
+    c.nu = nu;
+    c.R  = s.load.R;
+    c.mesh.contact_radius          = s.load.a;
+    c.mesh.sectors                 = 4;
+    c.mesh.h_edge                  = 1e-2;
+    c.mesh.far_field_size          = far_field(s, k);
+    c.mesh.surface_layer_thickness = k > 0 ? 1e-4 : 0.;
+    c.mesh.inner_ring_width        = 0.025; // the stick-slip boundary resolved anywhere in the contact
+    c.candidates                   = 1.15;
+    c.discretization.degree        = s.discretization.degree;
+    // nu = 1/2 (Holl's ratio at k = 0) has only the mixed formulation; the others keep the scene's.
+    c.discretization.formulation = nu >= 0.5 ? fem::Formulation::mixed : fe_formulation(s);
+    c.normal_steps = c.tangential_steps = s.tangential.load_steps;
+    c.cycle               = true;
+    c.decoupled_reference = true;
+    c.idealised_reference = true;
+    return c;
+  }
+
 } // namespace gradcontact::cases

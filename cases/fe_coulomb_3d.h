@@ -160,6 +160,13 @@ namespace gradcontact::cases
   run_coulomb_sphere(MPI_Comm communicator, const CoulombSphereCase &c,
                      const std::function<void(const CoulombSphereStep &, const fem::SurfaceCompliance3D &)> &on_step = {});
 
+  /// The 3D body of a scene's material at (k, nu): the mesh graded toward Load/a (4 sectors, h_edge = a/100, rings of
+  /// at most a/40 inside the contact, candidate nodes within 1.15 a, L = Discretization/far field or 1000 a for
+  /// k >= 0 and 1e5 a for k < 0), the scene's degree and formulation (mixed at nu = 1/2), Tangential/load steps
+  /// each way, one cycle, with the decoupled and idealised references; the sphere of Load/R. Its friction, depth
+  /// and delta are the caller's to set.
+  CoulombSphereCase coulomb_case(const Scene &s, double k, double nu);
+
   /// The map of Map/parameter = Coulomb 3D into `folder`: for every k of Map/k values and nu of Map/nu values (and
   /// Holl's ratio nu = 1/(2 + k) for k >= 0 with Map/Holl ratio) and every mu of Map/ratios (Tangential/friction
   /// coefficient when empty; the mu of one body share its surface compliance), the case above with the sphere of Load/R, the mesh

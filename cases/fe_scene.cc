@@ -621,7 +621,7 @@ namespace gradcontact::cases
           if (from && from->factor_bytes > 0)
             {
               const LevelForecast f = forecast(*from, level);
-              if (f.bytes > 0.8 * available)
+              if (s.discretization.memory_guard && f.bytes > 0.8 * available)
                 {
                   result.rows.push_back(failed(
                     "FE solve", "FE", "-",
@@ -629,7 +629,8 @@ namespace gradcontact::cases
                       " DoFs, whose direct factorisation needs about " + format(f.bytes / 1e9) + " GB (forecast from "
                       "refinement " + std::to_string(from->refinement) + "'s " + format(from->factor_bytes / 1e9) +
                       " GB), above 80 % of the " + format(available / 1e9) + " GB this machine has available; use "
-                      "fewer refinements, or Discretization/accuracy = contract with a force tolerance"));
+                      "fewer refinements, Discretization/accuracy = contract with a force tolerance, or run with "
+                      "--force (Discretization/memory guard = off) to solve it anyway"));
                   break;
                 }
               if (verbose || f.dofs > 1e6)

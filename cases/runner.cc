@@ -120,6 +120,8 @@ namespace gradcontact::cases
             o.overrides.push_back(parse_override(value()));
           else if (a == "--quiet")
             o.quiet = true;
+          else if (a == "--force")
+            o.overrides.push_back(parse_override("Discretization/memory guard=off"));
           else if (a == "--verbose")
             o.verbose = true;
           else if (a == "--shard")

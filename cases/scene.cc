@@ -264,6 +264,10 @@ namespace gradcontact::cases
                       "w(r); the critical states of adhesion; K_T and the tangential curves) is within force tolerance, "
                       "or a refusal naming the limit; every FE row shows the asked tolerance, the estimate and the "
                       "verdict.");
+    prm.declare_entry("memory guard", "on", Patterns::Selection("on|off"),
+                      "on: a refinement level whose forecast direct factorisation exceeds 80 % of this machine's "
+                      "available memory is refused before it starts; off (or `gradcontact run --force`): solved "
+                      "anyway.");
     prm.declare_entry("far field", "0", Patterns::Double(0.), "L/a of the truncated domain; 0: the recommended one.");
     prm.declare_entry("formulation", "displacement", Patterns::Selection("displacement|mixed|automatic"),
                       "FE unknowns: displacement; mixed (u and q = lambda div u, Taylor-Hood: nu -> 0.5 without "
@@ -298,6 +302,7 @@ namespace gradcontact::cases
       }
     force_tolerance = prm.get_double("force tolerance");
     contract = prm.get("accuracy") == "contract";
+    memory_guard = prm.get("memory guard") == "on";
     far_field = prm.get_double("far field");
     const std::string f = prm.get("formulation");
     formulation = f == "mixed" ? Formulation::mixed : (f == "automatic" ? Formulation::automatic : Formulation::displacement);
@@ -435,7 +440,20 @@ namespace gradcontact::cases
                       "from range[0] Load/a to range[1] Load/a, and Load/a itself for the normal family (where the FE "
                       "solves). A profile that needs a > b (a flat punch of radius b) sets range[0] so.");
     prm.declare_entry("points", "9", Patterns::Integer(2, 200), "Points on every candidate curve.");
-    prm.declare_entry("tolerance", "1e-8", Patterns::Double(0.), "Relative tolerance of the candidate.");
+    prm.declare_entry("tolerance", "1e-8", Patterns::Double(0.),
+                      "Relative tolerance of the candidate against the numerical MDR (every row whose reference is "
+                      "the numerical MDR).");
+    prm.declare_entry("Coulomb 3D", "off", Patterns::Selection("off|on"),
+                      "Tangential candidates: on also runs the 3D Coulomb model of fem/coulomb_contact_3d.h with the "
+                      "candidate's profile (normal loading to the numerical MDR's d(a), then the tangential "
+                      "displacement of Tangential/amplitude mu F_N(a) and one cycle, Tangential/load steps each way); "
+                      "its rows (F_x against u0, the stick radius, the branches, the loop area) say how far Coulomb's "
+                      "law (the normal-tangential coupling, a free slip direction) is from the candidate, against the "
+                      "Tolerances section or FE tolerance.");
+    prm.declare_entry("FE tolerance", "", Patterns::Anything(),
+                      "Relative tolerance of the candidate against the FE (every row whose reference is an FE model); "
+                      "empty: the Tolerances section's entry of the row's quantity (force, depth, contact radius, "
+                      "pressure, displacement). The FE is less accurate than the numerical MDR, so the two differ.");
     prm.leave_subsection();
   }
   CandidateParameters::Family CandidateParameters::family() const
@@ -483,6 +501,24 @@ namespace gradcontact::cases
     range = to_doubles(prm.get("range"));
     points = static_cast<unsigned int>(prm.get_integer("points"));
     tolerance = prm.get_double("tolerance");
+    coulomb_3d = prm.get("Coulomb 3D") == "on";
+    const std::string fe = dealii::Utilities::trim(prm.get("FE tolerance"));
+    fe_tolerance = 0.;
+    if (!fe.empty())
+      {
+        std::size_t used = 0;
+        try
+          {
+            fe_tolerance = std::stod(fe, &used);
+          }
+        catch (const std::exception &)
+          {
+            used = 0;
+          }
+        if (used != fe.size() || !(fe_tolerance > 0.) || !std::isfinite(fe_tolerance))
+          throw std::invalid_argument("Candidate/FE tolerance = '" + fe +
+                                      "': must be empty (the Tolerances section) or a number in (0, inf)");
+      }
     prm.leave_subsection();
   }
 
@@ -1299,6 +1335,9 @@ namespace gradcontact::cases
         s.references.parse(prm);
         s.tolerances.parse(prm);
         s.candidate.parse(prm);
+        if (s.candidate.fe_tolerance > 0.)
+          s.tolerances = {s.candidate.fe_tolerance, s.candidate.fe_tolerance, s.candidate.fe_tolerance,
+                          s.candidate.fe_tolerance, s.candidate.fe_tolerance};
         s.adhesion.parse(prm);
         s.tangential.parse(prm);
         s.friction.parse(prm);

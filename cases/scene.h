@@ -124,6 +124,9 @@ namespace gradcontact::cases
     /// Discretization/accuracy = contract: the normal scene's FE answers come from the ladder of fem/accuracy.h at
     /// force_tolerance (its degree; refinements and degree unused), every FE row with its estimate and verdict.
     bool contract = false;
+    /// A level whose forecast factorisation exceeds 80 % of the machine's available memory is refused before it
+    /// starts; `run --force` (memory guard = off) solves it anyway.
+    bool memory_guard = true;
     double far_field = 0.;         ///< L/a; 0: the recommended one
     enum class Formulation
     {
@@ -233,7 +236,13 @@ namespace gradcontact::cases
     Family family() const;
     /// A candidate scene: a profile expression or a profile table.
     bool enabled() const { return !profile.empty() || !profile_table.empty(); }
-    double tolerance = 1e-8;
+    double tolerance = 1e-8; ///< relative, of every row against the numerical MDR
+    /// Of every row against the FE, relative; 0: the Tolerances section's entry of the row's quantity (parse_scene
+    /// writes a positive value into that section, the only one a candidate scene's FE rows read).
+    double fe_tolerance = 0.;
+    /// Tangential family: also one loading path of the 3D Coulomb model (cases/fe_coulomb_3d.h) with the candidate's
+    /// profile, whose rows say how far Coulomb's law is from the candidate.
+    bool coulomb_3d = false;
     static void declare(dealii::ParameterHandler &prm);
     void parse(dealii::ParameterHandler &prm);
   };

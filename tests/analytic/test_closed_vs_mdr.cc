@@ -223,3 +223,19 @@ TEST_CASE("The reversal radius of an oscillation (9.81) shall equal the numerica
                     Catch::Contains("branch = loading"));
   CHECK_THROWS_WITH(tangential::reversal_radius(m, slip, a, FA, Branch::unloading, 1.5 * FA), Catch::Contains("Fx"));
 }
+
+TEST_CASE("The numerical MDR's dF_N/db shall equal the closed form's (3 + k) F_N(b) / b for the paraboloid (9.24)",
+          "[analytic]")
+{
+  const double k = GENERATE(-0.5, 0., 0.5);
+  CAPTURE(k);
+  const Medium m = medium(GradedHalfSpace{1e9, 1e-3, k, 0.3});
+  const double R = 1e-2, a = 1e-4;
+  const mdr::PartialSlip numeric(mdr::power_law(2., 1. / (2. * R)), m, 0.3, a);
+  for (const double b : {0.1 * a, 0.5 * a, a})
+    {
+      CAPTURE(b);
+      // F_N = const b^(3 + k) on the paraboloid, so its slope is (3 + k) F_N / b
+      CHECK_THAT(numeric.normal_force_slope(b), Catch::Matchers::WithinRel((3 + k) * force(m, Paraboloid{R}, b) / b, 1e-10));
+    }
+}
