@@ -2,6 +2,7 @@
 
 #include "candidate_coulomb.h"
 #include "fe_model.h"
+#include "scene_start.h"
 
 #include <fem/adhesion.h>
 #include <fem/cohesive_zone.h>
@@ -1121,5 +1122,193 @@ namespace gradcontact::cases
     loop("reloading displacement", c.reloading_displacement, Branch::reloading);
     result.rows.insert(result.rows.end(), fe_rows.begin(), fe_rows.end());
     return result;
+  }
+
+  namespace
+  {
+    using Control = LoadParameters::Control;
+
+    // --- candidate closed forms of a user's profile ---------------------------------------------------
+    /// Load/contact = unilateral: the candidate's closed forms against the FE with the contact set found (a
+    /// disc, an annulus, several zones, or up to the indenter's edge), the profile a rigid (or Indenter) indenter
+    /// of Candidate/indenter radius under Load/control depth or force. The expressions take the FE's depth d and
+    /// force F; the numerical MDR assumes a disc and is not compared (the scene's description says so).
+    SceneResult run_unilateral_candidate(const Scene &s, const std::map<std::string, double> &constants)
+    {
+      SceneResult result;
+      const CandidateParameters &c = s.candidate;
+      const auto t0 = std::chrono::steady_clock::now();
+      const FeModel model = fe_model(s, finest_refinement(s));
+      fem::Indenter indenter;
+      if (!c.profile_table.empty())
+        {
+          // A relative path is taken from the scene's folder.
+          fs::path table(c.profile_table);
+          if (table.is_relative() && !s.file.empty())
+            table = fs::path(s.file).parent_path() / table;
+          indenter = fem::Indenter::from_csv(table.string());
+        }
+      else
+        {
+          const auto f = parse_candidate_expression<1>("profile", "r", c.profile, constants);
+          indenter = fem::Indenter{[f](const double r) { return f->value(dealii::Point<1>(r)); },
+                                   std::numeric_limits<double>::infinity(), "candidate profile"};
+        }
+      if (c.indenter_radius > 0.)
+        indenter.extent = std::min(indenter.extent, c.indenter_radius);
+      const bool by_force = s.load.control == Control::force;
+      const fem::OutputRequest out = output_request(s);
+      fem::UnilateralResult fe;
+      try
+        {
+          fe = solve_unilateral(s, model, std::move(indenter), by_force, out);
+        }
+      catch (const std::exception &e)
+        {
+          result.rows.push_back(failed("FE solve", "FE", "-", concise(e)));
+          return result;
+        }
+      const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+      if (!fe.reliable)
+        result.rows.push_back(failed("FE solve", "FE", "-", fe.message));
+      const double inner = fe.zones.empty() ? 0. : fe.zones.front().r_in;
+      const auto row = [&](const std::string &quantity, const std::string &metric, const std::string &expression,
+                           const double fe_value, const double tolerance, const std::optional<double> r,
+                           const double scale) {
+        if (expression.empty())
+          return;
+        try
+          {
+            const double value = r ? parse_candidate_expression<3>(quantity, "r,d,F", expression, constants)
+                                       ->value(dealii::Point<3>(*r, fe.depth, fe.force))
+                                   : parse_candidate_expression<2>(quantity, "d,F", expression, constants)
+                                       ->value(dealii::Point<2>(fe.depth, fe.force));
+            result.rows.push_back(compare(quantity, metric, "candidate", "FE (unilateral)", fe_value, value, scale,
+                                          tolerance, fe.n_dofs, seconds));
+          }
+        catch (const std::exception &e)
+          {
+            result.rows.push_back(failed(quantity, "candidate", "FE (unilateral)", concise(e)));
+          }
+      };
+      const double a = s.load.a;
+      if (by_force)
+        row("depth", "relative", c.depth, fe.depth, s.tolerances.depth, std::nullopt, fe.depth);
+      else
+        row("force", "relative", c.force, fe.force, s.tolerances.force, std::nullopt, fe.force);
+      row("outer radius", "relative", c.outer_radius, fe.outer_edge, s.tolerances.contact_radius, std::nullopt,
+          fe.outer_edge);
+      // The inner edge lies between two vertices (its bracket is the mesh's spacing there): relative to the
+      // outer edge.
+      row("inner radius", "relative to the outer radius", c.inner_radius, inner, s.tolerances.contact_radius,
+          std::nullopt, fe.outer_edge);
+      double p_max = 0.;
+      for (const fem::Sample &p : fe.pressure)
+        p_max = std::max(p_max, std::abs(p.value));
+      for (const fem::Sample &p : fe.pressure)
+        row("pressure", "r/a = " + format(p.r / a) + ", rel. to max |p|", c.pressure, p.value, s.tolerances.pressure,
+            p.r, p_max);
+      for (std::size_t i = 0; i < fe.displacement.size(); ++i)
+        {
+          const double w = fe.displacement[i].value + (fe.indenter_displacement.empty() ? 0. : fe.indenter_displacement[i].value);
+          row("displacement", "r/a = " + format(fe.displacement[i].r / a) + ", relative", c.displacement, w,
+              s.tolerances.displacement, fe.displacement[i].r, w);
+        }
+      return result;
+    }
+
+    /// The normal family against the FE model: the profile as a custom indenter under contact-radius control at
+    /// Load/a on the recommended mesh, one solve for every quantity; its rows go into `rows`, and its depth and force
+    /// are returned by name for the curves' plots.
+    std::map<std::string, double> candidate_fe_rows(const Scene &s, const std::map<std::string, double> &constants,
+                                                    const mdr::Profile &profile, std::vector<Row> &rows,
+                                                    std::map<std::string, std::map<double, double>> &profiles)
+    {
+      const CandidateParameters &c = s.candidate;
+      const double a = s.load.a;
+      const auto at = [](const CandidateFunction<1> &g, const double r) { return g.value(dealii::Point<1>(r)); };
+      const auto t0 = std::chrono::steady_clock::now();
+      FeModel model = candidate_fe_model(s, fem::Profile::custom(profile.f, 2.));
+      condense_far_field(s, model.material, model.settings);
+      fem::AxisymmetricSolver solver(model.material, model.settings.mesh, model.settings.discretization);
+      const fem::Result fe = solver.run(model.load, output_request(s));
+      const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+      const auto fe_row = [&](const std::string &quantity, const std::string &metric, const std::string &expression,
+                              const double fe_value, const double tolerance, const std::optional<double> r) {
+        if (expression.empty())
+          return;
+        try
+          {
+            const double value = r ? parse_candidate_expression<2>(quantity, "r,a", expression, constants)->value(dealii::Point<2>(*r, a))
+                                   : at(*parse_candidate_expression<1>(quantity, "a", expression, constants), a);
+            rows.push_back(compare(quantity, metric, "candidate", "FE", fe_value, value, fe_value, tolerance,
+                                          fe.n_dofs, seconds));
+          }
+        catch (const std::exception &e)
+          {
+            rows.push_back(failed(quantity, "candidate", "FE", concise(e)));
+          }
+      };
+      fe_row("depth", "relative", c.depth, fe.depth, s.tolerances.depth, std::nullopt);
+      fe_row("force", "relative", c.force, fe.force, s.tolerances.force, std::nullopt);
+      for (const fem::Sample &p : fe.pressure)
+        fe_row("pressure", "r/a = " + format(p.r / a) + ", relative", c.pressure, p.value, s.tolerances.pressure, p.r);
+      for (const fem::Sample &w : fe.displacement)
+        fe_row("displacement", "r/a = " + format(w.r / a) + ", relative", c.displacement, w.value,
+               s.tolerances.displacement, w.r);
+      for (const fem::Sample &p : fe.pressure)
+        profiles["pressure"][p.r / a] = p.value;
+      for (const fem::Sample &w : fe.displacement)
+        profiles["displacement"][w.r / a] = w.value;
+      return {{"depth", fe.depth}, {"force", fe.force}};
+    }
+
+    /// The normal family (not unilateral): the FE at Load/a first, so that the curves' plots carry its points; then
+    /// d(a) and F_N(a) over Candidate/range and p, w at Load/a against the numerical MDR; the FE's rows last.
+    SceneResult run_candidate(const Scene &s, const fs::path &folder)
+    {
+      const auto constants = candidate_constants(s);
+      if (s.load.contact == LoadParameters::Contact::unilateral)
+        return run_unilateral_candidate(s, constants);
+      SceneResult result;
+      const mdr::Profile profile = candidate_profile(s, constants);
+      // (a pressure candidate without f'' is refused by scene_kind: see there why)
+      std::vector<Row> fe_rows;
+      std::map<std::string, double> fe_at_a;
+      std::map<std::string, std::map<double, double>> fe_profiles;
+      if (s.references.fem)
+        fe_at_a = candidate_fe_rows(s, constants, profile, fe_rows, fe_profiles);
+      normal_candidate_curves(s, constants, profile, fe_at_a, folder, result);
+      normal_profile_curves(s, constants, profile, fe_profiles, folder, result);
+      result.rows.insert(result.rows.end(), fe_rows.begin(), fe_rows.end());
+      return result;
+    }
+  } // namespace
+
+  SceneResult run_candidate_scene(const Scene &s, const fs::path &folder)
+  {
+    require_kind(s, SceneKind::candidate, "run_candidate_scene");
+    const auto start = std::chrono::steady_clock::now();
+    SceneResult r = started(s, folder);
+    if (s.load.contact == LoadParameters::Contact::unilateral)
+      r.description += (r.description.empty() ? "" : " ") +
+                       std::string("(unilateral contact: the candidate against the FE only; the numerical MDR assumes a "
+                                   "disc and does not apply)");
+    if (s.candidate.family() != CandidateParameters::Family::normal)
+      {
+        const bool  adhesive = s.candidate.family() == CandidateParameters::Family::adhesive;
+        SceneResult family   = adhesive ? run_adhesive_candidate(s, folder) : run_tangential_candidate(s, folder);
+        r.rows               = std::move(family.rows);
+        r.description += (r.description.empty() ? "" : " ") + std::string("(") + family.description + ")";
+      }
+    else
+      {
+        SceneResult normal = run_candidate(s, folder);
+        r.rows             = std::move(normal.rows);
+        if (!normal.description.empty())
+          r.description += (r.description.empty() ? "" : " ") + std::string("(") + normal.description + ")";
+      }
+    r.seconds = elapsed(start);
+    return r;
   }
 } // namespace gradcontact::cases

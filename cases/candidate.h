@@ -86,6 +86,8 @@ namespace gradcontact::cases
 
   /// Each runs a candidate scene of its family and writes its tables and plots into `folder`.
   SceneResult run_adhesive_candidate(const Scene &scene, const std::filesystem::path &folder);
+  /// A candidate scene (SceneKind::candidate) of any family into `folder`.
+  SceneResult run_candidate_scene(const Scene &scene, const std::filesystem::path &folder);
   SceneResult run_tangential_candidate(const Scene &scene, const std::filesystem::path &folder);
 } // namespace gradcontact::cases
 

@@ -1,7 +1,7 @@
 #include "candidate_coulomb.h"
 
 #include "candidate.h"
-#include "fe_coulomb_3d.h"
+#include "coulomb_body.h"
 #include "mpi_session.h"
 
 #include <fem/coulomb_contact_3d.h>

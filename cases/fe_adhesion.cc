@@ -1,12 +1,12 @@
 #include "fe_adhesion.h"
-#include "fe_cohesive.h"
+#include "maugis_dugdale_rows.h"
 #include "fe_contract.h"
 
 #include "convergence_report.h"
 #include "fe_model.h"
 
 #include "analytic_reference.h"
-#include "fe_scene.h"
+#include "scene_start.h"
 
 #include <analytic/batch.h>
 #include <analytic/maugis_dugdale.h>

@@ -15,6 +15,7 @@
 #ifndef GRADCONTACT_CASES_FE_COHESIVE_H
 #define GRADCONTACT_CASES_FE_COHESIVE_H
 
+#include "maugis_dugdale_rows.h"
 #include "report.h"
 #include "scene.h"
 
@@ -28,9 +29,6 @@
 
 namespace gradcontact::cases
 {
-  /// A profile of the chapter's JKR closed forms.
-  using JkrProfile = std::variant<gradcontact::Paraboloid, gradcontact::PowerLaw>;
-
   /// The Lennard-Jones map's path follows the contact edge (fem::SmoothCohesionParameters::follow_edge) on
   /// fem::smooth_cohesion_settings' mesh, whose edge cells resolve the adhesive zone up to lambda = 5 (as closely
   /// as a mesh with those cells over the whole contact; test_smooth_cohesion.cc); the zone narrows like
@@ -42,35 +40,6 @@ namespace gradcontact::cases
   double lennard_jones_edge_refinement(double lambda);
   /// The largest lambda whose edge refinement smooth_cohesion_settings accepts (fem::max_edge_refinement).
   double lennard_jones_largest_lambda();
-
-  /// The Dugdale strength sigma_0 that gives the Tabor parameter `lambda` (header) for the medium, profile and
-  /// work of adhesion (maugis_dugdale::strength).
-  double cohesive_strength(double lambda, const gradcontact::Medium &medium, const JkrProfile &profile, double dgamma);
-
-  /// The sharp check of a Dugdale pull-off on the homogeneous half-space (paraboloid, k = 0): Maugis-Dugdale's
-  /// pull-off force (force control) or critical depth (displacement control, the quantity its search finds
-  /// accurately); a failed row when only one of the FE (`fe_instability`) and Maugis-Dugdale has an instability,
-  /// none when neither has. lambda in [1e-3, 1e3].
-  std::optional<Row> maugis_dugdale_row(double lambda, bool force_control, bool fe_instability, double force, double depth,
-                         double dgamma, double R, double E_star, const std::string &metric, const std::string &method,
-                         double force_tolerance, double depth_tolerance, unsigned int dofs, double seconds);
-
-  /// The same check on the graded medium, for any k and profile: the Maugis-Dugdale solution of E0 (z/c0)^k by
-  /// the MDR (analytic/maugis_dugdale.h; Maugis' closed form at k = 0) at sigma_0 = `strength`. Where only one side
-  /// has a displacement-controlled jump, its depth against the other's where the contact vanishes. Throws the
-  /// solution's DomainError (e.g. a tip with 2n + k - 1 <= 0).
-  std::optional<Row> graded_maugis_dugdale_row(const gradcontact::Medium &medium, const JkrProfile &profile,
-                                               double strength, double dgamma, bool force_control, bool fe_instability,
-                                               double force, double depth, const std::string &metric,
-                                               const std::string &method, double force_tolerance,
-                                               double depth_tolerance, unsigned int dofs, double seconds);
-
-  /// The smallest lambda from which the graded Maugis-Dugdale pull-off (force or displacement control) stays within
-  /// `threshold` of the chapter's JKR pull-off at every larger lambda up to 1e3 (no jump under displacement control
-  /// counts as 100 %): a scan of 4 lambdas per decade from 1e-2, then TOMS 748 on the last crossing. nullopt when
-  /// it is not within at 1e3; 1e-2 when it is within everywhere.
-  std::optional<double> graded_maugis_dugdale_threshold(const gradcontact::Medium &medium, const JkrProfile &profile,
-                                                        double dgamma, bool force_control, double threshold);
 
   /// The (k, lambda) points of a map that one job computes: those at positions j (k-major, lambdas ascending) with
   /// j % count == index; the counts of the run.

@@ -1,10 +1,9 @@
 #include "fe_map.h"
+#include "thresholds.h"
 
 #include "analytic_reference.h"
-#include "fe_cohesive.h"
-#include "fe_coulomb_3d.h"
 #include "fe_model.h"
-#include "fe_scene.h"
+#include "scene_start.h"
 #include "map_published.h"
 
 #include <fem/axisymmetric_solver.h>
@@ -24,55 +23,6 @@ namespace gradcontact::cases
 {
   namespace fs = std::filesystem;
   using Type = LoadParameters::Type;
-
-  std::optional<double> threshold_ratio(const std::vector<double> &ratios, const std::vector<double> &deviations,
-                                        const double threshold)
-  {
-    if (ratios.size() != deviations.size() || ratios.empty())
-      throw std::invalid_argument("threshold_ratio: " + std::to_string(ratios.size()) + " ratios and " +
-                                  std::to_string(deviations.size()) + " deviations (need the same number, >= 1)");
-    std::optional<std::size_t> last_outside;
-    for (std::size_t i = 0; i < ratios.size(); ++i)
-      if (!(std::abs(deviations[i]) <= threshold))
-        last_outside = i;
-    if (!last_outside)
-      return ratios.front();
-    const std::size_t i = *last_outside;
-    if (i + 1 == ratios.size())
-      return std::nullopt;
-    const double d0 = std::abs(deviations[i]), d1 = std::abs(deviations[i + 1]);
-    if (!(d1 > 0.) || !std::isfinite(d0) || d1 >= d0)
-      return ratios[i + 1];
-    const double slope = std::log(ratios[i + 1] / ratios[i]) / std::log(d1 / d0);
-    return ratios[i] * std::exp(std::log(threshold / d0) * slope);
-  }
-
-  std::string threshold_cell(const std::vector<double> &ratios, const std::vector<double> &deviations,
-                             const double threshold, const bool toward_large)
-  {
-    if (!toward_large)
-      {
-        // the power law is the limit ratio -> 0: read the map in 1/ratio, which grows toward it
-        std::vector<double> inverse, flipped;
-        for (std::size_t i = ratios.size(); i-- > 0;)
-          {
-            inverse.push_back(1. / ratios[i]);
-            flipped.push_back(deviations[i]);
-          }
-        const std::optional<double> at = threshold_ratio(inverse, flipped, threshold);
-        if (!at)
-          return "not within it down to " + format(ratios.front());
-        if (*at == inverse.front() && std::abs(flipped.front()) <= threshold)
-          return "at every ratio (up to " + format(ratios.back()) + ")";
-        return "<= " + format(1. / *at);
-      }
-    const std::optional<double> at = threshold_ratio(ratios, deviations, threshold);
-    if (!at)
-      return "not within it up to " + format(ratios.back());
-    if (*at == ratios.front() && std::abs(deviations.front()) <= threshold)
-      return "at every ratio (from " + format(ratios.front()) + ")";
-    return ">= " + format(*at);
-  }
 
   namespace
   {
@@ -699,38 +649,6 @@ namespace gradcontact::cases
     }
   } // namespace
 
-  std::string percent(const double t)
-  {
-    std::ostringstream o;
-    o << t * 100 << " %";
-    return o.str();
-  }
-
-  std::string threshold_table_head(const std::vector<std::string> &columns, const std::vector<double> &thresholds,
-                                   const std::string &when)
-  {
-    std::string head = "|", rule = "|";
-    for (const std::string &c : columns)
-      head += " " + c + " |", rule += "---|";
-    for (const double t : thresholds)
-      head += " within " + percent(t) + " " + when + " |", rule += "---|";
-    return head + "\n" + rule + "\n";
-  }
-
-
-  std::string friction_threshold_cell(const std::vector<double> &mus, const std::vector<double> &deviations,
-                                      const std::optional<double> full_stick, const double threshold)
-  {
-    const bool stick_within = full_stick && std::abs(*full_stick) <= threshold;
-    if (mus.empty())
-      return full_stick ? (stick_within ? "at full stick" : "not at full stick") : "no point";
-    const std::string finite = threshold_cell(mus, deviations, threshold, false);
-    if (finite.rfind("at every ratio", 0) == 0)
-      return stick_within ? "at every mu (full stick included)"
-                          : "at every mu up to " + format(mus.back()) + (full_stick ? ", not at full stick" : "");
-    return finite;
-  }
-
   namespace
   {
     /// One panel of a map: an exponent k, and for a friction map a Poisson ratio nu.
@@ -1068,13 +986,10 @@ namespace gradcontact::cases
   SceneResult run_map_scene(const Scene &s, const fs::path &folder, const bool verbose)
   {
     require_kind(s, SceneKind::map, "run_map_scene");
-    if (s.map.parameter == MapParameters::Parameter::coulomb_3d)
-      return run_coulomb_map(s, folder, verbose);
-    if (s.map.parameter == MapParameters::Parameter::tabor_parameter)
-      {
-        MapShard all;
-        return run_cohesive_map(s, folder, verbose, all);
-      }
+    if (s.map.parameter == MapParameters::Parameter::coulomb_3d ||
+        s.map.parameter == MapParameters::Parameter::tabor_parameter)
+      throw std::invalid_argument("run_map_scene: scene " + s.file + " is a map of its own runner (Coulomb 3D: "
+                                  "run_coulomb_map; Tabor parameter: run_cohesive_map)");
     const auto start = std::chrono::steady_clock::now();
     SceneResult result = started(s, folder);
     const MapPlan plan = plan_map(s);

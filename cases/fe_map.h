@@ -26,29 +26,8 @@
 
 namespace gradcontact::cases
 {
-  /// The smallest ratio from which every deviation at a larger ratio of the list is within `threshold`:
-  /// log-log interpolation between the last ratio outside and the next one (|deviation| ~ C ratio^-m there).
-  /// `ratios` ascending. Empty when the largest ratio is still outside; ratios.front() when none is.
-  std::optional<double> threshold_ratio(const std::vector<double> &ratios, const std::vector<double> &deviations,
-                                        double threshold);
-
-  /// The text of one threshold cell of map.md: ">= X" (toward_large: the power law is the limit ratio -> inf),
-  /// "<= X" (the limit ratio -> 0), "at every ratio (...)" or "not within it ...". `ratios` ascending.
-  std::string threshold_cell(const std::vector<double> &ratios, const std::vector<double> &deviations, double threshold,
-                             bool toward_large);
-
-  /// The threshold cell of a friction map (the idealisation is mu -> 0): threshold_cell over the finite mu
-  /// (ascending), with full stick (mu = inf, when solved) read on its own: "at every mu (full stick included)".
-  std::string friction_threshold_cell(const std::vector<double> &mus, const std::vector<double> &deviations,
-                                      std::optional<double> full_stick, double threshold);
-
-  /// A threshold as map.md writes it: 0.01 -> "1 %".
-  std::string percent(double t);
-
-  /// The head of a threshold table of map.md: "| c1 | c2 | within 1 % <when> | ... |" and its rule line.
-  std::string threshold_table_head(const std::vector<std::string> &columns, const std::vector<double> &thresholds,
-                                   const std::string &when);
-
+  /// The maps of a real grading, an elastic indenter and friction; the Coulomb 3D map is run_coulomb_map's
+  /// (fe_coulomb_3d.h), the Tabor-parameter map run_cohesive_map's (fe_cohesive.h).
   SceneResult run_map_scene(const Scene &scene, const std::filesystem::path &folder, bool verbose);
 } // namespace gradcontact::cases
 

@@ -166,4 +166,32 @@ namespace gradcontact::cases
     model.load.profile = profile;
     return model;
   }
+
+  /// Outputs/pressure radii and displacement radii (in units of Load/a) as FE sample radii.
+  fem::OutputRequest output_request(const Scene &s)
+  {
+    fem::OutputRequest out;
+    for (const double x : s.outputs.pressure_radii)
+      out.pressure_radii.push_back(x * s.load.a);
+    for (const double x : s.outputs.displacement_radii)
+      out.displacement_radii.push_back(x * s.load.a);
+    return out;
+  }
+
+  /// The unilateral solve of a scene with `indenter`: Load/control force or depth (Load/force, Load/depth), the
+  /// scene's elastic indenter, meshes graded from Load/a toward the edge found.
+  fem::UnilateralResult solve_unilateral(const Scene &s, const FeModel &model, fem::Indenter indenter,
+                                         const bool by_force, const fem::OutputRequest &out)
+  {
+    fem::UnilateralLoad load;
+    load.indenter = std::move(indenter);
+    load.control  = by_force ? fem::ContactControl::force : fem::ContactControl::depth;
+    load.depth    = s.load.depth;
+    load.force    = s.load.force;
+    load.friction.coefficient = s.friction.coefficient;
+    load.friction.load_steps  = s.friction.load_steps;
+    fem::Remeshing remeshing;
+    remeshing.indenter_body = model.indenter_body;
+    return fem::solve_remeshed(model.material, model.settings, load, s.load.a, out, remeshing);
+  }
 } // namespace gradcontact::cases

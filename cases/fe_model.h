@@ -17,6 +17,7 @@
 
 #include <fem/axisymmetric_solver.h>
 #include <fem/modulus.h>
+#include <fem/unilateral_contact.h>
 
 #include <optional>
 
@@ -66,6 +67,14 @@ namespace gradcontact::cases
   /// The FE model of a candidate scene (Candidate/profile): `profile`, the user's f(r), as a rigid indenter
   /// under contact-radius control at Load/a, at the finest refinement level.
   FeModel candidate_fe_model(const Scene &scene, const fem::Profile &profile);
+
+  /// Outputs/pressure radii and displacement radii (in units of Load/a) as FE sample radii.
+  fem::OutputRequest output_request(const Scene &s);
+
+  /// The unilateral solve of a scene with `indenter`: Load/control force or depth (Load/force, Load/depth), the
+  /// scene's elastic indenter, meshes graded from Load/a toward the edge found.
+  fem::UnilateralResult solve_unilateral(const Scene &s, const FeModel &model, fem::Indenter indenter, bool by_force,
+                                         const fem::OutputRequest &out);
 } // namespace gradcontact::cases
 
 #endif

@@ -22,15 +22,10 @@ namespace gradcontact::cases
   FeProfile fe_profile(const Scene &scene, const std::string &quantity, const std::vector<double> &radii_over_a,
                        const std::string &normaliser, double normaliser_r_over_a, bool per_area);
 
-  /// The result of a scene before its rows (name, description, kind), with the scene's resolved entries
-  /// written to parameters.prm in `folder`: the start of every scene runner.
-  SceneResult started(const Scene &scene, const std::filesystem::path &folder);
-
   /// Each runs a scene of its kind (scene_kind) and writes its plots and tables into `folder` (which the
   /// caller makes atomically); a scene of another kind is an error.
   SceneResult run_normal_scene(const Scene &scene, const std::filesystem::path &folder, bool verbose);
   SceneResult run_analytic_scene(const Scene &scene, const std::filesystem::path &folder);
-  SceneResult run_candidate_scene(const Scene &scene, const std::filesystem::path &folder);
 } // namespace gradcontact::cases
 
 #endif

@@ -1,7 +1,7 @@
 #include "fe_tangential.h"
 
 #include "analytic_reference.h"
-#include "fe_scene.h"
+#include "scene_start.h"
 #include "fe_contract.h"
 #include "fe_model.h"
 

@@ -1,9 +1,11 @@
 #include "runner.h"
 
+#include "candidate.h"
 #include "expression.h"
 
 #include "fe_adhesion.h"
 #include "fe_cohesive.h"
+#include "fe_coulomb_3d.h"
 #include "fe_map.h"
 #include "fe_scene.h"
 #include "fe_tangential.h"
@@ -243,6 +245,13 @@ namespace gradcontact::cases
           case SceneKind::tangential:
             return run_tangential_scene(scene, folder, verbose);
           case SceneKind::map:
+            if (scene.map.parameter == MapParameters::Parameter::coulomb_3d)
+              return run_coulomb_map(scene, folder, verbose);
+            if (scene.map.parameter == MapParameters::Parameter::tabor_parameter)
+              {
+                MapShard all;
+                return run_cohesive_map(scene, folder, verbose, all);
+              }
             return run_map_scene(scene, folder, verbose);
         }
       throw std::logic_error("run_scene: scene " + scene.file + " has no kind");

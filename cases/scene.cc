@@ -2,7 +2,6 @@
 
 #include "expression.h"
 
-#include "fe_cohesive.h"
 #include "report.h"
 
 #include <deal.II/base/utilities.h>
@@ -927,10 +926,10 @@ namespace gradcontact::cases
       // The edge's cells of the Lennard-Jones path shrink like lambda^-2 (lennard_jones_edge_refinement).
       if (s.adhesion.law == AdhesionParameters::Law::lennard_jones)
         for (const double lambda : s.map.ratios)
-          if (!(lambda <= lennard_jones_largest_lambda()))
+          if (!(lambda <= largest_lennard_jones_lambda))
             throw std::invalid_argument(where + "Map/ratios: lambda = " + std::to_string(lambda) +
                                         " with Adhesion/law = Lennard-Jones; the valid range is (0, " +
-                                        format(lennard_jones_largest_lambda()) +
+                                        format(largest_lennard_jones_lambda) +
                                         "] (the adhesive zone narrows like lambda^-2, and the edge refinement and the "
                                         "cost of the path grow with it)");
       if (s.references.fem && s.material.nu >= 0.5 &&

@@ -116,6 +116,11 @@ namespace gradcontact::cases
     void parse(dealii::ParameterHandler &prm);
   };
 
+  /// The largest Tabor parameter a Lennard-Jones path resolves: its edge's cells shrink like lambda^-2 from lambda = 5
+  /// on, down to 1 / fem::max_edge_refinement (64) of theirs, so lambda <= 5 sqrt(64) (fe_cohesive.cc asserts the
+  /// two agree).
+  inline constexpr double largest_lennard_jones_lambda = 40;
+
   struct DiscretizationParameters
   {
     unsigned int degree = 3;

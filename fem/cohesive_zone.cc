@@ -37,6 +37,83 @@ namespace gradcontact::fem
         r *= 1.25;
       return r;
     }
+
+    /// A wide zone (small Tabor parameter): the near field widened to `wanted` (units of a) when it is smaller;
+    /// the surface cells away from a and c grow with it (the refinement toward c and the grading toward a keep
+    /// both ends resolved).
+    void widen_near_field(MeshParameters &mesh, const double wanted)
+    {
+      const double base = mesh.near_field_size;
+      if (wanted > base)
+        {
+          mesh.h_far *= wanted / base;
+          mesh.h_surface_outer = std::clamp(wanted / 20, mesh.h_surface, mesh.h_far);
+          mesh.near_field_size = wanted;
+          // The truncation boundary stays beyond the widened near field, two rings at least (a condensed far field,
+          // fem/far_field.h, needs them; a clamped one lies far beyond anyway).
+          mesh.far_field_size = std::max(mesh.far_field_size, 4 * wanted);
+        }
+    }
+
+    /// The surface refinement of a mesh refined toward c_hint (none when not `refined`): toward c (the traction
+    /// jump), and its gap window resolved by zone_cells cells.
+    SurfaceRefinement zone_refinement(const CohesiveParameters &parameters, const double a, const double c_hint,
+                                      const bool refined)
+    {
+      SurfaceRefinement refinement;
+      if (refined)
+        {
+          const double delta = parameters.gap_window * (c_hint - a);
+          refinement.radii   = {c_hint};
+          refinement.levels  = parameters.zone_refinements;
+          refinement.intervals.push_back({c_hint - delta, c_hint + delta, parameters.zone_cells});
+        }
+      return refinement;
+    }
+
+    /// The samples of the gap window of zone end c: 2 gap_samples + 1 points evenly over [c - delta, c + delta],
+    /// delta = gap_window (c - a), in order (mean_gap reads them so).
+    OutputRequest gap_window(const CohesiveParameters &parameters, const double a, const double c)
+    {
+      OutputRequest out;
+      const double  delta = parameters.gap_window * (c - a);
+      for (unsigned int i = 0; i <= 2 * gap_samples; ++i)
+        out.displacement_radii.push_back(c - delta + i * delta / gap_samples);
+      return out;
+    }
+
+    /// The samples of the state of zone end c: the gap window, then the gap inside the zone and beyond it (up to
+    /// `reach`), which finish_state checks.
+    OutputRequest state_samples(const CohesiveParameters &parameters, const double a, const double c,
+                                const double reach)
+    {
+      const std::vector<double> inside{0.25, 0.5, 0.75}, beyond{1.05, 1.3, 1.6};
+      OutputRequest             out = gap_window(parameters, a, c);
+      for (const double t : inside)
+        out.displacement_radii.push_back(a + t * (c - a));
+      for (const double t : beyond)
+        if (t * c < reach)
+          out.displacement_radii.push_back(t * c);
+      return out;
+    }
+
+    /// The gap at c, h(c) = f(c) - d + w(c), as its mean over [c - delta, c + delta] (trapezoidal rule on the
+    /// 2 gap_samples + 1 samples of gap_window, the first ones of r): near the traction jump at c the gap opens like
+    /// sign(r - c) |r - c|^{1-k} (k = 0: (r - c) ln|r - c|), whose FE value at c itself converges only like (cell
+    /// width)^{1-k}, a few 1e-3 h_0 on the soft surface of k = 0.5 even with cells of 1e-10 c - a; the mean cancels
+    /// the odd term, and what remains is the even part, O((delta / (c - a))^2), so the mean moves far less with the
+    /// window than the point value does between meshes (`build/tests/fem/cohesive_study` varies the window with
+    /// gap_window=).
+    double mean_gap(const Profile &profile, const double a, const Result &r)
+    {
+      const auto h = [&](const unsigned int i) {
+        return profile(r.displacement[i].r, a) - r.depth + r.displacement[i].value;
+      };
+      double sum = 0.5 * (h(0) + h(2 * gap_samples));
+      for (unsigned int i = 1; i < 2 * gap_samples; ++i)
+        sum += h(i);
+      return sum / (2 * gap_samples);
+    }
   } // namespace
 
 
@@ -135,30 +212,10 @@ namespace gradcontact::fem
     const auto start = std::chrono::steady_clock::now();
     Settings   s     = settings(a);
     s.mesh.contact_radius = a;
-    const double base     = s.mesh.near_field_size;
-    const double wanted   = near_field_step(parameters.near_field_margin * c_hint / a);
-    if (wanted > base)
-      {
-        // A wide zone (small Tabor parameter): the surface cells away from a and c grow with the near field
-        // (the refinement toward c and the grading toward a keep both ends resolved).
-        s.mesh.h_far *= wanted / base;
-        s.mesh.h_surface_outer = std::clamp(wanted / 20, s.mesh.h_surface, s.mesh.h_far);
-        s.mesh.near_field_size = wanted;
-        // The truncation boundary stays beyond the widened near field, two rings at least (a condensed far field,
-        // fem/far_field.h, needs them; a clamped one lies far beyond anyway).
-        s.mesh.far_field_size = std::max(s.mesh.far_field_size, 4 * wanted);
-      }
-    const double       reach = 0.9 * s.mesh.near_field_size * a; // the zone must end inside the near field
-    SurfaceRefinement  refinement;
-    if (refined)
-      {
-        // Toward c (the traction jump), and its gap window resolved by zone_cells cells.
-        const double delta = parameters.gap_window * (c_hint - a);
-        refinement.radii   = {c_hint};
-        refinement.levels  = parameters.zone_refinements;
-        refinement.intervals.push_back({c_hint - delta, c_hint + delta, parameters.zone_cells});
-      }
-    AxisymmetricSolver solver(material, s.mesh, s.discretization, refinement);
+    widen_near_field(s.mesh, near_field_step(parameters.near_field_margin * c_hint / a));
+    const double            reach = 0.9 * s.mesh.near_field_size * a; // the zone must end inside the near field
+    const SurfaceRefinement refinement = zone_refinement(parameters, a, c_hint, refined);
+    AxisymmetricSolver      solver(material, s.mesh, s.discretization, refinement);
 
     const double h0 = law.range();
     LoadCase     load;
@@ -169,53 +226,24 @@ namespace gradcontact::fem
     state.radius = a;
     state.meshes = 1;
     state.n_dofs = solver.n_dofs();
-    Result last;
-    // The gap at c, h(c) = f(c) - d + w(c), as its mean over [c - delta, c + delta] (trapezoidal rule on
-    // 2 gap_samples + 1 points): near the traction jump at c the gap opens like sign(r - c) |r - c|^{1-k}
-    // (k = 0: (r - c) ln|r - c|), whose FE value at c itself converges only like (cell width)^{1-k}, a few 1e-3 h_0
-    // on the soft surface of k = 0.5 even with cells of 1e-10 c - a; the mean cancels the odd term, and what remains
-    // is the even part, O((delta / (c - a))^2), so the mean moves far less with the window than the point value
-    // does between meshes (`build/tests/fem/cohesive_study` varies the window with gap_window=).
-    const auto mean_gap = [&](const Result &r) {
-      // The first 2 gap_samples + 1 samples of r are the window's (window() below), in order.
-      const auto h   = [&](const unsigned int i) {
-        return profile(r.displacement[i].r, a) - r.depth + r.displacement[i].value;
-      };
-      double sum = 0.5 * (h(0) + h(2 * gap_samples));
-      for (unsigned int i = 1; i < 2 * gap_samples; ++i)
-        sum += h(i);
-      return sum / (2 * gap_samples);
-    };
-    const auto window = [&](const double c) {
-      OutputRequest out;
-      const double  delta = parameters.gap_window * (c - a);
-      for (unsigned int i = 0; i <= 2 * gap_samples; ++i)
-        out.displacement_radii.push_back(c - delta + i * delta / gap_samples);
-      return out;
-    };
+    // g(c) = h(c) - h_0 of zone end c, h(c) the mean gap over its window (mean_gap).
+    Result     last;
     const auto g = [&](const double c) {
       load.cohesion.radius = c;
-      last                 = solver.run(load, window(c));
+      last                 = solver.run(load, gap_window(parameters, a, c));
       ++state.zone_solves;
-      return mean_gap(last) - h0;
+      return mean_gap(profile, a, last) - h0;
     };
     // The state of zone end c with its samples (the window, then the gap inside the zone and beyond it): its g.
-    const std::vector<double> inside{0.25, 0.5, 0.75}, beyond{1.05, 1.3, 1.6};
     Result     at_state;
     const auto solve_state = [&](const double c) {
       load.cohesion.radius = c;
-      OutputRequest out    = window(c);
-      for (const double t : inside)
-        out.displacement_radii.push_back(a + t * (c - a));
-      for (const double t : beyond)
-        if (t * c < reach)
-          out.displacement_radii.push_back(t * c);
-      at_state = solver.run(load, out);
+      at_state             = solver.run(load, state_samples(parameters, a, c, reach));
       ++state.zone_solves;
       state.zone_radius = c;
       state.depth       = at_state.depth;
       state.force       = at_state.force;
-      return mean_gap(at_state) - h0;
+      return mean_gap(profile, a, at_state) - h0;
     };
 
     // On a refined mesh the state is the one at c_hint (the point it is refined toward, where h(c) is accurate),

@@ -14,6 +14,247 @@ namespace gradcontact::fem
 {
   using namespace dealii;
 
+  namespace
+  {
+    /// One step of CoulombContact3D::solve from the last converged state to the load (target, delta): the trial
+    /// sets, the linear system of the current sets and directions and their update (the header's "Solver").
+    class CoulombStep
+    {
+    public:
+      CoulombStep(const SurfaceCompliance3D &compliance, const std::vector<double> &f, const double c,
+                  const CoulombParameters &parameters, const CoulombState3D &last, const bool force_control,
+                  const double target, const double delta)
+        : compliance(compliance)
+        , f(f)
+        , c(c)
+        , last(last)
+        , force_control(force_control)
+        , target(target)
+        , n(compliance.nodes.size())
+        , m(compliance.C.m())
+        , mu(parameters.mu)
+        , full_stick(std::isinf(mu))
+        , step(delta - last.delta)
+        , set_tolerance(parameters.set_tolerance)
+      {}
+
+      /// The trial state of every step: the nodes in contact stick (the elastic predictor of a return mapping;
+      /// starting from the last step's slip directions cycles when the load reverses), and under depth control
+      /// the nodes the indenter would now penetrate at `depth` start in contact.
+      std::vector<NodeStatus> trial_status(const double depth) const
+      {
+        std::vector<NodeStatus> status = last.status;
+        for (NodeStatus &s : status)
+          if (s == NodeStatus::slip)
+            s = NodeStatus::stick;
+        if (!force_control)
+          for (unsigned int i = 0; i < n; ++i) // nodes the indenter would now penetrate start in contact
+            if (status[i] == NodeStatus::separated && f[i] - depth + last.displacement[i][2] < 0)
+              status[i] = NodeStatus::stick;
+        if (force_control && std::none_of(status.begin(), status.end(), [](NodeStatus t) { return t != NodeStatus::separated; }))
+          status[std::min_element(f.begin(), f.end()) - f.begin()] = NodeStatus::stick;
+        return status;
+      }
+
+      /// The unknowns of the last state, where the Newton steps of the slip law start (and its depth under force
+      /// control).
+      void last_forces(Vector<double> &F) const
+      {
+        for (unsigned int i = 0; i < n; ++i)
+          for (unsigned int d = 0; d < 3; ++d)
+            if (compliance.unknown[i][d] >= 0)
+              F(compliance.unknown[i][d]) = last.nodal_force[i][d];
+        if (force_control)
+          F(m) = last.depth;
+      }
+
+      /// u = C F of the current iterate (the slip law's linearisation and the set updates use it).
+      void displacements(const Vector<double> &forces, Vector<double> &u) const
+      {
+        for (unsigned int k = 0; k < m; ++k)
+          {
+            double v = 0;
+            for (unsigned int l = 0; l < m; ++l)
+              v += compliance.C(k, l) * forces(l);
+            u(k) = v;
+          }
+      }
+
+      /// The linear system of the current sets `status` and directions `t` at the iterate F (u = C F): a
+      /// separated node's forces vanish, a node in contact closes its gap, a sticking node keeps its tangential
+      /// position relative to the indenter, a slipping one follows the slip law (slip_rows); under force control
+      /// the last row is the normal force of the half body.
+      void system(const std::vector<NodeStatus> &status, const double depth,
+                  const std::vector<std::array<double, 2>> &t, const Vector<double> &F, const Vector<double> &u,
+                  LAPACKFullMatrix<double> &A, Vector<double> &rhs) const
+      {
+        const auto copy_row = [&](const unsigned int row, const int k) {
+          for (unsigned int l = 0; l < m; ++l)
+            A(row, l) = compliance.C(k, l);
+        };
+        for (unsigned int i = 0; i < n; ++i)
+          {
+            const auto &k = compliance.unknown[i];
+            switch (status[i])
+              {
+                case NodeStatus::separated:
+                  for (const int kc : k)
+                    if (kc >= 0)
+                      A(kc, kc) = 1;
+                  break;
+                case NodeStatus::stick:
+                case NodeStatus::slip:
+                  // g = 0: u_z - d = -f (d an unknown under force control)
+                  copy_row(k[2], k[2]);
+                  if (force_control)
+                    {
+                      A(k[2], m) = -1;
+                      rhs(k[2])  = -f[i];
+                    }
+                  else
+                    rhs(k[2]) = depth - f[i];
+                  if (status[i] == NodeStatus::stick)
+                    {
+                      copy_row(k[0], k[0]);
+                      rhs(k[0]) = last.displacement[i][0] + step;
+                      if (k[1] >= 0)
+                        {
+                          copy_row(k[1], k[1]);
+                          rhs(k[1]) = last.displacement[i][1];
+                        }
+                    }
+                  else if (k[1] < 0)
+                    {
+                      // On the symmetry plane the slip is along x: Q_x = mu P t_x, t_x = +-1 (linear).
+                      A(k[0], k[0]) = 1;
+                      A(k[0], k[2]) = -mu * t[i][0];
+                    }
+                  else
+                    slip_rows(i, t[i], F, u, A, rhs);
+                  break;
+              }
+          }
+        if (force_control)
+          {
+            for (unsigned int i = 0; i < n; ++i)
+              A(m, compliance.unknown[i][2]) = 1;
+            rhs(m) = target / 2; // the half body
+          }
+      }
+
+      /// The sets and directions after a solve (F, u = C F), with the state's forces, displacements and slips
+      /// filled in; `changed` when a node changes its set, `turn` the largest change of a slip direction weighted
+      /// by the node's share of the largest normal force. `t` holds the new slip directions on return.
+      std::vector<NodeStatus> new_sets(const Vector<double> &F, const Vector<double> &u, CoulombState3D &s,
+                                       std::vector<std::array<double, 2>> &t, bool &changed, double &turn) const
+      {
+        changed = false;
+        turn    = 0;
+        s.nodal_force.assign(n, {{0, 0, 0}});
+        s.displacement.assign(n, {{0, 0, 0}});
+        s.slip.assign(n, {{0, 0}});
+        std::vector<NodeStatus> next(n);
+        double                  largest = 0;
+        for (unsigned int i = 0; i < n; ++i)
+          largest = std::max(largest, std::abs(F(compliance.unknown[i][2])));
+        const double band = set_tolerance * largest;
+        for (unsigned int i = 0; i < n; ++i)
+          {
+            const auto &k = compliance.unknown[i];
+            for (unsigned int d = 0; d < 3; ++d)
+              if (k[d] >= 0)
+                {
+                  s.nodal_force[i][d]  = F(k[d]);
+                  s.displacement[i][d] = u(k[d]);
+                }
+            const double P = s.nodal_force[i][2], g = f[i] - s.depth + s.displacement[i][2];
+            s.slip[i] = {{s.displacement[i][0] - last.displacement[i][0] - step,
+                          s.displacement[i][1] - last.displacement[i][1]}};
+            // A node changes its set only when its criterion is violated by more than `band` (a node at the
+            // edge of the contact or the stick zone with a criterion at round-off level would otherwise flip
+            // back and forth).
+            const double normal = P - c * g;
+            const bool   in_contact = s.status[i] != NodeStatus::separated;
+            if (in_contact ? normal < -band : !(normal > band))
+              next[i] = NodeStatus::separated;
+            else
+              {
+                std::array<double, 2> z = {{s.nodal_force[i][0] - c * s.slip[i][0],
+                                            k[1] >= 0 ? s.nodal_force[i][1] - c * s.slip[i][1] : 0.0}};
+                const double size_z = std::hypot(z[0], z[1]);
+                const double limit  = mu * std::max(normal, 0.0);
+                if (full_stick || (s.status[i] == NodeStatus::slip ? size_z < limit - band : size_z <= limit + band))
+                  next[i] = NodeStatus::stick;
+                else
+                  {
+                    next[i] = NodeStatus::slip;
+                    const std::array<double, 2> direction_i = {{z[0] / size_z, z[1] / size_z}};
+                    // the direction's change weighted by the node's share of the largest normal force: what it
+                    // changes in the forces (a node with a force near round-off has a direction near round-off)
+                    if (s.status[i] == NodeStatus::slip)
+                      turn = std::max(turn, std::hypot(direction_i[0] - t[i][0], direction_i[1] - t[i][1]) *
+                                              (largest > 0 ? std::max(P, 0.0) / largest : 1.0));
+                    t[i] = direction_i;
+                  }
+              }
+            changed = changed || next[i] != s.status[i];
+          }
+        if (force_control && std::none_of(next.begin(), next.end(), [](NodeStatus x) { return x != NodeStatus::separated; }))
+          next[std::min_element(f.begin(), f.end()) - f.begin()] = NodeStatus::stick;
+        return next;
+      }
+
+    private:
+      /// The rows of a slipping node i off the symmetry plane: Phi = Q - mu P t(z), t(z) = z / |z|,
+      /// z = Q - c s(F), a Newton step of the slip law linearised at the current iterate F (the direction's
+      /// derivative (I - t t^T) / |z| included),
+      ///   dPhi = (I - M) dQ - mu t dP + c M C_t dF,   M = mu P (I - t t^T) / |z|,
+      /// written as the linear system J F_new = J F - Phi(F). `t_i`: the direction when z = 0.
+      void slip_rows(const unsigned int i, const std::array<double, 2> &t_i, const Vector<double> &F,
+                     const Vector<double> &u, LAPACKFullMatrix<double> &A, Vector<double> &rhs) const
+      {
+        const auto  &k = compliance.unknown[i];
+        const double P = F(k[2]);
+        const std::array<double, 2> Q = {{F(k[0]), F(k[1])}};
+        std::array<double, 2> z{};
+        for (unsigned int j = 0; j < 2; ++j)
+          z[j] = Q[j] - c * (u(k[j]) - last.displacement[i][j] - (j == 0 ? step : 0.0));
+        const double size_z = std::hypot(z[0], z[1]);
+        const std::array<double, 2> ti = size_z > 0 ? std::array<double, 2>{{z[0] / size_z, z[1] / size_z}} : t_i;
+        double M[2][2];
+        for (unsigned int a = 0; a < 2; ++a)
+          for (unsigned int b = 0; b < 2; ++b)
+            M[a][b] = size_z > 0 ? mu * std::max(P, 0.0) * ((a == b ? 1.0 : 0.0) - ti[a] * ti[b]) / size_z : 0.0;
+        for (unsigned int a = 0; a < 2; ++a)
+          {
+            const unsigned int row = k[a];
+            for (unsigned int l = 0; l < m; ++l)
+              A(row, l) = c * (M[a][0] * compliance.C(k[0], l) + M[a][1] * compliance.C(k[1], l));
+            for (unsigned int b = 0; b < 2; ++b)
+              A(row, k[b]) += (a == b ? 1.0 : 0.0) - M[a][b];
+            A(row, k[2]) += -mu * ti[a];
+            // rhs = J F - Phi(F)
+            double JF = 0;
+            for (unsigned int l = 0; l < m; ++l)
+              JF += A(row, l) * F(l);
+            rhs(row) = JF - (Q[a] - mu * P * ti[a]);
+          }
+      }
+
+      const SurfaceCompliance3D &compliance;
+      const std::vector<double> &f;
+      const double               c;
+      const CoulombState3D      &last;
+      const bool                 force_control;
+      const double               target;
+      const unsigned int         n, m;
+      const double               mu;
+      const bool                 full_stick;
+      const double               step; // of the tangential position
+      const double               set_tolerance;
+    };
+  } // namespace
+
   void CoulombParameters::validate() const
   {
     if (!(mu >= 0)) // NaN fails too; infinity is full stick
@@ -97,193 +338,34 @@ namespace gradcontact::fem
   CoulombState3D CoulombContact3D::solve(const bool force_control, const double target, const double delta)
   {
     const unsigned int n = compliance.nodes.size(), m = compliance.C.m(), size = m + (force_control ? 1 : 0);
-    const double       mu = parameters.mu;
-    const bool         full_stick = std::isinf(mu);
-    const double       step = delta - last.delta;
+    const CoulombStep  problem(compliance, f, c, parameters, last, force_control, target, delta);
 
     CoulombState3D s;
     s.delta  = delta;
     s.depth  = force_control ? last.depth : target;
-    // The trial state of every step: the nodes in contact stick (the elastic predictor of a return mapping;
-    // starting from the last step's slip directions cycles when the load reverses).
-    s.status = last.status;
-    for (NodeStatus &status : s.status)
-      if (status == NodeStatus::slip)
-        status = NodeStatus::stick;
-    if (!force_control)
-      for (unsigned int i = 0; i < n; ++i) // nodes the indenter would now penetrate start in contact
-        if (s.status[i] == NodeStatus::separated && f[i] - s.depth + last.displacement[i][2] < 0)
-          s.status[i] = NodeStatus::stick;
-    if (force_control && std::none_of(s.status.begin(), s.status.end(), [](NodeStatus t) { return t != NodeStatus::separated; }))
-      s.status[std::min_element(f.begin(), f.end()) - f.begin()] = NodeStatus::stick;
+    s.status = problem.trial_status(s.depth);
     std::vector<std::array<double, 2>> t = direction;
 
     Vector<double> F(size), u(m);
-    for (unsigned int i = 0; i < n; ++i) // the Newton steps of the slip law start from the last state
-      for (unsigned int d = 0; d < 3; ++d)
-        if (compliance.unknown[i][d] >= 0)
-          F(compliance.unknown[i][d]) = last.nodal_force[i][d];
-    if (force_control)
-      F(m) = last.depth;
-    // u = C F of the current iterate (the slip law's linearisation and the set updates use it)
-    const auto displacements = [&](const Vector<double> &forces) {
-      for (unsigned int k = 0; k < m; ++k)
-        {
-          double v = 0;
-          for (unsigned int l = 0; l < m; ++l)
-            v += compliance.C(k, l) * forces(l);
-          u(k) = v;
-        }
-    };
-    displacements(F);
+    problem.last_forces(F);
+    problem.displacements(F, u);
     for (unsigned int it = 1; it <= parameters.max_iterations; ++it)
       {
         // The linear system of the current sets and directions.
         LAPACKFullMatrix<double> A(size, size);
         Vector<double>           rhs(size);
-        const auto copy_row = [&](const unsigned int row, const int k) {
-          for (unsigned int l = 0; l < m; ++l)
-            A(row, l) = compliance.C(k, l);
-        };
-        for (unsigned int i = 0; i < n; ++i)
-          {
-            const auto &k = compliance.unknown[i];
-            switch (s.status[i])
-              {
-                case NodeStatus::separated:
-                  for (const int kc : k)
-                    if (kc >= 0)
-                      A(kc, kc) = 1;
-                  break;
-                case NodeStatus::stick:
-                case NodeStatus::slip:
-                  // g = 0: u_z - d = -f (d an unknown under force control)
-                  copy_row(k[2], k[2]);
-                  if (force_control)
-                    {
-                      A(k[2], m) = -1;
-                      rhs(k[2])  = -f[i];
-                    }
-                  else
-                    rhs(k[2]) = s.depth - f[i];
-                  if (s.status[i] == NodeStatus::stick)
-                    {
-                      copy_row(k[0], k[0]);
-                      rhs(k[0]) = last.displacement[i][0] + step;
-                      if (k[1] >= 0)
-                        {
-                          copy_row(k[1], k[1]);
-                          rhs(k[1]) = last.displacement[i][1];
-                        }
-                    }
-                  else if (k[1] < 0)
-                    {
-                      // On the symmetry plane the slip is along x: Q_x = mu P t_x, t_x = +-1 (linear).
-                      A(k[0], k[0]) = 1;
-                      A(k[0], k[2]) = -mu * t[i][0];
-                    }
-                  else
-                    {
-                      // Phi = Q - mu P t(z), t(z) = z / |z|, z = Q - c s(F): a Newton step of the slip law
-                      // linearised at the current iterate F (the direction's derivative (I - t t^T) / |z| included),
-                      //   dPhi = (I - M) dQ - mu t dP + c M C_t dF,   M = mu P (I - t t^T) / |z|,
-                      // written as the linear system J F_new = J F - Phi(F).
-                      const double P = F(k[2]);
-                      const std::array<double, 2> Q = {{F(k[0]), F(k[1])}};
-                      std::array<double, 2> z{};
-                      for (unsigned int j = 0; j < 2; ++j)
-                        z[j] = Q[j] - c * (u(k[j]) - last.displacement[i][j] - (j == 0 ? step : 0.0));
-                      const double size_z = std::hypot(z[0], z[1]);
-                      const std::array<double, 2> ti = size_z > 0 ? std::array<double, 2>{{z[0] / size_z, z[1] / size_z}} : t[i];
-                      double M[2][2];
-                      for (unsigned int a = 0; a < 2; ++a)
-                        for (unsigned int b = 0; b < 2; ++b)
-                          M[a][b] = size_z > 0 ? mu * std::max(P, 0.0) * ((a == b ? 1.0 : 0.0) - ti[a] * ti[b]) / size_z : 0.0;
-                      for (unsigned int a = 0; a < 2; ++a)
-                        {
-                          const unsigned int row = k[a];
-                          for (unsigned int l = 0; l < m; ++l)
-                            A(row, l) = c * (M[a][0] * compliance.C(k[0], l) + M[a][1] * compliance.C(k[1], l));
-                          for (unsigned int b = 0; b < 2; ++b)
-                            A(row, k[b]) += (a == b ? 1.0 : 0.0) - M[a][b];
-                          A(row, k[2]) += -mu * ti[a];
-                          // rhs = J F - Phi(F)
-                          double JF = 0;
-                          for (unsigned int l = 0; l < m; ++l)
-                            JF += A(row, l) * F(l);
-                          rhs(row) = JF - (Q[a] - mu * P * ti[a]);
-                        }
-                    }
-                  break;
-              }
-          }
-        if (force_control)
-          {
-            for (unsigned int i = 0; i < n; ++i)
-              A(m, compliance.unknown[i][2]) = 1;
-            rhs(m) = target / 2; // the half body
-          }
+        problem.system(s.status, s.depth, t, F, u, A, rhs);
         A.compute_lu_factorization();
         F = rhs;
         A.solve(F);
         if (force_control)
           s.depth = F(m);
-        displacements(F);
+        problem.displacements(F, u);
 
         // The new sets and directions.
-        bool   changed  = false;
-        double turn     = 0;
-        s.nodal_force.assign(n, {{0, 0, 0}});
-        s.displacement.assign(n, {{0, 0, 0}});
-        s.slip.assign(n, {{0, 0}});
-        std::vector<NodeStatus> next(n);
-        double                  largest = 0;
-        for (unsigned int i = 0; i < n; ++i)
-          largest = std::max(largest, std::abs(F(compliance.unknown[i][2])));
-        const double band = parameters.set_tolerance * largest;
-        for (unsigned int i = 0; i < n; ++i)
-          {
-            const auto &k = compliance.unknown[i];
-            for (unsigned int d = 0; d < 3; ++d)
-              if (k[d] >= 0)
-                {
-                  s.nodal_force[i][d]  = F(k[d]);
-                  s.displacement[i][d] = u(k[d]);
-                }
-            const double P = s.nodal_force[i][2], g = f[i] - s.depth + s.displacement[i][2];
-            s.slip[i] = {{s.displacement[i][0] - last.displacement[i][0] - step,
-                          s.displacement[i][1] - last.displacement[i][1]}};
-            // A node changes its set only when its criterion is violated by more than `band` (a node at the
-            // edge of the contact or the stick zone with a criterion at round-off level would otherwise flip
-            // back and forth).
-            const double normal = P - c * g;
-            const bool   in_contact = s.status[i] != NodeStatus::separated;
-            if (in_contact ? normal < -band : !(normal > band))
-              next[i] = NodeStatus::separated;
-            else
-              {
-                std::array<double, 2> z = {{s.nodal_force[i][0] - c * s.slip[i][0],
-                                            k[1] >= 0 ? s.nodal_force[i][1] - c * s.slip[i][1] : 0.0}};
-                const double size_z = std::hypot(z[0], z[1]);
-                const double limit  = mu * std::max(normal, 0.0);
-                if (full_stick || (s.status[i] == NodeStatus::slip ? size_z < limit - band : size_z <= limit + band))
-                  next[i] = NodeStatus::stick;
-                else
-                  {
-                    next[i] = NodeStatus::slip;
-                    const std::array<double, 2> direction_i = {{z[0] / size_z, z[1] / size_z}};
-                    // the direction's change weighted by the node's share of the largest normal force: what it
-                    // changes in the forces (a node with a force near round-off has a direction near round-off)
-                    if (s.status[i] == NodeStatus::slip)
-                      turn = std::max(turn, std::hypot(direction_i[0] - t[i][0], direction_i[1] - t[i][1]) *
-                                              (largest > 0 ? std::max(P, 0.0) / largest : 1.0));
-                    t[i] = direction_i;
-                  }
-              }
-            changed = changed || next[i] != s.status[i];
-          }
-        if (force_control && std::none_of(next.begin(), next.end(), [](NodeStatus x) { return x != NodeStatus::separated; }))
-          next[std::min_element(f.begin(), f.end()) - f.begin()] = NodeStatus::stick;
+        bool                          changed = false;
+        double                        turn    = 0;
+        const std::vector<NodeStatus> next    = problem.new_sets(F, u, s, t, changed, turn);
         s.iterations = it;
         if (!changed && turn <= parameters.direction_tolerance)
           {

@@ -218,15 +218,12 @@ namespace gradcontact::fem
       return info;
     }
 
-    /// Step 2: the near field (units of a) plus n rings of quads out to L / a, into `tria`.
-    void attach_far_field(const Triangulation<2> &near, const MeshParameters &p, MeshInfo &info,
-                          Triangulation<2> &tria)
+    /// The cells of the near field `near` into `cells` and its boundary lines into `boundary` (the far-field ones
+    /// too), with the adjacency of the far-field lines' vertices; std::runtime_error for a boundary face without a
+    /// physical group.
+    void copy_near_field(const Triangulation<2> &near, std::vector<CellData<2>> &cells, SubCellData &boundary,
+                         std::map<unsigned int, std::vector<unsigned int>> &far_neighbours)
     {
-      std::vector<Point<2>>       vertices = near.get_vertices();
-      std::vector<CellData<2>>    cells;
-      SubCellData                 boundary;
-      std::map<unsigned int, std::vector<unsigned int>> far_neighbours; // far-field chain adjacency
-
       for (const auto &cell : near.active_cell_iterators())
         {
           CellData<2> c;
@@ -257,6 +254,114 @@ namespace gradcontact::fem
                 boundary.boundary_lines.push_back(line);
               }
         }
+    }
+
+    /// The far-field chain of the near field (radius R1 / a) ordered from its end on the surface (z = 0) to its
+    /// end on the axis.
+    std::vector<unsigned int> far_field_chain(std::map<unsigned int, std::vector<unsigned int>> &far_neighbours,
+                                              const std::vector<Point<2>> &vertices, const double R1)
+    {
+      unsigned int start = numbers::invalid_unsigned_int;
+      for (const auto &[v, nb] : far_neighbours)
+        if (nb.size() == 1 && std::abs(vertices[v][1]) < on_line_tolerance * R1)
+          start = v;
+      AssertThrow(start != numbers::invalid_unsigned_int,
+                  ExcMessage("make_mesh: far-field boundary of the near field has no end on z = 0"));
+      std::vector<unsigned int> chain{start};
+      while (true)
+        {
+          const auto &nb   = far_neighbours[chain.back()];
+          unsigned int next = numbers::invalid_unsigned_int;
+          for (const unsigned int v : nb)
+            if (chain.size() < 2 || v != chain[chain.size() - 2])
+              next = v;
+          if (next == numbers::invalid_unsigned_int)
+            break;
+          chain.push_back(next);
+        }
+      AssertThrow(std::abs(vertices[chain.back()][0]) < on_line_tolerance * R1,
+                  ExcMessage("make_mesh: far-field chain does not end on the axis"));
+      return chain;
+    }
+
+    /// One ring of quads between the vertices `inner` and `outer` of the chain, in deal.II's lexicographic order
+    /// 0 = (inner i), 1 = (inner i+1), 2 = (outer i), 3 = (outer i+1), flipped along the chain where that gives a
+    /// negative Jacobian; and the ring's boundary lines on z = 0 (first chain vertex) and on the axis (last one).
+    void add_ring(const std::vector<unsigned int> &inner, const std::vector<unsigned int> &outer,
+                  const std::vector<Point<2>> &vertices, std::vector<CellData<2>> &cells, SubCellData &boundary)
+    {
+      for (unsigned int i = 0; i + 1 < inner.size(); ++i)
+        {
+          CellData<2> c;
+          unsigned int a0 = inner[i], a1 = inner[i + 1], b0 = outer[i], b1 = outer[i + 1];
+          const Tensor<1, 2> e1 = vertices[a1] - vertices[a0], e2 = vertices[b0] - vertices[a0];
+          if (e1[0] * e2[1] - e1[1] * e2[0] < 0)
+            {
+              std::swap(a0, a1);
+              std::swap(b0, b1);
+            }
+          c.vertices[0] = a0;
+          c.vertices[1] = a1;
+          c.vertices[2] = b0;
+          c.vertices[3] = b1;
+          c.material_id = 0;
+          cells.push_back(c);
+        }
+      CellData<1> surface, axis;
+      surface.vertices[0] = inner.front();
+      surface.vertices[1] = outer.front();
+      surface.boundary_id = boundary_id::free_surface;
+      axis.vertices[0]    = inner.back();
+      axis.vertices[1]    = outer.back();
+      axis.boundary_id    = boundary_id::axis;
+      boundary.boundary_lines.push_back(surface);
+      boundary.boundary_lines.push_back(axis);
+    }
+
+    /// The n rings out to L / a scaled from the far-field chain of the near field (radius R1 / a, ring j at
+    /// growth^j, the last at L / R1 exactly), whose lines become interior; the outermost chain is the far field.
+    void add_rings(const std::vector<unsigned int> &chain, const unsigned int n, const double growth, const double R1,
+                   const double L, std::vector<Point<2>> &vertices, std::vector<CellData<2>> &cells,
+                   SubCellData &boundary)
+    {
+      // Drop the near field's far-field lines: they are interior now.
+      boundary.boundary_lines.erase(
+        std::remove_if(boundary.boundary_lines.begin(), boundary.boundary_lines.end(),
+                       [](const CellData<1> &l) { return l.boundary_id == boundary_id::far_field; }),
+        boundary.boundary_lines.end());
+
+      std::vector<unsigned int> inner = chain;
+      for (unsigned int j = 1; j <= n; ++j)
+        {
+          const double scale = (j == n) ? L / R1 : std::pow(growth, j);
+          std::vector<unsigned int> outer;
+          for (const unsigned int v : chain)
+            {
+              outer.push_back(vertices.size());
+              vertices.push_back(Point<2>(vertices[v][0] * scale, vertices[v][1] * scale));
+            }
+          add_ring(inner, outer, vertices, cells, boundary);
+          inner = outer;
+        }
+      for (unsigned int i = 0; i + 1 < inner.size(); ++i)
+        {
+          CellData<1> far;
+          far.vertices[0] = inner[i];
+          far.vertices[1] = inner[i + 1];
+          far.boundary_id = boundary_id::far_field;
+          boundary.boundary_lines.push_back(far);
+        }
+    }
+
+    /// Step 2: the near field (units of a) plus n rings of quads out to L / a, into `tria`.
+    void attach_far_field(const Triangulation<2> &near, const MeshParameters &p, MeshInfo &info,
+                          Triangulation<2> &tria)
+    {
+      std::vector<Point<2>>       vertices = near.get_vertices();
+      std::vector<CellData<2>>    cells;
+      SubCellData                 boundary;
+      std::map<unsigned int, std::vector<unsigned int>> far_neighbours; // far-field chain adjacency
+      copy_near_field(near, cells, boundary, far_neighbours);
 
       const double R1       = p.near_field_size;
       const double L        = p.far_field_size;
@@ -266,85 +371,8 @@ namespace gradcontact::fem
       info.n_rings     = n;
       info.ring_growth = n > 0 ? std::pow(L / R1, 1.0 / n) : 1.0;
       if (n > 0)
-        {
-          // Order the far-field chain from its end on the surface (z = 0) to its end on the axis.
-          unsigned int start = numbers::invalid_unsigned_int;
-          for (const auto &[v, nb] : far_neighbours)
-            if (nb.size() == 1 && std::abs(vertices[v][1]) < on_line_tolerance * R1)
-              start = v;
-          AssertThrow(start != numbers::invalid_unsigned_int,
-                      ExcMessage("make_mesh: far-field boundary of the near field has no end on z = 0"));
-          std::vector<unsigned int> chain{start};
-          while (true)
-            {
-              const auto &nb   = far_neighbours[chain.back()];
-              unsigned int next = numbers::invalid_unsigned_int;
-              for (const unsigned int v : nb)
-                if (chain.size() < 2 || v != chain[chain.size() - 2])
-                  next = v;
-              if (next == numbers::invalid_unsigned_int)
-                break;
-              chain.push_back(next);
-            }
-          AssertThrow(std::abs(vertices[chain.back()][0]) < on_line_tolerance * R1,
-                      ExcMessage("make_mesh: far-field chain does not end on the axis"));
-
-          // Drop the near field's far-field lines: they are interior now.
-          boundary.boundary_lines.erase(
-            std::remove_if(boundary.boundary_lines.begin(), boundary.boundary_lines.end(),
-                           [](const CellData<1> &l) { return l.boundary_id == boundary_id::far_field; }),
-            boundary.boundary_lines.end());
-
-          std::vector<unsigned int> inner = chain;
-          for (unsigned int j = 1; j <= n; ++j)
-            {
-              const double scale = (j == n) ? L / R1 : std::pow(info.ring_growth, j);
-              std::vector<unsigned int> outer;
-              for (const unsigned int v : chain)
-                {
-                  outer.push_back(vertices.size());
-                  vertices.push_back(Point<2>(vertices[v][0] * scale, vertices[v][1] * scale));
-                }
-              for (unsigned int i = 0; i + 1 < chain.size(); ++i)
-                {
-                  CellData<2> c;
-                  // lexicographic: 0 = (inner i), 1 = (inner i+1), 2 = (outer i), 3 = (outer i+1);
-                  // flip along the chain if that gives a negative Jacobian.
-                  unsigned int a0 = inner[i], a1 = inner[i + 1], b0 = outer[i], b1 = outer[i + 1];
-                  const Tensor<1, 2> e1 = vertices[a1] - vertices[a0], e2 = vertices[b0] - vertices[a0];
-                  if (e1[0] * e2[1] - e1[1] * e2[0] < 0)
-                    {
-                      std::swap(a0, a1);
-                      std::swap(b0, b1);
-                    }
-                  c.vertices[0] = a0;
-                  c.vertices[1] = a1;
-                  c.vertices[2] = b0;
-                  c.vertices[3] = b1;
-                  c.material_id = 0;
-                  cells.push_back(c);
-                }
-              // The ring's side on z = 0 (first chain vertex) and on the axis (last one).
-              CellData<1> surface, axis;
-              surface.vertices[0] = inner.front();
-              surface.vertices[1] = outer.front();
-              surface.boundary_id = boundary_id::free_surface;
-              axis.vertices[0]    = inner.back();
-              axis.vertices[1]    = outer.back();
-              axis.boundary_id    = boundary_id::axis;
-              boundary.boundary_lines.push_back(surface);
-              boundary.boundary_lines.push_back(axis);
-              inner = outer;
-            }
-          for (unsigned int i = 0; i + 1 < inner.size(); ++i)
-            {
-              CellData<1> far;
-              far.vertices[0] = inner[i];
-              far.vertices[1] = inner[i + 1];
-              far.boundary_id = boundary_id::far_field;
-              boundary.boundary_lines.push_back(far);
-            }
-        }
+        add_rings(far_field_chain(far_neighbours, vertices, R1), n, info.ring_growth, R1, L, vertices, cells,
+                  boundary);
 
       GridTools::consistently_order_cells(cells);
       tria.create_triangulation(vertices, cells, boundary);

@@ -725,150 +725,200 @@ namespace gradcontact::fem
       return true;
     }
 
-    /// Follows the path from `current` (pseudo-arclength): to its end (trace, `path` given: the minimum of
-    /// F passed and F >= stop_force, or h_c <= min_gap eps), or until h_c first reaches `target` (path null).
-    Solved follow(Solved current, const double target, SmoothCohesionPath *path)
+    /// The counts of one follow(), added to the path's (when it is given) where the path ends or gives up.
+    struct FollowCounts
     {
-      unsigned int postponed = 0; // frame moves put off in a row (below)
-      double       ds    = parameters.first_step * eps();
-      double       F_min = current.state.force;
-      const double floor = parameters.min_gap * eps();
-      unsigned int steps = 0, rejected = 0, iterations_total = 0;
-      const auto   done  = [&]() {
+      unsigned int steps = 0, rejected = 0, iterations = 0;
+
+      void add_to(SmoothCohesionPath *path) const
+      {
         if (path)
           {
             path->steps += steps;
             path->rejected_steps += rejected;
-            path->newton_iterations += iterations_total;
+            path->newton_iterations += iterations;
           }
-      };
-      while (true)
+      }
+    };
+
+    /// Follows the path from `current` (pseudo-arclength): to its end (trace, `path` given: the minimum of
+    /// F passed and F >= stop_force, or h_c <= min_gap eps), or until h_c first reaches `target` (path null).
+    Solved follow(Solved current, const double target, SmoothCohesionPath *path)
+    {
+      unsigned int postponed = 0; // frame moves put off in a row (follow_frame)
+      double       ds    = parameters.first_step * eps();
+      double       F_min = current.state.force;
+      FollowCounts counts;
+      while (!at_path_end(current, path))
         {
-          if (path && path->has_force_minimum && current.state.force >= parameters.stop_force)
-            break;
-          if (current.state.central_gap <= floor)
+          if (counts.steps + counts.rejected >= parameters.max_steps)
             {
-              if (path && !path->has_force_minimum)
-                {
-                  path->converged = false;
-                  path->message += "the path reached the central gap " + std::to_string(parameters.min_gap) +
-                                   " eps before the minimum of F; ";
-                }
-              break;
-            }
-          if (steps + rejected >= parameters.max_steps)
-            {
-              done();
+              counts.add_to(path);
               throw std::runtime_error("SmoothCohesiveContact: " + std::to_string(parameters.max_steps) +
-                                       " path steps (" + std::to_string(rejected) +
+                                       " path steps (" + std::to_string(counts.rejected) +
                                        " rejected) did not reach the end; stopped at h_c = " +
                                        std::to_string(current.state.central_gap / eps()) + " eps");
             }
           Solved       next;
           unsigned int iterations = 0;
           const bool   converged  = step_from(current, ds, next, iterations);
-          iterations_total += iterations;
-          const double change_d =
-            converged ? std::abs(next.state.depth - current.state.depth) / (eps() + std::abs(current.state.depth)) : 0;
-          const double change_F = converged ? std::abs(next.state.force - current.state.force) /
-                                                std::max({std::abs(current.state.force), std::abs(F_min),
-                                                          std::numeric_limits<double>::min()}) :
-                                              0;
+          counts.iterations += iterations;
+          const double change_d = converged ? depth_change(current, next) : 0;
+          const double change_F = converged ? force_change(current, next, F_min) : 0;
           if (!converged || change_d > parameters.max_change || change_F > parameters.max_change)
             {
-              ++rejected;
+              ++counts.rejected;
               ds /= 2;
               if (ds < 1e-14 * eps())
                 {
-                  done();
-                  std::ostringstream msg;
-                  msg << "SmoothCohesiveContact: the path stalls at h_c = " << current.state.central_gap / eps()
-                      << " eps, d = " << current.state.depth / eps() << " eps (Newton "
-                      << (converged ? "converged" : "did not converge") << " in " << iterations
-                      << " iterations, change of d " << change_d << ", of F " << change_F << "; " << steps
-                      << " steps, " << rejected << " rejected)";
-                  throw std::runtime_error(msg.str());
+                  counts.add_to(path);
+                  throw std::runtime_error(stall_message(current, converged, iterations, change_d, change_F, counts));
                 }
               continue;
             }
-          ++steps;
+          ++counts.steps;
           if (target >= 0 && next.state.central_gap <= target)
-            {
-              // The wanted central gap lies between current and next: false position in the arclength (h_c may fold
-              // nearby, where a step in h_c from the tangent would not be defined).
-              SmoothCohesionPath scratch;
-              Solved             exact;
-              exact.state = root(current, next, ds,
-                                 [target](const SmoothCohesionState &st) { return st.central_gap - target; }, scratch);
-              if (!scratch.converged)
-                throw std::runtime_error("SmoothCohesiveContact: " + scratch.message + "at h_c = " +
-                                         std::to_string(target / eps()) + " eps");
-              return exact;
-            }
+            return at_target(current, next, ds, target);
           if (path)
-            {
-              path->states.push_back(next.state);
-              locate_critical(current, next, ds, *path);
-              if (path->depth_folds > max_depth_folds)
-                {
-                  done();
-                  throw std::runtime_error(
-                    "SmoothCohesiveContact: F(d) folds " + std::to_string(path->depth_folds) +
-                    " times (a smooth law has at most " + std::to_string(max_depth_folds) +
-                    "): the surface cells are too coarse for the adhesive zone, and the discrete path snaps back at "
-                    "every node; refine the surface where the contact edge passes (stopped at h_c = " +
-                    std::to_string(next.state.central_gap / eps()) + " eps)");
-                }
-            }
+            record(current, next, ds, *path, counts);
           F_min   = std::min(F_min, next.state.force);
           current = std::move(next);
-          const unsigned int factorisations = current.state.factorisations;
-          if (factorisations <= grow_factorisations && iterations <= grow_solves && change_d < parameters.max_change / 2 &&
-              change_F < parameters.max_change / 2)
-            ds = std::min(1.5 * ds, parameters.max_step * eps());
-          else if (factorisations >= shrink_factorisations || iterations >= shrink_solves)
-            ds *= 0.7;
+          ds      = adapted_step(ds, current.state.factorisations, iterations, change_d, change_F);
           if (parameters.follow_edge)
+            follow_frame(current, postponed, path, counts);
+        }
+      counts.add_to(path);
+      return current;
+    }
+
+    /// Whether the path ends at `current`: a traced path (`path` given) past the minimum of F at F >= stop_force,
+    /// or any path at h_c <= min_gap eps (a traced one that has not passed the minimum of F says so in `path`).
+    bool at_path_end(const Solved &current, SmoothCohesionPath *path) const
+    {
+      if (path && path->has_force_minimum && current.state.force >= parameters.stop_force)
+        return true;
+      if (current.state.central_gap <= parameters.min_gap * eps())
+        {
+          if (path && !path->has_force_minimum)
             {
-              // The accepted state's edge has left the frame's band (its critical states were located in the old
-              // frame): it moves to the frame of its edge. Where the move flips the sign of dF/ds or dd/ds, a critical
-              // state lies within the mesh change of this state, which the next step locates in the old frame: the
-              // move waits for it (up to 4 steps).
-              const double target_frame = frame_for(current.state.peak_radius);
-              if (std::abs(target_frame - scale) > parameters.edge_band * scale)
-                {
-                  const double old_frame = scale;
-                  Solved       moved;
-                  unsigned int move_iterations = 0;
-                  try
-                    {
-                      moved = move_frame(current, target_frame, move_iterations);
-                    }
-                  catch (const std::exception &)
-                    {
-                      done();
-                      throw;
-                    }
-                  iterations_total += move_iterations;
-                  const bool flips = (current.state.force_slope < 0) != (moved.state.force_slope < 0) ||
-                                     (current.state.depth_slope > 0) != (moved.state.depth_slope > 0);
-                  if (flips && postponed < 4)
-                    {
-                      set_frame(old_frame);
-                      ++postponed;
-                    }
-                  else
-                    {
-                      current   = std::move(moved);
-                      postponed = 0;
-                      if (path)
-                        ++path->frames;
-                    }
-                }
+              path->converged = false;
+              path->message += "the path reached the central gap " + std::to_string(parameters.min_gap) +
+                               " eps before the minimum of F; ";
+            }
+          return true;
+        }
+      return false;
+    }
+
+    /// The change of d from `current` to `next`, relative to eps + |d|: a step's acceptance and growth.
+    double depth_change(const Solved &current, const Solved &next) const
+    {
+      return std::abs(next.state.depth - current.state.depth) / (eps() + std::abs(current.state.depth));
+    }
+
+    /// The change of F from `current` to `next`, relative to the larger of |F| and |F_min| (the path's smallest F).
+    double force_change(const Solved &current, const Solved &next, const double F_min) const
+    {
+      return std::abs(next.state.force - current.state.force) /
+             std::max({std::abs(current.state.force), std::abs(F_min), std::numeric_limits<double>::min()});
+    }
+
+    /// The message of a path whose step has shrunk to nothing at `current`.
+    std::string stall_message(const Solved &current, const bool converged, const unsigned int iterations,
+                              const double change_d, const double change_F, const FollowCounts &counts) const
+    {
+      std::ostringstream msg;
+      msg << "SmoothCohesiveContact: the path stalls at h_c = " << current.state.central_gap / eps()
+          << " eps, d = " << current.state.depth / eps() << " eps (Newton "
+          << (converged ? "converged" : "did not converge") << " in " << iterations << " iterations, change of d "
+          << change_d << ", of F " << change_F << "; " << counts.steps << " steps, " << counts.rejected
+          << " rejected)";
+      return msg.str();
+    }
+
+    /// The state at central gap `target`, which lies between `current` and `next` = current + ds: false position
+    /// in the arclength (h_c may fold nearby, where a step in h_c from the tangent would not be defined).
+    Solved at_target(const Solved &current, const Solved &next, const double ds, const double target) const
+    {
+      SmoothCohesionPath scratch;
+      Solved             exact;
+      exact.state = root(current, next, ds,
+                         [target](const SmoothCohesionState &st) { return st.central_gap - target; }, scratch);
+      if (!scratch.converged)
+        throw std::runtime_error("SmoothCohesiveContact: " + scratch.message + "at h_c = " +
+                                 std::to_string(target / eps()) + " eps");
+      return exact;
+    }
+
+    /// Adds the accepted state `next` to the traced path and locates the critical states between `current` and
+    /// it; std::runtime_error when F(d) folds more often than a smooth law can (the mesh's snap-backs, header).
+    void record(const Solved &current, const Solved &next, const double ds, SmoothCohesionPath &path,
+                const FollowCounts &counts) const
+    {
+      path.states.push_back(next.state);
+      locate_critical(current, next, ds, path);
+      if (path.depth_folds > max_depth_folds)
+        {
+          counts.add_to(&path);
+          throw std::runtime_error(
+            "SmoothCohesiveContact: F(d) folds " + std::to_string(path.depth_folds) +
+            " times (a smooth law has at most " + std::to_string(max_depth_folds) +
+            "): the surface cells are too coarse for the adhesive zone, and the discrete path snaps back at "
+            "every node; refine the surface where the contact edge passes (stopped at h_c = " +
+            std::to_string(next.state.central_gap / eps()) + " eps)");
+        }
+    }
+
+    /// The next path step after a state found with `factorisations` and `iterations` linear solves and relative
+    /// changes change_d, change_F: grown by 1.5 (up to max_step eps) or shrunk by 0.7 (grow_factorisations ...).
+    double adapted_step(const double ds, const unsigned int factorisations, const unsigned int iterations,
+                        const double change_d, const double change_F) const
+    {
+      if (factorisations <= grow_factorisations && iterations <= grow_solves && change_d < parameters.max_change / 2 &&
+          change_F < parameters.max_change / 2)
+        return std::min(1.5 * ds, parameters.max_step * eps());
+      else if (factorisations >= shrink_factorisations || iterations >= shrink_solves)
+        return ds * 0.7;
+      return ds;
+    }
+
+    /// The accepted state's edge has left the frame's band (its critical states were located in the old
+    /// frame): it moves to the frame of its edge. Where the move flips the sign of dF/ds or dd/ds, a critical
+    /// state lies within the mesh change of this state, which the next step locates in the old frame: the
+    /// move waits for it (up to 4 steps; `postponed` counts them).
+    void follow_frame(Solved &current, unsigned int &postponed, SmoothCohesionPath *path, FollowCounts &counts)
+    {
+      const double target_frame = frame_for(current.state.peak_radius);
+      if (std::abs(target_frame - scale) > parameters.edge_band * scale)
+        {
+          const double old_frame = scale;
+          Solved       moved;
+          unsigned int move_iterations = 0;
+          try
+            {
+              moved = move_frame(current, target_frame, move_iterations);
+            }
+          catch (const std::exception &)
+            {
+              counts.add_to(path);
+              throw;
+            }
+          counts.iterations += move_iterations;
+          const bool flips = (current.state.force_slope < 0) != (moved.state.force_slope < 0) ||
+                             (current.state.depth_slope > 0) != (moved.state.depth_slope > 0);
+          if (flips && postponed < 4)
+            {
+              set_frame(old_frame);
+              ++postponed;
+            }
+          else
+            {
+              current   = std::move(moved);
+              postponed = 0;
+              if (path)
+                ++path->frames;
             }
         }
-      done();
-      return current;
     }
 
     /// The critical states whose derivative along the path changes sign between a and b = a + ds: dF/ds from - to +

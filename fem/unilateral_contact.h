@@ -307,6 +307,9 @@ namespace gradcontact::fem
     /// The frictionless problem of solve_active_set on the candidate vertices: the state of an active set and the
     /// monotone method that ends a cycle of PDAS (unilateral_contact.cc).
     class ActiveSetProblem;
+    /// The frictional problem of solve_frictional: the state of the contact and stick sets at one load, their
+    /// update within a load step and the path's points (frictional_contact.cc).
+    class FrictionalProblem;
     /// The frictionless update of the contact set (PDAS with the rule for tensile runs at a singular edge, see
     /// the header): the vertices that violate their condition switch; equal to `active` when none does.
     static std::vector<bool> next_contact_set(const std::vector<bool> &active, const std::vector<double> &p,

@@ -3,6 +3,7 @@
 
 #include <cases/fe_cohesive.h>
 #include <cases/fe_map.h>
+#include <cases/thresholds.h>
 #include <cases/map_published.h>
 #include <cases/runner.h>
 
