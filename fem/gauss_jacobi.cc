@@ -1,4 +1,4 @@
-#include <analytic/detail/gauss_jacobi.h>
+#include <numerics/gauss_jacobi.h>
 #include <fem/gauss_jacobi.h>
 
 #include <deal.II/base/quadrature_lib.h>
@@ -22,7 +22,7 @@ namespace gradcontact::fem
         throw std::invalid_argument(msg.str());
       }
 
-    // The shared rule on [0, 1] with weight x^s (1 - x)^0 (analytic/detail/gauss_jacobi.h: Golub-Welsch
+    // The shared rule on [0, 1] with weight x^s (1 - x)^0 (numerics/gauss_jacobi.h: Golub-Welsch
     // nodes polished by Newton's method, Christoffel weights, in long double; header only, no link to the
     // analytic library).
     const detail::GaussJacobiRule rule = detail::gauss_jacobi_rule(n_points, 1.0 + s, 1.0);

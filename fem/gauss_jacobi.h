@@ -2,7 +2,7 @@
 //
 // The n-point rule on [0, 1] with weight x^s, s > -1,
 //     \int_0^1 x^s g(x) dx = \sum_q w_q g(x_q)   exactly for polynomials g of degree <= 2n - 1,
-// the rule the numerical MDR uses too (analytic/detail/gauss_jacobi.h, header only and free of deal.II:
+// the rule the numerical MDR uses too (numerics/gauss_jacobi.h, header only and free of deal.II:
 // the Golub-Welsch algorithm, nodes polished by Newton's method, Christoffel weights, in long double).
 // Sharing a quadrature rule does not steer the FE model by the closed forms: gradcontact_fem still does
 // not link the analytic library. s = 0 gives Gauss-Legendre.

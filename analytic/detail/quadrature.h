@@ -23,7 +23,7 @@
 #ifndef GRADCONTACT_ANALYTIC_DETAIL_QUADRATURE_H
 #define GRADCONTACT_ANALYTIC_DETAIL_QUADRATURE_H
 
-#include <analytic/detail/gauss_jacobi.h>
+#include <numerics/gauss_jacobi.h>
 
 #include <boost/math/quadrature/tanh_sinh.hpp>
 

@@ -1,9 +1,9 @@
-// Requirements on the quadratures of the numerical MDR (analytic/detail/gauss_jacobi.h, quadrature.h):
+// Requirements on the quadratures of the numerical MDR (numerics/gauss_jacobi.h, quadrature.h):
 // the Gauss-Jacobi rule shall be exact for its polynomials with the end-point exponents down to -1 + 1e-3;
 // a rule shall report an integrand it does not resolve; the engine shall keep its digits at the edges of
 // the parameter space (k -> +-1, r -> 0, r -> a from both sides) and through the tanh-sinh fallback (a
 // profile whose tip power it is not told).
-#include <analytic/detail/gauss_jacobi.h>
+#include <numerics/gauss_jacobi.h>
 #include <analytic/detail/quadrature.h>
 #include <analytic/material.h>
 #include <analytic/mdr.h>

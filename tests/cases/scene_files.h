@@ -3,7 +3,7 @@
 #ifndef GRADCONTACT_TESTS_CASES_SCENE_FILES_H
 #define GRADCONTACT_TESTS_CASES_SCENE_FILES_H
 
-#include <cases/scene.h>
+#include <cases/scene/scene.h>
 
 #include <filesystem>
 #include <string>

@@ -1,9 +1,9 @@
-// The scene -> analytic request builder (cases/analytic_reference.h): each problem reads the scene's load
+// The scene -> analytic request builder (cases/model/analytic_reference.h): each problem reads the scene's load
 // as the chapter's case, checked against requests written out by hand in the JSON vocabulary of
 // analytic/README.md (an independent path to the same evaluator).
 #include "scene_files.h"
 
-#include <cases/analytic_reference.h>
+#include <cases/model/analytic_reference.h>
 
 #include <analytic/batch.h>
 

@@ -1,7 +1,7 @@
-// The command line (cases/command_line.h): every command answers --help with its own usage and exit code 0;
-// MPI starts at once under an MPI launcher only (cases/mpi_session.h).
-#include <cases/command_line.h>
-#include <cases/mpi_session.h>
+// The command line (cases/app/command_line.h): every command answers --help with its own usage and exit code 0;
+// MPI starts at once under an MPI launcher only (cases/model/mpi_session.h).
+#include <cases/app/command_line.h>
+#include <cases/model/mpi_session.h>
 
 #include <deal.II/base/mpi.h>
 

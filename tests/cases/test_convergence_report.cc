@@ -1,8 +1,8 @@
-// The convergence report of a scene (cases/convergence_report.h): the observed order of known error
+// The convergence report of a scene (cases/report/convergence_report.h): the observed order of known error
 // sequences, and the files written.
 #include "scene_files.h"
 
-#include <cases/convergence_report.h>
+#include <cases/report/convergence_report.h>
 
 #include <catch2/catch.hpp>
 

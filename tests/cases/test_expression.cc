@@ -1,8 +1,8 @@
-// The expression language of candidate closed forms (cases/expression.h): precedence, laziness, errors with their
+// The expression language of candidate closed forms (cases/scene/expression.h): precedence, laziness, errors with their
 // column, and the special functions, each checked against an identity that does not go through the function
 // itself (elementary closed forms, Gauss's sum, the classical limit of a graded coefficient).
-#include <cases/candidate.h>
-#include <cases/expression.h>
+#include <cases/runners/candidate.h>
+#include <cases/scene/expression.h>
 
 #include <catch2/catch.hpp>
 

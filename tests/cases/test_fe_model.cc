@@ -1,8 +1,8 @@
-// The scene -> FE model adapter (cases/fe_model.h): the mesh follows the modulus field that is solved,
+// The scene -> FE model adapter (cases/model/fe_model.h): the mesh follows the modulus field that is solved,
 // and every runner gets the scene's far field and refinement level.
 #include "scene_files.h"
 
-#include <cases/fe_model.h>
+#include <cases/model/fe_model.h>
 
 #include <catch2/catch.hpp>
 

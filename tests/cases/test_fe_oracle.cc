@@ -1,7 +1,7 @@
-// The FE model as an eval oracle (cases/fe_oracle.h): its answers against the closed forms of the chapter
+// The FE model as an eval oracle (cases/tools/fe_oracle.h): its answers against the closed forms of the chapter
 // (analytic/, an independent path), its reuse of one unit state across materials, radii and profiles by the
 // scaling of the header, and its refusals.
-#include <cases/fe_oracle.h>
+#include <cases/tools/fe_oracle.h>
 
 #include <analytic/batch.h>
 

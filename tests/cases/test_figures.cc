@@ -4,7 +4,7 @@
 // Gamma(n/2 + 1/2) (Popov and Hess, Method of Dimensionality Reduction, 2015, ch. 3), written out here.
 #include "scene_files.h"
 
-#include <cases/figures.h>
+#include <cases/tools/figures.h>
 
 #include <catch2/catch.hpp>
 

@@ -1,11 +1,11 @@
-// Applicability maps (cases/fe_map.h): the threshold read from a map, and a small map run end to end.
+// Applicability maps (cases/runners/fe_map.h): the threshold read from a map, and a small map run end to end.
 #include "scene_files.h"
 
-#include <cases/fe_cohesive.h>
-#include <cases/fe_map.h>
-#include <cases/thresholds.h>
-#include <cases/map_published.h>
-#include <cases/runner.h>
+#include <cases/runners/fe_cohesive.h>
+#include <cases/runners/fe_map.h>
+#include <cases/report/thresholds.h>
+#include <cases/model/map_published.h>
+#include <cases/app/runner.h>
 
 #include <analytic/maugis_dugdale.h>
 

@@ -1,9 +1,9 @@
-// Reports are written under temporary names and renamed when complete (cases/report.h); what a killed run
+// Reports are written under temporary names and renamed when complete (cases/report/report.h); what a killed run
 // left behind is removed by the next run, what a running process writes is not.
 #include "scene_files.h"
 
-#include <cases/report.h>
-#include <cases/runner.h>
+#include <cases/report/report.h>
+#include <cases/app/runner.h>
 
 #include <catch2/catch.hpp>
 

@@ -1,4 +1,4 @@
-// The scene kind (cases/scene.h): decided once from the entries, with the checks that need more than one
+// The scene kind (cases/scene/scene.h): decided once from the entries, with the checks that need more than one
 // entry, each error naming the file, the entries and their values.
 #include "scene_files.h"
 

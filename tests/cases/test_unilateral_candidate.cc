@@ -3,7 +3,7 @@
 // here from the MDR by hand, not taken from the analytic library).
 #include "scene_files.h"
 
-#include <cases/runner.h>
+#include <cases/app/runner.h>
 
 #include <catch2/catch.hpp>
 

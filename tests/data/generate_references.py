@@ -65,7 +65,7 @@ is not a power of two), small fractions x of 1 - (1 - x)^p on the loading branch
 
 Every row also gets a "conditioning": the relative change of its value when each input alone moves by half an
 ulp (up or down, the larger), summed over the inputs, by the same rules at 34 digits (conditioning()). It is what
-the rounding of the inputs justifies; cases/stress.cc and tests/analytic/test_references.cc allow it plus the
+the rounding of the inputs justifies; cases/tools/stress.cc and tests/analytic/test_references.cc allow it plus the
 method's own rounding, and no more.
 """
 import argparse

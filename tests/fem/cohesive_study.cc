@@ -7,7 +7,7 @@
 //   cohesive_study k=0.5 mode=jkr control=force      (the FE JKR pull-off of fem/adhesion.h on the same mesh)
 //   cohesive_study k=0.5 lambda=1 mode=smooth         (the Lennard-Jones path of fem/smooth_cohesion.h, its largest
 //                                                      stress the Dugdale sigma_0 of lambda; path=1 prints the states)
-// lambda is the map's Tabor parameter (cases/fe_cohesive.h); x: a / a_c,JKR of the state. Every key is optional;
+// lambda is the map's Tabor parameter (cases/runners/fe_cohesive.h); x: a / a_c,JKR of the state. Every key is optional;
 // the mesh and discretisation keys of study_arguments.h override the recommended settings (force tolerance
 // 1e-5). Prints key=value lines.
 #include <fem/adhesion.h>

@@ -283,7 +283,7 @@ TEST_CASE("The FE pull-off error shall be the error of the two FE states it is b
   // is therefore (1 + e_K) / (1 + e_Fn) - 1, with e_K and e_Fn the errors of the flat-punch stiffness and
   // of the non-adhesive force at one radius against the closed forms.
   // Scene: the paraboloid of `gradcontact bench` (E0 = 2 GPa, c0 = 3 a, a = 0.1 mm, R = 50 a, dgamma =
-  // 0.05 J/m^2), degree 3, on its levels 2 and 3 (fe_mesh_level in cases/fe_bench.cc: h_edge 1e-4 a, rings
+  // 0.05 J/m^2), degree 3, on its levels 2 and 3 (fe_mesh_level in cases/tools/fe_bench.cc: h_edge 1e-4 a, rings
   // 1.3, h_far 4; h_edge 1e-5 a, rings 1.15, h_far 3).
   // At level 2 both states are limited by the edge cell (the edge singularity: a degree step gains little,
   // finer rings hardly change F_c), and the error of F_n exceeds that of K there, so the pull-off error is

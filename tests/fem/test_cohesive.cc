@@ -150,7 +150,7 @@ TEST_CASE("cohesive zone on a graded medium tends to the chapter JKR at large la
 
 TEST_CASE("a cohesive zone thinner than the edge cells on the soft surface (k = 0.5) has the JKR force", "[fem][quick]")
 {
-  // The Tabor map's lambda = 10 (cases/fe_cohesive.h: C Delta_l(a_c) / h_0) at k = 0.5: c - a = 2.1e-5 a, about two
+  // The Tabor map's lambda = 10 (cases/runners/fe_cohesive.h: C Delta_l(a_c) / h_0) at k = 0.5: c - a = 2.1e-5 a, about two
   // edge cells (h_edge = 1e-5 a). At a = a_c,JKR the force is the chapter's JKR force up to the finite range, which
   // is below 1e-4 here (at lambda = 3, c - a = 2.6e-3 a: 2.5e-4). The bound 2e-4 leaves room
   // for the FE error, which varies little with the cells across the gap window and the window's width

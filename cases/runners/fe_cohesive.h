@@ -1,0 +1,60 @@
+// gradcontact/cases: where the chapter's JKR adhesion holds (Map/parameter = Tabor parameter). JKR (9.45-9.74)
+// assumes adhesion of infinitely short range; the Dugdale cohesive zone of fem/cohesive_zone.h has the range
+// h_0 = dgamma / sigma_0. Its pull-off force against the chapter's, over the Tabor parameter lambda and k, with
+// the thresholds a user reads ("within 1 % when lambda >= ...").
+//
+// The Tabor parameter of a graded medium: lambda = C Delta_l(a_c) / h_0 with the chapter's flat-punch pull-back
+// at the force-controlled JKR pull-off (analytic/maugis_dugdale.h, tabor_parameter): Maugis' lambda at k = 0.
+//
+// Sharp checks (rows of errors.csv): the FE pull-off against the Maugis-Dugdale solution at every lambda
+// (analytic/maugis_dugdale.h: Maugis' closed form at k = 0 for the paraboloid, the MDR solution of the graded medium
+// otherwise), the force within Tolerances/force, the critical depth under displacement control within
+// Tolerances/depth; for every k the deviation from JKR falls between the two largest lambda, and, for the paraboloid,
+// the deviation from the DMT pull-off -2 pi dgamma R (rigid sphere, independent of the elasticity) falls between
+// the two smallest.
+#ifndef GRADCONTACT_CASES_FE_COHESIVE_H
+#define GRADCONTACT_CASES_FE_COHESIVE_H
+
+#include "model/maugis_dugdale_rows.h"
+#include "report/report.h"
+#include "scene/scene.h"
+
+#include <analytic/material.h>
+#include <analytic/normal.h>
+
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <variant>
+
+namespace gradcontact::cases
+{
+  /// The Lennard-Jones map's path follows the contact edge (fem::SmoothCohesionParameters::follow_edge) on
+  /// fem::smooth_cohesion_settings' mesh, whose edge cells resolve the adhesive zone up to lambda = 5 (as closely
+  /// as a mesh with those cells over the whole contact; test_smooth_cohesion.cc); the zone narrows like
+  /// lambda^-2, so beyond lambda = 5 the edge's cells are divided by (lambda / 5)^2, rounded up to a power of 2
+  /// (one model per power), and the band the edge may move in before the next frame by its square root (the
+  /// graded mesh's cells grow linearly away from the edge, so that a band of a few edge cells keeps them within
+  /// about twice the finest size). Throws
+  /// std::invalid_argument beyond lennard_jones_largest_lambda().
+  double lennard_jones_edge_refinement(double lambda);
+  /// The largest lambda whose edge refinement smooth_cohesion_settings accepts (fem::max_edge_refinement).
+  double lennard_jones_largest_lambda();
+
+  /// The (k, lambda) points of a map that one job computes: those at positions j (k-major, lambdas ascending) with
+  /// j % count == index; the counts of the run.
+  struct MapShard
+  {
+    unsigned int index = 0, count = 1;
+    unsigned int computed = 0, cached = 0, skipped = 0; ///< solved here, read from the point cache, left to others
+  };
+
+  /// The Tabor-parameter map into `folder`. Every (k, lambda) point (both controls, the path's states) goes to a
+  /// point cache beside the report (<reports>/.map-points/, keyed by the scene's resolved parameters, the point and
+  /// the program's build) and is read from it when there: jobs of `gradcontact run --map-shard i/N` fill it in
+  /// parallel, and a run without it writes the report from their points. With `shard` of count > 1 the points of
+  /// other shards that are not cached are left out and the report is partial (the runner discards it).
+  SceneResult run_cohesive_map(const Scene &scene, const std::filesystem::path &folder, bool verbose, MapShard &shard);
+} // namespace gradcontact::cases
+
+#endif

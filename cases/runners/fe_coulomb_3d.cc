@@ -1,0 +1,857 @@
+#include "runners/fe_coulomb_3d.h"
+
+#include "report/thresholds.h"
+#include "model/fe_model.h"
+#include "model/scene_start.h"
+#include "model/mpi_session.h"
+
+#include <analytic/material.h>
+#include <analytic/normal.h>
+#include <analytic/tangential.h>
+#include <fem/errors.h>
+#include <fem/half_space_3d.h>
+#include <fem/modulus.h>
+
+#include <deal.II/base/mpi.h>
+#include <deal.II/base/utilities.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <fstream>
+#include <iostream>
+#include <map>
+#include <optional>
+#include <memory>
+#include <sstream>
+
+namespace gradcontact::cases
+{
+  std::string to_string(const CoulombPathKind kind)
+  {
+    switch (kind)
+      {
+        case CoulombPathKind::decoupled:
+          return "decoupled";
+        case CoulombPathKind::idealised:
+          return "idealised";
+        case CoulombPathKind::fe:
+          break;
+      }
+    return "fe";
+  }
+
+  namespace
+  {
+    /// into = max(into, v), a NaN `into` (nothing measured yet) taking v.
+    void worse(double &into, const double v) { into = std::isnan(into) ? v : std::max(into, v); }
+
+    /// Simpson's rule over equally spaced samples (an even number of intervals).
+    double simpson(const std::vector<double> &y, const double h)
+    {
+      double sum = y.front() + y.back();
+      for (std::size_t i = 1; i + 1 < y.size(); ++i)
+        sum += (i % 2 ? 4 : 2) * y[i];
+      return sum * h / 3;
+    }
+  } // namespace
+
+  CoulombSphereResult run_coulomb_sphere(const MPI_Comm communicator, const CoulombSphereCase &c,
+                                         const std::function<void(const CoulombSphereStep &, const fem::SurfaceCompliance3D &)> &on_step)
+  {
+    return run_coulomb_sphere(communicator, c, prepare_coulomb_sphere(communicator, c), on_step);
+  }
+
+  namespace
+  {
+    /// The chapter's sphere of a case (9.24 family, 9.80-9.86): the contact radius at the depth, full sliding at
+    /// delta >= mu alpha d (9.80 at c = 0), and in partial slip F_A with u_A, delta_A as 9.85 returns it from F_A
+    /// (the branches' domain; equal to delta_A up to round-off).
+    struct SphereTheory
+    {
+      gradcontact::Medium                 medium;
+      gradcontact::tangential::SphereSlip slip;
+      double                              a, force_n, full_slip, force_a, u_A;
+      bool                                partial;
+
+      double on_branch(const double u) const { return std::clamp(u, -u_A, u_A); }
+      /// Whether the tangential steps have closed forms to compare with.
+      bool compared(const CoulombSphereCase &c) const { return partial && std::isfinite(c.mu); }
+    };
+
+    /// The theory of case `c`, its a(d), F_N(a) and F_A also into `result`.
+    SphereTheory sphere_theory(const CoulombSphereCase &c, CoulombSphereResult &result)
+    {
+      using namespace gradcontact::tangential;
+      const Medium       medium = gradcontact::medium(GradedHalfSpace{c.E0, c.c0, c.k, c.nu});
+      const Paraboloid   sphere{c.R};
+      const SphereSlip   slip{c.R, c.mu};
+      const double       a  = contact_radius_from_depth(medium, as_power_law(sphere), c.depth);
+      result.a_theory       = a;
+      result.force_n_theory = gradcontact::force(medium, sphere, a);
+      const double full_slip = std::isfinite(c.mu) ? c.mu * medium.alpha() * c.depth : std::numeric_limits<double>::infinity();
+      const bool   partial   = c.delta > 0 && c.delta < full_slip;
+      double u_A = 0;
+      if (partial && std::isfinite(c.mu))
+        {
+          result.force_a_theory = tangential_force(medium, slip, a, a * std::sqrt(1 - c.delta / full_slip));
+          u_A                   = displacement_at_A(medium, slip, a, result.force_a_theory);
+        }
+      return SphereTheory{medium, slip, a, result.force_n_theory, full_slip, result.force_a_theory, u_A, partial};
+    }
+
+    using StepCallback = std::function<void(const CoulombSphereStep &, const fem::SurfaceCompliance3D &)>;
+
+    /// One loading path on the compliance `C` as it runs: the contact, the path so far, and the worst stick-zone
+    /// measures and the friction work of the cycle accumulated over its steps.
+    struct PathRun
+    {
+      PathRun(const CoulombSphereCase &c, const SphereTheory &theory, const fem::SurfaceCompliance3D &C,
+              const CoulombPathKind kind, const StepCallback &on_step)
+        : c(c), theory(theory), C(C), kind(kind), on_step(on_step),
+          contact(C, fem::Profile::paraboloid(c.R), [&c] {
+            fem::CoulombParameters friction;
+            friction.mu = c.mu_normal;
+            return friction;
+          }())
+      {}
+      const CoulombSphereCase        &c;
+      const SphereTheory             &theory;
+      const fem::SurfaceCompliance3D &C;
+      const CoulombPathKind           kind;
+      const StepCallback             &on_step;
+      fem::CoulombContact3D           contact;
+      CoulombPath                     path;
+      double worst_c = 0, worst_half = 0, worst_round = 0;
+      double cycle_work = 0; // the friction work of the unloading and reloading steps
+      bool   stick_measured = false;
+    };
+
+    /// A tangential step `s` against the chapter: F_x on loading (9.80), on the branches (9.84, / F_A), and the
+    /// stick zone along the rays the mesh has nodes on.
+    void compare_with_theory(PathRun &run, CoulombSphereStep &s, const double delta, const gradcontact::tangential::Branch branch)
+    {
+      using namespace gradcontact::tangential;
+      const SphereTheory &t = run.theory;
+      const double a = t.a;
+      if (branch == Branch::loading)
+        {
+          s.theory_stick   = a * std::sqrt(1 - delta / t.full_slip);
+          s.theory_force_x = tangential_force(t.medium, t.slip, a, s.theory_stick);
+          worse(run.path.loading_deviation, std::abs(s.state.force_x / s.theory_force_x - 1));
+        }
+      else
+        {
+          s.theory_force_x = hysteresis_force(t.medium, t.slip, a, t.force_a, branch, t.on_branch(delta));
+          // (the force at +-u_A is +-F_A up to round-off, which may put it a few ulps outside)
+          s.theory_stick = reversal_radius(t.medium, t.slip, a, t.force_a, branch,
+                                           std::clamp(s.theory_force_x, -t.force_a, t.force_a));
+          worse(run.path.branch_deviation, std::abs(s.state.force_x - s.theory_force_x) / t.force_a);
+        }
+      double lo = std::numeric_limits<double>::infinity(), hi = 0;
+      for (const fem::RayBracket &ray : s.shape.stick)
+        if (ray.nodes > 0)
+          {
+            run.worst_c        = std::max(run.worst_c, std::abs(ray.radius() - s.theory_stick) / a);
+            run.worst_half     = std::max(run.worst_half, ray.half_width() / a);
+            lo                 = std::min(lo, ray.radius());
+            hi                 = std::max(hi, ray.radius());
+            run.stick_measured = true;
+          }
+      if (hi >= lo)
+        run.worst_round = std::max(run.worst_round, (hi - lo) / a);
+    }
+
+    /// One step of `run`: solve, measure, compare; false when it did not converge (the path stops).
+    bool coulomb_step(PathRun &run, const std::string &phase, const double d, const double delta,
+                      const gradcontact::tangential::Branch branch)
+    {
+      CoulombPath &path = run.path;
+      CoulombSphereStep s;
+      s.phase = phase;
+      s.path  = run.kind;
+      s.state = run.contact.step_depth(d, delta);
+      s.shape = fem::zone_shape(run.C, s.state);
+      // The work of friction in the step: mu P |s| of every slipping node (P constant and the slip one-way within
+      // a step: exact for the step's slip), twice for the whole body.
+      if (phase == "unloading" || phase == "reloading")
+        for (std::size_t i = 0; i < s.state.status.size(); ++i)
+          if (s.state.status[i] == fem::NodeStatus::slip)
+            run.cycle_work += 2 * std::hypot(s.state.nodal_force[i][0], s.state.nodal_force[i][1]) *
+                              std::hypot(s.state.slip[i][0], s.state.slip[i][1]);
+      path.max_iterations = std::max(path.max_iterations, s.state.iterations);
+      if (phase != "normal") // the slip of the normal loading is radial
+        {
+          path.slip_angle   = std::max(path.slip_angle, s.shape.slip_angle);
+          path.slip_force_y = std::max(path.slip_force_y, s.shape.slip_force_y);
+        }
+      if (phase == "normal")
+        path.normal_slip = std::max(path.normal_slip, s.state.n_slip);
+      else if (run.theory.compared(run.c))
+        compare_with_theory(run, s, delta, branch);
+      if (!s.state.converged && path.converged)
+        {
+          path.converged = false;
+          path.message   = phase + " step: " + s.state.message;
+        }
+      if (run.on_step)
+        run.on_step(s, run.C);
+      s.state.status.clear(); // the per-node vectors are the callback's only
+      s.state.nodal_force.clear();
+      s.state.displacement.clear();
+      s.state.slip.clear();
+      path.steps.push_back(std::move(s));
+      return path.steps.back().state.converged;
+    }
+
+    /// The cycle after the tangential loading: unloading to -delta_A and reloading to delta_A, then the closure,
+    /// the loop area and the friction work.
+    void run_cycle(PathRun &run)
+    {
+      using gradcontact::tangential::Branch;
+      const CoulombSphereCase &c = run.c;
+      CoulombPath             &path = run.path;
+      const unsigned int       m = c.tangential_steps;
+      bool                     ok = true;
+      const double        loaded = path.steps.back().state.force_x;
+      std::vector<double> unloading{loaded}, reloading;
+      for (unsigned int j = 1; ok && j <= 2 * m; ++j)
+        {
+          ok = coulomb_step(run, "unloading", c.depth, c.delta * (1.0 - 1.0 * j / m), Branch::unloading);
+          unloading.push_back(path.steps.back().state.force_x);
+        }
+      if (ok)
+        reloading.push_back(unloading.back());
+      for (unsigned int j = 1; ok && j <= 2 * m; ++j)
+        {
+          ok = coulomb_step(run, "reloading", c.depth, c.delta * (-1.0 + 1.0 * j / m), Branch::reloading);
+          reloading.push_back(path.steps.back().state.force_x);
+        }
+      if (!ok)
+        return;
+      path.closure = std::abs(reloading.back() / loaded - 1);
+      // The loop area: the unloading branch runs from +delta_A down, the reloading one from -delta_A up;
+      // at the same delta the reloading force is the larger (the loop is run counter-clockwise in the
+      // (F_x, delta) plane).
+      std::reverse(unloading.begin(), unloading.end());
+      std::vector<double> gap(unloading.size());
+      for (std::size_t i = 0; i < gap.size(); ++i)
+        gap[i] = reloading[i] - unloading[i];
+      path.energy        = simpson(gap, c.delta / m);
+      path.friction_work = run.cycle_work;
+    }
+
+    /// One loading path on the compliance `C`: normal loading to the depth, then (delta > 0) tangential loading and
+    /// the cycle.
+    CoulombPath run_path(const CoulombSphereCase &c, const SphereTheory &theory, const fem::SurfaceCompliance3D &C,
+                         const CoulombPathKind kind, const StepCallback &on_step)
+    {
+      using gradcontact::tangential::Branch;
+      PathRun      run(c, theory, C, kind, on_step);
+      CoulombPath &path = run.path;
+      bool ok = true;
+      for (unsigned int i = 1; ok && i <= c.normal_steps; ++i)
+        ok = coulomb_step(run, "normal", c.depth * i / c.normal_steps, 0.0, Branch::loading);
+      if (ok)
+        path.force_z_deviation = path.steps.back().state.force_z / theory.force_n - 1;
+      if (ok && c.delta > 0)
+        {
+          run.contact.set_friction(c.mu);
+          const unsigned int m = c.tangential_steps;
+          for (unsigned int j = 1; ok && j <= m; ++j)
+            ok = coulomb_step(run, "loading", c.depth, c.delta * j / m, Branch::loading);
+          if (ok && c.cycle)
+            run_cycle(run);
+          if (run.stick_measured)
+            {
+              path.stick_deviation  = run.worst_c;
+              path.stick_resolution = run.worst_half;
+              path.out_of_round     = run.worst_round;
+            }
+        }
+      return std::move(path);
+    }
+
+    /// 9.86, and Simpson's rule on the closed-form loop at the points of the FE's steps, into `result`.
+    void energy_theory(const CoulombSphereCase &c, const SphereTheory &t, CoulombSphereResult &result)
+    {
+      using namespace gradcontact::tangential;
+      result.energy_theory  = dissipated_energy(t.medium, t.slip, t.a, result.force_a_theory);
+      const unsigned int  m = c.tangential_steps;
+      std::vector<double> closed(2 * m + 1);
+      for (std::size_t i = 0; i < closed.size(); ++i)
+        {
+          const double u = t.on_branch(-c.delta + i * c.delta / m);
+          closed[i]      = hysteresis_force(t.medium, t.slip, t.a, result.force_a_theory, Branch::reloading, u) -
+                      hysteresis_force(t.medium, t.slip, t.a, result.force_a_theory, Branch::unloading, u);
+        }
+      result.energy_rule = simpson(closed, c.delta / m) / result.energy_theory - 1;
+    }
+
+    /// Path x against path y: F_x on loading relative, on the branches relative to y's F_x at delta_A, and the
+    /// stick radius along the rays / a (when `stick` is set).
+    void against(const CoulombSphereCase &c, const double a, const CoulombPath &px, const CoulombPath &py,
+                 double &loading, double &branch, double *stick)
+    {
+      const std::vector<CoulombSphereStep> &x = px.steps, &y = py.steps;
+      const std::size_t loaded = c.normal_steps + c.tangential_steps - 1;
+      const double scale = x.size() > loaded && y.size() > loaded ? std::abs(y[loaded].state.force_x) : 0.;
+      for (std::size_t i = c.normal_steps; i < std::min(x.size(), y.size()); ++i)
+        {
+          if (x[i].phase == "loading")
+            worse(loading, std::abs(x[i].state.force_x / y[i].state.force_x - 1));
+          else if (scale > 0)
+            worse(branch, std::abs(x[i].state.force_x - y[i].state.force_x) / scale);
+          if (stick)
+            for (unsigned int ray = 0; ray < 3; ++ray)
+              if (x[i].shape.stick[ray].nodes > 0)
+                worse(*stick, std::abs(x[i].shape.stick[ray].radius() - y[i].shape.stick[ray].radius()) / a);
+        }
+    }
+  } // namespace
+
+  CoulombSphereResult run_coulomb_sphere(const MPI_Comm communicator, const CoulombSphereCase &c,
+                                         const CoulombSphereSurface &prepared,
+                                         const std::function<void(const CoulombSphereStep &, const fem::SurfaceCompliance3D &)> &on_step)
+  {
+    c.validate();
+    if (prepared.k != c.k || prepared.nu != c.nu)
+      throw std::invalid_argument("run_coulomb_sphere: the prepared surface is of k = " + std::to_string(prepared.k) +
+                                  ", nu = " + std::to_string(prepared.nu) + ", the case of k = " + std::to_string(c.k) +
+                                  ", nu = " + std::to_string(c.nu));
+    const auto          start = std::chrono::steady_clock::now();
+    CoulombSphereResult result;
+    const fem::SurfaceCompliance3D &surface = prepared.compliance;
+    result.compliance_seconds = prepared.seconds;
+    result.dofs          = prepared.dofs;
+    result.surface_nodes = surface.nodes.size();
+    result.unknowns      = surface.C.m();
+    result.processes     = dealii::Utilities::MPI::n_mpi_processes(communicator);
+
+    const SphereTheory theory = sphere_theory(c, result);
+    if (c.cycle && theory.compared(c))
+      energy_theory(c, theory, result);
+    result.fe = run_path(c, theory, surface, CoulombPathKind::fe, on_step);
+    if (c.decoupled_reference)
+      {
+        result.decoupled = run_path(c, theory, fem::without_coupling(surface), CoulombPathKind::decoupled, on_step);
+        const std::vector<CoulombSphereStep> &x = result.fe.steps, &y = result.decoupled.steps;
+        if (x.size() >= c.normal_steps && y.size() >= c.normal_steps)
+          result.coupling_force_z =
+            x[c.normal_steps - 1].state.force_z / y[c.normal_steps - 1].state.force_z - 1;
+        against(c, theory.a, result.fe, result.decoupled, result.coupling_loading, result.coupling_branch,
+                &result.coupling_stick);
+        result.coupling_energy = result.fe.energy / result.decoupled.energy - 1;
+      }
+    if (c.idealised_reference)
+      {
+        result.idealised = run_path(c, theory, fem::without_coupling(fem::along_load(surface)), CoulombPathKind::idealised,
+                                    on_step);
+        against(c, theory.a, result.decoupled, result.idealised, result.direction_loading, result.direction_branch, nullptr);
+        result.direction_energy = result.decoupled.energy / result.idealised.energy - 1;
+      }
+    dealii::Utilities::System::MemoryStats memory;
+    dealii::Utilities::System::get_memory_stats(memory);
+    result.memory_mb = dealii::Utilities::MPI::max(static_cast<double>(memory.VmHWM) / 1024, communicator);
+    result.seconds   = prepared.seconds + dealii::Utilities::MPI::max(
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), communicator);
+    return result;
+  }
+
+  namespace
+  {
+    /// One panel of the Coulomb 3D map.
+    struct CoulombPanel
+    {
+      double k = 0, nu = 0;
+      bool   holl = false; ///< nu = 1/(2 + k): decoupled
+      double mu = 0;
+      bool   show_mu = false; ///< the map has several mu: names and lists show it
+      CoulombSphereResult result;
+      std::string error; ///< why the panel has no result
+    };
+
+    /// A quantity of the map: its name, the coupling's effect, the FE floor (the decoupled path against the
+    /// chapter) and the FE model against the chapter, of a panel; for the tangential quantities also the slip
+    /// direction's effect (decoupled against idealised) and the idealised path against the chapter (null otherwise).
+    struct MapQuantity
+    {
+      std::string name, chapter;
+      double (*coupling)(const CoulombSphereResult &);
+      double (*floor)(const CoulombSphereResult &);
+      double (*direct)(const CoulombSphereResult &);
+      double (*direction)(const CoulombSphereResult &) = nullptr;
+      double (*idealised)(const CoulombSphereResult &) = nullptr;
+    };
+
+    double energy_deviation(const CoulombPath &p, const CoulombSphereResult &r) { return p.energy / r.energy_theory - 1; }
+
+    const std::vector<MapQuantity> &map_quantities()
+    {
+      static const std::vector<MapQuantity> q{
+        {"normal force", "F_N(a) (9.24 family) at the depth d",
+         [](const CoulombSphereResult &r) { return r.coupling_force_z; },
+         [](const CoulombSphereResult &r) { return r.decoupled.force_z_deviation; },
+         [](const CoulombSphereResult &r) { return r.fe.force_z_deviation; }},
+        {"tangential force", "F_x(delta) on loading (9.80)", [](const CoulombSphereResult &r) { return r.coupling_loading; },
+         [](const CoulombSphereResult &r) { return r.decoupled.loading_deviation; },
+         [](const CoulombSphereResult &r) { return r.fe.loading_deviation; },
+         [](const CoulombSphereResult &r) { return r.direction_loading; },
+         [](const CoulombSphereResult &r) { return r.idealised.loading_deviation; }},
+        {"hysteresis loop", "F_x(delta) on unloading and reloading (9.84), / F_A",
+         [](const CoulombSphereResult &r) { return r.coupling_branch; },
+         [](const CoulombSphereResult &r) { return r.decoupled.branch_deviation; },
+         [](const CoulombSphereResult &r) { return r.fe.branch_deviation; },
+         [](const CoulombSphereResult &r) { return r.direction_branch; },
+         [](const CoulombSphereResult &r) { return r.idealised.branch_deviation; }},
+        {"dissipated energy", "the loop area (9.86)", [](const CoulombSphereResult &r) { return r.coupling_energy; },
+         [](const CoulombSphereResult &r) { return energy_deviation(r.decoupled, r); },
+         [](const CoulombSphereResult &r) { return energy_deviation(r.fe, r); },
+         [](const CoulombSphereResult &r) { return r.direction_energy; },
+         [](const CoulombSphereResult &r) { return energy_deviation(r.idealised, r); }},
+        {"stick radius", "c (9.80) and b (9.81) along +x, -x, +y, / a",
+         [](const CoulombSphereResult &r) { return r.coupling_stick; },
+         [](const CoulombSphereResult &r) { return r.decoupled.stick_deviation; },
+         [](const CoulombSphereResult &r) { return r.fe.stick_deviation; }}};
+      return q;
+    }
+
+    /// One cell of a threshold table: the panels (Holl's ratio with `with_holl`) whose |effect| is within t, and
+    /// those outside.
+    std::string threshold_cell(const std::vector<CoulombPanel> &panels, const double t,
+                               const std::function<double(const CoulombSphereResult &)> &effect, const bool with_holl,
+                               const bool multiple_mu, const std::string &tuple)
+    {
+      std::string within, outside;
+      for (const CoulombPanel &p : panels)
+        if (p.error.empty() && (with_holl || !p.holl))
+          {
+            std::string &list = std::abs(effect(p.result)) <= t ? within : outside;
+            list += (list.empty() ? "(" : ", (") + format(p.k) + ", " + format(p.nu) +
+                    (multiple_mu ? ", " + format(p.mu) : "") + ")";
+          }
+      return outside.empty() ? "every " + tuple + " of the map"
+             : within.empty() ? "none of the map (" + outside + " outside)"
+                              : within + "; not " + outside;
+    }
+
+    /// The plot `stem` of |effect| over nu, one curve per (k, mu) (Holl's ratio with `with_holl`), the thresholds
+    /// drawn across the nu of the curves.
+    void write_nu_plot(const std::filesystem::path &folder, const std::string &stem, const std::string &title,
+                       const std::string &ylabel, const std::vector<CoulombPanel> &panels,
+                       const std::function<double(const CoulombSphereResult &)> &effect, const bool with_holl,
+                       const bool multiple_mu, const std::vector<double> &thresholds)
+    {
+      std::map<std::pair<double, double>, std::vector<std::pair<double, double>>> points; // (k, mu): (nu, |effect|)
+      double lo = std::numeric_limits<double>::infinity(), hi = -lo;
+      for (const CoulombPanel &p : panels)
+        if (p.error.empty() && (with_holl || !p.holl))
+          {
+            points[{p.k, p.mu}].emplace_back(p.nu, std::max(std::abs(effect(p.result)), 1e-16));
+            lo = std::min(lo, p.nu);
+            hi = std::max(hi, p.nu);
+          }
+      if (points.empty())
+        return;
+      std::vector<Series> series;
+      for (auto &[key, xy] : points)
+        {
+          std::sort(xy.begin(), xy.end());
+          Series curve;
+          curve.title       = "k = " + format(key.first) + (multiple_mu ? ", mu = " + format(key.second) : "");
+          curve.linespoints = true;
+          for (const auto &[x, y] : xy)
+            {
+              curve.x.push_back(x);
+              curve.y.push_back(y);
+            }
+          series.push_back(curve);
+        }
+      for (const double t : thresholds)
+        series.push_back(Series{percent(t), {lo, hi}, {t, t}, false, false});
+      std::string file = stem;
+      std::replace(file.begin(), file.end(), ' ', '_');
+      write_plot(folder, file, title, "nu", ylabel, series, false, true);
+    }
+
+    std::string panel_name(const CoulombPanel &p)
+    {
+      return "k = " + format(p.k) + ", nu = " + (p.holl ? "1/(2 + k) = " : "") + format(p.nu) +
+             (p.show_mu ? ", mu = " + format(p.mu) : "");
+    }
+
+    /// What a Coulomb 3D map solves: the bodies (k, nu) and the friction coefficients.
+    struct CoulombMapPlan
+    {
+      std::vector<std::pair<double, double>> bodies; ///< (k, nu)
+      std::vector<double>                    mus;
+      bool                                   multiple_mu = false;
+      std::string                            tuple;
+    };
+
+    /// The panels: every k and nu, and Holl's ratio where it is a Poisson ratio (k >= 0; 1/2 at k = 0, with the
+    /// mixed formulation), each at every mu of Map/ratios (Tangential/friction coefficient when empty); the mu of one
+    /// body share its surface compliance.
+    CoulombMapPlan plan_coulomb_map(const Scene &s)
+    {
+      CoulombMapPlan plan;
+      const std::vector<double> ks  = s.map.exponents.empty() ? std::vector<double>{s.material.k} : s.map.exponents;
+      const std::vector<double> nus = s.map.poisson_ratios.empty() ? std::vector<double>{s.material.nu} : s.map.poisson_ratios;
+      plan.mus = s.map.ratios.empty() ? std::vector<double>{s.tangential.friction_coefficient} : s.map.ratios;
+      std::sort(plan.mus.begin(), plan.mus.end());
+      for (const double k : ks)
+        {
+          for (const double nu : nus)
+            plan.bodies.emplace_back(k, nu);
+          if (s.map.holl_ratio && k >= 0 && std::none_of(nus.begin(), nus.end(), [k](const double nu) {
+                return std::abs(nu - 1. / (2. + k)) <= 1e-12;
+              }))
+            plan.bodies.emplace_back(k, 1. / (2. + k));
+        }
+      plan.multiple_mu = plan.mus.size() > 1;
+      plan.tuple = plan.multiple_mu ? "(k, nu, mu)" : "(k, nu)";
+      return plan;
+    }
+
+
+    /// The panels of one body (k, nu), one per mu, on one surface compliance; a body that cannot be built fails
+    /// every mu.
+    void solve_body(const Scene &s, const MPI_Comm world, const CoulombMapPlan &plan, const double k, const double nu,
+                    std::vector<CoulombPanel> &panels, const bool verbose, const bool root)
+    {
+      const double a = s.load.a, amplitude = s.tangential.amplitude;
+      CoulombSphereCase c = coulomb_case(s, k, nu);
+      std::optional<CoulombSphereSurface> surface;
+      std::string                         body_error;
+      for (const double mu : plan.mus)
+        {
+          CoulombPanel panel{k, nu, std::abs(nu - 1. / (2. + k)) <= 1e-12, mu, plan.multiple_mu, {}, body_error};
+          c.mu = c.mu_normal = mu;
+          if (body_error.empty())
+            try
+              {
+                // The chapter's depth of contact radius a and its delta_A of F_A = amplitude mu F_N(a) (9.80).
+                const Medium medium = gradcontact::medium(GradedHalfSpace{c.E0, c.c0, c.k, c.nu});
+                c.depth             = gradcontact::depth(medium, Paraboloid{c.R}, a);
+                c.delta             = tangential::tangential_displacement_at_force(
+                  medium, tangential::SphereSlip{c.R, mu}, a,
+                  amplitude * mu * gradcontact::force(medium, Paraboloid{c.R}, a));
+                if (!surface)
+                  surface = prepare_coulomb_sphere(world, c);
+                panel.result = run_coulomb_sphere(world, c, *surface);
+                const CoulombSphereResult &r = panel.result;
+                if (!r.fe.converged)
+                  panel.error = r.fe.message;
+                else if (!r.decoupled.converged)
+                  panel.error = "decoupled path: " + r.decoupled.message;
+                else if (!r.idealised.converged)
+                  panel.error = "idealised path: " + r.idealised.message;
+              }
+            catch (const std::exception &e)
+              {
+                panel.error = concise(e);
+                if (!surface)
+                  body_error = panel.error; // the body could not be built: no mu can run on it
+              }
+          if (verbose && root)
+            std::cerr << "  " << panel_name(panel) << ": " << (panel.error.empty() ? "" : panel.error + "; ")
+                      << "F_x coupling " << panel.result.coupling_loading << ", floor "
+                      << panel.result.decoupled.loading_deviation << ", " << panel.result.dofs << " DoFs, "
+                      << panel.result.seconds << " s\n";
+          panels.push_back(std::move(panel));
+        }
+    }
+
+    /// F_x at the last step of `phase` (0 when none).
+    double last_force(const CoulombPath &path, const std::string &phase)
+    {
+      for (auto it = path.steps.rbegin(); it != path.steps.rend(); ++it)
+        if (it->phase == phase)
+          return it->state.force_x;
+      return 0.;
+    }
+
+    /// The sharp checks of a panel at Holl's ratio (decoupled): the FE model and its idealisation against the
+    /// chapter (9.24 family, 9.80, 9.84, 9.86), and the coupling's effect on F_x at delta_A.
+    void holl_rows(const CoulombPanel &p, const double tolerance, SceneResult &result)
+    {
+      const CoulombSphereResult &r = p.result;
+      const unsigned int dofs = static_cast<unsigned int>(r.dofs);
+      const std::string what = panel_name(p) + " (decoupled)";
+      result.rows.push_back(compare("normal force", what + ", F_z at d", "FE", "closed form (9.24 family)", r.force_n_theory,
+                                    (1 + r.fe.force_z_deviation) * r.force_n_theory, r.force_n_theory, tolerance, dofs,
+                                    r.seconds));
+      result.rows.push_back(compare("tangential force", what + ", loading, largest relative difference (9.80)", "FE",
+                                    "closed form (9.80)", 0., r.fe.loading_deviation, 1., tolerance, dofs, r.seconds));
+      result.rows.push_back(compare("hysteresis loop", what + ", unloading and reloading, largest difference / F_A (9.84)",
+                                    "FE", "closed form (9.84)", 0., r.fe.branch_deviation, 1., tolerance, dofs, r.seconds));
+      result.rows.push_back(compare("dissipated energy", what + ", loop area (Simpson's rule over the steps)", "FE",
+                                    "closed form (9.86)", r.energy_theory, r.fe.energy, r.energy_theory, tolerance, dofs,
+                                    r.seconds));
+      result.rows.push_back(compare("dissipated energy", what + ", friction work over the cycle (sum of mu P |slip|)", "FE",
+                                    "closed form (9.86)", r.energy_theory, r.fe.friction_work, r.energy_theory, tolerance,
+                                    dofs, r.seconds));
+      // The chapter's idealisation on the same body (decoupled, forces along x): the FE's own error.
+      const std::string idealised = panel_name(p) + " (decoupled, tangential forces along x)";
+      result.rows.push_back(compare("tangential force", idealised + ", loading, largest relative difference (9.80)",
+                                    "FE idealised", "closed form (9.80)", 0., r.idealised.loading_deviation, 1., tolerance,
+                                    dofs, r.seconds));
+      result.rows.push_back(compare("hysteresis loop", idealised + ", unloading and reloading, largest difference / F_A (9.84)",
+                                    "FE idealised", "closed form (9.84)", 0., r.idealised.branch_deviation, 1., tolerance,
+                                    dofs, r.seconds));
+      result.rows.push_back(compare("dissipated energy", idealised + ", loop area (Simpson's rule over the steps)",
+                                    "FE idealised", "closed form (9.86)", r.energy_theory, r.idealised.energy,
+                                    r.energy_theory, tolerance, dofs, r.seconds));
+      result.rows.push_back(compare("tangential force", what + ", the coupling's effect: F_x at delta_A", "FE",
+                                    "FE decoupled", last_force(r.decoupled, "loading"), last_force(r.fe, "loading"),
+                                    last_force(r.decoupled, "loading"), tolerance, dofs, r.seconds));
+    }
+
+    /// The resolution of the coupling measures: their value at Holl's ratio, where the coupling vanishes.
+    std::map<std::string, double> coupling_resolution(const std::vector<CoulombPanel> &panels)
+    {
+      std::map<std::string, double> resolution;
+      for (const CoulombPanel &p : panels)
+        if (p.holl && p.error.empty())
+          for (const MapQuantity &q : map_quantities())
+            resolution[q.name] = std::max(resolution[q.name], std::abs(q.coupling(p.result)));
+      return resolution;
+    }
+
+    /// The header of map.csv.
+    std::string coulomb_csv_head()
+    {
+      std::ostringstream csv;
+      csv << "k,nu,holl,mu,amplitude,far_field_over_a,dofs,surface_nodes,seconds,compliance_seconds,memory_mb,"
+             "largest_iterations,normal_slip_nodes";
+      for (const MapQuantity &q : map_quantities())
+        {
+          std::string n = q.name;
+          std::replace(n.begin(), n.end(), ' ', '_');
+          csv << ',' << n << "_coupling," << n << "_floor," << n << "_fe";
+        }
+      for (const char *suffix : {"_direction", "_idealised_floor"})
+        for (const MapQuantity &q : map_quantities())
+          if (q.direction)
+            {
+              std::string n = q.name;
+              std::replace(n.begin(), n.end(), ' ', '_');
+              csv << ',' << n << suffix;
+            }
+      csv << ",stick_bracket_half_width,stick_spread,stick_spread_decoupled,slip_force_y,slip_force_y_decoupled,"
+             "closure,error\n";
+      return csv.str();
+    }
+
+    /// One panel's row of map.csv.
+    void coulomb_csv_row(const Scene &s, const CoulombPanel &p, std::ostream &csv)
+    {
+      const CoulombSphereResult &r = p.result;
+      csv << p.k << ',' << p.nu << ',' << p.holl << ',' << p.mu << ',' << s.tangential.amplitude << ','
+          << coulomb_far_field(s, p.k) << ',' << r.dofs << ',' << r.surface_nodes << ',' << r.seconds << ','
+          << r.compliance_seconds << ',' << r.memory_mb << ',' << r.fe.max_iterations << ',' << r.fe.normal_slip;
+      for (const MapQuantity &q : map_quantities())
+        csv << ',' << q.coupling(r) << ',' << q.floor(r) << ',' << q.direct(r);
+      for (const MapQuantity &q : map_quantities())
+        if (q.direction)
+          csv << ',' << q.direction(r);
+      for (const MapQuantity &q : map_quantities())
+        if (q.idealised)
+          csv << ',' << q.idealised(r);
+      csv << ',' << r.fe.stick_resolution << ',' << r.fe.out_of_round << ',' << r.decoupled.out_of_round << ','
+          << r.fe.slip_force_y << ',' << r.decoupled.slip_force_y << ',' << r.fe.closure << ',' << csv_quote(p.error)
+          << '\n';
+    }
+
+    /// The title of map.md and what the map compares.
+    std::string coulomb_intro(const Scene &s, const CoulombMapPlan &plan)
+    {
+      std::string mus;
+      for (const double mu : plan.mus)
+        mus += (mus.empty() ? "" : ", ") + format(mu);
+      std::ostringstream md;
+      md << "# " << s.info.name << ": where the chapter's tangential theory holds (3D Coulomb contact)\n\n"
+         << (s.info.description.empty() ? "" : s.info.description + "\n\n")
+         << "The 3D FE model of a rigid sphere R = " << format(s.load.R) << " m on E0 (z/c0)^k (E0 = "
+         << format(s.material.E0) << " Pa, c0 = " << format(s.material.c0) << " m) with Coulomb friction mu = " << mus
+         << " (fem/coulomb_contact_3d.h: the contact, stick zone and slip directions found node by node), loaded to "
+            "the chapter's depth of contact radius a = "
+         << format(s.load.a) << " m, sheared to the chapter's delta_A of F_A = " << format(s.tangential.amplitude)
+         << " mu F_N and cycled once to -delta_A and back, " << s.tangential.load_steps
+         << " steps per quarter cycle. The chapter's theory (9.80-9.86) assumes that the normal and tangential "
+            "problems decouple. The map is the coupling's effect: the FE model against the same FE model with the "
+            "coupling entries of its surface compliance removed (fem::without_coupling; the same mesh and truncation, "
+            "so the FE's own errors cancel). The FE floor is that decoupled model against the chapter (mesh, "
+            "truncation at L, and Cattaneo-Mindlin's slip parallel to x). It splits in two: the same decoupled model "
+            "with every tangential force along x (fem::along_load, Cattaneo-Mindlin's assumption, which their traction "
+            "satisfies exactly) against the chapter is the FE's own error, and the decoupled model against it is the "
+            "effect of the slip direction that Cattaneo-Mindlin fixes along the load (in the slip annulus the true slip "
+            "has a y part), a departure of 9.80-9.86 from Coulomb's law even where the problems decouple. At Holl's "
+            "ratio nu = 1/(2 + k) the coupling vanishes: the coupling measured there is the resolution of the map.\n\n";
+      return md.str();
+    }
+
+    /// The table of the coupling's effect, one row per panel, and the note on the stick zone's spread.
+    std::string coupling_table(const std::vector<CoulombPanel> &panels)
+    {
+      std::ostringstream md;
+      md << "## The coupling's effect |FE / FE decoupled - 1|\n\n| k | nu | mu |";
+      for (const MapQuantity &q : map_quantities())
+        md << " " << q.name << " |";
+      md << " FE floor: F_x (9.80), loop area (9.86) | slip direction's effect: F_x, loop area | stick zone "
+            "spread / a | slip direction sum|Q_y|/sum|Q| | DoFs | s | memory MiB |\n|---|---|---|";
+      for (std::size_t i = 0; i < map_quantities().size() + 7; ++i)
+        md << "---|";
+      md << '\n';
+      for (const CoulombPanel &p : panels)
+        {
+          const CoulombSphereResult &r = p.result;
+          md << "| " << format(p.k) << " | " << (p.holl ? "1/(2 + k) = " : "") << format(p.nu) << " | " << format(p.mu)
+             << " |";
+          if (!p.error.empty())
+            {
+              md << " failed: " << p.error << " |";
+              for (std::size_t i = 1; i < map_quantities().size() + 4; ++i)
+                md << " - |";
+            }
+          else
+            {
+              for (const MapQuantity &q : map_quantities())
+                md << " " << format(std::abs(q.coupling(r))) << " |";
+              md << " " << format(std::abs(r.decoupled.loading_deviation)) << ", "
+                 << format(std::abs(energy_deviation(r.decoupled, r))) << " | " << format(r.direction_loading) << ", "
+                 << format(std::abs(r.direction_energy)) << " | " << format(r.fe.out_of_round) << " ("
+                 << format(r.decoupled.out_of_round) << " decoupled) | " << format(r.fe.slip_force_y) << " ("
+                 << format(r.decoupled.slip_force_y) << " decoupled) |";
+            }
+          md << " " << r.dofs << " | " << format(r.seconds) << " | " << format(r.memory_mb) << " |\n";
+        }
+      md << "\nA stick-zone spread is the largest difference of the stick radius between the rays +x, -x and +y "
+            "(a disc: 0, up to the node spacing there, "
+         << "the bracket half-width of the stick radius reaching "
+         << format(std::max_element(panels.begin(), panels.end(),
+                                    [](const CoulombPanel &x, const CoulombPanel &y) {
+                                      return x.result.fe.stick_resolution < y.result.fe.stick_resolution;
+                                    })
+                     ->result.fe.stick_resolution)
+         << " a). The slip direction's departure from x is the force-weighted sum |Q_y| / sum |Q| over the slipping "
+            "nodes, largest over the steps.\n\n";
+      return md.str();
+    }
+
+    /// Where the coupling's effect on each quantity is within each threshold, read only above three times the
+    /// map's resolution.
+    std::string coupling_thresholds(const Scene &s, const CoulombMapPlan &plan, const std::vector<CoulombPanel> &panels,
+                                    const std::map<std::string, double> &resolution)
+    {
+      std::ostringstream md;
+      md << "## Where the chapter's tangential theory holds\n\nThe " << plan.tuple << " of the map where the coupling's "
+            "effect on a quantity is within each threshold (the chapter's decoupled theory holds there up to the FE "
+            "floor).\n\n"
+         << threshold_table_head({"quantity", "chapter"}, s.map.thresholds, "at");
+      for (const MapQuantity &q : map_quantities())
+        {
+          md << "| " << q.name << " | " << q.chapter << " |";
+          for (const double t : s.map.thresholds)
+            {
+              if (resolution.count(q.name) == 0)
+                md << " FE resolution not measured (no Holl's-ratio panel) |";
+              else if (!(resolution.at(q.name) <= t / 3))
+                md << " below the FE resolution (" << format(resolution.at(q.name)) << ") |";
+              else
+                md << " " << threshold_cell(panels, t, q.coupling, false, plan.multiple_mu, plan.tuple) << " |";
+            }
+          md << '\n';
+        }
+      md << "\nThe resolution of each quantity is its coupling at Holl's ratio (";
+      bool first = true;
+      for (const auto &[name, value] : resolution)
+        {
+          md << (first ? "" : ", ") << name << " " << format(value);
+          first = false;
+        }
+      md << "); a threshold below three times it is not read.\n";
+      return md.str();
+    }
+
+    /// The other half of the chapter's idealisation: Cattaneo-Mindlin's slip along the load, on the decoupled body.
+    std::string direction_thresholds(const Scene &s, const CoulombMapPlan &plan, const std::vector<CoulombPanel> &panels)
+    {
+      std::ostringstream md;
+      md << "\n## Cattaneo-Mindlin's slip direction |FE decoupled / FE idealised - 1|\n\nEven where the problems "
+            "decouple, 9.80-9.86 assume the tangential traction along the load; Coulomb's law turns it with the slip "
+            "in the annulus. The decoupled model against the same model with every tangential force along x "
+            "(fem::along_load) is that assumption's effect (a difference on one mesh, in which its FE error largely "
+            "cancels; its mesh convergence: fem/doc/distributed-and-3d.md, \"3D model\"). The "
+         << plan.tuple << " of the map (Holl's ratio included) where it is within each threshold:\n\n"
+         << threshold_table_head({"quantity", "chapter"}, s.map.thresholds, "at");
+      for (const MapQuantity &q : map_quantities())
+        if (q.direction)
+          {
+            md << "| " << q.name << " | " << q.chapter << " |";
+            for (const double t : s.map.thresholds)
+              md << " " << threshold_cell(panels, t, q.direction, true, plan.multiple_mu, plan.tuple) << " |";
+            md << '\n';
+          }
+      return md.str();
+    }
+
+    /// The plots over nu: the coupling's effect on every quantity, and the slip direction's (Holl's ratio included).
+    void plot_coulomb_map(const Scene &s, const std::filesystem::path &folder, const CoulombMapPlan &plan,
+                          const std::vector<CoulombPanel> &panels)
+    {
+      for (const MapQuantity &q : map_quantities())
+        {
+          write_nu_plot(folder, "map-" + q.name, s.info.name + ": the coupling's effect on the " + q.name,
+                        "|FE / FE decoupled - 1|", panels, q.coupling, false, plan.multiple_mu, s.map.thresholds);
+          if (q.direction)
+            write_nu_plot(folder, "map-slip_direction-" + q.name,
+                          s.info.name + ": Cattaneo-Mindlin's slip direction, effect on the " + q.name,
+                          "|FE decoupled / FE idealised - 1|", panels, q.direction, true, plan.multiple_mu,
+                          s.map.thresholds);
+        }
+    }
+
+    /// Writes map.csv, map.md and the plots (the root process only).
+    void write_coulomb_map(const Scene &s, const std::filesystem::path &folder, const CoulombMapPlan &plan,
+                           const std::vector<CoulombPanel> &panels, const std::map<std::string, double> &resolution)
+    {
+      std::ofstream csv(folder / "map.csv");
+      csv.precision(10);
+      csv << coulomb_csv_head();
+      for (const CoulombPanel &p : panels)
+        coulomb_csv_row(s, p, csv);
+      std::ofstream(folder / "map.md") << coulomb_intro(s, plan) << coupling_table(panels)
+                                       << coupling_thresholds(s, plan, panels, resolution)
+                                       << direction_thresholds(s, plan, panels);
+      if (s.outputs.plots)
+        plot_coulomb_map(s, folder, plan, panels);
+    }
+  } // namespace
+
+  SceneResult run_coulomb_map(const Scene &s, const std::filesystem::path &folder, const bool verbose)
+  {
+    require_kind(s, SceneKind::map, "run_coulomb_map");
+    if (s.map.parameter != MapParameters::Parameter::coulomb_3d)
+      throw std::invalid_argument("run_coulomb_map: scene " + s.file + " is not a Coulomb 3D map");
+    const MPI_Comm    world  = mpi_world(); // MPI's start (when this is the first distributed scene) not timed
+    const bool        root   = dealii::Utilities::MPI::this_mpi_process(world) == 0;
+    const auto        start  = std::chrono::steady_clock::now();
+    SceneResult       result = started(s, folder);
+    const CoulombMapPlan plan = plan_coulomb_map(s);
+    std::vector<CoulombPanel> panels;
+    for (const auto &[k, nu] : plan.bodies)
+      solve_body(s, world, plan, k, nu, panels, verbose, root);
+    // errors.csv: the sharp checks of the decoupled pairing, and every path that failed.
+    for (const CoulombPanel &p : panels)
+      if (!p.error.empty())
+        result.rows.push_back(failed("Coulomb 3D path", "FE", "closed form", panel_name(p) + ": " + p.error));
+      else if (p.holl)
+        holl_rows(p, s.tolerances.force, result);
+    if (root)
+      write_coulomb_map(s, folder, plan, panels, coupling_resolution(panels));
+    result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    return result;
+  }
+
+} // namespace gradcontact::cases

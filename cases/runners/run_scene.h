@@ -1,0 +1,21 @@
+// gradcontact/cases: the runners' one entry (runner part): a scene run by the runner of its kind (scene_kind in
+// scene.h), and its report written atomically.
+#ifndef GRADCONTACT_CASES_RUN_SCENE_H
+#define GRADCONTACT_CASES_RUN_SCENE_H
+
+#include "report/report.h"
+#include "scene/scene.h"
+
+#include <filesystem>
+
+namespace gradcontact::cases
+{
+  /// Runs `scene` by its kind into `folder` (which the caller makes atomically).
+  SceneResult run_scene(const Scene &scene, const std::filesystem::path &folder, bool verbose);
+
+  /// Runs `scene` by its kind and writes its report to <reports>/<scene name>/ atomically (as `gradcontact run`
+  /// does for one scene, without the summary); used by `gradcontact figures` for the maps it draws.
+  SceneResult run_report(const Scene &scene, const std::filesystem::path &reports, bool verbose);
+} // namespace gradcontact::cases
+
+#endif

@@ -1,0 +1,1366 @@
+#include "scene/scene.h"
+
+#include "scene/expression.h"
+
+#include "report/report.h"
+
+#include <deal.II/base/utilities.h>
+
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <limits>
+#include <sstream>
+#include <stdexcept>
+
+namespace gradcontact::cases
+{
+  using dealii::ParameterHandler;
+  namespace Patterns = dealii::Patterns;
+
+  namespace
+  {
+    std::vector<double> to_doubles(const std::string &list)
+    {
+      std::vector<double> out;
+      for (const std::string &item : dealii::Utilities::split_string_list(list))
+        if (!item.empty())
+          out.push_back(dealii::Utilities::string_to_double(item));
+      return out;
+    }
+
+    // A list of non-negative numbers.
+    const Patterns::List double_list(Patterns::Double(0.), 0, 1000);
+  } // namespace
+
+  void SceneInfo::declare(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Scene");
+    prm.declare_entry("name", "", Patterns::Anything(), "Report folder name; empty: the file name without .prm.");
+    prm.declare_entry("description", "", Patterns::Anything(), "One line saying what the scene checks.");
+    prm.leave_subsection();
+  }
+  void SceneInfo::parse(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Scene");
+    name = prm.get("name");
+    description = prm.get("description");
+    prm.leave_subsection();
+  }
+
+  void MaterialParameters::declare(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Material");
+    prm.declare_entry("E0", "1e9", Patterns::Double(0.), "E0 of E(z) = E0 (z/c0)^k (9.1) [Pa], > 0.");
+    prm.declare_entry("c0", "1e-3", Patterns::Double(0.), "Characteristic depth c0 [m], > 0.");
+    prm.declare_entry("k", "0.5", Patterns::Double(-1., 1.), "Exponent k of the grading, -1 < k < 1.");
+    prm.declare_entry("nu", "0.3", Patterns::Double(0., 0.5), "Poisson ratio, 0 <= nu <= 1/2; the FE model needs Discretization/formulation = mixed (or automatic) at nu = 1/2.");
+    prm.declare_entry("modulus", "power law",
+                      Patterns::Selection("power law|layered|expression|shifted power law|coating|table|error function"),
+                      "How the FE model represents E(z): pointwise power law, N layers with exact layer "
+                      "averages, an expression in z, E0 ((z + z0)/c0)^k (a finite surface modulus), a graded "
+                      "coating of thickness H on the homogeneous substrate E0 (H/c0)^k, a CSV table, or the "
+                      "error-function grading E0 [1 + (m - 1) erfc(z/w)] (Lee, Barber & Thouless 2009; needs k = 0). "
+                      "The closed forms and the numerical MDR always use the power law E0 (z/c0)^k.");
+    prm.declare_entry("layers", "16", Patterns::Integer(1, 100000), "Layered modulus: number of layers.");
+    prm.declare_entry("layered depth", "10", Patterns::Double(0.), "Layered modulus: depth of the layered zone / a.");
+    prm.declare_entry("expression", "E0*(z/c0)^k", Patterns::Anything(),
+                      "Expression modulus: E(z) (muparser; constants E0, c0, k).");
+    prm.declare_entry("surface depth", "0", Patterns::Double(0.), "Shifted power law: z0 [m], > 0.");
+    prm.declare_entry("coating thickness", "0", Patterns::Double(0.), "Coating: its thickness H [m], > 0.");
+    prm.declare_entry("surface modulus ratio", "10", Patterns::Double(0.),
+                      "Error function: m = E(0) / E0, > 0 (E0 is the modulus far below the surface; m > 1 a stiff "
+                      "skin, m < 1 a soft one).");
+    prm.declare_entry("erf width", "0", Patterns::Double(0.),
+                      "Error function: the width w [m] of E0 [1 + (m - 1) erfc(z/w)], > 0.");
+    prm.declare_entry("table file", "", Patterns::Anything(),
+                      "Table: a CSV file of z [m], E [Pa] rows (z from 0, increasing; linear between rows, "
+                      "constant below the last); a relative path is taken from the scene's folder.");
+    prm.leave_subsection();
+  }
+  namespace
+  {
+    /// Material/modulus: each representation of E(z) and its name in a scene.
+    const std::map<MaterialParameters::Modulus, std::string> modulus_names{
+      {MaterialParameters::Modulus::power_law, "power law"},
+      {MaterialParameters::Modulus::layered, "layered"},
+      {MaterialParameters::Modulus::expression, "expression"},
+      {MaterialParameters::Modulus::shifted_power_law, "shifted power law"},
+      {MaterialParameters::Modulus::coating, "coating"},
+      {MaterialParameters::Modulus::table, "table"},
+      {MaterialParameters::Modulus::error_function, "error function"}};
+  } // namespace
+
+  std::string to_string(const MaterialParameters::Modulus modulus) { return modulus_names.at(modulus); }
+
+  void MaterialParameters::parse(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Material");
+    E0 = prm.get_double("E0");
+    c0 = prm.get_double("c0");
+    k = prm.get_double("k");
+    nu = prm.get_double("nu");
+    const std::string m = prm.get("modulus");
+    modulus = std::find_if(modulus_names.begin(), modulus_names.end(), [&](const auto &n) { return n.second == m; })
+                ->first;
+    layers = prm.get_integer("layers");
+    layered_depth = prm.get_double("layered depth");
+    expression = prm.get("expression");
+    surface_depth = prm.get_double("surface depth");
+    coating_thickness = prm.get_double("coating thickness");
+    table_file = prm.get("table file");
+    surface_modulus_ratio = prm.get_double("surface modulus ratio");
+    erf_width = prm.get_double("erf width");
+    prm.leave_subsection();
+    if (modulus == Modulus::shifted_power_law && !(surface_depth > 0.))
+      throw std::invalid_argument("Material/surface depth = " + format(surface_depth) +
+                                  " must be z0 in (0, inf) [m] with Material/modulus = shifted power law");
+    if (modulus == Modulus::coating && !(coating_thickness > 0.))
+      throw std::invalid_argument("Material/coating thickness = " + format(coating_thickness) +
+                                  " must be H in (0, inf) [m] with Material/modulus = coating");
+    // The ratio is also read by an erf-width map, whatever Material/modulus says.
+    if (!(surface_modulus_ratio > 0.) || !std::isfinite(surface_modulus_ratio))
+      throw std::invalid_argument("Material/surface modulus ratio = " + format(surface_modulus_ratio) +
+                                  " must be m = E(0)/E0 in (0, inf)");
+    if (modulus == Modulus::error_function && !(erf_width > 0.))
+      throw std::invalid_argument("Material/erf width = " + format(erf_width) +
+                                  " must be w in (0, inf) [m] with Material/modulus = error function");
+    if (modulus == Modulus::error_function && k != 0.)
+      throw std::invalid_argument("Material/k = " + format(k) +
+                                  " must be 0 with Material/modulus = error function (E0 is the modulus below the "
+                                  "skin; the closed forms compare with the homogeneous E0)");
+    if (modulus == Modulus::table && table_file.empty())
+      throw std::invalid_argument("Material/table file is empty: Material/modulus = table needs a CSV file");
+    if (E0 <= 0. || c0 <= 0.)
+      throw std::invalid_argument("Material: E0 and c0 must be > 0");
+    if (k <= -1. || k >= 1.)
+      throw std::invalid_argument("Material/k = " + std::to_string(k) + " is outside (-1, 1)");
+  }
+
+  void LoadParameters::declare(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Load");
+    prm.declare_entry("type", "flat punch",
+                      Patterns::Selection("flat punch|paraboloid|cone|power law|concave punch|constant pressure"),
+                      "The load: rigid flat punch (9.16), paraboloid (9.26), cone (9.20), power-law "
+                      "indenter A r^n (9.30), concave punch in complete contact (9.34), constant pressure (9.40).");
+    prm.declare_entry("control", "contact radius", Patterns::Selection("contact radius|depth|force"),
+                      "Curved indenters: what is prescribed.");
+    prm.declare_entry("contact", "disc", Patterns::Selection("disc|unilateral"),
+                      "Curved indenters and the concave punch: disc = the contact zone is the disc r <= a (found "
+                      "among discs under depth or force control); unilateral = the contact set is found by the "
+                      "Signorini conditions (an annulus, a concave punch short of complete contact), the mesh "
+                      "graded toward the edge found; needs Load/control = depth or force (curved indenters).");
+    prm.declare_entry("a", "1e-4", Patterns::Double(0.), "Contact radius (punch radius, loaded radius) [m].");
+    prm.declare_entry("depth", "1e-6", Patterns::Double(), "Depth d (flat punch, depth control) or centre displacement d0 (concave punch) [m].");
+    prm.declare_entry("force", "1e-2", Patterns::Double(0.), "Normal force (force control) [N].");
+    prm.declare_entry("R", "1e-2", Patterns::Double(0.), "Paraboloid radius [m].");
+    prm.declare_entry("tan theta", "0.1", Patterns::Double(0.), "Cone slope tan(theta).");
+    prm.declare_entry("n", "2", Patterns::Double(0.), "Power-law exponent n > 0.");
+    prm.declare_entry("A", "1", Patterns::Double(0.), "Power-law coefficient A [m^(1-n)].");
+    prm.declare_entry("h0", "1e-7", Patterns::Double(0.), "Concave punch depth h0 [m] (9.31).");
+    prm.declare_entry("p0", "1e6", Patterns::Double(), "Constant pressure p0 [Pa].");
+    prm.leave_subsection();
+  }
+  void LoadParameters::parse(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Load");
+    const std::string t = prm.get("type");
+    type = t == "flat punch"      ? Type::flat_punch
+           : t == "paraboloid"    ? Type::paraboloid
+           : t == "cone"          ? Type::cone
+           : t == "power law"     ? Type::power_law
+           : t == "concave punch" ? Type::concave_punch
+                                  : Type::constant_pressure;
+    const std::string c = prm.get("control");
+    control = c == "contact radius" ? Control::contact_radius : (c == "depth" ? Control::depth : Control::force);
+    contact = prm.get("contact") == "unilateral" ? Contact::unilateral : Contact::disc;
+    a = prm.get_double("a");
+    depth = prm.get_double("depth");
+    force = prm.get_double("force");
+    R = prm.get_double("R");
+    tan_theta = prm.get_double("tan theta");
+    n = prm.get_double("n");
+    A = prm.get_double("A");
+    h0 = prm.get_double("h0");
+    p0 = prm.get_double("p0");
+    prm.leave_subsection();
+  }
+
+  void IndenterParameters::declare(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Indenter");
+    prm.declare_entry("elasticity", "rigid", Patterns::Selection("rigid|homogeneous|graded"),
+                      "rigid; homogeneous (an elastic body E, nu carrying the profile, e.g. a sphere of radius R >> a "
+                      "modelled as a half-space); graded (a second body E (z/c0)^k with the Material's k and c0, 9.4). "
+                      "Elastic indenters need Load/contact = unilateral.");
+    prm.declare_entry("E", "1e9", Patterns::Double(0.), "homogeneous: the indenter's E; graded: its E0 [Pa], > 0.");
+    prm.declare_entry("nu", "0.3", Patterns::Double(0., 0.5), "The indenter's Poisson ratio, [0, 0.5].");
+    prm.leave_subsection();
+  }
+  void IndenterParameters::parse(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Indenter");
+    const std::string e = prm.get("elasticity");
+    elasticity = e == "rigid" ? Elasticity::rigid : (e == "homogeneous" ? Elasticity::homogeneous : Elasticity::graded);
+    E = prm.get_double("E");
+    nu = prm.get_double("nu");
+    prm.leave_subsection();
+    if (elasticity != Elasticity::rigid && !(E > 0.))
+      throw std::invalid_argument("Indenter/E: " + format(E) + " must be in (0, inf) for an elastic indenter");
+  }
+
+  void FrictionParameters::declare(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Friction");
+    prm.declare_entry("coefficient", "0", Patterns::Anything(),
+                      "Coulomb coefficient mu between the rigid indenter and the surface during normal loading, >= 0, "
+                      "or inf (full stick); 0: frictionless (the chapter's assumption). Needs Load/contact = unilateral "
+                      "and a rigid indenter; the closed-form rows then measure the frictionless idealisation.");
+    prm.declare_entry("load steps", "24", Patterns::Integer(1, 10000),
+                      "Steps of the loading path from zero (the frictional answer depends on the path; a vertex that "
+                      "comes into contact during a step carries no shear in it: an error of the step's size).");
+    prm.leave_subsection();
+  }
+  void FrictionParameters::parse(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Friction");
+    const std::string c = dealii::Utilities::trim(prm.get("coefficient"));
+    load_steps = prm.get_integer("load steps");
+    prm.leave_subsection();
+    if (c == "inf" || c == "full stick")
+      coefficient = std::numeric_limits<double>::infinity();
+    else
+      {
+        std::istringstream in(c);
+        double mu = std::nan("");
+        if (!(in >> mu) || !(in >> std::ws).eof() || !(mu >= 0.) || !std::isfinite(mu))
+          throw std::invalid_argument("Friction/coefficient: '" + c + "' must be a number in [0, inf) or inf (full stick)");
+        coefficient = mu;
+      }
+  }
+
+  void DiscretizationParameters::declare(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Discretization");
+    prm.declare_entry("degree", "3", Patterns::Integer(1, 8), "FE_Q degree.");
+    prm.declare_entry("refinements", "0", Patterns::List(Patterns::Integer(), 1, 12),
+                      "Uniform refinements of the recommended mesh, each in 0..10; several values make a convergence "
+                      "study. Each level has about 4 times the DoFs of the one before: the run forecasts a level's DoFs "
+                      "and memory from a coarser one and refuses, before it starts, a level that would not fit in "
+                      "this machine's free memory.");
+    prm.declare_entry("force tolerance", "1e-6", Patterns::Double(1e-12, 1.),
+                      "The wanted relative force error: selects the recommended mesh (fem/doc/meshes.md).");
+    prm.declare_entry("accuracy", "levels", Patterns::Selection("levels|contract"),
+                      "levels: one FE solve per entry of refinements (a convergence study against the references); "
+                      "contract (normal, JKR adhesion and tangential scenes with a rigid indenter on a disc): the "
+                      "ladder of fem/accuracy.h (hp for k >= 0, uniform refinements for k < 0) until the Richardson "
+                      "estimate of every FE quantity (force, depth, contact radius, p(r) relative to the largest |p|, "
+                      "w(r); the critical states of adhesion; K_T and the tangential curves) is within force tolerance, "
+                      "or a refusal naming the limit; every FE row shows the asked tolerance, the estimate and the "
+                      "verdict.");
+    prm.declare_entry("memory guard", "on", Patterns::Selection("on|off"),
+                      "on: a refinement level whose forecast direct factorisation exceeds 80 % of this machine's "
+                      "available memory is refused before it starts; off (or `gradcontact run --force`): solved "
+                      "anyway.");
+    prm.declare_entry("far field", "0", Patterns::Double(0.), "L/a of the truncated domain; 0: the recommended one.");
+    prm.declare_entry("formulation", "displacement", Patterns::Selection("displacement|mixed|automatic"),
+                      "FE unknowns: displacement; mixed (u and q = lambda div u, Taylor-Hood: nu -> 0.5 without "
+                      "locking, nu = 0.5, the Gibson medium k = 1); automatic (mixed for nu >= 0.45). "
+                      "fem/doc/model.md, \"Mixed formulation\".");
+    prm.declare_entry("surface map", "auto", Patterns::Selection("auto|off"),
+                      "auto: a modulus vanishing at the surface like z^k, 0 < k <= 0.95, without jumps is resolved by "
+                      "the singular depth map of fem/surface_map.h in the rigid frictionless normal scenes of the "
+                      "displacement formulation (no thin cells; flat punch k = 0.5 2.3e-6 with a third of the DoFs); "
+                      "off, and the mixed formulation: z-halvings to 1e-10 a.");
+    prm.declare_entry("far field condition", "auto", Patterns::Selection("auto|clamped"),
+                      "auto: for a power-law modulus in the scenes of the axisymmetric and mode-1 solvers (normal, "
+                      "candidate, JKR, Dugdale, tangential) with the displacement formulation and without the surface "
+                      "map, the half-space beyond L is condensed onto max(r, z) = L "
+                      "(fem/far_field.h: no truncation error; L / a = far field, else 100 or 1.5 times the largest "
+                      "displacement radius); clamped: u = 0 at L.");
+    prm.leave_subsection();
+  }
+  void DiscretizationParameters::parse(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Discretization");
+    degree = prm.get_integer("degree");
+    refinements.clear();
+    for (const std::string &s : dealii::Utilities::split_string_list(prm.get("refinements")))
+      {
+        const int level = dealii::Utilities::string_to_int(s);
+        if (level < 0 || level > 10)
+          throw std::invalid_argument("Discretization/refinements = " + s +
+                                      ": the valid range is 0..10 (each refinement multiplies the DoFs by about 4; "
+                                      "the run also refuses a level that would not fit in memory)");
+        refinements.push_back(static_cast<unsigned int>(level));
+      }
+    force_tolerance = prm.get_double("force tolerance");
+    contract = prm.get("accuracy") == "contract";
+    memory_guard = prm.get("memory guard") == "on";
+    far_field = prm.get_double("far field");
+    const std::string f = prm.get("formulation");
+    formulation = f == "mixed" ? Formulation::mixed : (f == "automatic" ? Formulation::automatic : Formulation::displacement);
+    surface_map = prm.get("surface map") == "auto";
+    condensed_far_field = prm.get("far field condition") == "auto";
+    prm.leave_subsection();
+  }
+
+  void OutputParameters::declare(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Outputs");
+    prm.declare_entry("force", "true", Patterns::Bool(), "Compare the normal force.");
+    prm.declare_entry("depth", "true", Patterns::Bool(), "Compare the depth (centre displacement for pressure loads).");
+    prm.declare_entry("contact radius", "true", Patterns::Bool(), "Compare the contact radius (depth and force control).");
+    prm.declare_entry("pressure radii", "", double_list, "Radii / a at which to compare p(r) (r < a); empty: none.");
+    prm.declare_entry("displacement radii", "", double_list, "Radii / a at which to compare w(r); empty: none.");
+    prm.declare_entry("vtu", "false", Patterns::Bool(), "Write the FE fields as VTU.");
+    prm.declare_entry("plots", "true", Patterns::Bool(), "Write gnuplot plots of the sampled profiles.");
+    prm.leave_subsection();
+  }
+  void OutputParameters::parse(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Outputs");
+    force = prm.get_bool("force");
+    depth = prm.get_bool("depth");
+    contact_radius = prm.get_bool("contact radius");
+    pressure_radii = to_doubles(prm.get("pressure radii"));
+    displacement_radii = to_doubles(prm.get("displacement radii"));
+    vtu = prm.get_bool("vtu");
+    plots = prm.get_bool("plots");
+    prm.leave_subsection();
+  }
+
+  void ReferenceParameters::declare(ParameterHandler &prm)
+  {
+    prm.enter_subsection("References");
+    prm.declare_entry("closed form", "true", Patterns::Bool(), "Compare with the chapter's closed form.");
+    prm.declare_entry("numerical MDR", "false", Patterns::Bool(), "Compare with the numerical MDR engine.");
+    prm.declare_entry("fem", "true", Patterns::Bool(),
+                      "Run the FE model; false compares the closed form with the numerical MDR only.");
+    prm.leave_subsection();
+  }
+  void ReferenceParameters::parse(ParameterHandler &prm)
+  {
+    prm.enter_subsection("References");
+    closed_form = prm.get_bool("closed form");
+    numerical_mdr = prm.get_bool("numerical MDR");
+    fem = prm.get_bool("fem");
+    prm.leave_subsection();
+  }
+
+  void ToleranceParameters::declare(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Tolerances");
+    prm.declare_entry("force", "1e-5", Patterns::Double(0.), "Relative tolerance of the force.");
+    prm.declare_entry("depth", "1e-4", Patterns::Double(0.), "Relative tolerance of the depth.");
+    prm.declare_entry("contact radius", "1e-4", Patterns::Double(0.), "Relative tolerance of the contact radius.");
+    prm.declare_entry("pressure", "1e-3", Patterns::Double(0.), "Tolerance of p(r), relative to the largest |p| sampled.");
+    prm.declare_entry("displacement", "1e-4", Patterns::Double(0.), "Relative tolerance of w(r).");
+    prm.leave_subsection();
+  }
+  void ToleranceParameters::parse(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Tolerances");
+    force = prm.get_double("force");
+    depth = prm.get_double("depth");
+    contact_radius = prm.get_double("contact radius");
+    pressure = prm.get_double("pressure");
+    displacement = prm.get_double("displacement");
+    prm.leave_subsection();
+  }
+
+  void CandidateParameters::declare(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Candidate");
+    prm.declare_entry("profile", "", Patterns::Anything(),
+                      std::string("A profile f(r) (variable r; f(0) = 0) whose candidate closed forms below are checked "
+                                  "against the numerical MDR. Empty: no candidate check. Every candidate entry is an "
+                                  "expression: numbers, names, + - * / ^ (power), comparisons, && || !, c ? x : y, "
+                                  "and the functions ") + Expression::function_names() +
+                        " (`gradcontact run --help-functions` says what each is).");
+    prm.declare_entry("profile slope", "", Patterns::Anything(), "f'(r); empty: finite differences of f.");
+    prm.declare_entry("profile curvature", "", Patterns::Anything(), "f''(r); required for a pressure candidate.");
+    prm.declare_entry("constants", "", Patterns::Anything(),
+                      "Constants of the expressions, \"name = expression, ...\", each of which may use the names before "
+                      "it and the functions (kappa = n/2 * beta(n/2, (1+k)/2)). Always defined: E0, c0, k, nu, pi, "
+                      "the coefficients h_N (9.5), h_T (9.79), beta, C, cN0 = c_N0 (9.4), cT0 = c_T0, alpha = "
+                      "cN0/cT0 (9.78), dgamma (Adhesion/work of adhesion) and mu (Tangential/friction coefficient).");
+    prm.declare_entry("depth", "", Patterns::Anything(), "Candidate d(a) (variable a).");
+    prm.declare_entry("force", "", Patterns::Anything(), "Candidate F_N(a) (variable a).");
+    prm.declare_entry("pressure", "", Patterns::Anything(), "Candidate p(r, a) (variables r, a), at Outputs/pressure radii.");
+    prm.declare_entry("displacement", "", Patterns::Anything(),
+                      "Candidate w(r, a) (variables r, a), at Outputs/displacement radii.");
+    prm.declare_entry("outer radius", "", Patterns::Anything(),
+                      "Load/contact = unilateral: candidate outer edge of the contact (variables d, F).");
+    prm.declare_entry("inner radius", "", Patterns::Anything(),
+                      "Load/contact = unilateral: candidate inner edge of the contact, 0 for a disc (variables d, F).");
+    prm.declare_entry("profile table", "", Patterns::Anything(),
+                      "Load/contact = unilateral: a CSV file of rows r, f(r) [m] (r from 0, ascending; relative to the "
+                      "scene's folder), linear between rows, e.g. a measured indenter, instead of `profile`; its last r "
+                      "is the indenter's radius.");
+    prm.declare_entry("indenter radius", "0", Patterns::Double(0.),
+                      "Load/contact = unilateral: the indenter's radius [m] (a concave punch ends there); 0: unbounded. "
+                      "With unilateral contact every candidate takes the FE's depth d and force F instead of a "
+                      "(d, F; r, d, F for p and w), is compared with the FE only (the MDR assumes a disc), and the "
+                      "profile is indented under Load/control = depth or force.");
+    prm.declare_entry("adhesive depth", "", Patterns::Anything(),
+                      "JKR candidate d(a) on the adhesive branch (variable a; Adhesion/work of adhesion is dgamma), "
+                      "over the radii of `range`.");
+    prm.declare_entry("adhesive force", "", Patterns::Anything(), "JKR candidate F_N(a) (variable a), over `range`.");
+    prm.declare_entry("adhesive pressure", "", Patterns::Anything(),
+                      "JKR candidate p(r, a) (variables r, a) at Load/a and Outputs/pressure radii (needs f'').");
+    prm.declare_entry("critical control", "force", Patterns::Selection("force|displacement"),
+                      "The control of the critical state of the three entries below.");
+    prm.declare_entry("critical radius", "", Patterns::Anything(), "JKR candidate critical radius a_c (a constant).");
+    prm.declare_entry("critical force", "", Patterns::Anything(), "JKR candidate critical force F_c (a constant).");
+    prm.declare_entry("critical depth", "", Patterns::Anything(), "JKR candidate critical depth d_c (a constant).");
+    prm.declare_entry("tangential stiffness", "", Patterns::Anything(),
+                      "Candidate K_T(a) (variable a), over `range`; Tangential/friction coefficient is mu.");
+    prm.declare_entry("tangential force", "", Patterns::Anything(),
+                      "Candidate F_x(c, a) of partial slip with stick radius c (variables c, a) at Load/a.");
+    prm.declare_entry("tangential displacement", "", Patterns::Anything(),
+                      "Candidate u0(c, a) of partial slip (variables c, a) at Load/a.");
+    prm.declare_entry("stick radius", "", Patterns::Anything(),
+                      "Candidate c(Fx, a) (variables Fx, a), 0 < Fx < mu F_N(a).");
+    prm.declare_entry("dissipated energy", "", Patterns::Anything(),
+                      "Candidate energy dissipated per cycle of +-FA (variables FA, a), 0 < FA < mu F_N(a).");
+    prm.declare_entry("unloading displacement", "", Patterns::Anything(),
+                      "Candidate u0 on the unloading branch from FA (variables Fx, FA, a); FA = Tangential/amplitude "
+                      "mu F_N(a).");
+    prm.declare_entry("reloading displacement", "", Patterns::Anything(),
+                      "Candidate u0 on the reloading branch from -FA (variables Fx, FA, a).");
+    prm.declare_entry("range", "0.25, 4", Patterns::List(Patterns::Double(0.), 2, 2),
+                      "The contact radii of the curves over a (d(a), F(a) of the normal and the adhesive family; K_T(a)): "
+                      "from range[0] Load/a to range[1] Load/a, and Load/a itself for the normal family (where the FE "
+                      "solves). A profile that needs a > b (a flat punch of radius b) sets range[0] so.");
+    prm.declare_entry("points", "9", Patterns::Integer(2, 200), "Points on every candidate curve.");
+    prm.declare_entry("tolerance", "1e-8", Patterns::Double(0.),
+                      "Relative tolerance of the candidate against the numerical MDR (every row whose reference is "
+                      "the numerical MDR).");
+    prm.declare_entry("Coulomb 3D", "off", Patterns::Selection("off|on"),
+                      "Tangential candidates: on also runs the 3D Coulomb model of fem/coulomb_contact_3d.h with the "
+                      "candidate's profile (normal loading to the numerical MDR's d(a), then the tangential "
+                      "displacement of Tangential/amplitude mu F_N(a) and one cycle, Tangential/load steps each way); "
+                      "its rows (F_x against u0, the stick radius, the branches, the loop area) say how far Coulomb's "
+                      "law (the normal-tangential coupling, a free slip direction) is from the candidate, against the "
+                      "Tolerances section or FE tolerance.");
+    prm.declare_entry("FE tolerance", "", Patterns::Anything(),
+                      "Relative tolerance of the candidate against the FE (every row whose reference is an FE model); "
+                      "empty: the Tolerances section's entry of the row's quantity (force, depth, contact radius, "
+                      "pressure, displacement). The FE is less accurate than the numerical MDR, so the two differ.");
+    prm.leave_subsection();
+  }
+  CandidateParameters::Family CandidateParameters::family() const
+  {
+    const bool adhesive = !(adhesive_depth.empty() && adhesive_force.empty() && adhesive_pressure.empty() &&
+                            critical_radius.empty() && critical_force.empty() && critical_depth.empty());
+    const bool tangential = !(tangential_stiffness.empty() && tangential_force.empty() &&
+                              tangential_displacement.empty() && stick_radius.empty() && dissipated_energy.empty() &&
+                              unloading_displacement.empty() && reloading_displacement.empty());
+    if (adhesive && tangential)
+      throw std::invalid_argument("Candidate: adhesive and tangential candidate entries in one scene; the two are "
+                                  "different contacts (tangential contact is non-adhesive): give one family per scene");
+    return adhesive ? Family::adhesive : tangential ? Family::tangential : Family::normal;
+  }
+
+  void CandidateParameters::parse(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Candidate");
+    profile = prm.get("profile");
+    slope = prm.get("profile slope");
+    curvature = prm.get("profile curvature");
+    constants = prm.get("constants");
+    depth = prm.get("depth");
+    force = prm.get("force");
+    pressure = prm.get("pressure");
+    displacement = prm.get("displacement");
+    outer_radius = prm.get("outer radius");
+    inner_radius = prm.get("inner radius");
+    indenter_radius = prm.get_double("indenter radius");
+    profile_table = prm.get("profile table");
+    adhesive_depth = prm.get("adhesive depth");
+    adhesive_force = prm.get("adhesive force");
+    adhesive_pressure = prm.get("adhesive pressure");
+    critical_force_control = prm.get("critical control") == "force";
+    critical_radius = prm.get("critical radius");
+    critical_force = prm.get("critical force");
+    critical_depth = prm.get("critical depth");
+    tangential_stiffness = prm.get("tangential stiffness");
+    tangential_force = prm.get("tangential force");
+    tangential_displacement = prm.get("tangential displacement");
+    stick_radius = prm.get("stick radius");
+    dissipated_energy = prm.get("dissipated energy");
+    unloading_displacement = prm.get("unloading displacement");
+    reloading_displacement = prm.get("reloading displacement");
+    range = to_doubles(prm.get("range"));
+    points = static_cast<unsigned int>(prm.get_integer("points"));
+    tolerance = prm.get_double("tolerance");
+    coulomb_3d = prm.get("Coulomb 3D") == "on";
+    const std::string fe = dealii::Utilities::trim(prm.get("FE tolerance"));
+    fe_tolerance = 0.;
+    if (!fe.empty())
+      {
+        std::size_t used = 0;
+        try
+          {
+            fe_tolerance = std::stod(fe, &used);
+          }
+        catch (const std::exception &)
+          {
+            used = 0;
+          }
+        if (used != fe.size() || !(fe_tolerance > 0.) || !std::isfinite(fe_tolerance))
+          throw std::invalid_argument("Candidate/FE tolerance = '" + fe +
+                                      "': must be empty (the Tolerances section) or a number in (0, inf)");
+      }
+    prm.leave_subsection();
+  }
+
+  bool AdhesionParameters::enabled(const LoadParameters &load) const
+  {
+    return work_of_adhesion > 0. || (load.type == LoadParameters::Type::constant_pressure && tensile_strength > 0.);
+  }
+
+  void AdhesionParameters::declare(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Adhesion");
+    prm.declare_entry("work of adhesion", "0", Patterns::Double(0.),
+                      "dgamma [J/m^2]; > 0 makes the scene adhesive (JKR, 9.45-9.68): critical states from the FE "
+                      "model (fem/adhesion.h) against the closed forms and the numerical MDR.");
+    prm.declare_entry("control", "both", Patterns::Selection("force|displacement|both"),
+                      "Critical states under force control, displacement control or both (curved profiles).");
+    prm.declare_entry("tensile strength", "0", Patterns::Double(0.),
+                      "sigma_th [Pa]: the centre mechanism of the concave punch (9.67-9.68); with Load/type = "
+                      "constant pressure the optimal profile p = -sigma_th on r <= a (9.69-9.74).");
+    prm.declare_entry("initial radius", "0", Patterns::Double(0.),
+                      "Start of the critical-radius search [m]; 0: Load/a.");
+    prm.declare_entry("stencil ratio", "1.05", Patterns::Double(1.000001, 2.),
+                      "Ratio of neighbouring FE contact radii in the derivative of the stiffness (G(a)).");
+    prm.declare_entry("local stencil", "true", Patterns::Bool(),
+                      "Finish every critical search with FE radii a_c q^(+-1) (exact fit for any E(z)); the "
+                      "fit is exact for the power law without them.");
+    prm.declare_entry("curve points", "", Patterns::List(Patterns::Double(0.), 0, 50),
+                      "a / a_c (force control) of FE points on the adhesive force-depth curve (9.57, figures "
+                      "9.22-9.23); empty: none.");
+    prm.declare_entry("law", "JKR", Patterns::Selection("JKR|Dugdale|Lennard-Jones"),
+                      "JKR: the chapter's adhesion (infinitely short range; the FE from its energy release rate). "
+                      "Dugdale: a cohesive zone of finite range (tension sigma_0 where the gap is below dgamma / "
+                      "sigma_0, fem/cohesive_zone.h): the FE drops JKR's assumption and the closed-form rows say "
+                      "\"(JKR idealisation)\" (paraboloid or power law). Lennard-Jones: the smooth law of "
+                      "fem/smooth_cohesion.h (repulsion included, its largest attraction the Dugdale sigma_0 of the "
+                      "Tabor parameter), in Tabor-parameter maps (Map/parameter = Tabor parameter; without it the "
+                      "map is Dugdale's) and for adhesive candidates (with the cohesive strength).");
+    prm.declare_entry("Tabor parameter", "0", Patterns::Double(0.),
+                      "Dugdale: lambda (cases/runners/fe_cohesive.h; Maugis' at k = 0), which sets sigma_0; or give the "
+                      "cohesive strength.");
+    prm.declare_entry("cohesive strength", "0", Patterns::Double(0.), "Dugdale: sigma_0 [Pa]; or give the Tabor parameter.");
+    prm.leave_subsection();
+  }
+  void AdhesionParameters::parse(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Adhesion");
+    work_of_adhesion = prm.get_double("work of adhesion");
+    const std::string c = prm.get("control");
+    force_control = c != "displacement";
+    displacement_control = c != "force";
+    tensile_strength = prm.get_double("tensile strength");
+    initial_radius = prm.get_double("initial radius");
+    stencil_ratio = prm.get_double("stencil ratio");
+    local_stencil = prm.get_bool("local stencil");
+    curve_points.clear();
+    for (const std::string &x : dealii::Utilities::split_string_list(prm.get("curve points")))
+      curve_points.push_back(dealii::Utilities::string_to_double(x));
+    const std::string law_name = prm.get("law");
+    law = law_name == "Dugdale" ? Law::dugdale : law_name == "Lennard-Jones" ? Law::lennard_jones : Law::jkr;
+    tabor_parameter = prm.get_double("Tabor parameter");
+    cohesive_strength = prm.get_double("cohesive strength");
+    prm.leave_subsection();
+  }
+
+  void TangentialParameters::declare(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Tangential");
+    prm.declare_entry("study", "none", Patterns::Selection("none|stiffness|partial slip|oscillation"),
+                      "Tangential contact by the Fourier mode-1 FE model (fem/fourier_mode1_solver.h): none; "
+                      "stiffness (Load/type = flat punch: K_T of 9.78-9.79, alpha = K_N / K_T, Mindlin at k = 0); "
+                      "partial slip (Load/type = paraboloid: the traction mu [p(r; a) - p(r; c)] of 9.80, F_x and the "
+                      "stick-zone displacement, the F_x(u0) curve); oscillation (paraboloid: +-F_A after loading, "
+                      "9.81-9.87: unloading branch, hysteresis loop, dissipated energy, points A to E).");
+    prm.declare_entry("friction coefficient", "0.3", Patterns::Double(0.),
+                      "Coulomb friction coefficient mu, > 0 (partial slip, oscillation).");
+    prm.declare_entry("stick radius", "0.5", Patterns::Double(0., 1.),
+                      "Partial slip: stick radius c / a, in (0, 1] (c = a: no slip yet, tau = 0: no FE row at that point).");
+    prm.declare_entry("amplitude", "0.9", Patterns::Double(0., 1.),
+                      "Oscillation: F_A / (mu F_N), in (0, 1); 1 and above is gross slip.");
+    prm.declare_entry("load steps", "5", Patterns::Integer(2, 50),
+                      "FE points on the F_x(u0) curve (partial slip: c/a = i / steps, i = 1..steps - 1, and "
+                      "Tangential/stick radius) or on the unloading branch F/F_A = 1 .. -1 (oscillation), 2..50.");
+    prm.declare_entry("Holl ratio", "false", Patterns::Bool(),
+                      "Use the decoupled pairing nu = 1 / (2 + k) of 9.3.1 instead of Material/nu; needs k in (0, 1).");
+    prm.declare_entry("stick levels", "8", Patterns::Integer(0, 30),
+                      "Surface refinement levels toward the stick radii (the kink of tau at c; fem/doc/loads-and-contact.md).");
+    prm.declare_entry("assumption tolerance", "1e-4", Patterns::Double(0.),
+                      "Tolerance of the measured assumption error of 9.80 (relative spread of u_x over the stick "
+                      "zone, max |u_y| / mean u_x), both compared with 0.");
+    prm.leave_subsection();
+  }
+  void TangentialParameters::parse(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Tangential");
+    const std::string st = prm.get("study");
+    study = st == "stiffness"      ? Study::stiffness
+            : st == "partial slip" ? Study::partial_slip
+            : st == "oscillation"  ? Study::oscillation
+                                   : Study::none;
+    friction_coefficient = prm.get_double("friction coefficient");
+    stick_radius = prm.get_double("stick radius");
+    amplitude = prm.get_double("amplitude");
+    load_steps = prm.get_integer("load steps");
+    holl_ratio = prm.get_bool("Holl ratio");
+    stick_levels = prm.get_integer("stick levels");
+    assumption_tolerance = prm.get_double("assumption tolerance");
+    prm.leave_subsection();
+    // The patterns admit the closed ends; the open ones are checked here (9.80: 0 < c <= a; F_A < mu F_N).
+    if (!(friction_coefficient > 0.))
+      throw std::invalid_argument("Tangential/friction coefficient = " + format(friction_coefficient) +
+                                  " must be in (0, inf)");
+    if (!(stick_radius > 0. && stick_radius <= 1.))
+      throw std::invalid_argument("Tangential/stick radius = " + format(stick_radius) + " must be c/a in (0, 1]");
+    if (!(amplitude > 0. && amplitude < 1.))
+      throw std::invalid_argument("Tangential/amplitude = " + format(amplitude) +
+                                  " must be F_A/(mu F_N) in (0, 1); at 1 and above the sphere slides (gross slip)");
+  }
+
+  void MapParameters::declare(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Map");
+    prm.declare_entry("parameter", "none",
+                      Patterns::Selection("none|surface depth|coating thickness|erf width|indenter modulus|friction coefficient|"
+                                         "Tabor parameter|Coulomb 3D"),
+                      "What the ratios set: none (no map), surface depth (Material/modulus = shifted power law, "
+                      "z0 = a / ratio), coating thickness (Material/modulus = coating, H = a / ratio), erf width "
+                      "(Material/modulus = error function with Material/surface modulus ratio, w = a / ratio; k = 0) "
+                      "or indenter modulus (a homogeneous elastic indenter E1 = ratio E0 with Indenter/nu, against the "
+                      "rigid indenter's closed forms), or friction coefficient (Coulomb friction mu = ratio between "
+                      "a rigid indenter and the surface during loading, Friction/load steps, against the frictionless "
+                      "indenter, for every k and nu of the map), or Tabor parameter (a Dugdale cohesive zone of Tabor "
+                      "parameter lambda = ratio, cases/runners/fe_cohesive.h, against the chapter's JKR pull-off; needs "
+                      "Adhesion/work of adhesion and a paraboloid or power law), or Coulomb 3D (the 3D model of a rigid "
+                      "sphere with Coulomb friction, cases/runners/fe_coulomb_3d.h: normal loading, Tangential/amplitude and one "
+                      "cycle, for every k and nu of the map, against 9.80-9.86; ratios: the friction coefficients mu, empty: "
+                      "Tangential/friction coefficient).");
+    prm.declare_entry("ratios", "", Patterns::List(Patterns::Double(0.), 0, 100),
+                      "The ratios a/z0, a/H, a/w, E1/E0, the friction coefficients mu or the Tabor parameters lambda of "
+                      "the map, > 0.");
+    prm.declare_entry("k values", "", Patterns::List(Patterns::Double(-1., 1.), 0, 20),
+                      "The exponents k of the map, -1 < k < 1; empty: Material/k.");
+    prm.declare_entry("nu values", "", Patterns::List(Patterns::Double(0., 0.5), 0, 20),
+                      "Friction coefficient and Coulomb 3D maps: the Poisson ratios, [0, 0.5] (0.5 with the mixed "
+                      "formulation, which the Coulomb 3D map takes there by itself); empty: Material/nu.");
+    prm.declare_entry("Holl ratio", "true", Patterns::Bool(),
+                      "Friction coefficient map: also nu = 1/(2 + k) where it is <= 1/2 (the decoupled pairing: pressure "
+                      "causes no radial displacement, so friction must change nothing; the map's sharp check).");
+    prm.declare_entry("full stick", "true", Patterns::Bool(), "Friction coefficient map: also mu = inf (full stick).");
+    prm.declare_entry("thresholds", "0.01, 0.001", Patterns::List(Patterns::Double(0.), 1, 10),
+                      "Deviations from the power law whose ratio the map reports (\"within 1 % when a/z0 >= ...\").");
+    prm.leave_subsection();
+  }
+  void MapParameters::parse(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Map");
+    const std::string p = prm.get("parameter");
+    parameter = p == "surface depth"       ? Parameter::surface_depth
+                : p == "coating thickness" ? Parameter::coating_thickness
+                : p == "erf width"         ? Parameter::erf_width
+                : p == "indenter modulus"  ? Parameter::indenter_modulus
+                : p == "friction coefficient" ? Parameter::friction_coefficient
+                : p == "Tabor parameter"      ? Parameter::tabor_parameter
+                : p == "Coulomb 3D"           ? Parameter::coulomb_3d
+                                           : Parameter::none;
+    ratios = to_doubles(prm.get("ratios"));
+    exponents = to_doubles(prm.get("k values"));
+    poisson_ratios = to_doubles(prm.get("nu values"));
+    holl_ratio = prm.get_bool("Holl ratio");
+    full_stick = prm.get_bool("full stick");
+    thresholds = to_doubles(prm.get("thresholds"));
+    prm.leave_subsection();
+    for (const double r : ratios)
+      if (!(r > 0.))
+        throw std::invalid_argument("Map/ratios: " + format(r) + " must be in (0, inf)");
+    for (const double k : exponents)
+      if (!(k > -1. && k < 1.))
+        throw std::invalid_argument("Map/k values: " + format(k) + " must be in (-1, 1)");
+    for (const double t : thresholds)
+      if (!(t > 0.))
+        throw std::invalid_argument("Map/thresholds: " + format(t) + " must be in (0, inf)");
+  }
+
+  std::string to_string(const SceneKind kind)
+  {
+    switch (kind)
+      {
+        case SceneKind::normal:
+          return "normal";
+        case SceneKind::analytic:
+          return "analytic";
+        case SceneKind::candidate:
+          return "candidate";
+        case SceneKind::adhesion:
+          return "adhesion";
+        case SceneKind::tangential:
+          return "tangential";
+        case SceneKind::map:
+          return "map";
+      }
+    return "unknown";
+  }
+
+  namespace
+  {
+    /// The tangential studies need their load (9.78-9.87) and, for the Holl pairing, k > 0.
+    void check_tangential(const Scene &s, const std::string &where)
+    {
+      using Study = TangentialParameters::Study;
+      using Type = LoadParameters::Type;
+      const TangentialParameters &t = s.tangential;
+      const double k = s.material.k;
+      if (t.holl_ratio && !(k > 0.))
+        throw std::invalid_argument(where + "Tangential/Holl ratio = true with Material/k = " + format(k) +
+                                    ": the Holl ratio nu = 1/(2+k) needs k in (0, 1) (nu <= 1/2)");
+      if (t.study == Study::stiffness && s.load.type != Type::flat_punch)
+        throw std::invalid_argument(where + "Tangential/study = stiffness needs Load/type = flat punch");
+      if ((t.study == Study::partial_slip || t.study == Study::oscillation) && s.load.type != Type::paraboloid)
+        throw std::invalid_argument(where + "Tangential/study = " +
+                                    (t.study == Study::partial_slip ? "partial slip" : "oscillation") +
+                                    " needs Load/type = paraboloid (a sphere, 9.80-9.87)");
+      if (s.load.type == Type::paraboloid && s.load.control != LoadParameters::Control::contact_radius)
+        throw std::invalid_argument(where + "a tangential study takes the contact radius Load/a: Load/control must "
+                                            "be contact radius");
+      if (!(s.load.a > 0.))
+        throw std::invalid_argument(where + "Load/a = " + format(s.load.a) + " must be in (0, inf)");
+    }
+
+    /// JKR needs a work of adhesion; the optimal profile (a prescribed tension) a tensile strength and none.
+    void check_adhesion(const Scene &s, const std::string &where)
+    {
+      const AdhesionParameters &ad = s.adhesion;
+      const bool optimal = s.load.type == LoadParameters::Type::constant_pressure;
+      if (optimal && ad.work_of_adhesion > 0.)
+        throw std::invalid_argument(where + "Adhesion/work of adhesion = " + format(ad.work_of_adhesion) +
+                                    " with Load/type = constant pressure: a prescribed pressure has no JKR state; the "
+                                    "optimal profile (9.69-9.74) takes Adhesion/tensile strength > 0 and no work of adhesion");
+      if (!optimal && !(ad.work_of_adhesion > 0.))
+        throw std::invalid_argument(where + "Adhesion/work of adhesion = " + format(ad.work_of_adhesion) +
+                                    " must be in (0, inf) for an adhesive scene");
+      if (optimal && !(ad.tensile_strength > 0.))
+        throw std::invalid_argument(where + "Adhesion/tensile strength = " + format(ad.tensile_strength) +
+                                    " must be in (0, inf) for the optimal profile");
+      if (ad.law != AdhesionParameters::Law::dugdale && (ad.tabor_parameter > 0. || ad.cohesive_strength > 0.))
+        throw std::invalid_argument(where + "Adhesion/Tabor parameter or cohesive strength is set with Adhesion/law = "
+                                    "JKR: they belong to law = Dugdale");
+      if (ad.law == AdhesionParameters::Law::dugdale)
+        {
+          using Type = LoadParameters::Type;
+          if (s.load.type != Type::paraboloid && s.load.type != Type::power_law)
+            throw std::invalid_argument(where + "Adhesion/law = Dugdale needs Load/type = paraboloid or power law (a "
+                                        "profile that opens monotonically)");
+          if ((ad.tabor_parameter > 0.) == (ad.cohesive_strength > 0.))
+            throw std::invalid_argument(where + "Adhesion/law = Dugdale with Tabor parameter = " +
+                                        format(ad.tabor_parameter) + " and cohesive strength = " +
+                                        format(ad.cohesive_strength) + ": give exactly one of them, > 0");
+          if (ad.tabor_parameter > 0. && s.material.modulus != MaterialParameters::Modulus::power_law)
+            throw std::invalid_argument(where + "Adhesion/Tabor parameter needs Material/modulus = power law (it is "
+                                        "defined by the chapter's JKR state); give Adhesion/cohesive strength instead");
+        }
+    }
+
+    /// An adhesive or tangential candidate: the profile as an expression on a disc, its family's physics, a range.
+    void check_family_candidate(const Scene &s, const std::string &where)
+    {
+      const CandidateParameters &c = s.candidate;
+      const bool adhesive = c.family() == CandidateParameters::Family::adhesive;
+      const std::string family = adhesive ? "an adhesive" : "a tangential";
+      if (c.profile.empty())
+        throw std::invalid_argument(where + family + " candidate needs Candidate/profile (an expression f(r))");
+      if (!c.depth.empty() || !c.force.empty() || !c.pressure.empty() || !c.displacement.empty() ||
+          !c.outer_radius.empty() || !c.inner_radius.empty())
+        throw std::invalid_argument(where + family + " candidate: Candidate/depth, force, pressure, displacement, "
+                                    "outer and inner radius are the non-adhesive normal family's; check them in a "
+                                    "scene of their own");
+      if (s.load.contact == LoadParameters::Contact::unilateral)
+        throw std::invalid_argument(where + family + " candidate needs Load/contact = disc");
+      // A grading the chapter does not cover is checked against the FE only: the adhesive family entirely, the
+      // tangential one by its stiffness (the partial-slip FE is loaded with the MDR's traction of a power law).
+      if (s.material.modulus != MaterialParameters::Modulus::power_law)
+        {
+          if (!s.references.fem)
+            throw std::invalid_argument(where + family + " candidate with Material/modulus other than power law is "
+                                        "checked against the FE only (the numerical MDR needs the power law): "
+                                        "References/fem must be true");
+          if (!adhesive && !(c.tangential_force.empty() && c.tangential_displacement.empty() &&
+                             c.stick_radius.empty() && c.dissipated_energy.empty() &&
+                             c.unloading_displacement.empty() && c.reloading_displacement.empty()))
+            throw std::invalid_argument(where + "a tangential candidate with Material/modulus other than power law: "
+                                        "only Candidate/tangential stiffness can be checked (against the FE; partial "
+                                        "slip needs the MDR's traction of the power law)");
+          if (adhesive && !c.adhesive_pressure.empty())
+            throw std::invalid_argument(where + "an adhesive candidate with Material/modulus other than power law: "
+                                        "Candidate/adhesive pressure is checked against the numerical MDR only, "
+                                        "which needs the power law");
+        }
+      if (!(s.load.a > 0.))
+        throw std::invalid_argument(where + "Load/a = " + format(s.load.a) + " must be in (0, inf) for " + family +
+                                    " candidate");
+      if (!(c.range[0] > 0. && c.range[1] > c.range[0]))
+        throw std::invalid_argument(where + "Candidate/range = " + format(c.range[0]) + ", " + format(c.range[1]) +
+                                    ": needs 0 < range[0] < range[1]");
+      if (s.tangential.enabled())
+        throw std::invalid_argument(where + family + " candidate: leave Tangential/study = none (the candidate's "
+                                    "path is its own)");
+      if (adhesive)
+        {
+          if (!(s.adhesion.work_of_adhesion > 0.))
+            throw std::invalid_argument(where + "an adhesive candidate needs Adhesion/work of adhesion > 0 (it is " +
+                                        format(s.adhesion.work_of_adhesion) + ")");
+          if (s.adhesion.law != AdhesionParameters::Law::jkr &&
+              !(s.adhesion.cohesive_strength > 0. && s.adhesion.tabor_parameter == 0. && s.references.fem))
+            throw std::invalid_argument(
+              where + "an adhesive candidate with Adhesion/law = " +
+              (s.adhesion.law == AdhesionParameters::Law::dugdale ? "Dugdale" : "Lennard-Jones") +
+              " needs Adhesion/cohesive strength > 0 (not the Tabor parameter, which is defined for the chapter's "
+              "profiles) and References/fem = true: its rows are the " +
+              (s.adhesion.law == AdhesionParameters::Law::dugdale ? "cohesive-zone" : "Lennard-Jones") + " FE's");
+          if (!c.adhesive_pressure.empty() && c.curvature.empty())
+            throw std::invalid_argument("Candidate/profile curvature: needed for an adhesive pressure candidate "
+                                        "(give f''(r))");
+          return;
+        }
+      if (s.adhesion.enabled(s.load))
+        throw std::invalid_argument(where + "a tangential candidate is non-adhesive (9.75-9.87): Adhesion/work of "
+                                    "adhesion = 0");
+      if (!(s.tangential.friction_coefficient > 0.))
+        throw std::invalid_argument(where + "Tangential/friction coefficient = " +
+                                    format(s.tangential.friction_coefficient) + " must be in (0, inf)");
+    }
+
+    /// A candidate checks at least one formula at one point; a pressure needs f'' (see the message).
+    void check_candidate(const Scene &s)
+    {
+      const CandidateParameters &c = s.candidate;
+      if (!c.profile.empty() && !c.profile_table.empty())
+        throw std::invalid_argument("scene " + s.file + ": Candidate/profile and Candidate/profile table are both set; "
+                                    "give one");
+      if (!c.profile_table.empty() && s.load.contact != LoadParameters::Contact::unilateral)
+        throw std::invalid_argument("scene " + s.file + ": Candidate/profile table needs Load/contact = unilateral (a "
+                                    "table has no derivatives for the MDR; it is checked against the FE only)");
+      if (s.load.contact == LoadParameters::Contact::unilateral)
+        {
+          if (!s.references.fem)
+            throw std::invalid_argument("scene " + s.file + ": Candidate with Load/contact = unilateral is checked "
+                                        "against the FE only: References/fem must be true");
+          const bool checks_something = !c.depth.empty() || !c.force.empty() || !c.outer_radius.empty() ||
+                                        !c.inner_radius.empty() ||
+                                        (!c.pressure.empty() && !s.outputs.pressure_radii.empty()) ||
+                                        (!c.displacement.empty() && !s.outputs.displacement_radii.empty());
+          if (!checks_something)
+            throw std::invalid_argument("Candidate: no candidate formula given (depth, force, outer radius, inner "
+                                        "radius, pressure or displacement)");
+          return;
+        }
+      if (!c.outer_radius.empty() || !c.inner_radius.empty() || c.indenter_radius > 0.)
+        throw std::invalid_argument("scene " + s.file + ": Candidate/outer radius, inner radius and indenter radius "
+                                    "need Load/contact = unilateral (with a disc the contact radius is Load/a)");
+      if (c.curvature.empty() && !c.pressure.empty())
+        // The pressure needs g'(x), a quadrature of f' and f'' nested in another one: finite-difference
+        // noise keeps both from meeting their tolerance, and the nested quadratures make the run slow.
+        throw std::invalid_argument("Candidate/profile curvature: needed for a pressure candidate (give f''(r))");
+      const bool checks_something = !c.depth.empty() || !c.force.empty() ||
+                                    (!c.pressure.empty() && !s.outputs.pressure_radii.empty()) ||
+                                    (!c.displacement.empty() && !s.outputs.displacement_radii.empty());
+      if (!checks_something)
+        throw std::invalid_argument("Candidate: no candidate formula given (depth, force, pressure or displacement)");
+    }
+
+    /// Discretization/accuracy = contract is the ladder of fem/accuracy.h: the axisymmetric model of a rigid
+    /// indenter on a disc, in a normal FE scene, a JKR adhesion scene (its states from the energy release rate) or a
+    /// tangential (mode-1) scene.
+    void check_contract(const Scene &s, const std::string &where)
+    {
+      if (!s.discretization.contract)
+        return;
+      std::string other;
+      if (s.map.enabled())
+        other = "a Map";
+      else if (s.adhesion.enabled(s.load) && s.adhesion.law != AdhesionParameters::Law::jkr)
+        other = "Adhesion/law = " + std::string(s.adhesion.law == AdhesionParameters::Law::dugdale ? "Dugdale" :
+                                                                                                    "Lennard-Jones");
+      else if (s.candidate.enabled())
+        other = "a Candidate";
+      else if (s.load.contact == LoadParameters::Contact::unilateral)
+        other = "Load/contact = unilateral";
+      else if (s.indenter.elasticity != IndenterParameters::Elasticity::rigid)
+        other = "an elastic Indenter";
+      else if (!s.references.fem)
+        other = "References/fem = false";
+      if (!other.empty())
+        throw std::invalid_argument(where + "Discretization/accuracy = contract with " + other +
+                                    ": the contract's ladder (fem/accuracy.h) answers the normal, JKR adhesion and "
+                                    "tangential FE scenes of a rigid indenter on a disc; use accuracy = levels");
+    }
+
+    /// The checks every scene passes, whatever its kind: the Lennard-Jones law's maps, nu = 1/2, unilateral contact,
+    /// friction, elastic indenters, and Map/nu values without a map.
+    void check_common(const Scene &s, const std::string &where)
+    {
+      if (s.adhesion.law == AdhesionParameters::Law::lennard_jones &&
+          s.map.parameter != MapParameters::Parameter::tabor_parameter &&
+          s.candidate.family() != CandidateParameters::Family::adhesive)
+        throw std::invalid_argument(where + "Adhesion/law = Lennard-Jones runs in Tabor-parameter maps and adhesive "
+                                    "candidates only (Map/parameter "
+                                    "= Tabor parameter, which gives its lambdas)");
+      // The edge's cells of the Lennard-Jones path shrink like lambda^-2 (lennard_jones_edge_refinement).
+      if (s.adhesion.law == AdhesionParameters::Law::lennard_jones)
+        for (const double lambda : s.map.ratios)
+          if (!(lambda <= largest_lennard_jones_lambda))
+            throw std::invalid_argument(where + "Map/ratios: lambda = " + std::to_string(lambda) +
+                                        " with Adhesion/law = Lennard-Jones; the valid range is (0, " +
+                                        format(largest_lennard_jones_lambda) +
+                                        "] (the adhesive zone narrows like lambda^-2, and the edge refinement and the "
+                                        "cost of the path grow with it)");
+      if (s.references.fem && s.material.nu >= 0.5 &&
+          s.discretization.formulation == DiscretizationParameters::Formulation::displacement)
+        throw std::invalid_argument(where + "Material/nu = 0.5 with Discretization/formulation = displacement: the "
+                                    "displacement formulation needs nu in [0, 0.5) (it locks); incompressible "
+                                    "nu = 0.5 needs formulation = mixed or automatic");
+      if (s.load.contact == LoadParameters::Contact::unilateral)
+        {
+          using Type = LoadParameters::Type;
+          const bool candidate = s.candidate.enabled();
+          if (!candidate && (s.load.type == Type::flat_punch || s.load.type == Type::constant_pressure))
+            throw std::invalid_argument(where + "Load/contact = unilateral needs an indenter (Load/type = paraboloid, "
+                                        "cone, power law or concave punch, or a Candidate/profile)");
+          if ((candidate || s.load.type != Type::concave_punch) &&
+              s.load.control == LoadParameters::Control::contact_radius)
+            throw std::invalid_argument(where + "Load/contact = unilateral finds the contact radius: Load/control "
+                                        "must be depth or force");
+          if (s.tangential.enabled() || s.adhesion.enabled(s.load))
+            throw std::invalid_argument(where + "Load/contact = unilateral is a normal-contact scene (no Adhesion or "
+                                        "Tangential entries)");
+        }
+      if (s.friction.enabled())
+        {
+          if (s.load.contact != LoadParameters::Contact::unilateral)
+            throw std::invalid_argument(where + "Friction/coefficient = " + format(s.friction.coefficient) +
+                                        " needs Load/contact = unilateral (the stick and slip zones are found with the "
+                                        "contact set)");
+          if (s.indenter.elasticity != IndenterParameters::Elasticity::rigid)
+            throw std::invalid_argument(where + "Friction/coefficient = " + format(s.friction.coefficient) +
+                                        " is modelled for a rigid indenter: Indenter/elasticity must be rigid");
+          if (s.candidate.enabled() || s.map.enabled())
+            throw std::invalid_argument(where + "Friction/coefficient = " + format(s.friction.coefficient) +
+                                        " with a Candidate or Map: a friction map sets mu from Map/ratios (Map/parameter "
+                                        "= friction coefficient); a candidate is checked frictionless");
+        }
+      if (s.indenter.elasticity != IndenterParameters::Elasticity::rigid)
+        {
+          if (s.load.contact != LoadParameters::Contact::unilateral)
+            throw std::invalid_argument(where + "Indenter/elasticity = " +
+                                        (s.indenter.elasticity == IndenterParameters::Elasticity::graded ? "graded"
+                                                                                                        : "homogeneous") +
+                                        " needs Load/contact = unilateral (the two-body model finds the contact set)");
+          if (s.indenter.elasticity == IndenterParameters::Elasticity::graded &&
+              s.material.modulus != MaterialParameters::Modulus::power_law)
+            throw std::invalid_argument(where + "Indenter/elasticity = graded takes the Material's k and c0 of the power "
+                                        "law (9.4): Material/modulus must be power law");
+          if (s.map.enabled())
+            throw std::invalid_argument(where + "Map/parameter is set: the map chooses the indenter; Indenter/elasticity "
+                                        "must be rigid");
+        }
+      if (!s.map.enabled() && !s.map.poisson_ratios.empty())
+        throw std::invalid_argument(where + "Map/nu values is set without a map (Map/parameter = none): it belongs to a "
+                                    "friction coefficient map");
+    }
+
+    /// Map/parameter = Coulomb 3D.
+    void check_coulomb_map(const Scene &s, const std::string &where)
+    {
+    if (s.tangential.study != TangentialParameters::Study::oscillation)
+      throw std::invalid_argument(where + "Map/parameter = Coulomb 3D needs Tangential/study = oscillation (its "
+                                  "friction coefficient, amplitude and load steps set the path)");
+    if (s.adhesion.enabled(s.load) || s.candidate.enabled() || s.load.contact == LoadParameters::Contact::unilateral ||
+        s.friction.enabled())
+      throw std::invalid_argument(where + "Map/parameter = Coulomb 3D: no Adhesion, Candidate or Friction entries and "
+                                  "Load/contact = disc (the 3D model finds the contact and stick zones itself)");
+    if (s.load.type != LoadParameters::Type::paraboloid)
+      throw std::invalid_argument(where + "Map/parameter = Coulomb 3D needs Load/type = paraboloid (the sphere of "
+                                  "9.80-9.86)");
+    if (s.material.modulus != MaterialParameters::Modulus::power_law)
+      throw std::invalid_argument(where + "Map/parameter = Coulomb 3D needs Material/modulus = power law");
+    if (!s.references.fem)
+      throw std::invalid_argument(where + "Map/parameter is set with References/fem = false: a map is FE data");
+
+    if (s.tangential.holl_ratio)
+      throw std::invalid_argument(where + "Map/parameter = Coulomb 3D: use Map/Holl ratio, not Tangential/Holl "
+                                  "ratio (the map runs every nu of Map/nu values)");
+    if (!(s.load.a > 0.) || !(s.load.R > s.load.a))
+      throw std::invalid_argument(where + "Map/parameter = Coulomb 3D needs 0 < Load/a < Load/R (Load/a = " +
+                                  format(s.load.a) + ", Load/R = " + format(s.load.R) + ")");
+    }
+
+    /// Map/parameter = Tabor parameter.
+    void check_tabor_map(const Scene &s, const std::string &where)
+    {
+    using Type = LoadParameters::Type;
+    if (s.adhesion.law == AdhesionParameters::Law::lennard_jones && !s.discretization.refinements.empty() &&
+        s.discretization.refinements.back() > 4)
+      throw std::invalid_argument(where + "Discretization/refinements = " +
+                                  std::to_string(s.discretization.refinements.back()) +
+                                  " with Adhesion/law = Lennard-Jones: at most 4 (its mesh is refined 2^level times, "
+                                  "fem/smooth_cohesion.h)");
+    if (s.tangential.enabled() || s.candidate.enabled() || s.load.contact == LoadParameters::Contact::unilateral)
+      throw std::invalid_argument(where + "Map/parameter = Tabor parameter: an adhesive scene (no Tangential or "
+                                  "Candidate entries, Load/contact = disc)");
+    if (s.adhesion.tabor_parameter > 0. || s.adhesion.cohesive_strength > 0.)
+      throw std::invalid_argument(where + "Map/parameter = Tabor parameter: Adhesion/Tabor parameter and cohesive "
+                                  "strength are not set (Map/ratios gives the lambdas)");
+    if (!(s.adhesion.work_of_adhesion > 0.))
+      throw std::invalid_argument(where + "Map/parameter = Tabor parameter with Adhesion/work of adhesion = " +
+                                  format(s.adhesion.work_of_adhesion) + ": it must be in (0, inf)");
+    if (s.load.type != Type::paraboloid && s.load.type != Type::power_law)
+      throw std::invalid_argument(where + "Map/parameter = Tabor parameter needs Load/type = paraboloid or power law "
+                                  "(a profile that opens monotonically, with the chapter's JKR pull-off)");
+    if (s.material.modulus != MaterialParameters::Modulus::power_law)
+      throw std::invalid_argument(where + "Map/parameter = Tabor parameter needs Material/modulus = power law (the "
+                                  "map isolates the range of adhesion)");
+    if (!s.references.fem)
+      throw std::invalid_argument(where + "Map/parameter is set with References/fem = false: a map is FE data");
+    if (s.map.ratios.empty())
+      throw std::invalid_argument(where + "Map/ratios is empty: give the Tabor parameters lambda of the map");
+    if (!s.map.poisson_ratios.empty())
+      throw std::invalid_argument(where + "Map/nu values is set for Map/parameter = Tabor parameter: the map runs at "
+                                  "Material/nu");
+    }
+
+
+    /// A map whose FE finds the contact set needs a curved indenter, and one that isolates `isolates` needs the
+    /// power law.
+    void require_curved_power_law(const Scene &s, const std::string &where, const std::string &parameter,
+                                  const std::string &why_curved, const std::string &isolates)
+    {
+      if (s.load.type == LoadParameters::Type::flat_punch)
+        throw std::invalid_argument(where + "Map/parameter = " + parameter + " with Load/type = flat punch: " +
+                                    why_curved + ", which needs a curved indenter (paraboloid, cone or power law)");
+      if (s.material.modulus != MaterialParameters::Modulus::power_law)
+        throw std::invalid_argument(where + "Map/parameter = " + parameter +
+                                    " needs Material/modulus = power law (the map isolates " + isolates + ")");
+    }
+
+    /// The maps of normal contact (every other Map/parameter).
+    void check_normal_map(const Scene &s, const std::string &where)
+    {
+    using Type = LoadParameters::Type;
+    if (s.tangential.enabled() || s.adhesion.enabled(s.load) || s.candidate.enabled() ||
+        s.load.contact == LoadParameters::Contact::unilateral)
+      throw std::invalid_argument(where + "Map/parameter is set: a map is a normal-contact scene (no Adhesion, "
+                                  "Tangential or Candidate entries, Load/contact = disc)");
+    if (s.load.type == Type::constant_pressure || s.load.type == Type::concave_punch)
+      throw std::invalid_argument(where + "Map/parameter is set with Load/type = " +
+                                  (s.load.type == Type::constant_pressure ? "constant pressure" : "concave punch") +
+                                  ": a map needs a flat punch, paraboloid, cone or power law");
+    if (s.load.control != LoadParameters::Control::contact_radius)
+      throw std::invalid_argument(where + "Map/parameter is set: Load/control must be contact radius (the map "
+                                  "runs at Load/a and compares at the FE depth)");
+    if (!s.references.fem)
+      throw std::invalid_argument(where + "Map/parameter is set with References/fem = false: a map is FE data");
+    if (s.map.ratios.empty())
+      throw std::invalid_argument(where + "Map/ratios is empty: give the ratios a/z0, a/H, a/w or E1/E0 of the map");
+    if (s.map.parameter == MapParameters::Parameter::indenter_modulus)
+      require_curved_power_law(s, where, "indenter modulus", "the elastic indenter's contact set is found",
+                               "the indenter's elasticity");
+    if (s.map.parameter == MapParameters::Parameter::friction_coefficient &&
+        (s.friction.load_steps < 2 || s.friction.load_steps % 2 != 0))
+      throw std::invalid_argument(where + "Map/parameter = friction coefficient with Friction/load steps = " +
+                                  std::to_string(s.friction.load_steps) +
+                                  ": the map extrapolates from N and 2N steps and measures it from N/2: give an even "
+                                  "number >= 2");
+    if (s.map.parameter != MapParameters::Parameter::friction_coefficient && !s.map.poisson_ratios.empty())
+      throw std::invalid_argument(where + "Map/nu values is set for Map/parameter other than friction coefficient: "
+                                  "the other maps run at Material/nu");
+    if (s.map.parameter == MapParameters::Parameter::friction_coefficient)
+      require_curved_power_law(s, where, "friction coefficient", "the map finds the contact set during loading",
+                               "friction");
+    if (s.map.parameter == MapParameters::Parameter::erf_width)
+      for (const double k : s.map.exponents.empty() ? std::vector<double>{s.material.k} : s.map.exponents)
+        if (k != 0.)
+          throw std::invalid_argument(where + "Map/parameter = erf width with k = " + format(k) + " (" +
+                                      (s.map.exponents.empty() ? "Material/k" : "Map/k values") +
+                                      "): the error-function grading needs k = 0 (homogeneous E0 below the skin)");
+    if (!(s.load.a > 0.))
+      throw std::invalid_argument(where + "Load/a = " + format(s.load.a) + " must be in (0, inf) (z0 or H = a / ratio)");
+    }
+  } // namespace
+
+  SceneKind scene_kind(const Scene &s)
+  {
+    const std::string where = "scene " + s.file + ": ";
+    check_contract(s, where);
+    check_common(s, where);
+    if (s.map.parameter == MapParameters::Parameter::coulomb_3d)
+      {
+        check_coulomb_map(s, where);
+        return SceneKind::map;
+      }
+    if (s.map.parameter == MapParameters::Parameter::tabor_parameter)
+      {
+        check_tabor_map(s, where);
+        return SceneKind::map;
+      }
+    if (s.map.enabled())
+      {
+        check_normal_map(s, where);
+        return SceneKind::map;
+      }
+    if (s.candidate.enabled() && s.candidate.family() != CandidateParameters::Family::normal)
+      {
+        check_family_candidate(s, where);
+        return SceneKind::candidate;
+      }
+    if (s.tangential.enabled())
+      {
+        if (s.adhesion.enabled(s.load))
+          throw std::invalid_argument(where + "Tangential/study is set and the scene is adhesive "
+                                      "(Adhesion/work of adhesion or tensile strength > 0): tangential contact is "
+                                      "non-adhesive (9.75-9.87); choose one");
+        check_tangential(s, where);
+        return SceneKind::tangential;
+      }
+    if (s.adhesion.enabled(s.load))
+      {
+        check_adhesion(s, where);
+        return SceneKind::adhesion;
+      }
+    if (s.candidate.enabled())
+      {
+        check_candidate(s);
+        return SceneKind::candidate;
+      }
+    return s.references.fem ? SceneKind::normal : SceneKind::analytic;
+  }
+
+  void require_kind(const Scene &s, const SceneKind kind, const std::string &function)
+  {
+    const SceneKind actual = scene_kind(s);
+    if (actual != kind)
+      throw std::invalid_argument(function + ": scene " + s.file + " is a " + to_string(actual) + " scene, not a " +
+                                  to_string(kind) + " scene");
+  }
+
+  namespace
+  {
+    void declare_all(ParameterHandler &prm)
+    {
+      SceneInfo::declare(prm);
+      MaterialParameters::declare(prm);
+      LoadParameters::declare(prm);
+      IndenterParameters::declare(prm);
+      DiscretizationParameters::declare(prm);
+      OutputParameters::declare(prm);
+      ReferenceParameters::declare(prm);
+      ToleranceParameters::declare(prm);
+      CandidateParameters::declare(prm);
+      AdhesionParameters::declare(prm);
+      TangentialParameters::declare(prm);
+      FrictionParameters::declare(prm);
+      MapParameters::declare(prm);
+    }
+
+    /// deal.II's tree names with every character but [a-zA-Z0-9] written as _XX (hex; ParameterHandler docs).
+    std::string demangle(const std::string &name)
+    {
+      std::string out;
+      for (std::size_t i = 0; i < name.size(); ++i)
+        if (name[i] == '_' && i + 2 < name.size() && std::isxdigit(static_cast<unsigned char>(name[i + 1])) &&
+            std::isxdigit(static_cast<unsigned char>(name[i + 2])))
+          {
+            out += static_cast<char>(std::stoi(name.substr(i + 1, 2), nullptr, 16));
+            i += 2;
+          }
+        else
+          out += name[i];
+      return out;
+    }
+
+    /// Every declared entry as "Section/entry" (from the handler's JSON tree: an entry is an object with a "value").
+    void declared_paths(const nlohmann::json &node, const std::string &prefix, std::vector<std::string> &paths)
+    {
+      for (auto it = node.begin(); it != node.end(); ++it)
+        if (it.value().is_object())
+          {
+            const std::string path = prefix + demangle(it.key());
+            if (it.value().contains("value") && it.value().at("value").is_string())
+              paths.push_back(path);
+            else
+              declared_paths(it.value(), path + "/", paths);
+          }
+    }
+
+    /// The entries a .prm file sets ("set" lines under their "subsection"s), as "Section/entry".
+    std::vector<std::string> paths_set_in(const std::string &file)
+    {
+      std::vector<std::string> paths, stack;
+      std::ifstream            in(file);
+      const auto               trim = [](std::string t) {
+        t.erase(0, t.find_first_not_of(" \t"));
+        t.erase(t.find_last_not_of(" \t\r") + 1);
+        return t;
+      };
+      for (std::string line; std::getline(in, line);)
+        {
+          line = trim(line.substr(0, line.find('#')));
+          if (line.rfind("subsection ", 0) == 0)
+            stack.push_back(trim(line.substr(11)));
+          else if (line == "end" && !stack.empty())
+            stack.pop_back();
+          else if (line.rfind("set ", 0) == 0)
+            {
+              std::string path;
+              for (const std::string &section : stack)
+                path += section + "/";
+              paths.push_back(path + trim(line.substr(4, line.find('=') - 4)));
+            }
+        }
+      return paths;
+    }
+
+    /// " (did you mean 'Section/entry'?)" for the first path in `used` that is not declared, when a declared one
+    /// is close to it; else "".
+    std::string did_you_mean(const std::vector<std::string> &used)
+    {
+      ParameterHandler prm;
+      declare_all(prm);
+      std::ostringstream tree;
+      prm.print_parameters(tree, ParameterHandler::JSON);
+      std::vector<std::string> declared;
+      declared_paths(nlohmann::json::parse(tree.str()), "", declared);
+      for (const std::string &path : used)
+        {
+          if (std::find(declared.begin(), declared.end(), path) != declared.end())
+            continue;
+          std::string best;
+          std::size_t best_distance = std::numeric_limits<std::size_t>::max();
+          for (const std::string &candidate : declared)
+            if (const std::size_t d = edit_distance(path, candidate); d < best_distance)
+              best = candidate, best_distance = d;
+          if (best_distance <= std::max<std::size_t>(2, path.size() / 4))
+            return " ('" + path + "' is no scene entry; did you mean '" + best + "'?)";
+          return " ('" + path + "' is no scene entry; `gradcontact run --help-scene` lists them)";
+        }
+      return "";
+    }
+  } // namespace
+
+  Override parse_override(const std::string &text)
+  {
+    const auto eq = text.find('=');
+    if (eq == std::string::npos || eq == 0)
+      throw std::invalid_argument("--set '" + text + "': expected Section/key=value");
+    Override o;
+    std::stringstream path(text.substr(0, eq));
+    for (std::string part; std::getline(path, part, '/');)
+      o.path.push_back(part);
+    if (o.path.size() < 2)
+      throw std::invalid_argument("--set '" + text + "': expected Section/key=value (the section is missing)");
+    o.value = text.substr(eq + 1);
+    return o;
+  }
+
+  Scene read_scene(const std::string &file, const std::vector<Override> &overrides)
+  {
+    ParameterHandler prm;
+    declare_all(prm);
+    try
+      {
+        if (!std::filesystem::is_regular_file(file))
+          throw std::invalid_argument("no such file");
+        if (std::filesystem::path(file).extension() == ".json")
+          {
+            // the same entries as a JSON object of subsections ({"Material": {"k": "0.5"}, ...})
+            std::ifstream in(file);
+            prm.parse_input_from_json(in, false);
+          }
+        else
+          prm.parse_input(file, "", false);
+      }
+    catch (const std::exception &e)
+      {
+        // deal.II names the line, the entry and the pattern it violates; a misspelt entry gets the closest one.
+        const bool prm_file = std::filesystem::path(file).extension() != ".json";
+        throw std::invalid_argument("scene " + file + ": " + concise(e) + (prm_file ? did_you_mean(paths_set_in(file)) : ""));
+      }
+    for (const Override &o : overrides)
+      {
+        try
+          {
+            for (std::size_t i = 0; i + 1 < o.path.size(); ++i)
+              prm.enter_subsection(o.path[i]);
+            prm.set(o.path.back(), o.value);
+            for (std::size_t i = 0; i + 1 < o.path.size(); ++i)
+              prm.leave_subsection();
+          }
+        catch (const std::exception &e)
+          {
+            std::string name;
+            for (const std::string &p : o.path)
+              name += (name.empty() ? "" : "/") + p;
+            throw std::invalid_argument("scene " + file + ": --set " + name + "=" + o.value + ": " + concise(e) +
+                                        did_you_mean({name}));
+          }
+      }
+    Scene s;
+    s.file = file;
+    try
+      {
+        s.info.parse(prm);
+        s.material.parse(prm);
+        s.load.parse(prm);
+        s.indenter.parse(prm);
+        s.discretization.parse(prm);
+        s.outputs.parse(prm);
+        s.references.parse(prm);
+        s.tolerances.parse(prm);
+        s.candidate.parse(prm);
+        if (s.candidate.fe_tolerance > 0.)
+          s.tolerances = {s.candidate.fe_tolerance, s.candidate.fe_tolerance, s.candidate.fe_tolerance,
+                          s.candidate.fe_tolerance, s.candidate.fe_tolerance};
+        s.adhesion.parse(prm);
+        s.tangential.parse(prm);
+        s.friction.parse(prm);
+        s.map.parse(prm);
+      }
+    catch (const std::exception &e)
+      {
+        throw std::invalid_argument("scene " + file + ": " + concise(e));
+      }
+    if (s.info.name.empty())
+      s.info.name = std::filesystem::path(file).stem().string();
+    std::ostringstream out;
+    prm.print_parameters(out, ParameterHandler::ShortPRM);
+    s.resolved = out.str();
+    s.kind = scene_kind(s);
+    return s;
+  }
+
+  std::string scene_documentation()
+  {
+    ParameterHandler prm;
+    declare_all(prm);
+    std::ostringstream out;
+    prm.print_parameters(out, ParameterHandler::PRM);
+    return out.str();
+  }
+} // namespace gradcontact::cases

@@ -1,0 +1,105 @@
+#!/usr/bin/env python3
+"""The house's one-way order, checked from the sources (cases/README.md, "Layout"; fem/README.md).
+
+cases/ is in parts, each including only itself and the parts below it:
+    report < scene < model < runners < tools < app
+and a runner includes no other runner's header (its own family, e.g. candidate and candidate_coulomb, excepted;
+runners/run_scene, the runners' one entry, includes them all). fem/ includes neither analytic/ nor cases/, and
+analytic/ neither fem/ nor cases/. The longest include chain among the files of cases/ is at most 6 levels.
+Prints every violation and exits 1 when there is one; prints the longest chain either way.
+"""
+import os
+import re
+import sys
+
+ROOT = sys.argv[1] if len(sys.argv) > 1 else os.path.join(os.path.dirname(__file__), '..')
+ORDER = ['report', 'scene', 'model', 'runners', 'tools', 'app']
+MAX_LEVELS = 6
+INCLUDE = re.compile(r'^\s*#\s*include\s*[<"]([^>"]+)[>"]', re.M)
+
+
+def sources(folder):
+    for base, _, files in os.walk(os.path.join(ROOT, folder)):
+        for f in files:
+            if f.endswith(('.h', '.cc')):
+                yield os.path.relpath(os.path.join(base, f), ROOT)
+
+
+def includes(path):
+    with open(os.path.join(ROOT, path), encoding='utf-8', errors='replace') as f:
+        return INCLUDE.findall(f.read())
+
+
+def case_file(path, name):
+    """The cases/ file an include names, or None (a library or system header)."""
+    for candidate in (os.path.join('cases', name), os.path.normpath(os.path.join(os.path.dirname(path), name)),
+                      name if name.startswith('cases/') else None):
+        if candidate and os.path.isfile(os.path.join(ROOT, candidate)):
+            return candidate
+    return None
+
+
+def stem(path):
+    return os.path.splitext(os.path.basename(path))[0]
+
+
+def family(a, b):
+    return a == b or a.startswith(b + '_') or b.startswith(a + '_')
+
+
+def main():
+    problems = []
+    graph = {}
+    for path in sources('cases'):
+        parts = path.split(os.sep)
+        if len(parts) < 3 or parts[1] not in ORDER:
+            if path.endswith(('.h', '.cc')) and len(parts) == 2:
+                problems.append(path + ': a source file outside the parts ' + ', '.join(ORDER))
+            continue
+        part = parts[1]
+        graph[path] = []
+        for name in includes(path):
+            target = case_file(path, name)
+            if not target:
+                continue
+            graph[path].append(target)
+            target_part = target.split(os.sep)[1]
+            if ORDER.index(target_part) > ORDER.index(part):
+                problems.append('%s (%s) includes %s (%s), a part above it' % (path, part, target, target_part))
+            if (part == target_part == 'runners' and stem(path) != 'run_scene' and
+                    not family(stem(path), stem(target))):
+                problems.append('%s includes another runner\'s header %s' % (path, target))
+    for library, banned in (('fem', ('analytic/', 'cases/')), ('analytic', ('fem/', 'cases/'))):
+        for path in sources(library):
+            for name in includes(path):
+                if name.startswith(banned):
+                    problems.append('%s includes %s: %s must not depend on %s' % (path, name, library, name.split('/')[0]))
+
+    depth, chain = {}, {}
+
+    def longest(node, seen=()):
+        if node in depth:
+            return depth[node]
+        best, best_chain = 1, [node]
+        for nxt in graph.get(node, []):
+            if nxt in seen:
+                problems.append('include cycle through ' + ' -> '.join(seen + (node, nxt)))
+                continue
+            d = longest(nxt, seen + (node,)) + 1
+            if d > best:
+                best, best_chain = d, [node] + chain[nxt]
+        depth[node], chain[node] = best, best_chain
+        return best
+
+    top = max(graph, key=longest)
+    print('longest include chain in cases/ (%d levels): %s' % (depth[top], ' -> '.join(chain[top])))
+    if depth[top] > MAX_LEVELS:
+        problems.append('the longest include chain has %d levels (at most %d)' % (depth[top], MAX_LEVELS))
+    for p in problems:
+        print('layer violation: ' + p)
+    print('%d violation(s)' % len(problems))
+    return 1 if problems else 0
+
+
+if __name__ == '__main__':
+    sys.exit(main())
