@@ -1,6 +1,6 @@
 // gradcontact/analytic: the Maugis-Dugdale adhesive contact of a rigid sphere (paraboloid f = r^2/(2R)) with
 // a homogeneous elastic half-space (k = 0), and of a power-law tip with the graded half-space (below, by the
-// MDR): the references of the cohesive-zone FE (fem/cohesive_zone.h). Not part of the chapter, which assumes JKR.
+// MDR): the references of the cohesive-zone FE (fem/adhesion/cohesive_zone.h). Not part of the chapter, which assumes JKR.
 //
 // Maugis, J. Colloid Interface Sci. 150 (1992) 243-269, in the notation of Johnson and Greenwood,
 // J. Colloid Interface Sci. 192 (1997) 326-333. The Dugdale law: a tension sigma_0 acts where the gap is

@@ -3,7 +3,7 @@
 // alpha, beta > -1,
 //     int_0^1 u^alpha (1-u)^beta h(u) du = sum_q w_q h(u_q)   exactly for polynomials h of degree <= 2n - 1.
 // Header only and free of deal.II and Boost: the numerical MDR (analytic/) and the surface cell layer of
-// the FE model (fem/gauss_jacobi.h) share it without a link dependency between the two libraries.
+// the FE model (fem/base/gauss_jacobi.h) share it without a link dependency between the two libraries.
 //
 // Golub and Welsch (Math. Comp. 23 (1969) 221-230): the nodes are the eigenvalues of the symmetric
 // tridiagonal Jacobi matrix of the three-term recurrence of the orthonormal polynomials p_j. The

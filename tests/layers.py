@@ -4,8 +4,10 @@
 cases/ is in parts, each including only itself and the parts below it:
     report < scene < model < runners < tools < app
 and a runner includes no other runner's header (its own family, e.g. candidate and candidate_coulomb, excepted;
-runners/run_scene, the runners' one entry, includes them all). fem/ includes neither analytic/ nor cases/, and
-analytic/ neither fem/ nor cases/. The longest include chain among the files of cases/ is at most 6 levels.
+runners/run_scene, the runners' one entry, includes them all). fem/ is in layers, each including only itself and
+the layers below it:
+    base < modulus < grid < io < elasticity < linear_algebra < bodies < accuracy < contact < adhesion < tangential
+fem/ includes neither analytic/ nor cases/, and analytic/ neither fem/ nor cases/. The longest include chain among the files of cases/ is at most 6 levels.
 Prints every violation and exits 1 when there is one; prints the longest chain either way.
 """
 import os
@@ -14,6 +16,8 @@ import sys
 
 ROOT = sys.argv[1] if len(sys.argv) > 1 else os.path.join(os.path.dirname(__file__), '..')
 ORDER = ['report', 'scene', 'model', 'runners', 'tools', 'app']
+FEM_ORDER = ['base', 'modulus', 'grid', 'io', 'elasticity', 'linear_algebra', 'bodies', 'accuracy', 'contact',
+             'adhesion', 'tangential']
 MAX_LEVELS = 6
 INCLUDE = re.compile(r'^\s*#\s*include\s*[<"]([^>"]+)[>"]', re.M)
 
@@ -69,6 +73,19 @@ def main():
             if (part == target_part == 'runners' and stem(path) != 'run_scene' and
                     not family(stem(path), stem(target))):
                 problems.append('%s includes another runner\'s header %s' % (path, target))
+    for path in sources('fem'):
+        parts = path.split(os.sep)
+        if len(parts) < 3 or parts[1] not in FEM_ORDER:
+            if len(parts) == 2:
+                problems.append(path + ': a source file outside the layers ' + ', '.join(FEM_ORDER))
+            continue
+        for name in includes(path):
+            if name.startswith('fem/'):
+                layer = name.split('/')[1]
+                if layer not in FEM_ORDER:
+                    problems.append('%s includes %s, which is in no layer' % (path, name))
+                elif FEM_ORDER.index(layer) > FEM_ORDER.index(parts[1]):
+                    problems.append('%s (%s) includes %s, a layer above it' % (path, parts[1], name))
     for library, banned in (('fem', ('analytic/', 'cases/')), ('analytic', ('fem/', 'cases/'))):
         for path in sources(library):
             for name in includes(path):

@@ -2,9 +2,9 @@
 
 #include "model/fe_model.h"
 
-#include <fem/errors.h>
-#include <fem/half_space_3d.h>
-#include <fem/modulus.h>
+#include <fem/base/errors.h>
+#include <fem/bodies/half_space_3d.h>
+#include <fem/modulus/modulus.h>
 
 #include <deal.II/base/mpi.h>
 

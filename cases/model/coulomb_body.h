@@ -1,15 +1,15 @@
 // gradcontact/cases: the 3D body of a Coulomb contact (model part): a rigid indenter on the power-law graded
-// half-space in 3D (fem/half_space_3d.h), its mesh, discretisation and loading path, and its surface compliance,
-// which every path on that body shares (fem/coulomb_contact_3d.h).
+// half-space in 3D (fem/bodies/half_space_3d.h), its mesh, discretisation and loading path, and its surface compliance,
+// which every path on that body shares (fem/tangential/coulomb_contact_3d.h).
 #ifndef GRADCONTACT_CASES_COULOMB_BODY_H
 #define GRADCONTACT_CASES_COULOMB_BODY_H
 
 #include "scene/scene.h"
 
-#include <fem/coulomb_contact_3d.h>
-#include <fem/discretization.h>
-#include <fem/distributed_linear_solver.h>
-#include <fem/mesh_3d.h>
+#include <fem/tangential/coulomb_contact_3d.h>
+#include <fem/grid/discretization.h>
+#include <fem/linear_algebra/distributed_linear_solver.h>
+#include <fem/grid/mesh_3d.h>
 
 #include <mpi.h>
 

@@ -1,4 +1,4 @@
-// gradcontact/cases: a scene runner under Discretization/accuracy = contract (fem/accuracy.h). The runner's FE study
+// gradcontact/cases: a scene runner under Discretization/accuracy = contract (fem/accuracy/accuracy.h). The runner's FE study
 // runs once per level of the ladder until the estimate of every FE value it compared is within Discretization/force
 // tolerance, or the ladder names its limit. Only the last level's rows stay, each with the asked tolerance, its
 // estimate and the verdict; a refusal adds a failed "FE contract" row that names the limit.
@@ -7,7 +7,7 @@
 
 #include "report/report.h"
 
-#include <fem/accuracy.h>
+#include <fem/accuracy/accuracy.h>
 
 #include <cstddef>
 #include <functional>

@@ -15,9 +15,9 @@
 
 #include "scene/scene.h"
 
-#include <fem/axisymmetric_solver.h>
-#include <fem/modulus.h>
-#include <fem/unilateral_contact.h>
+#include <fem/bodies/axisymmetric_solver.h>
+#include <fem/modulus/modulus.h>
+#include <fem/contact/unilateral_contact.h>
 
 #include <optional>
 

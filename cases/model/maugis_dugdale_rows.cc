@@ -1,7 +1,7 @@
 #include "model/maugis_dugdale_rows.h"
 
 #include <analytic/maugis_dugdale.h>
-#include <fem/errors.h>
+#include <fem/base/errors.h>
 
 #include <boost/math/tools/toms748_solve.hpp>
 

@@ -1,6 +1,6 @@
 #include "model/scene_start.h"
 
-#include <fem/table_file.h>
+#include <fem/base/table_file.h>
 
 #include <cmath>
 #include <fstream>

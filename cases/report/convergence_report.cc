@@ -2,8 +2,8 @@
 
 #include "report/report.h"
 
-#include <fem/accuracy.h>
-#include <fem/convergence.h>
+#include <fem/accuracy/accuracy.h>
+#include <fem/accuracy/convergence.h>
 
 #include <algorithm>
 #include <cmath>
@@ -47,7 +47,7 @@ namespace gradcontact::cases
     md << "# " << scene << ": convergence\n\nErrors against the " << reference
        << "; the observed order p (error ~ h^p, h ~ DoFs^(-1/2)) is fitted over the last three levels. Next to them, "
           "what the FE knows without a reference: the relative change from the level before, and the Richardson "
-          "estimate of the level's error from the changes (fem/accuracy.h, degree-2 ratio assumed with two levels, "
+          "estimate of the level's error from the changes (fem/accuracy/accuracy.h, degree-2 ratio assumed with two levels, "
           "observed from three).\n\n";
     // A reference that is an idealisation of the model (a table or another grading against the power law): its
     // error is the gap between the two, which refinement does not close.

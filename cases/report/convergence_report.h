@@ -2,7 +2,7 @@
 //
 // Each scalar the scene compares is one series: its value at every refinement level against one reference
 // (the first analytic reference of the scene). The observed order p of error ~ h^p, h ~ DoFs^(-1/2) (2D),
-// is fem::observed_order (fem/convergence.h): the least-squares slope over the last three levels.
+// is fem::observed_order (fem/accuracy/convergence.h): the least-squares slope over the last three levels.
 // Written into the report folder: convergence.csv, convergence.md and, with plots, the error against DoFs
 // and against run time of each series (convergence-<i>-dofs, convergence-<i>-time).
 #ifndef GRADCONTACT_CASES_CONVERGENCE_REPORT_H

@@ -4,10 +4,10 @@
 #include "model/fe_model.h"
 #include "model/scene_start.h"
 
-#include <fem/adhesion.h>
-#include <fem/cohesive_zone.h>
-#include <fem/fourier_mode1_solver.h>
-#include <fem/smooth_cohesion.h>
+#include <fem/adhesion/adhesion.h>
+#include <fem/adhesion/cohesive_zone.h>
+#include <fem/tangential/fourier_mode1_solver.h>
+#include <fem/adhesion/smooth_cohesion.h>
 
 #include <analytic/material.h>
 #include <analytic/mdr_contact.h>
@@ -466,7 +466,7 @@ namespace gradcontact::cases
         }
     }
 
-    /// The adhesive family against the JKR FE of fem/adhesion.h (the FE's own energy release rate and critical
+    /// The adhesive family against the JKR FE of fem/adhesion/adhesion.h (the FE's own energy release rate and critical
     /// search; the profile a rigid custom indenter).
     void adhesive_fe_rows(const Scene &s, const mdr::Profile &profile, const std::vector<double> &radii,
                           const std::map<std::string, double> &constants, std::vector<Row> &rows, FeValues &fe)
@@ -488,7 +488,7 @@ namespace gradcontact::cases
       adhesive_pressure_fe_rows(s, model, constants, rows, fe);
     }
 
-    /// Adhesion/law = Dugdale: the adhesive family against the cohesive-zone FE of fem/cohesive_zone.h (adhesion of
+    /// Adhesion/law = Dugdale: the adhesive family against the cohesive-zone FE of fem/adhesion/cohesive_zone.h (adhesion of
     /// the finite range dgamma / sigma_0; no JKR assumption): how far the candidate's JKR-type form is from that
     /// adhesive. Its rows say "(JKR idealisation)": a deviation there measures the JKR assumption, not the
     /// candidate's algebra.
@@ -534,7 +534,7 @@ namespace gradcontact::cases
                                " on its contact branch (its largest peak radius is " + format(largest) + ")");
     }
 
-    /// Adhesion/law = Lennard-Jones: the adhesive family against the smooth Lennard-Jones FE of fem/smooth_cohesion.h
+    /// Adhesion/law = Lennard-Jones: the adhesive family against the smooth Lennard-Jones FE of fem/adhesion/smooth_cohesion.h
     /// (repulsion included, its largest attraction Adhesion/cohesive strength): one path from the surfaces apart
     /// through snap-in and both pull-offs to the force of the largest radius of the range. Its rows say "(JKR
     /// idealisation)": a deviation there measures the JKR assumption against a finite-range adhesive.
@@ -745,7 +745,7 @@ namespace gradcontact::cases
       fe["dissipated energy"][s.tangential.amplitude] = value;
     }
 
-    /// The tangential family against the Fourier mode-1 FE model (fem/fourier_mode1_solver.h) at Load/a, the
+    /// The tangential family against the Fourier mode-1 FE model (fem/tangential/fourier_mode1_solver.h) at Load/a, the
     /// scene's mesh at its finest refinement, refined toward the stick radii: K_T from the tangential flat punch, and
     /// at three stick radii the FE under the theory's traction tau = mu [p(r; a) - p(r; c)] (9.77, p from the
     /// numerical MDR): u0 as the mean u_x over the stick zone (the FE's own), F_x as the traction's integral (the

@@ -8,11 +8,11 @@
 // of the varied quantity: contact radii, stick radii, forces, amplitudes. The references are the MDR engine's own
 // (analytic/mdr.h: the adhesive foundation w1D(a) = -Delta_l(a) of 9.46 and its critical state by a search of the
 // minimum, not 9.48; analytic/mdr_contact.h: PartialSlip), never the chapter's closed forms. With References/fem
-// the same candidates meet the FE models at a few points, with Tolerances/*: the adhesive FE of fem/adhesion.h
+// the same candidates meet the FE models at a few points, with Tolerances/*: the adhesive FE of fem/adhesion/adhesion.h
 // (its own energy release rate and critical search, the profile a custom indenter) and the Fourier mode-1 FE of
-// fem/fourier_mode1_solver.h (K_T of the tangential flat punch; u0 and F_x under the theory's traction). With
-// Adhesion/law = Dugdale or Lennard-Jones the adhesive family also meets the finite-range FE (fem/cohesive_zone.h,
-// fem/smooth_cohesion.h): rows "(JKR idealisation)", how far the candidate's JKR form is from that adhesive.
+// fem/tangential/fourier_mode1_solver.h (K_T of the tangential flat punch; u0 and F_x under the theory's traction). With
+// Adhesion/law = Dugdale or Lennard-Jones the adhesive family also meets the finite-range FE (fem/adhesion/cohesive_zone.h,
+// fem/adhesion/smooth_cohesion.h): rows "(JKR idealisation)", how far the candidate's JKR form is from that adhesive.
 //
 // Every curve gets a table (candidate_<quantity>.csv: x, candidate, MDR, deviation), a plot of candidate and MDR
 // against the varied quantity, and a row per point; the largest deviation and where it occurs go into the scene's

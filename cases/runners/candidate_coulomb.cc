@@ -4,8 +4,8 @@
 #include "model/coulomb_body.h"
 #include "model/mpi_session.h"
 
-#include <fem/coulomb_contact_3d.h>
-#include <fem/loads.h>
+#include <fem/tangential/coulomb_contact_3d.h>
+#include <fem/bodies/loads.h>
 
 #include <deal.II/base/point.h>
 

@@ -1,4 +1,4 @@
-// gradcontact/cases: a tangential candidate against the 3D Coulomb model (fem/coulomb_contact_3d.h).
+// gradcontact/cases: a tangential candidate against the 3D Coulomb model (fem/tangential/coulomb_contact_3d.h).
 //
 // The candidate's closed forms assume Cattaneo-Mindlin's idealisation (9.75-9.87): the normal and the tangential
 // problems decouple, and the tangential traction is along the load. The 3D Coulomb model has neither: friction

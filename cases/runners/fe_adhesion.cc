@@ -10,10 +10,10 @@
 
 #include <analytic/batch.h>
 #include <analytic/maugis_dugdale.h>
-#include <fem/accuracy.h>
-#include <fem/adhesion.h>
-#include <fem/cohesive_zone.h>
-#include <fem/axisymmetric_solver.h>
+#include <fem/accuracy/accuracy.h>
+#include <fem/adhesion/adhesion.h>
+#include <fem/adhesion/cohesive_zone.h>
+#include <fem/bodies/axisymmetric_solver.h>
 
 
 #include <algorithm>
@@ -75,7 +75,7 @@ namespace gradcontact::cases
 
     std::optional<fem::Profile> fe_profile_of(const LoadParameters &l);
 
-    /// The same under Discretization/accuracy = contract: level `level` of the ladder of fem/accuracy.h at
+    /// The same under Discretization/accuracy = contract: level `level` of the ladder of fem/accuracy/accuracy.h at
     /// Discretization/force tolerance, graded toward the axis for a cone's tip.
     fem::AdhesiveContact::SettingsFunction contract_settings_at(const Scene &s, const fem::Material &material,
                                                                  const unsigned int level)
@@ -460,7 +460,7 @@ namespace gradcontact::cases
           }
       }
 
-      /// Adhesion/law = Dugdale: the pull-off of the cohesive-zone FE (fem/cohesive_zone.h) against the chapter's JKR
+      /// Adhesion/law = Dugdale: the pull-off of the cohesive-zone FE (fem/adhesion/cohesive_zone.h) against the chapter's JKR
       /// closed forms ("(JKR idealisation)": how far they are for this adhesive), and against Maugis-Dugdale, which
       /// holds for any Tabor parameter (Maugis' closed form at k = 0 for the paraboloid, the MDR's on the graded
       /// medium otherwise; a power-law modulus only).

@@ -1,4 +1,4 @@
-// gradcontact/cases: adhesive (JKR) scenes. The FE model's own critical states (fem/adhesion.h: energy
+// gradcontact/cases: adhesive (JKR) scenes. The FE model's own critical states (fem/adhesion/adhesion.h: energy
 // release rate from the FE flat-punch stiffness, JKR superposition, minimum of F(a) or d(a)) against the
 // closed forms (9.50-9.74) and the numerical MDR; the optimal profile of constant tensile stress from the FE
 // surface under p = -sigma_th.
@@ -15,7 +15,7 @@ namespace gradcontact::cases
 {
   /// FE adhesive states of the scene's curved profile at a = x a_c, a_c the FE critical radius (force or
   /// displacement control), for figures. With `pressure_radii` (r / a, each in [0, 1)), also the pressure of
-  /// each state, p(r) = p_n(r) - delta p_1(r) (the JKR superposition of fem/adhesion.h; for the paraboloid the
+  /// each state, p(r) = p_n(r) - delta p_1(r) (the JKR superposition of fem/adhesion/adhesion.h; for the paraboloid the
   /// closed form is 9.53 at that a): pressure[i][j] at r = pressure_radii[j] radius[i], one more FE solve per
   /// state. p(r) is singular at the contact edge r = a (like (1 - r^2/a^2)^(-(1-k)/2)) and zero beyond it, so
   /// r / a = 1 and beyond are refused, before any FE solve.

@@ -8,9 +8,9 @@
 
 #include <analytic/adhesion.h>
 #include <analytic/maugis_dugdale.h>
-#include <fem/cohesive_zone.h>
-#include <fem/errors.h>
-#include <fem/smooth_cohesion.h>
+#include <fem/adhesion/cohesive_zone.h>
+#include <fem/base/errors.h>
+#include <fem/adhesion/smooth_cohesion.h>
 
 #include <boost/math/tools/toms748_solve.hpp>
 
@@ -214,7 +214,7 @@ namespace gradcontact::cases
       return solution;
     }
 
-    /// The Lennard-Jones map's lambda (fem/smooth_cohesion.h: its largest stress the Dugdale sigma_0 of lambda): one
+    /// The Lennard-Jones map's lambda (fem/adhesion/smooth_cohesion.h: its largest stress the Dugdale sigma_0 of lambda): one
     /// path, through snap-in and both pull-offs, on the model of its k (the surface flexibility shared by every
     /// lambda). Its depths are shifted by the law's equilibrium separation eps (d + eps: the approach beyond the
     /// touching of the surfaces, JKR's depth); a displacement-controlled pull-off without a jump is "none".
@@ -344,9 +344,9 @@ namespace gradcontact::cases
          << (s.info.description.empty() ? "" : s.info.description + "\n\n")
          << "The FE model of a rigid " << plan.profile_name
          << (smooth ? " with the Lennard-Jones law (sigma(h) = 8 dgamma / (3 eps) ((eps/h)^3 - (eps/h)^9), repulsion "
-                      "included, its largest attraction sigma_0, fem/smooth_cohesion.h)"
+                      "included, its largest attraction sigma_0, fem/adhesion/smooth_cohesion.h)"
                     : " with a Dugdale cohesive zone (tension sigma_0 where the gap is below h_0 = dgamma / sigma_0, "
-                      "fem/cohesive_zone.h)")
+                      "fem/adhesion/cohesive_zone.h)")
          << " on E0 (z/c0)^k, dgamma = " << format(plan.dgamma) << " J/m^2, nu = " << format(s.material.nu)
          << (smooth ? ": its pull-off (the last minimum of F under force control, of d under displacement control, along "
                       "the equilibrium path followed by pseudo-arclength from the surfaces apart through snap-in into "

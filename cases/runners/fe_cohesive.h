@@ -1,5 +1,5 @@
 // gradcontact/cases: where the chapter's JKR adhesion holds (Map/parameter = Tabor parameter). JKR (9.45-9.74)
-// assumes adhesion of infinitely short range; the Dugdale cohesive zone of fem/cohesive_zone.h has the range
+// assumes adhesion of infinitely short range; the Dugdale cohesive zone of fem/adhesion/cohesive_zone.h has the range
 // h_0 = dgamma / sigma_0. Its pull-off force against the chapter's, over the Tabor parameter lambda and k, with
 // the thresholds a user reads ("within 1 % when lambda >= ...").
 //

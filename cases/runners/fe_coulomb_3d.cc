@@ -8,9 +8,9 @@
 #include <analytic/material.h>
 #include <analytic/normal.h>
 #include <analytic/tangential.h>
-#include <fem/errors.h>
-#include <fem/half_space_3d.h>
-#include <fem/modulus.h>
+#include <fem/base/errors.h>
+#include <fem/bodies/half_space_3d.h>
+#include <fem/modulus/modulus.h>
 
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/utilities.h>
@@ -674,7 +674,7 @@ namespace gradcontact::cases
          << (s.info.description.empty() ? "" : s.info.description + "\n\n")
          << "The 3D FE model of a rigid sphere R = " << format(s.load.R) << " m on E0 (z/c0)^k (E0 = "
          << format(s.material.E0) << " Pa, c0 = " << format(s.material.c0) << " m) with Coulomb friction mu = " << mus
-         << " (fem/coulomb_contact_3d.h: the contact, stick zone and slip directions found node by node), loaded to "
+         << " (fem/tangential/coulomb_contact_3d.h: the contact, stick zone and slip directions found node by node), loaded to "
             "the chapter's depth of contact radius a = "
          << format(s.load.a) << " m, sheared to the chapter's delta_A of F_A = " << format(s.tangential.amplitude)
          << " mu F_N and cycled once to -delta_A and back, " << s.tangential.load_steps

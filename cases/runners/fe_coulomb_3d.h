@@ -1,4 +1,4 @@
-// gradcontact/cases: the Coulomb sphere on the 3D graded half-space (fem/coulomb_contact_3d.h) against the
+// gradcontact/cases: the Coulomb sphere on the 3D graded half-space (fem/tangential/coulomb_contact_3d.h) against the
 // chapter's tangential theory, one loading path: normal loading to the depth d with friction mu_normal, then
 // friction mu and a tangential displacement to delta_A, and optionally one cycle to -delta_A and back (9.80-9.86).
 //
@@ -24,10 +24,10 @@
 #include "report/report.h"
 #include "scene/scene.h"
 
-#include <fem/coulomb_contact_3d.h>
-#include <fem/discretization.h>
-#include <fem/distributed_linear_solver.h>
-#include <fem/mesh_3d.h>
+#include <fem/tangential/coulomb_contact_3d.h>
+#include <fem/grid/discretization.h>
+#include <fem/linear_algebra/distributed_linear_solver.h>
+#include <fem/grid/mesh_3d.h>
 
 #include <mpi.h>
 

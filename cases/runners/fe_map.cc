@@ -6,8 +6,8 @@
 #include "model/scene_start.h"
 #include "model/map_published.h"
 
-#include <fem/axisymmetric_solver.h>
-#include <fem/unilateral_contact.h>
+#include <fem/bodies/axisymmetric_solver.h>
+#include <fem/contact/unilateral_contact.h>
 
 #include <algorithm>
 #include <chrono>

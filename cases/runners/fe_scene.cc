@@ -8,10 +8,10 @@
 #include <analytic/batch.h>
 #include <analytic/material.h>
 #include <analytic/mdr.h>
-#include <fem/accuracy.h>
-#include <fem/axisymmetric_solver.h>
-#include <fem/table_file.h>
-#include <fem/unilateral_contact.h>
+#include <fem/accuracy/accuracy.h>
+#include <fem/bodies/axisymmetric_solver.h>
+#include <fem/base/table_file.h>
+#include <fem/contact/unilateral_contact.h>
 
 #include <deal.II/base/point.h>
 #include <deal.II/base/utilities.h>
@@ -388,7 +388,7 @@ namespace gradcontact::cases
       return runs;
     }
 
-    /// Discretization/accuracy = contract: the ladder of fem/accuracy.h at Discretization/force tolerance; a refusal
+    /// Discretization/accuracy = contract: the ladder of fem/accuracy/accuracy.h at Discretization/force tolerance; a refusal
     /// is a failed row naming its limit.
     FeRun solve_contract(const Scene &s, const bool verbose, SceneResult &result)
     {
@@ -570,7 +570,7 @@ namespace gradcontact::cases
   {
     /// Depth or force control of a curved profile on a grading without a closed form: the FE's mesh is graded toward
     /// a contact radius (its finest cells at the edge, where the depth- and force-controlled search of
-    /// fem/axisymmetric_solver.h moves the edge within a bounded number of surface DoFs), so that radius must be near
+    /// fem/bodies/axisymmetric_solver.h moves the edge within a bounded number of surface DoFs), so that radius must be near
     /// the answer. It is found by the FE itself: a secant in ln a on ln d(a) or ln F(a) of radius-controlled solves
     /// on the coarsest mesh, from Load/a (d ~ a^n for a profile ~ r^n). The scene comes back with Load/a there.
     Scene with_mesh_at_the_answer(const Scene &s, const bool verbose)

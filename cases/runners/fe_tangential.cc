@@ -9,9 +9,9 @@
 #include <analytic/material.h>
 #include <analytic/normal.h>
 #include <analytic/tangential.h>
-#include <fem/accuracy.h>
-#include <fem/axisymmetric_solver.h>
-#include <fem/fourier_mode1_solver.h>
+#include <fem/accuracy/accuracy.h>
+#include <fem/bodies/axisymmetric_solver.h>
+#include <fem/tangential/fourier_mode1_solver.h>
 
 #include <deal.II/base/quadrature_lib.h>
 
@@ -76,7 +76,7 @@ namespace gradcontact::cases
       return s;
     }
 
-    /// Level `level` of the accuracy contract's ladder (fem/accuracy.h) at Discretization/force tolerance, in the
+    /// Level `level` of the accuracy contract's ladder (fem/accuracy/accuracy.h) at Discretization/force tolerance, in the
     /// displacement formulation (mode 1 has no mixed one).
     fem::Settings contract_level_settings(const Scene &s, const fem::Material &material, const unsigned int level)
     {

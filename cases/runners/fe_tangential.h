@@ -1,5 +1,5 @@
 // gradcontact/cases: tangential scenes (Tangential/study != none). The Fourier mode-1 FE model
-// (fem/fourier_mode1_solver.h) of the graded half-space against chapter 9.3:
+// (fem/tangential/fourier_mode1_solver.h) of the graded half-space against chapter 9.3:
 //   stiffness     tangential flat punch: K_T against the MDR 2 cT0 a^(1+k) / ((1+k) c0^k), cT0 = h_T E0
 //                 (9.78-9.79), alpha = K_N / K_T (K_N: the normal flat punch on the same mesh) against cN0 / cT0,
 //                 and at k = 0 Mindlin's K_T = 8 G a / (2 - nu);

@@ -258,7 +258,7 @@ namespace gradcontact::cases
     prm.declare_entry("accuracy", "levels", Patterns::Selection("levels|contract"),
                       "levels: one FE solve per entry of refinements (a convergence study against the references); "
                       "contract (normal, JKR adhesion and tangential scenes with a rigid indenter on a disc): the "
-                      "ladder of fem/accuracy.h (hp for k >= 0, uniform refinements for k < 0) until the Richardson "
+                      "ladder of fem/accuracy/accuracy.h (hp for k >= 0, uniform refinements for k < 0) until the Richardson "
                       "estimate of every FE quantity (force, depth, contact radius, p(r) relative to the largest |p|, "
                       "w(r); the critical states of adhesion; K_T and the tangential curves) is within force tolerance, "
                       "or a refusal naming the limit; every FE row shows the asked tolerance, the estimate and the "
@@ -274,14 +274,14 @@ namespace gradcontact::cases
                       "fem/doc/model.md, \"Mixed formulation\".");
     prm.declare_entry("surface map", "auto", Patterns::Selection("auto|off"),
                       "auto: a modulus vanishing at the surface like z^k, 0 < k <= 0.95, without jumps is resolved by "
-                      "the singular depth map of fem/surface_map.h in the rigid frictionless normal scenes of the "
+                      "the singular depth map of fem/modulus/surface_map.h in the rigid frictionless normal scenes of the "
                       "displacement formulation (no thin cells; flat punch k = 0.5 2.3e-6 with a third of the DoFs); "
                       "off, and the mixed formulation: z-halvings to 1e-10 a.");
     prm.declare_entry("far field condition", "auto", Patterns::Selection("auto|clamped"),
                       "auto: for a power-law modulus in the scenes of the axisymmetric and mode-1 solvers (normal, "
                       "candidate, JKR, Dugdale, tangential) with the displacement formulation and without the surface "
                       "map, the half-space beyond L is condensed onto max(r, z) = L "
-                      "(fem/far_field.h: no truncation error; L / a = far field, else 100 or 1.5 times the largest "
+                      "(fem/elasticity/far_field.h: no truncation error; L / a = far field, else 100 or 1.5 times the largest "
                       "displacement radius); clamped: u = 0 at L.");
     prm.leave_subsection();
   }
@@ -443,7 +443,7 @@ namespace gradcontact::cases
                       "Relative tolerance of the candidate against the numerical MDR (every row whose reference is "
                       "the numerical MDR).");
     prm.declare_entry("Coulomb 3D", "off", Patterns::Selection("off|on"),
-                      "Tangential candidates: on also runs the 3D Coulomb model of fem/coulomb_contact_3d.h with the "
+                      "Tangential candidates: on also runs the 3D Coulomb model of fem/tangential/coulomb_contact_3d.h with the "
                       "candidate's profile (normal loading to the numerical MDR's d(a), then the tangential "
                       "displacement of Tangential/amplitude mu F_N(a) and one cycle, Tangential/load steps each way); "
                       "its rows (F_x against u0, the stick radius, the branches, the loop area) say how far Coulomb's "
@@ -531,7 +531,7 @@ namespace gradcontact::cases
     prm.enter_subsection("Adhesion");
     prm.declare_entry("work of adhesion", "0", Patterns::Double(0.),
                       "dgamma [J/m^2]; > 0 makes the scene adhesive (JKR, 9.45-9.68): critical states from the FE "
-                      "model (fem/adhesion.h) against the closed forms and the numerical MDR.");
+                      "model (fem/adhesion/adhesion.h) against the closed forms and the numerical MDR.");
     prm.declare_entry("control", "both", Patterns::Selection("force|displacement|both"),
                       "Critical states under force control, displacement control or both (curved profiles).");
     prm.declare_entry("tensile strength", "0", Patterns::Double(0.),
@@ -550,9 +550,9 @@ namespace gradcontact::cases
     prm.declare_entry("law", "JKR", Patterns::Selection("JKR|Dugdale|Lennard-Jones"),
                       "JKR: the chapter's adhesion (infinitely short range; the FE from its energy release rate). "
                       "Dugdale: a cohesive zone of finite range (tension sigma_0 where the gap is below dgamma / "
-                      "sigma_0, fem/cohesive_zone.h): the FE drops JKR's assumption and the closed-form rows say "
+                      "sigma_0, fem/adhesion/cohesive_zone.h): the FE drops JKR's assumption and the closed-form rows say "
                       "\"(JKR idealisation)\" (paraboloid or power law). Lennard-Jones: the smooth law of "
-                      "fem/smooth_cohesion.h (repulsion included, its largest attraction the Dugdale sigma_0 of the "
+                      "fem/adhesion/smooth_cohesion.h (repulsion included, its largest attraction the Dugdale sigma_0 of the "
                       "Tabor parameter), in Tabor-parameter maps (Map/parameter = Tabor parameter; without it the "
                       "map is Dugdale's) and for adhesive candidates (with the cohesive strength).");
     prm.declare_entry("Tabor parameter", "0", Patterns::Double(0.),
@@ -586,7 +586,7 @@ namespace gradcontact::cases
   {
     prm.enter_subsection("Tangential");
     prm.declare_entry("study", "none", Patterns::Selection("none|stiffness|partial slip|oscillation"),
-                      "Tangential contact by the Fourier mode-1 FE model (fem/fourier_mode1_solver.h): none; "
+                      "Tangential contact by the Fourier mode-1 FE model (fem/tangential/fourier_mode1_solver.h): none; "
                       "stiffness (Load/type = flat punch: K_T of 9.78-9.79, alpha = K_N / K_T, Mindlin at k = 0); "
                       "partial slip (Load/type = paraboloid: the traction mu [p(r; a) - p(r; c)] of 9.80, F_x and the "
                       "stick-zone displacement, the F_x(u0) curve); oscillation (paraboloid: +-F_A after loading, "
@@ -886,7 +886,7 @@ namespace gradcontact::cases
         throw std::invalid_argument("Candidate: no candidate formula given (depth, force, pressure or displacement)");
     }
 
-    /// Discretization/accuracy = contract is the ladder of fem/accuracy.h: the axisymmetric model of a rigid
+    /// Discretization/accuracy = contract is the ladder of fem/accuracy/accuracy.h: the axisymmetric model of a rigid
     /// indenter on a disc, in a normal FE scene, a JKR adhesion scene (its states from the energy release rate) or a
     /// tangential (mode-1) scene.
     void check_contract(const Scene &s, const std::string &where)
@@ -909,7 +909,7 @@ namespace gradcontact::cases
         other = "References/fem = false";
       if (!other.empty())
         throw std::invalid_argument(where + "Discretization/accuracy = contract with " + other +
-                                    ": the contract's ladder (fem/accuracy.h) answers the normal, JKR adhesion and "
+                                    ": the contract's ladder (fem/accuracy/accuracy.h) answers the normal, JKR adhesion and "
                                     "tangential FE scenes of a rigid indenter on a disc; use accuracy = levels");
     }
 
@@ -1021,7 +1021,7 @@ namespace gradcontact::cases
       throw std::invalid_argument(where + "Discretization/refinements = " +
                                   std::to_string(s.discretization.refinements.back()) +
                                   " with Adhesion/law = Lennard-Jones: at most 4 (its mesh is refined 2^level times, "
-                                  "fem/smooth_cohesion.h)");
+                                  "fem/adhesion/smooth_cohesion.h)");
     if (s.tangential.enabled() || s.candidate.enabled() || s.load.contact == LoadParameters::Contact::unilateral)
       throw std::invalid_argument(where + "Map/parameter = Tabor parameter: an adhesive scene (no Tangential or "
                                   "Candidate entries, Load/contact = disc)");

@@ -126,7 +126,7 @@ namespace gradcontact::cases
     unsigned int degree = 3;
     std::vector<unsigned int> refinements = {0}; ///< uniform refinements; several = a convergence study
     double force_tolerance = 1e-6; ///< picks the recommended mesh (fem::recommended_settings); the contract's tolerance
-    /// Discretization/accuracy = contract: the normal scene's FE answers come from the ladder of fem/accuracy.h at
+    /// Discretization/accuracy = contract: the normal scene's FE answers come from the ladder of fem/accuracy/accuracy.h at
     /// force_tolerance (its degree; refinements and degree unused), every FE row with its estimate and verdict.
     bool contract = false;
     /// A level whose forecast factorisation exceeds 80 % of the machine's available memory is refused before it
@@ -140,7 +140,7 @@ namespace gradcontact::cases
       automatic     ///< mixed from nu = 0.45 on (fem::automatic_mixed_threshold)
     };
     Formulation formulation = Formulation::displacement; ///< the FE unknowns (fem::Formulation)
-    /// The surface map of fem/surface_map.h instead of z-halvings for 0 < k < 1 in the rigid frictionless
+    /// The surface map of fem/modulus/surface_map.h instead of z-halvings for 0 < k < 1 in the rigid frictionless
     /// normal scenes (fem::use_surface_map); off: the halvings everywhere.
     bool surface_map = true;
     /// The exterior of max(r, z) = L condensed onto it (fem::use_condensed_far_field) where it applies, in the
@@ -177,7 +177,7 @@ namespace gradcontact::cases
     void parse(dealii::ParameterHandler &prm);
   };
 
-  /// JKR adhesion (9.45-9.74) checked by the FE model (fem/adhesion.h). A scene is adhesive when the work of
+  /// JKR adhesion (9.45-9.74) checked by the FE model (fem/adhesion/adhesion.h). A scene is adhesive when the work of
   /// adhesion is positive (flat punch, paraboloid, cone, power law, concave punch), or for the optimal profile:
   /// Load/type = constant pressure with a positive tensile strength (p = -sigma_th on r <= a, 9.69-9.74).
   struct AdhesionParameters
@@ -194,8 +194,8 @@ namespace gradcontact::cases
     {
       jkr,          ///< the chapter's (the FE from its energy release rate)
       dugdale,      ///< a cohesive zone of strength sigma_0 (given, or from the Tabor parameter lambda,
-                    ///< cases/runners/fe_cohesive.h), fem/cohesive_zone.h
-      lennard_jones ///< fem/smooth_cohesion.h, its largest stress the Dugdale sigma_0 of the Tabor parameter
+                    ///< cases/runners/fe_cohesive.h), fem/adhesion/cohesive_zone.h
+      lennard_jones ///< fem/adhesion/smooth_cohesion.h, its largest stress the Dugdale sigma_0 of the Tabor parameter
                     ///< (Tabor-parameter maps only)
     };
     Law law = Law::jkr;
@@ -252,7 +252,7 @@ namespace gradcontact::cases
     void parse(dealii::ParameterHandler &prm);
   };
 
-  /// Tangential contact (9.75-9.87) checked by the Fourier mode-1 FE model (fem/fourier_mode1_solver.h). A scene
+  /// Tangential contact (9.75-9.87) checked by the Fourier mode-1 FE model (fem/tangential/fourier_mode1_solver.h). A scene
   /// is tangential when `study` is not none; cases/runners/fe_tangential.h runs it.
   struct TangentialParameters
   {

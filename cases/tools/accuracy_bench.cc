@@ -1,8 +1,8 @@
 #include "tools/accuracy_bench.h"
 
 #include <analytic/batch.h>
-#include <fem/accuracy.h>
-#include <fem/modulus.h>
+#include <fem/accuracy/accuracy.h>
+#include <fem/modulus/modulus.h>
 
 #include <nlohmann/json.hpp>
 
@@ -365,7 +365,7 @@ namespace gradcontact::cases
         ++answers, refusals += !r.met;
     std::ostringstream md;
     md << "# The accuracy contract: asked tolerance, true error, estimate and cost\n\nMachine: " << machine
-       << ".  \nThe FE ladder of fem/accuracy.h (hp for k >= 0: one degree more and a finer geometric mesh at the "
+       << ".  \nThe FE ladder of fem/accuracy/accuracy.h (hp for k >= 0: one degree more and a finer geometric mesh at the "
           "contact edge per level; uniform refinements of one degree for k < 0) until the Richardson estimate "
           "of every quantity is within the asked tolerance, or a refusal naming the limit, against the chapter's "
           "closed forms, unit problem a = E0 = c0 = 1"

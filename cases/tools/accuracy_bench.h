@@ -1,6 +1,6 @@
 // gradcontact/cases: the accuracy contract's benchmark (`gradcontact bench --part accuracy`).
 //
-// It sweeps the FE ladder of fem/accuracy.h over a grid of gradings, Poisson ratios, profiles and asked
+// It sweeps the FE ladder of fem/accuracy/accuracy.h over a grid of gradings, Poisson ratios, profiles and asked
 // tolerances, and over random held-out requests, and compares every answer with the chapter's closed forms (held
 // to 1e-13 by independent references, so they act as exact):
 //   - the contract: every answer's true error / asked tolerance is at most 1, or the answer is a refusal that names

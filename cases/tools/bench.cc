@@ -308,7 +308,7 @@ namespace gradcontact::cases
             "or displacement at r/a in [0, 5) (uniform). Time of the whole batch, one core (one FE state per (k, nu), "
             "the rest by scaling). Errors relative to the closed form (|value| of the request; pressures and "
             "displacements near 0 excluded below 1e-3 of the batch's scale) and against the oracle's own "
-            "error estimate (the Richardson estimate of the accuracy contract's ladder, fem/accuracy.h).\n\n| k | nu | requests | FE states | s | "
+            "error estimate (the Richardson estimate of the accuracy contract's ladder, fem/accuracy/accuracy.h).\n\n| k | nu | requests | FE states | s | "
             "requests/s | worst error F, d | worst error p, w | error / estimate: median | 90 % | worst | refused |\n"
             "|---|---|---|---|---|---|---|---|---|---|---|---|\n";
       std::ostringstream refusals; // the first refusal of each (k, nu), below the table
@@ -344,7 +344,7 @@ namespace gradcontact::cases
           const auto start = std::chrono::steady_clock::now();
           const int errors = evaluate_stream(in, out, oracle);
           const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-          // A refusal of the accuracy contract (fem/accuracy.h) names its limit: counted and reported, not an error.
+          // A refusal of the accuracy contract (fem/accuracy/accuracy.h) names its limit: counted and reported, not an error.
           std::string first_refusal;
           std::istringstream lines(out.str());
           std::string line;

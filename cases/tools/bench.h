@@ -5,7 +5,7 @@
 // tests/data/references.jsonl (an independent mpmath evaluation of the MDR integrals). Several
 // repetitions; minimum and median are reported with the machine and the build.
 //
-// Accuracy part (cases/tools/accuracy_bench.h): the accuracy contract of fem/accuracy.h over a grid of k, nu, profiles
+// Accuracy part (cases/tools/accuracy_bench.h): the accuracy contract of fem/accuracy/accuracy.h over a grid of k, nu, profiles
 // and asked tolerances and over random held-out requests: true error / asked, the estimate's reliability and
 // efficiency, the cost per k.
 //

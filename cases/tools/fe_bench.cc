@@ -2,10 +2,10 @@
 
 #include "report/report.h"
 
-#include <fem/adhesion.h>
-#include <fem/axisymmetric_solver.h>
-#include <fem/fourier_mode1_solver.h>
-#include <fem/modulus.h>
+#include <fem/adhesion/adhesion.h>
+#include <fem/bodies/axisymmetric_solver.h>
+#include <fem/tangential/fourier_mode1_solver.h>
+#include <fem/modulus/modulus.h>
 
 #include <analytic/adhesion.h>
 #include <analytic/material.h>
@@ -138,14 +138,14 @@ namespace gradcontact::cases
     };
 
     /// The normal scenes on a modulus vanishing at the surface are also run with the surface map
-    /// (fem/surface_map.h) instead of z-halvings, as model "deal.II map".
+    /// (fem/modulus/surface_map.h) instead of z-halvings, as model "deal.II map".
     bool map_models(const std::string &load, const double k)
     {
       return (load == "flat_punch" || load == "paraboloid") && fem::surface_map_applies(fem::PowerLawModulus(E0, c0, k));
     }
 
     /// The variants of our model: as recommended, with the surface map, with the condensed far field
-    /// (fem/far_field.h, L = 100 a) for the radius-controlled normal scenes and the tangential punch.
+    /// (fem/elasticity/far_field.h, L = 100 a) for the radius-controlled normal scenes and the tangential punch.
     enum class Variant
     {
       plain,
@@ -624,13 +624,13 @@ namespace gradcontact::cases
              "contact-radius control (force F(a) and depth d(a) against the Hertz-type closed forms; the error is the "
              "larger of the two). E0 = 2 GPa, c0 = 3 a, a = 0.1 mm, nu = 0.3.\n"
              "- jkr_paraboloid: the JKR pull-off force of the paraboloid R = 50 a, dgamma = 0.05 J/m^2, under force "
-             "control, from `AdhesiveContact::critical_state` (`fem/adhesion.h`: one FE model per contact radius, "
+             "control, from `AdhesiveContact::critical_state` (`fem/adhesion/adhesion.h`: one FE model per contact radius, "
              "each on the level's mesh graded toward that radius; the search starts 1.2 a_c off), against F_c of "
              "(9.55)-(9.56) (`jkr::critical_state` of `analytic/adhesion.h`; at k = 0 JKR's -3/2 pi dgamma R). "
              "The time is the whole search (all radii, noted in the row); DoFs are those of the largest model; "
              "there is no phase split. Levels 0-1, one repetition (7 FE radii per row).\n"
              "- tangential_punch: the tangential flat punch (U = V = delta = 1e-3 a on r <= a, W free) of "
-             "`FourierMode1Solver` (`fem/fourier_mode1_solver.h`, Fourier mode 1, 3 fields), force F_x = K_T delta "
+             "`FourierMode1Solver` (`fem/tangential/fourier_mode1_solver.h`, Fourier mode 1, 3 fields), force F_x = K_T delta "
              "against the MDR K_T = 2 h_T E0 a^(1+k) / ((1+k) c0^k) (9.78)-(9.79) (`h_T` of "
              "`analytic/material.h`; at k = 0 Mindlin's 8 G a / (2 - nu)). Levels 0-2 (the mode-1 system has "
              "3/2 the DoFs), one repetition.\n"

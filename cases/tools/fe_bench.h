@@ -17,7 +17,7 @@
 #ifndef GRADCONTACT_CASES_FE_BENCH_H
 #define GRADCONTACT_CASES_FE_BENCH_H
 
-#include <fem/mesh.h>
+#include <fem/grid/mesh.h>
 
 #include <filesystem>
 #include <string>

@@ -3,8 +3,8 @@
 #include <analytic/batch.h>
 #include <analytic/errors.h>
 #include <analytic/material.h>
-#include <fem/accuracy.h>
-#include <fem/modulus.h>
+#include <fem/accuracy/accuracy.h>
+#include <fem/modulus/modulus.h>
 
 #include <nlohmann/json.hpp>
 
@@ -67,7 +67,7 @@ namespace gradcontact::cases
 
     /// Refuses an answer that the contract did not deliver, naming what limits it and what the finest level gives. A
     /// quantity whose own estimate is within the tolerance is delivered though another one of the same run is not
-    /// (a pressure's estimate counts from three levels on, fem/accuracy.h).
+    /// (a pressure's estimate counts from three levels on, fem/accuracy/accuracy.h).
     void check(const fem::ContractResult &r, const fem::Estimated &e, const char *what) const
     {
       const bool pressure = std::string(what) == "pressure";

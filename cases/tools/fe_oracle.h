@@ -2,9 +2,9 @@
 //
 // A request of analytic/README.md with "method": "fe" and, optionally, "tolerance" (the wanted relative
 // error of the force, default 1e-6, in [1e-8, 1e-2]) is answered by the axisymmetric FE model
-// (fem/axisymmetric_solver.h) instead of a closed form: the cases flat_punch (at depth d), paraboloid, cone and
+// (fem/bodies/axisymmetric_solver.h) instead of a closed form: the cases flat_punch (at depth d), paraboloid, cone and
 // power_law (at contact radius a, the contact-radius control of the FE model), the quantities force, depth
-// (indenters), pressure and displacement (at r). The FE keeps the accuracy contract of fem/accuracy.h: the
+// (indenters), pressure and displacement (at r). The FE keeps the accuracy contract of fem/accuracy/accuracy.h: the
 // answer comes from the ladder of uniform refinements that first brings the Richardson estimate within the
 // tolerance, and carries that estimate, absolute ("error_estimate") and relative ("relative_error_estimate": to
 // |F|, |d|, |w(r)|, and for a pressure to the largest |p| sampled with it). A tolerance the ladder cannot reach is
@@ -22,7 +22,7 @@
 
 #include "report/result_cache.h"
 
-#include <fem/axisymmetric_solver.h>
+#include <fem/bodies/axisymmetric_solver.h>
 
 #include <nlohmann/json_fwd.hpp>
 

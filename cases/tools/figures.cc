@@ -283,7 +283,7 @@ namespace gradcontact::cases
         }
       if (c.contains("fe_adhesion"))
         {
-          // FE adhesive states (fem/adhesion.h) of a .prm scene at a = x a_c (a_c: the FE critical radius
+          // FE adhesive states (fem/adhesion/adhesion.h) of a .prm scene at a = x a_c (a_c: the FE critical radius
           // under the given control); each coordinate is "radius", "depth", "force" or "k" of the state, or,
           // with "pressure_radii" (r / a, each in [0, 1)), "r" and "pressure" of its pressure profile (9.53 for
           // the paraboloid: one point per state and radius); times "scale", divided by the value of the

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# MPI strong and weak scaling of the distributed FE solver (fem/distributed_solver.h) through
+# MPI strong and weak scaling of the distributed FE solver (fem/bodies/distributed_solver.h) through
 # tests/fem/fem_mpi: the flat punch at k = 0, degree 2, both linear solvers (MUMPS direct, CG + ML AMG).
 #   strong: the same mesh (global refinements 1, 2, 3: 117k, 462k, 1.84M DoFs) on 1 and 2 processes;
 #   weak:   about the same DoFs per process: np = 1 on the default near field against np = 2 on the
@@ -57,7 +57,7 @@ done
 {
   echo "# MPI scaling of the distributed FE solver"
   echo
-  echo "Flat punch, k = 0, nu = 0.3, degree 2, p4est + Trilinos (\`fem/distributed_solver.h\`), run by"
+  echo "Flat punch, k = 0, nu = 0.3, degree 2, p4est + Trilinos (\`fem/bodies/distributed_solver.h\`), run by"
   echo "\`tests/bench/mpi_scaling.sh\` (\`./vv scaling\`). Machine: $(nproc) cores, $(awk '/MemTotal/ {printf "%.0f GiB", $2 / 1048576}' /proc/meminfo),"
   echo "$(sed -n 's/^model name\s*: //p' /proc/cpuinfo | head -1), load average before the run: $(cut -d' ' -f1-3 /proc/loadavg)."
   echo "$(mpirun --version 2>&1 | head -1); $(date -u '+%Y-%m-%d %H:%M UTC')."

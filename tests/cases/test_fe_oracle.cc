@@ -58,7 +58,7 @@ TEST_CASE("The FE oracle shall answer force, depth, pressure and displacement wi
         const FeOracle::Answer fe = oracle.evaluate(with_fe(request, 1e-5));
         const double exact = closed_form(request);
         const double error = std::abs(fe.value - exact) / std::abs(exact);
-        // The contract (fem/accuracy.h): the answer within the tolerance asked, its estimate within it too.
+        // The contract (fem/accuracy/accuracy.h): the answer within the tolerance asked, its estimate within it too.
         CHECK(error < 1e-5);
         CHECK(fe.relative_error_estimate <= 1e-5);
         CHECK(fe.error_estimate > 0);

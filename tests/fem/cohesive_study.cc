@@ -1,19 +1,19 @@
-// cohesive_study: the Dugdale cohesive-zone FE (fem/cohesive_zone.h) on E0 (z/c0)^k for the Tabor map's
+// cohesive_study: the Dugdale cohesive-zone FE (fem/adhesion/cohesive_zone.h) on E0 (z/c0)^k for the Tabor map's
 // scene (cases/validation/map_cohesive_paraboloid.prm: E0 = 1 GPa, c0 = 1 mm, nu = 0.3, R = 5 mm,
 // dgamma = 0.05 J/m^2), one state or one pull-off, for the measurements fem/doc/loads-and-contact.md names. Not a test.
 //
 //   cohesive_study k=0.5 lambda=10 mode=state x=1 p=2 h_edge=1e-5 zone_refinements=8
 //   cohesive_study k=0.5 lambda=10 mode=critical control=force
-//   cohesive_study k=0.5 mode=jkr control=force      (the FE JKR pull-off of fem/adhesion.h on the same mesh)
-//   cohesive_study k=0.5 lambda=1 mode=smooth         (the Lennard-Jones path of fem/smooth_cohesion.h, its largest
+//   cohesive_study k=0.5 mode=jkr control=force      (the FE JKR pull-off of fem/adhesion/adhesion.h on the same mesh)
+//   cohesive_study k=0.5 lambda=1 mode=smooth         (the Lennard-Jones path of fem/adhesion/smooth_cohesion.h, its largest
 //                                                      stress the Dugdale sigma_0 of lambda; path=1 prints the states)
 // lambda is the map's Tabor parameter (cases/runners/fe_cohesive.h); x: a / a_c,JKR of the state. Every key is optional;
 // the mesh and discretisation keys of study_arguments.h override the recommended settings (force tolerance
 // 1e-5). Prints key=value lines.
-#include <fem/adhesion.h>
-#include <fem/cohesive_zone.h>
-#include <fem/modulus.h>
-#include <fem/smooth_cohesion.h>
+#include <fem/adhesion/adhesion.h>
+#include <fem/adhesion/cohesive_zone.h>
+#include <fem/modulus/modulus.h>
+#include <fem/adhesion/smooth_cohesion.h>
 
 #include "study_arguments.h"
 

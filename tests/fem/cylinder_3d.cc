@@ -1,6 +1,6 @@
 #include "cylinder_3d.h"
 
-#include <fem/boundary_ids.h>
+#include <fem/base/boundary_ids.h>
 
 #include <deal.II/base/function.h>
 #include <deal.II/base/quadrature_lib.h>

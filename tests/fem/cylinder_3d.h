@@ -1,5 +1,5 @@
 // An independent 3D deal.II model of a graded cylinder under a tangential surface traction: the check of
-// the Fourier-mode-1 weak form (fem/fourier_mode1_solver.h). It exists only for that check.
+// the Fourier-mode-1 weak form (fem/tangential/fourier_mode1_solver.h). It exists only for that check.
 //
 // Body: the cylinder x^2 + y^2 <= R^2, 0 <= z <= H (z into the material), E = E(z) of any ModulusField,
 // constant nu. Weak form: \int_\Omega [lambda div u div v + 2 mu eps(u) : eps(v)] dV = \int_{z=0} tau(r) v_x dA,
@@ -14,7 +14,7 @@
 #ifndef GRADCONTACT_TESTS_FEM_CYLINDER_3D_H
 #define GRADCONTACT_TESTS_FEM_CYLINDER_3D_H
 
-#include <fem/modulus.h>
+#include <fem/modulus/modulus.h>
 
 #include <deal.II/grid/tria.h>
 

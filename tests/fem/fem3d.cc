@@ -1,10 +1,10 @@
-// fem3d: flat-punch runs of the 3D half-space model (fem/half_space_3d.h, p4est + Trilinos), checked
+// fem3d: flat-punch runs of the 3D half-space model (fem/bodies/half_space_3d.h, p4est + Trilinos), checked
 // against the meridian models on the same truncated body and against itself on one process.
 //
 //   mpirun -np 2 fem3d load=all k=0 nu=0.3 p=2 L=8 g3=1.6 R0=0.5 h_edge=1e-3 q=2 inner=0 edge=0 grading=1 contact_ref=0 global3=0
 //                      solver=direct|amg write=F against=F serial_tol=1e-10 compare=1 expect=1e-2
 // load = normal (u_z = d, u_x, u_y free), tangential (u_x = delta, u_y = 0, u_z free), bonded (u = (delta, 0, d)),
-// all (the three), or sphere: Coulomb frictional contact of a rigid sphere (fem/coulomb_contact_3d.h; keys mu,
+// all (the three), or sphere: Coulomb frictional contact of a rigid sphere (fem/tangential/coulomb_contact_3d.h; keys mu,
 // mu_normal, depth, delta, normal_steps, tangential_steps, cycle, candidates; compare=1: F_z at the end of the
 // normal loading against the frictionless axisymmetric model, expect=X; theory_depth=1: the chapter's depth of
 // contact radius a; theory=1: the path against the chapter's closed forms for the half-space (cases/runners/fe_coulomb_3d.h:
@@ -20,17 +20,17 @@
 // punches through the Coulomb solver (mu = inf and 0), expect_coulomb_punch=X. serial=1 (with np > 1): process 0 also runs the 3D model on MPI_COMM_SELF, and the
 // program fails unless every force agrees within serial_tol relative. compare=1: process 0 runs the
 // axisymmetric model (normal punch: F_z) and the Fourier mode-1 model (tangential punch: F_x) on the
-// meridian mesh of the same body (the cylinder r <= L, z <= L; fem/mesh.h at L, otherwise the recommended
+// meridian mesh of the same body (the cylinder r <= L, z <= L; fem/grid/mesh.h at L, otherwise the recommended
 // mesh) and prints the relative differences; with expect=X it fails when one exceeds X. Prints key=value
 // lines (process 0).
 #include <analytic/material.h>
 #include <analytic/normal.h>
-#include <fem/axisymmetric_solver.h>
-#include <fem/coulomb_contact_3d.h>
-#include <fem/fourier_mode1_solver.h>
-#include <fem/half_space_3d.h>
-#include <fem/modulus.h>
-#include <fem/unilateral_contact.h>
+#include <fem/bodies/axisymmetric_solver.h>
+#include <fem/tangential/coulomb_contact_3d.h>
+#include <fem/tangential/fourier_mode1_solver.h>
+#include <fem/bodies/half_space_3d.h>
+#include <fem/modulus/modulus.h>
+#include <fem/contact/unilateral_contact.h>
 
 #include "study_arguments.h"
 
@@ -512,7 +512,7 @@ int main(int argc, char **argv)
               failed = 1;
             }
         }
-      // coulomb_punch=1 (load = all): the same punches through the Coulomb contact solver (fem/coulomb_contact_3d.h): a
+      // coulomb_punch=1 (load = all): the same punches through the Coulomb contact solver (fem/tangential/coulomb_contact_3d.h): a
       // flat punch as the convex profile f = 1e3 max(0, r - a), pressed to d in one step with mu = inf (full stick:
       // the bonded punch) and mu = 0 (the frictionless one). On the same discrete body the contact solver must give
       // the prescribed-displacement solves' F_z (every disc node in contact, none beyond), up to the dense solve's

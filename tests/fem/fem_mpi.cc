@@ -1,4 +1,4 @@
-// fem_mpi: one run of the distributed solver (p4est + Trilinos, fem/distributed_solver.h), optionally checked
+// fem_mpi: one run of the distributed solver (p4est + Trilinos, fem/bodies/distributed_solver.h), optionally checked
 // against the serial solver on the same mesh.
 //
 //   mpirun -np 2 fem_mpi load=punch k=0 p=3 h_edge=1e-5 h_far=3 g=1.15 L=1e8 layer=1 R1=4 global=0
@@ -9,11 +9,11 @@
 // a_error and F_error. expect_tol=t fails the run when the punch's F_error (or a_error and F_error under control)
 // exceeds t. Mesh keys default to recommended_mesh_parameters(a, k) except layer (the z-only surface halvings,
 // which p4est cannot do: default 1, none). compare=1 (radius control): process 0 also runs the serial
-// AxisymmetricSolver (sparse direct, fem/direct_system.h) and the program fails (exit 1) unless force and depth agree within compare_tol
+// AxisymmetricSolver (sparse direct, fem/linear_algebra/direct_system.h) and the program fails (exit 1) unless force and depth agree within compare_tol
 // relative. Prints one line of key=value pairs (process 0).
-#include <fem/axisymmetric_solver.h>
-#include <fem/distributed_solver.h>
-#include <fem/modulus.h>
+#include <fem/bodies/axisymmetric_solver.h>
+#include <fem/bodies/distributed_solver.h>
+#include <fem/modulus/modulus.h>
 
 #include "study_arguments.h"
 #include "written_out.h"

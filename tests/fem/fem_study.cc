@@ -13,8 +13,8 @@
 //   fem_study load=pressure k=1 nu=0.5 formulation=mixed
 // vtu=file.vtu writes the fields (u_r, u_z, and q when mixed, E);
 // every key is optional (defaults: the recommended parameters for k). Prints one line per run: key=value pairs.
-#include <fem/axisymmetric_solver.h>
-#include <fem/modulus.h>
+#include <fem/bodies/axisymmetric_solver.h>
+#include <fem/modulus/modulus.h>
 
 #include "study_arguments.h"
 

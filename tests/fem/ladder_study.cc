@@ -4,8 +4,8 @@
 // Prints, per level, the DoFs, the force (and the depth under a paraboloid), w(w a) and p(pr a), their true
 // relative errors, the level-to-level ratios, and the contract's estimate; p overrides the degree of the ladder.
 // mode=p p_min=2 p_max=6: the degree ladder on the level-0 mesh instead (no estimate).
-#include <fem/accuracy.h>
-#include <fem/modulus.h>
+#include <fem/accuracy/accuracy.h>
+#include <fem/modulus/modulus.h>
 
 #include "study_arguments.h"
 

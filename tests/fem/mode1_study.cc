@@ -1,4 +1,4 @@
-// mode1_study: one Fourier-mode-1 FE run (fem/fourier_mode1_solver.h) with any mesh/discretisation
+// mode1_study: one Fourier-mode-1 FE run (fem/tangential/fourier_mode1_solver.h) with any mesh/discretisation
 // setting, its error against the closed forms of chapter 9.3, and its timings; the measurements
 // fem/doc/loads-and-contact.md, "Tangential loads", names. Not a test.
 //
@@ -8,9 +8,9 @@
 // 8 G a / (2 - nu); with normal=1 also the normal flat punch of AxisymmetricSolver on the same mesh
 // and alpha = K_N / K_T against cN0 / cT0. slip: the traction mu [p(r; a) - p(r; c)] (9.80) and the
 // stick-zone displacement against u0 = mu alpha [d(a) - d(c)].
-#include <fem/axisymmetric_solver.h>
-#include <fem/fourier_mode1_solver.h>
-#include <fem/modulus.h>
+#include <fem/bodies/axisymmetric_solver.h>
+#include <fem/tangential/fourier_mode1_solver.h>
+#include <fem/modulus/modulus.h>
 
 #include "study_arguments.h"
 

@@ -9,10 +9,10 @@
 #ifndef GRADCONTACT_TESTS_FEM_STUDY_ARGUMENTS_H
 #define GRADCONTACT_TESTS_FEM_STUDY_ARGUMENTS_H
 
-#include <fem/discretization.h>
-#include <fem/distributed_linear_solver.h>
-#include <fem/mesh.h>
-#include <fem/mesh_3d.h>
+#include <fem/grid/discretization.h>
+#include <fem/linear_algebra/distributed_linear_solver.h>
+#include <fem/grid/mesh.h>
+#include <fem/grid/mesh_3d.h>
 
 #include <exception>
 #include <iostream>
@@ -87,7 +87,7 @@ namespace gradcontact::fem::testing
       return static_cast<unsigned int>(num(key, fallback));
     }
 
-    /// Overrides the entries of the 3D mesh (fem/mesh_3d.h) whose keys are given: R0, sectors, L, g3, h_edge, q,
+    /// Overrides the entries of the 3D mesh (fem/grid/mesh_3d.h) whose keys are given: R0, sectors, L, g3, h_edge, q,
     /// inner, layer, edge, grading, contact_ref, global3.
     void apply(HalfSpaceMesh3DParameters &mesh) const
     {

@@ -1,8 +1,8 @@
-// The accuracy contract of fem/accuracy.h: the Richardson estimate on known sequences, the choice of ladder and its
+// The accuracy contract of fem/accuracy/accuracy.h: the Richardson estimate on known sequences, the choice of ladder and its
 // levels, the ladders against the classical (k = 0) closed forms of Hertz and Boussinesq (independent of the graded
 // chapter and of the MDR), their refusals and input checks.
-#include <fem/accuracy.h>
-#include <fem/modulus.h>
+#include <fem/accuracy/accuracy.h>
+#include <fem/modulus/modulus.h>
 
 #include <catch2/catch.hpp>
 

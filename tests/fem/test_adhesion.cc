@@ -1,10 +1,10 @@
-// Tests of the FE adhesive (JKR) contact, fem/adhesion.h. References: the JKR closed forms of
+// Tests of the FE adhesive (JKR) contact, fem/adhesion/adhesion.h. References: the JKR closed forms of
 // analytic/adhesion.h (9.50-9.68, the MDR path, independent of the FE model) and, at k = 0, the
 // classical JKR pull-off forces -3/2 pi dgamma R and -5/6 pi dgamma R (Johnson-Kendall-Roberts 1971,
 // Maugis 2000), which involve neither code.
-#include <fem/adhesion.h>
-#include <fem/convergence.h>
-#include <fem/modulus.h>
+#include <fem/adhesion/adhesion.h>
+#include <fem/accuracy/convergence.h>
+#include <fem/modulus/modulus.h>
 
 #include <analytic/adhesion.h>
 #include <analytic/material.h>

@@ -1,6 +1,6 @@
 // Tests of the shared FE building blocks every solver is made of: the graded-elasticity cell integrand
-// (fem/graded_elasticity.h), the surface trace (fem/surface_trace.h) and the direct system with
-// prescribed DoFs (fem/direct_system.h).
+// (fem/elasticity/graded_elasticity.h), the surface trace (fem/elasticity/surface_trace.h) and the direct system with
+// prescribed DoFs (fem/linear_algebra/direct_system.h).
 //
 // References, each from a path independent of the code under test:
 //   rigid modes   a rigid translation (and the mode-1 rotation about y) has zero strain, so K u = 0
@@ -10,12 +10,12 @@
 //                 space is recovered exactly from its own nodal forces
 //   dense solve   the prescribed solve equals a dense LU solve of the reduced system
 //   mesh cache    a damaged cached near field gives the same mesh as a fresh gmsh run
-#include <fem/boundary_ids.h>
-#include <fem/direct_system.h>
-#include <fem/graded_elasticity.h>
-#include <fem/mesh.h>
-#include <fem/modulus.h>
-#include <fem/surface_trace.h>
+#include <fem/base/boundary_ids.h>
+#include <fem/linear_algebra/direct_system.h>
+#include <fem/elasticity/graded_elasticity.h>
+#include <fem/grid/mesh.h>
+#include <fem/modulus/modulus.h>
+#include <fem/elasticity/surface_trace.h>
 
 #include <deal.II/base/quadrature_lib.h>
 #include <deal.II/dofs/dof_tools.h>
@@ -118,7 +118,7 @@ TEST_CASE("The graded cell integrand shall give no energy to rigid modes and pos
     for (const auto &cell : dofs.active_cell_iterators())
       {
         const auto &K = cell_stiffness.matrix(cell);
-        // U = V = delta, W = 0; and U = V = z, W = -r (fem/fourier_mode1_solver.h).
+        // U = V = delta, W = 0; and U = V = z, W = -r (fem/tangential/fourier_mode1_solver.h).
         const auto translation =
           interpolate_on_cell(fe, cell, mapping, [](unsigned int c, double, double) { return c < 2 ? 1.0 : 0.0; });
         const auto rotation = interpolate_on_cell(fe, cell, mapping, [](unsigned int c, double r, double z) {

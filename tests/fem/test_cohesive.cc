@@ -1,9 +1,9 @@
-// Tests of the Dugdale cohesive-zone FE, fem/cohesive_zone.h. References: the Maugis-Dugdale solution at
+// Tests of the Dugdale cohesive-zone FE, fem/adhesion/cohesive_zone.h. References: the Maugis-Dugdale solution at
 // k = 0 (analytic/maugis_dugdale.h, Maugis 1992; nothing of the FE) and on the graded medium (the same header, by
 // the MDR), the DMT limit -2 pi dgamma R of a rigid sphere, and the chapter's JKR critical states
 // (analytic/adhesion.h, 9.55-9.56) at large lambda.
-#include <fem/cohesive_zone.h>
-#include <fem/modulus.h>
+#include <fem/adhesion/cohesive_zone.h>
+#include <fem/modulus/modulus.h>
 
 #include <analytic/adhesion.h>
 #include <analytic/material.h>

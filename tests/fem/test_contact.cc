@@ -3,10 +3,10 @@
 // analytic/normal.h (an independent code path: the MDR closed forms of chapter 9), linked here only.
 // Every tolerance is a measured error (fem_study; fem/doc/accuracy-and-cost.md) times a margin of 2.5-5 with its
 // reason.
-#include <fem/axisymmetric_solver.h>
-#include <fem/contact_check.h>
-#include <fem/convergence.h>
-#include <fem/modulus.h>
+#include <fem/bodies/axisymmetric_solver.h>
+#include <fem/base/contact_check.h>
+#include <fem/accuracy/convergence.h>
+#include <fem/modulus/modulus.h>
 
 #include <analytic/material.h>
 #include <analytic/normal.h>
@@ -397,7 +397,7 @@ TEST_CASE("The contact sign check shall flag tensile zones, not the sign changes
 {
   using gradcontact::fem::min_relative_contact_force;
   // Hand-made nodal forces, centre first; the expected values are worked out by hand from the rule in
-  // fem/contact_check.h (a node is tensile when its force and the smaller partial sum are both < 0).
+  // fem/base/contact_check.h (a node is tensile when its force and the smaller partial sum are both < 0).
   CHECK(min_relative_contact_force({1, 2, 3, 4}) == Approx(0.25)); // smallest node force / max
   // One negative node next to the large edge force (degree-3 nodes at a steep edge): inner sum 7,
   // outer sum 9 at that node, so nothing is tensile; the smallest value is the first node, 1 / 10.

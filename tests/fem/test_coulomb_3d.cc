@@ -1,4 +1,4 @@
-// Serial tests of the node-by-node Coulomb contact of the 3D model (fem/coulomb_contact_3d.h) on a surface whose
+// Serial tests of the node-by-node Coulomb contact of the 3D model (fem/tangential/coulomb_contact_3d.h) on a surface whose
 // nodes do not interact: a Winkler foundation, C = diag(c_t, c_t, c_n). Every node is then its own spring with a
 // Coulomb slider, solved by hand:
 //   normal     P_i = max(0, d - f(r_i)) / c_n (d the depth, f the profile);
@@ -8,7 +8,7 @@
 // The whole body's forces are twice the half's. These are the exact answers of the discrete problem; the
 // solver (active sets and Newton on the slip law) must reach them to round-off, and zone_shape must put the
 // stick-zone boundary between the nodes the hand solution says.
-#include <fem/coulomb_contact_3d.h>
+#include <fem/tangential/coulomb_contact_3d.h>
 
 #include <deal.II/base/numbers.h>
 

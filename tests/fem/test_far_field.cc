@@ -1,10 +1,10 @@
-// Tests of the condensed far field (fem/far_field.h): the same discrete problem as the mesh clamped so far out
+// Tests of the condensed far field (fem/elasticity/far_field.h): the same discrete problem as the mesh clamped so far out
 // that its truncation error is below round-off, the flat punch (9.16) and the paraboloid under depth control
 // (9.26) written out, at L / a = 10 where the clamped mesh is far off, the mode-1 tangential punch against the mesh
 // clamped at 1e16 a and Mindlin's K_T, and its refusals.
-#include <fem/axisymmetric_solver.h>
-#include <fem/fourier_mode1_solver.h>
-#include <fem/modulus.h>
+#include <fem/bodies/axisymmetric_solver.h>
+#include <fem/tangential/fourier_mode1_solver.h>
+#include <fem/modulus/modulus.h>
 
 #include "written_out.h"
 
@@ -109,7 +109,7 @@ TEST_CASE("The condensed far field is the mesh clamped at L g^N for N to infinit
 
 TEST_CASE("The condensed far field of the mixed formulation is its mesh clamped at L g^N for N to infinity", "[fem]")
 {
-  // The pressure DoFs scaled per ring (fem/far_field.h): nu = 0.45 (K_qq present) and 0.5 (K_qq = 0). The saddle
+  // The pressure DoFs scaled per ring (fem/elasticity/far_field.h): nu = 0.45 (K_qq present) and 0.5 (K_qq = 0). The saddle
   // point's LU leaves a larger energy mismatch than the Cholesky solves above; the bound keeps it small.
   const double             k = -0.5;
   const double             v = GENERATE(0.45, 0.5);
@@ -123,7 +123,7 @@ TEST_CASE("The condensed far field of the mixed formulation is its mesh clamped 
 TEST_CASE("With the condensed far field the mixed formulation's flat punch reaches (9.16) at nu = 1/2", "[fem]")
 {
   // Incompressible, where the clamped far field of k = -0.9 is 2.5e-2 off even at L = 1e16 a ((a / L)^(1 + k)), and
-  // where the pressure unknown q / E (fem/graded_elasticity.h) follows the stiff skin's in-plane stress.
+  // where the pressure unknown q / E (fem/elasticity/graded_elasticity.h) follows the stiff skin's in-plane stress.
   const double k = GENERATE(-0.9, -0.5);
   Material     mat{std::make_shared<PowerLawModulus>(E0, c0, k), 0.5};
   MeshParameters mesh  = recommended_mesh_parameters(a, k, 1e-6);

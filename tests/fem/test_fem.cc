@@ -13,9 +13,9 @@
 // checked against 34-digit references of the MDR integrals), not written out here.
 // Tolerances are the measured errors of the default discretisation (fem_study; fem/doc/accuracy-and-cost.md)
 // with a margin of about 2.5x, each with its reason; they are not loosened to pass.
-#include <fem/axisymmetric_solver.h>
-#include <fem/gauss_jacobi.h>
-#include <fem/modulus.h>
+#include <fem/bodies/axisymmetric_solver.h>
+#include <fem/base/gauss_jacobi.h>
+#include <fem/modulus/modulus.h>
 
 #include <analytic/material.h>
 #include <analytic/normal.h>
@@ -240,7 +240,7 @@ TEST_CASE("For a force tolerance of 2e-4 or more at k <= 0.5 the recommended set
           "meet it on the flat punch (9.16)",
           "[fem]")
 {
-  // recommended_settings (fem/discretization.h): degree 2 on the mesh of degree 3. Required: half the tolerance
+  // recommended_settings (fem/grid/discretization.h): degree 2 on the mesh of degree 3. Required: half the tolerance
   // asked (1e-4 for 2e-4), a smaller margin at k = 0.5 than this file's usual 2.5x because the bound is the
   // contract (the tolerance), not a margin over this mesh's error.
   constexpr double asked = 2e-4;

@@ -1,9 +1,9 @@
-// Requirements of Coulomb friction in the unilateral contact of a rigid indenter (fem/unilateral_contact.h,
+// Requirements of Coulomb friction in the unilateral contact of a rigid indenter (fem/contact/unilateral_contact.h,
 // "Friction"), by its sharp checks: a flat punch that sticks is Mossakovskii's bonded punch; where normal
 // pressure causes no radial displacement (Holl's ratio nu = 1/(2 + k)) friction changes nothing; during
 // loading with full stick the indentation stiffness of a sphere is the bonded punch's at the current radius.
-#include <fem/axisymmetric_solver.h>
-#include <fem/unilateral_contact.h>
+#include <fem/bodies/axisymmetric_solver.h>
+#include <fem/contact/unilateral_contact.h>
 
 #include "written_out.h"
 

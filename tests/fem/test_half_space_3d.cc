@@ -1,4 +1,4 @@
-// Serial tests of the pieces of the 3D half-space model (fem/half_space_3d.h); its solves run under MPI in
+// Serial tests of the pieces of the 3D half-space model (fem/bodies/half_space_3d.h); its solves run under MPI in
 // the fem3d tests of tests/fem/CMakeLists.txt.
 //
 // References, each independent of the code under test:
@@ -9,10 +9,10 @@
 //                 is a surface cell, where the rule is exact for the power law)
 //   geometry      the half cylinder's volume pi L^3 / 2, the contact disc's area pi a^2 / 2, the disc's edge on
 //                 r = a, with a quadratic mapping of the curved faces
-#include <fem/boundary_ids.h>
-#include <fem/graded_elasticity.h>
-#include <fem/mesh_3d.h>
-#include <fem/modulus.h>
+#include <fem/base/boundary_ids.h>
+#include <fem/elasticity/graded_elasticity.h>
+#include <fem/grid/mesh_3d.h>
+#include <fem/modulus/modulus.h>
 
 #include <deal.II/base/quadrature_lib.h>
 #include <deal.II/fe/fe_q.h>

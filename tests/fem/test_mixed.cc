@@ -3,10 +3,10 @@
 // References: classical closed forms written out here (Boussinesq's flat punch, Hertz's pressure, the
 // Winkler law of the Gibson medium 9.44) and the closed forms of analytic/normal.h for k = 0.5, an
 // independent code path. Every tolerance is a measured error times a stated margin.
-#include <fem/adhesion.h>
-#include <fem/axisymmetric_solver.h>
-#include <fem/fourier_mode1_solver.h>
-#include <fem/modulus.h>
+#include <fem/adhesion/adhesion.h>
+#include <fem/bodies/axisymmetric_solver.h>
+#include <fem/tangential/fourier_mode1_solver.h>
+#include <fem/modulus/modulus.h>
 
 #include <analytic/adhesion.h>
 #include <analytic/material.h>

@@ -1,4 +1,4 @@
-// Tests of the Fourier-mode-1 (tangential) FE model, fem/fourier_mode1_solver.h.
+// Tests of the Fourier-mode-1 (tangential) FE model, fem/tangential/fourier_mode1_solver.h.
 //
 // References, each from a path independent of the code under test:
 //   3D           an independent 3D deal.II model of the same truncated cylinder (cylinder_3d.h)
@@ -8,10 +8,10 @@
 //   9.80         u0 = mu alpha [d(a) - d(c)] for tau = mu [p(r; a) - p(r; c)], analytic/tangential.h
 // Tolerances are the errors that mode1_study prints (fem/doc/loads-and-contact.md, "Tangential loads") with a
 // margin, each with its reason; they are not loosened to pass.
-#include <fem/axisymmetric_solver.h>
-#include <fem/convergence.h>
-#include <fem/fourier_mode1_solver.h>
-#include <fem/modulus.h>
+#include <fem/bodies/axisymmetric_solver.h>
+#include <fem/accuracy/convergence.h>
+#include <fem/tangential/fourier_mode1_solver.h>
+#include <fem/modulus/modulus.h>
 
 #include <analytic/material.h>
 #include <analytic/normal.h>
@@ -289,7 +289,7 @@ TEST_CASE("Under an oscillating tangential force the solver shall follow the unl
   // The levels toward c_A make the branch u0 and W accurate (without them both are orders of magnitude off).
   // F_x of the quadrature of tau (9.82) against Fx at all 15 forces: the hardest is Fx = -0.125 F_A, whose
   // reversal radius b lies a small fraction of a face length beyond the end of a face: the traction integrals
-  // grade that face toward b (fem/surface_trace.h); integrated with one Gauss rule it is far outside
+  // grade that face toward b (fem/elasticity/surface_trace.h); integrated with one Gauss rule it is far outside
   // force_tolerance, and W with it. What remains is the graded rule's own error at a kink (16 pieces of ratio
   // 0.25, 8 points each).
   // Tolerances: a tenfold margin over this mesh's errors (CAPTURE and the printed energy error give them);

@@ -2,8 +2,8 @@
 // meshes and loads must each end in finite answers or in a clear exception (std::invalid_argument naming
 // a parameter, std::runtime_error explaining a failure), never NaN, inf, a hang or a crash. Failures it
 // finds become regression tests in test_fem.cc / test_contact.cc.
-#include <fem/axisymmetric_solver.h>
-#include <fem/modulus.h>
+#include <fem/bodies/axisymmetric_solver.h>
+#include <fem/modulus/modulus.h>
 
 #include <catch2/catch.hpp>
 

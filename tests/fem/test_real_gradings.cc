@@ -1,4 +1,4 @@
-// Tests of the real gradings of fem/modulus.h, where the power law (9.1) stops describing the material:
+// Tests of the real gradings of fem/modulus/modulus.h, where the power law (9.1) stops describing the material:
 // ShiftedPowerLawModulus (a finite surface modulus), CoatingModulus (a graded coating on a homogeneous
 // substrate) and TabulatedModulus (a measured profile). Each FE check is a flat punch of radius a at depth
 // d in a limit where the grading has a closed form of its own, written out here:
@@ -33,8 +33,8 @@
 // leave F / F_9.16 - 1 far above the flat-punch bound, falling only slowly with the radius while the mesh
 // grows to millions of DoFs and is flagged unreliable, since thin cells beyond the near field ruin the
 // conditioning (fem/doc/limits.md).
-#include <fem/axisymmetric_solver.h>
-#include <fem/modulus.h>
+#include <fem/bodies/axisymmetric_solver.h>
+#include <fem/modulus/modulus.h>
 
 #include "written_out.h"
 

@@ -1,10 +1,10 @@
-// Tests of the Lennard-Jones adhesion FE, fem/smooth_cohesion.h. References: the law's own integrals (computed
+// Tests of the Lennard-Jones adhesion FE, fem/adhesion/smooth_cohesion.h. References: the law's own integrals (computed
 // here by quadrature), the rigid sphere's force-separation curve (Derjaguin: F(d) = -2 pi R Phi(-d), Phi the
 // law's work beyond a gap, written out below; its minimum -2 pi dgamma R is the DMT pull-off for every k), the
 // chapter's JKR critical states (analytic/adhesion.h, 9.55-9.56) at large Tabor parameter, and the FE on a finer
 // mesh.
-#include <fem/modulus.h>
-#include <fem/smooth_cohesion.h>
+#include <fem/modulus/modulus.h>
+#include <fem/adhesion/smooth_cohesion.h>
 
 #include <analytic/adhesion.h>
 #include <analytic/material.h>
@@ -169,7 +169,7 @@ TEST_CASE("Lennard-Jones rigid limit: Derjaguin's integral for the paraboloid, t
   CHECK(rigid.force < by_u(rigid.depth + 0.05 * eps));
 
   // The FE path of the rigid tip (E0 = 1e10, as in the sphere's test above) is F(d) of the rigid limit at every
-  // state, and its pull-off the smallest F; on a fixed mesh and on the edge-following one (fem/smooth_cohesion.h,
+  // state, and its pull-off the smallest F; on a fixed mesh and on the edge-following one (fem/adhesion/smooth_cohesion.h,
   // "Following the edge"), whatever the state's frame.
   const double r_eps = std::pow(eps / A, 0.25);
   for (const auto &[k, follow_edge] : {std::pair{0.0, false}, std::pair{0.5, false}, std::pair{0.5, true}})
@@ -273,7 +273,7 @@ TEST_CASE("Lennard-Jones FE: pull-off on a finer mesh", "[slow]")
 TEST_CASE("Lennard-Jones FE following the edge: the model is self-similar, the followed path is the fixed mesh's",
           "[fem]")
 {
-  // The premise (fem/smooth_cohesion.h, "Following the edge"): for E0 (z / c0)^k the FE model built at the contact
+  // The premise (fem/adhesion/smooth_cohesion.h, "Following the edge"): for E0 (z / c0)^k the FE model built at the contact
   // radius s a is the one at a scaled by s, its flexibility s^{-(1+k)} times the other's at the nodes s r_i. Both
   // are built here from scratch (mesh, halvings, condensed far field, Gauss-Jacobi cells) at a and 1.37 a.
   const double a = 0.02, s = 1.37;
@@ -347,7 +347,7 @@ TEST_CASE("Lennard-Jones FE following the edge: the model is self-similar, the f
 TEST_CASE("Surface flexibility (CHOLMOD, and UMFPACK for the mixed formulation) applied to a pressure equals the solve",
           "[fem]")
 {
-  // The flexibility's columns against the solver's own constant-pressure solve (fem/axisymmetric_solver.h): w = C b with
+  // The flexibility's columns against the solver's own constant-pressure solve (fem/bodies/axisymmetric_solver.h): w = C b with
   // b_i = \int_{r <= a} p0 phi_i r dr on the surface faces. The displacement formulation's matrix is positive
   // definite (CHOLMOD); the mixed one's is not (the UMFPACK fallback of DirectSystem::inverse_block).
   const double   a = 0.1, p0 = 1e-3;
@@ -361,7 +361,7 @@ TEST_CASE("Surface flexibility (CHOLMOD, and UMFPACK for the mixed formulation) 
       AxisymmetricSolver       solver(material, s.mesh, s.discretization);
       const SurfaceFlexibility flexibility = solver.surface_flexibility();
       const unsigned int       n           = flexibility.dofs.size();
-      // b_i = \int_{r <= a} p0 phi_i r dr (fem/surface_trace.h; the solver loads its cells instead).
+      // b_i = \int_{r <= a} p0 phi_i r dr (fem/elasticity/surface_trace.h; the solver loads its cells instead).
       const auto integrals = traction_integrals(flexibility.faces, [p0](double) { return p0; }, a, {}, GradedRule{},
                                                 "test pressure");
       std::vector<double> b(n, 0.0);

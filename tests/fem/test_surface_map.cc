@@ -1,9 +1,9 @@
-// Tests of the surface map (fem/surface_map.h): its derivatives against central differences of Phi, its
+// Tests of the surface map (fem/modulus/surface_map.h): its derivatives against central differences of Phi, its
 // refusals, and the FE with it against the flat punch (9.16) and the paraboloid (9.26), written out here,
 // where the model without it is far off (k = 0.9) or needs three times the DoFs (k = 0.5).
-#include <fem/axisymmetric_solver.h>
-#include <fem/modulus.h>
-#include <fem/surface_map.h>
+#include <fem/bodies/axisymmetric_solver.h>
+#include <fem/modulus/modulus.h>
+#include <fem/modulus/surface_map.h>
 
 #include "written_out.h"
 

@@ -1,9 +1,9 @@
-// Requirements of the unilateral (Signorini) contact solver (fem/unilateral_contact.h): where the
+// Requirements of the unilateral (Signorini) contact solver (fem/contact/unilateral_contact.h): where the
 // contact is a disc, it is the radius-controlled solution of AxisymmetricSolver (sharp: the same discrete
 // problem); the contact set it finds for a concave punch is an annulus short of complete contact and the
 // disc of complete contact beyond it; it reports what does not converge.
-#include <fem/axisymmetric_solver.h>
-#include <fem/unilateral_contact.h>
+#include <fem/bodies/axisymmetric_solver.h>
+#include <fem/contact/unilateral_contact.h>
 
 #include <analytic/normal.h>
 
