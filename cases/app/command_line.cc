@@ -1,12 +1,22 @@
 #include "app/command_line.h"
 
-#include "tools/bench.h"
-#include "tools/fe_oracle.h"
-#include "tools/figures.h"
-#include "app/runner.h"
-#include "tools/stress.h"
+#ifndef GRADCONTACT_WITH_FEM
+#  define GRADCONTACT_WITH_FEM 1 // the FE build; cases/CMakeLists.txt sets 0 for -DGRADCONTACT_WITH_FEM=OFF
+#endif
+
+// GRADCONTACT_WITH_FEM = 0 (configured with -DGRADCONTACT_WITH_FEM=OFF): the command line is `eval` alone, answered by
+// the analytic library; the other commands and "method": "fe" need the FE module.
+#if GRADCONTACT_WITH_FEM
+#  include "app/runner.h"
+#  include "tools/bench.h"
+#  include "tools/fe_oracle.h"
+#  include "tools/figures.h"
+#  include "tools/stress.h"
+#endif
 
 #include <analytic/batch.h>
+
+#include <nlohmann/json.hpp>
 
 #include <algorithm>
 #include <cstdlib>
@@ -28,6 +38,7 @@ namespace gradcontact::cases
       int (*run)(const std::vector<std::string> &args);
     };
 
+#if GRADCONTACT_WITH_FEM
     int eval(const std::vector<std::string> &args_in)
     {
       // --batch: read the whole input first (cases/tools/fe_oracle.h, EvalReading); else each line answered at once.
@@ -72,6 +83,48 @@ namespace gradcontact::cases
       return 0;
     }
 
+#else
+    /// One answer line per request line, written as soon as the line is read (batch::evaluate); a request with
+    /// "method": "fe" is an error that names the build option.
+    int eval_stream(std::istream &in, std::ostream &out)
+    {
+      int errors = 0;
+      for (std::string line; std::getline(in, line);)
+        {
+          if (line.find_first_not_of(" \t\r") == std::string::npos)
+            continue;
+          batch::Answer answer = batch::evaluate(line);
+          const nlohmann::json request = nlohmann::json::parse(line, nullptr, false);
+          if (!answer.ok && request.is_object() && request.value("method", nlohmann::json()) == "fe")
+            answer.error = "method = 'fe': this gradcontact was built without the FE module "
+                           "(-DGRADCONTACT_WITH_FEM=OFF); 'closed_form' and 'numerical_mdr' are answered";
+          errors += answer.ok ? 0 : 1;
+          out << batch::to_json(answer) << std::endl;
+        }
+      return errors;
+    }
+
+    int eval(const std::vector<std::string> &args_in)
+    {
+      std::vector<std::string> args; // --batch and --no-cache concern the FE's answers: nothing to do here
+      for (const std::string &a : args_in)
+        if (a != "--batch" && a != "--no-cache")
+          args.push_back(a);
+      if (args.size() > 1)
+        throw std::invalid_argument("eval: takes at most one file (got " + std::to_string(args.size()) + ")");
+      if (args.empty() || args[0] == "-")
+        {
+          eval_stream(std::cin, std::cout);
+          return 0;
+        }
+      std::ifstream in(args[0]);
+      if (!in)
+        throw std::invalid_argument("eval: cannot open file '" + args[0] + "'");
+      eval_stream(in, std::cout);
+      return 0;
+    }
+#endif
+
     const std::vector<Command> &commands()
     {
       static const std::vector<Command> list = {
@@ -84,6 +137,7 @@ namespace gradcontact::cases
          "read per line, FE answers are kept between runs in GRADCONTACT_EVAL_CACHE\n"
          "(default ~/.cache/gradcontact/eval) unless --no-cache",
          eval},
+#if GRADCONTACT_WITH_FEM
         {"run", "<scene|folder> ... [--set Section/key=value] [--reports DIR] [--quiet]\n"
                 "    [--verbose] [--force] [--shard i/N] [--map-shard i/N] [--help-scene] [--help-functions]",
          "run scenes (.prm, .json, .jsonl) and write reports/<scene>/ and\n"
@@ -112,6 +166,7 @@ namespace gradcontact::cases
          "numerical-stability tables of the analytic module by region and\n"
          "absolute scale -> reports/benchmarks/stability.md",
          stress},
+#endif
       };
       return list;
     }

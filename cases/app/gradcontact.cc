@@ -18,9 +18,13 @@
 // an MPI launcher started the process, else only when a scene of the distributed 3D model needs it
 // (cases/model/mpi_session.h: starting it costs a singleton process more than a short FE run).
 #include "app/command_line.h"
-#include "model/mpi_session.h"
 
-#include <deal.II/base/mpi.h>
+#ifndef GRADCONTACT_WITH_FEM
+#  define GRADCONTACT_WITH_FEM 1 // the FE build; cases/CMakeLists.txt sets 0 for -DGRADCONTACT_WITH_FEM=OFF
+#endif
+#if GRADCONTACT_WITH_FEM
+#  include "model/mpi_session.h"
+#endif
 
 #include <exception>
 #include <iostream>
@@ -31,7 +35,9 @@ int main(int argc, char **argv)
 {
   try
     {
+#if GRADCONTACT_WITH_FEM
       gradcontact::cases::MpiSession mpi(argc, argv);
+#endif
       return gradcontact::cases::command_line(std::vector<std::string>(argv + 1, argv + argc), std::cout);
     }
   catch (const std::exception &e)
