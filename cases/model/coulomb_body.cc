@@ -88,4 +88,12 @@ namespace gradcontact::cases
     c.idealised_reference = true;
     return c;
   }
+
+  void add_friction_work(const fem::CoulombState3D &step, double &into)
+  {
+    for (std::size_t i = 0; i < step.status.size(); ++i)
+      if (step.status[i] == fem::NodeStatus::slip)
+        into += 2 * std::hypot(step.nodal_force[i][0], step.nodal_force[i][1]) *
+                std::hypot(step.slip[i][0], step.slip[i][1]);
+  }
 } // namespace gradcontact::cases

@@ -53,6 +53,10 @@ namespace gradcontact::cases
   /// Builds the 3D model of the case's body and its surface compliance (collective).
   CoulombSphereSurface prepare_coulomb_sphere(MPI_Comm communicator, const CoulombSphereCase &c);
 
+  /// Adds the work of friction in one step of a path to `into`: mu P |s| of every slipping node (P constant and the
+  /// slip one-way within a step: exact for the step's slip), twice for the whole body (the model is the half body).
+  void add_friction_work(const fem::CoulombState3D &step, double &into);
+
   /// The far field of a scene's 3D mesh / a: Discretization/far field, else 1e5 (k < 0) or 1e3.
   double coulomb_far_field(const Scene &s, double k);
 

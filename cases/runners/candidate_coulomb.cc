@@ -75,11 +75,7 @@ namespace gradcontact::cases
           throw std::runtime_error(phase + " step to d = " + format(d) + ", delta = " + format(delta) +
                                    " did not converge: " + st.state.message);
         st.shape = fem::zone_shape(surface.compliance, st.state);
-        // mu P |s| of every slipping node (P constant and the slip one-way within a step), twice for the body
-        for (std::size_t i = 0; i < st.state.status.size(); ++i)
-          if (st.state.status[i] == fem::NodeStatus::slip)
-            st.friction_work += 2 * std::hypot(st.state.nodal_force[i][0], st.state.nodal_force[i][1]) *
-                                std::hypot(st.state.slip[i][0], st.state.slip[i][1]);
+        add_friction_work(st.state, st.friction_work);
         path.push_back(std::move(st));
       };
       for (unsigned int i = 1; i <= m; ++i)

@@ -4,7 +4,7 @@
 // problems decouple, and the tangential traction is along the load. The 3D Coulomb model has neither: friction
 // couples the two where nu != 1/(2 + k) (Holl's ratio), and each node slips in its own direction. One loading path
 // of that model with the candidate's profile (normal loading to the numerical MDR's d(a), then the tangential
-// displacement of F_A = Tangential/amplitude mu F_N(a), one cycle to -delta_A and back) is measured against the
+// displacement of F_A = Tangential/amplitude mu F_N(a), one cycle to -delta_A and back) is compared with the
 // candidate, so its rows say how far Coulomb's law is from the candidate; at Holl's ratio they check it.
 #ifndef GRADCONTACT_CASES_CANDIDATE_COULOMB_H
 #define GRADCONTACT_CASES_CANDIDATE_COULOMB_H

@@ -172,13 +172,9 @@ namespace gradcontact::cases
       s.path  = run.kind;
       s.state = run.contact.step_depth(d, delta);
       s.shape = fem::zone_shape(run.C, s.state);
-      // The work of friction in the step: mu P |s| of every slipping node (P constant and the slip one-way within
-      // a step: exact for the step's slip), twice for the whole body.
+      // the work of friction of the cycle
       if (phase == "unloading" || phase == "reloading")
-        for (std::size_t i = 0; i < s.state.status.size(); ++i)
-          if (s.state.status[i] == fem::NodeStatus::slip)
-            run.cycle_work += 2 * std::hypot(s.state.nodal_force[i][0], s.state.nodal_force[i][1]) *
-                              std::hypot(s.state.slip[i][0], s.state.slip[i][1]);
+        add_friction_work(s.state, run.cycle_work);
       path.max_iterations = std::max(path.max_iterations, s.state.iterations);
       if (phase != "normal") // the slip of the normal loading is radial
         {
