@@ -1,0 +1,152 @@
+#include <analytic/errors.h>
+#include <analytic/subsurface.h>
+
+#include <numerics/gauss_jacobi.h>
+
+#include <boost/math/constants/constants.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+namespace gradcontact
+{
+  namespace
+  {
+    constexpr double pi = boost::math::constants::pi<double>();
+
+    double edge_factor(const double a, const double rho, const double e)
+    {
+      return std::pow((a - rho) * (a + rho) / (a * a), e);
+    }
+
+    /// Breakpoints in [lo, hi] graded geometrically (ratio 2) away from `at` with first width `width`.
+    void add_graded(std::vector<double> &points, const double lo, const double hi, const double at, const double width)
+    {
+      for (double w = width; at - w > lo; w *= 2)
+        points.push_back(at - w);
+      for (double w = width; at + w < hi; w *= 2)
+        points.push_back(at + w);
+      if (at > lo && at < hi)
+        points.push_back(at);
+    }
+
+    /// The angular integral int_0^2pi of the unit point-force field of a source at radius rho, turned into the
+    /// field point's frame: {rr, zz, tt, rz}.
+    AxisymmetricStress ring(const PointLoadField &field, const double rho, const double r, const double z,
+                            const detail::GaussJacobiRule &legendre)
+    {
+      // The kernel peaks at phi = 0 over a width of order sqrt((r - rho)^2 + z^2) / sqrt(r rho).
+      std::vector<double> breaks{0., pi};
+      if (r * rho > 0)
+        {
+          const double width = std::sqrt(((r - rho) * (r - rho) + z * z) / (r * rho));
+          for (double w = width; w < pi; w *= 2)
+            breaks.push_back(w);
+        }
+      std::sort(breaks.begin(), breaks.end());
+      AxisymmetricStress s;
+      for (std::size_t i = 0; i + 1 < breaks.size(); ++i)
+        {
+          const double lo = breaks[i], h = breaks[i + 1] - lo;
+          for (std::size_t q = 0; q < legendre.size(); ++q)
+            {
+              const double phi = lo + h * legendre.node[q], w = 2 * h * legendre.weight[q]; // 2: phi in (pi, 2pi)
+              // The offset from the source to the field point, in the field point's frame (x along its radius).
+              const double dx = r - rho * std::cos(phi), dy = rho * std::sin(phi);
+              const double d  = std::hypot(dx, dy);
+              const AxisymmetricStress g = field.stress(1., d, z);
+              const double c = d > 0 ? dx / d : 1., sn = d > 0 ? dy / d : 0.;
+              s.rr += w * (g.rr * c * c + g.tt * sn * sn);
+              s.tt += w * (g.rr * sn * sn + g.tt * c * c);
+              s.zz += w * g.zz;
+              s.rz += w * g.rz * c;
+            }
+        }
+      return s;
+    }
+
+    void accumulate(AxisymmetricStress &s, const AxisymmetricStress &g, const double w)
+    {
+      s.rr += w * g.rr;
+      s.zz += w * g.zz;
+      s.tt += w * g.tt;
+      s.rz += w * g.rz;
+    }
+  } // namespace
+
+  AxisymmetricPressure contact_pressure(const Medium &m, const FlatPunch &punch, const double d)
+  {
+    const double p = pressure(m, punch, d, 0.) ; // (a^2)^((k-1)/2) cN0 d / (pi c0^k) at the centre
+    return {punch.a, (m.k - 1) / 2, [p](double) { return p; }};
+  }
+
+  AxisymmetricPressure contact_pressure(const Medium &m, const Paraboloid &paraboloid, const double a)
+  {
+    const double p = pressure(m, paraboloid, a, 0.);
+    return {a, (1 + m.k) / 2, [p](double) { return p; }};
+  }
+
+  AxisymmetricPressure contact_pressure(const Medium &m, const PowerLaw &profile, const double a)
+  {
+    const double e = (1 + m.k) / 2;
+    return {a, e, [m, profile, a, e](const double rho) { return pressure(m, profile, a, rho) / edge_factor(a, rho, e); }};
+  }
+
+  AxisymmetricPressure contact_pressure(const UniformPressure &load)
+  {
+    check::positive("contact_pressure", "a", load.a);
+    check::finite("contact_pressure", "p0", load.p0);
+    const double p = load.p0;
+    return {load.a, 0., [p](double) { return p; }};
+  }
+
+  AxisymmetricStress subsurface_stress(const PointLoadField &field, const AxisymmetricPressure &load, const double r,
+                                       const double z, const SuperpositionRule &rule)
+  {
+    const char *fn = "subsurface_stress";
+    check::positive(fn, "a", load.a);
+    check::open_interval(fn, "edge exponent", load.edge_exponent, -1., 1e3);
+    check::non_negative(fn, "r", r);
+    check::positive(fn, "z", z);
+    if (rule.points < 2 || rule.points > 64)
+      check::fail(fn, "points", rule.points, "is outside [2, 64]");
+    const double a = load.a, e = load.edge_exponent;
+    const detail::GaussJacobiRule legendre = detail::gauss_jacobi_rule(rule.points, 1., 1.);
+    const detail::GaussJacobiRule edge     = detail::gauss_jacobi_rule(rule.points, 1 + e, 1.);
+
+    // Panels in rho: graded toward r (the kernel's peak) and toward the edge (the pressure's singularity, and the
+    // field point's distance to it).
+    std::vector<double> breaks{0., a};
+    const double        width = std::max(z, 1e-15 * a) / 2;
+    add_graded(breaks, 0., a, std::min(r, a), width);
+    add_graded(breaks, 0., a, a, std::max(std::abs(r - a), z) / 2);
+    std::sort(breaks.begin(), breaks.end());
+    breaks.erase(std::unique(breaks.begin(), breaks.end()), breaks.end());
+
+    AxisymmetricStress s;
+    for (std::size_t i = 0; i + 1 < breaks.size(); ++i)
+      {
+        const double lo = breaks[i], hi = breaks[i + 1];
+        if (hi < a)
+          for (std::size_t q = 0; q < legendre.size(); ++q)
+            {
+              const double rho = lo + (hi - lo) * legendre.node[q];
+              const double w   = (hi - lo) * legendre.weight[q] * rho * load.smooth(rho) * edge_factor(a, rho, e);
+              accumulate(s, ring(field, rho, r, z, legendre), w);
+            }
+        else
+          {
+            // The last panel in u = 1 - rho^2/a^2 in [0, U], rho drho = a^2/2 du, with the weight u^e in the rule.
+            const double U = (a - lo) * (a + lo) / (a * a);
+            for (std::size_t q = 0; q < edge.size(); ++q)
+              {
+                const double u = U * edge.node[q], rho = a * std::sqrt(1 - u);
+                const double w = a * a / 2 * std::pow(U, 1 + e) * edge.weight[q] * load.smooth(rho);
+                accumulate(s, ring(field, rho, r, z, legendre), w);
+              }
+          }
+      }
+    return s;
+  }
+} // namespace gradcontact

@@ -1,0 +1,49 @@
+// gradcontact/analytic: the stresses below an axisymmetric normal contact of the power-law graded half-space, by
+// superposing the graded Boussinesq field (point_load.h) over the contact's pressure:
+//   sigma(r, z) = int_0^a p(rho) rho drho int_0^2pi G(r', z; phi) dphi,   r'^2 = r^2 + rho^2 - 2 r rho cos(phi),
+// G the unit point-force field in the frame of the source, turned into the field point's cylindrical frame.
+//
+// The pressure is given as p(rho) = smooth(rho) (1 - rho^2/a^2)^e: the edge exponent e is (k - 1)/2 for a flat punch
+// (9.16), (1 + k)/2 for a smooth indenter (9.20, 9.26, 9.30), 0 for a uniform pressure (9.38). The radial integral
+// takes e into a Gauss-Jacobi rule on its last panel; both integrals are composite Gauss-Legendre elsewhere, graded
+// geometrically toward rho = r (where the kernel peaks over a width of order z) and toward the edge, and the angle
+// toward phi = 0. The cost grows like log(a / z) in each direction. Within about 1e-6 a of the surface the kernel is a
+// near-delta of width z, and its sum loses digits (1e-8 relative at z = 1e-10 a).
+#ifndef GRADCONTACT_ANALYTIC_SUBSURFACE_H
+#define GRADCONTACT_ANALYTIC_SUBSURFACE_H
+
+#include <analytic/normal.h>
+#include <analytic/point_load.h>
+
+#include <functional>
+
+namespace gradcontact
+{
+  /// An axisymmetric pressure (positive: pushing into the half-space) p(rho) = smooth(rho) (1 - rho^2/a^2)^e on
+  /// rho < a [Pa].
+  struct AxisymmetricPressure
+  {
+    double                        a = 0;
+    double                        edge_exponent = 0; ///< e > -1
+    std::function<double(double)> smooth;
+  };
+
+  /// The chapter's contact pressures as such loads (the closed forms of normal.h divided by their edge factor).
+  AxisymmetricPressure contact_pressure(const Medium &m, const FlatPunch &punch, double d);
+  AxisymmetricPressure contact_pressure(const Medium &m, const Paraboloid &paraboloid, double a);
+  AxisymmetricPressure contact_pressure(const Medium &m, const PowerLaw &profile, double a);
+  AxisymmetricPressure contact_pressure(const UniformPressure &load);
+
+  /// Points per panel of the composite rules: the integrands are smooth on every panel, so a panel's error falls
+  /// geometrically with its points.
+  struct SuperpositionRule
+  {
+    unsigned int points = 16;
+  };
+
+  /// The stress at (r >= 0, z > 0) under `load` on the half-space of `field` [Pa].
+  AxisymmetricStress subsurface_stress(const PointLoadField &field, const AxisymmetricPressure &load, double r,
+                                       double z, const SuperpositionRule &rule = {});
+} // namespace gradcontact
+
+#endif

@@ -1,0 +1,142 @@
+// Requirement: the stresses below a contact (analytic/subsurface.h) shall meet the exact fields written here from an
+// independent path: Huber's Hertz field at k = 0 on the axis and on the surface, with its largest shear of 0.31 p0 at
+// 0.48 a (Johnson, Contact Mechanics, 1985, eqs. 3.44-3.45, 3.41), Love's uniformly loaded circle on the axis
+// (Johnson 3.39), the radial field at Holl's ratio on the axis (a one-dimensional integral of Froehlich's
+// distribution), and the normal traction of the load at the surface for every k.
+#include <analytic/subsurface.h>
+
+#include <boost/math/constants/constants.hpp>
+#include <boost/math/quadrature/tanh_sinh.hpp>
+#include <catch2/catch.hpp>
+
+#include <cmath>
+
+using namespace gradcontact;
+using Catch::Matchers::WithinAbs;
+using Catch::Matchers::WithinRel;
+
+namespace
+{
+  constexpr double pi = boost::math::constants::pi<double>();
+  /// Composite Gauss rules of 16 points per panel on analytic panels: rounding-limited away from the surface.
+  constexpr double superposition_tol = 1e-11;
+  /// At depth z the field differs from its surface value by O(z / a) (O(sqrt(z / a)) at the contact edge).
+  constexpr double surface_depth = 1e-10;
+  constexpr double surface_tol   = 1e-8;
+
+  const double E = 2e9, c0 = 1e-3, a = 1e-3;
+}
+
+TEST_CASE("At k = 0 the stresses below a paraboloid shall be Huber's Hertz field", "[analytic][stress]")
+{
+  const double nu = GENERATE(0.0, 0.3, 0.45);
+  const PointLoadField       field(0., nu);
+  const AxisymmetricPressure load = contact_pressure(medium(GradedHalfSpace{E, c0, 0., nu}), Paraboloid{0.05}, a);
+  const double               p0   = load.smooth(0);
+  for (const double zeta : {0.01, 0.1, 0.48, 1., 3.})
+    {
+      const AxisymmetricStress s  = subsurface_stress(field, load, 0., zeta * a);
+      const double             zz = -p0 / (1 + zeta * zeta);
+      const double rr = -p0 * ((1 + nu) * (1 - zeta * std::atan(1 / zeta)) - 0.5 / (1 + zeta * zeta));
+      CAPTURE(nu, zeta, s.zz, zz, s.rr, rr);
+      CHECK_THAT(s.zz, WithinAbs(zz, superposition_tol * p0));
+      CHECK_THAT(s.rr, WithinAbs(rr, superposition_tol * p0));
+      CHECK_THAT(s.tt, WithinAbs(rr, superposition_tol * p0));
+      CHECK_THAT(s.rz, WithinAbs(0, superposition_tol * p0));
+    }
+  for (const double rho : {0.3, 0.95, 1.5})
+    {
+      const AxisymmetricStress s = subsurface_stress(field, load, rho * a, surface_depth * a);
+      const double             q = std::max(0., 1 - rho * rho);
+      const double rr = rho < 1 ? p0 * ((1 - 2 * nu) / (3 * rho * rho) * (1 - std::pow(q, 1.5)) - std::sqrt(q)) :
+                                  p0 * (1 - 2 * nu) / (3 * rho * rho);
+      CAPTURE(nu, rho, s.rr, rr, s.zz);
+      CHECK_THAT(s.rr, WithinAbs(rr, surface_tol * p0));
+      CHECK_THAT(s.zz, WithinAbs(-p0 * std::sqrt(q), surface_tol * p0));
+      if (rho > 1)
+        CHECK_THAT(s.tt, WithinAbs(-rr, surface_tol * p0));
+    }
+  if (nu == 0.3)
+    {
+      // The largest shear on the axis, (sigma_zz - sigma_rr) / 2, by golden-section search.
+      const auto shear = [&](const double zeta) {
+        const AxisymmetricStress s = subsurface_stress(field, load, 0., zeta * a);
+        return -(s.zz - s.rr) / 2;
+      };
+      double lo = 0.3, hi = 0.7;
+      for (int i = 0; i < 60; ++i)
+        {
+          const double m1 = hi - 0.618 * (hi - lo), m2 = lo + 0.618 * (hi - lo);
+          (shear(m1) > shear(m2) ? hi : lo) = shear(m1) > shear(m2) ? m2 : m1;
+        }
+      CHECK_THAT(shear((lo + hi) / 2) / p0, WithinAbs(0.31, 0.005));
+      CHECK_THAT((lo + hi) / 2, WithinAbs(0.48, 0.005));
+    }
+}
+
+TEST_CASE("At k = 0 the stresses below a uniformly loaded circle shall be Love's on the axis", "[analytic][stress]")
+{
+  const double               nu = 0.3, p0 = 1e6;
+  const PointLoadField       field(0., nu);
+  const AxisymmetricPressure load = contact_pressure(UniformPressure{a, p0});
+  for (const double zeta : {0.05, 0.5, 2.})
+    {
+      const AxisymmetricStress s = subsurface_stress(field, load, 0., zeta * a);
+      const double             g = std::pow(1 + zeta * zeta, -0.5), z3 = std::pow(zeta * g, 3);
+      CAPTURE(zeta, s.zz, s.rr);
+      CHECK_THAT(s.zz, WithinAbs(-p0 * (1 - z3), superposition_tol * p0));
+      CHECK_THAT(s.rr, WithinAbs(-p0 / 2 * ((1 + 2 * nu) - 2 * (1 + nu) * zeta * g + z3), superposition_tol * p0));
+    }
+}
+
+TEST_CASE("At Holl's ratio the axial stress on the axis shall be the 1D integral of Froehlich's radial field",
+          "[analytic][stress]")
+{
+  // sigma_zz(0, z) = -(3 + k)/(2 pi) int_0^a p(rho) 2 pi rho z^(3+k) / (rho^2 + z^2)^((5+k)/2) drho
+  const double k = GENERATE(0.3, 0.8);
+  const double nu = 1 / (2 + k);
+  const Medium m  = medium(GradedHalfSpace{E, c0, k, nu});
+  const PointLoadField field(k, nu);
+  for (const bool punch : {true, false})
+    {
+      const AxisymmetricPressure load = punch ? contact_pressure(m, FlatPunch{a}, 1e-6) :
+                                                contact_pressure(m, Paraboloid{0.05}, a);
+      const double p0 = load.smooth(0);
+      boost::math::quadrature::tanh_sinh<double> rule;
+      for (const double zeta : {0.1, 0.7, 2.})
+        {
+          const double z = zeta * a;
+          const double reference = -(3 + k) * rule.integrate([&](const double rho, const double rc) {
+            const double gap = rho > a / 2 ? rc * (2 * a - rc) / (a * a) : 1 - rho * rho / (a * a); // 1 - rho^2/a^2
+            return load.smooth(rho) * std::pow(gap, load.edge_exponent) * rho * std::pow(z, 3 + k) /
+                   std::pow(rho * rho + z * z, (5 + k) / 2);
+          }, 0., a);
+          const AxisymmetricStress s = subsurface_stress(field, load, 0., z);
+          CAPTURE(k, punch, zeta, s.zz, reference);
+          CHECK_THAT(s.zz, WithinRel(reference, 1e-10) || WithinAbs(reference, superposition_tol * p0));
+        }
+    }
+}
+
+TEST_CASE("Just below the surface the normal stress shall tend to the contact pressure and the shear to zero, for every k",
+          "[analytic][stress]")
+{
+  // The surface layer of the graded medium: sigma_zz + p(r) ~ z^min(2, 2+k) and sigma_rz ~ z^min(1, 1+k) (the smooth
+  // part of the field against the traction-free exponents of point_load.h); a limit other than the load, or a wrong
+  // exponent, breaks the decade ratios.
+  const double k  = GENERATE(-0.7, -0.3, 0.4, 0.8);
+  const double nu = 0.3;
+  const Medium m  = medium(GradedHalfSpace{E, c0, k, nu});
+  const PointLoadField       field(k, nu);
+  const AxisymmetricPressure load = contact_pressure(m, Paraboloid{0.05}, a);
+  for (const double rho : {0.2, 0.5, 0.9})
+    {
+      const double p = pressure(m, Paraboloid{0.05}, a, rho * a);
+      const AxisymmetricStress s1 = subsurface_stress(field, load, rho * a, 1e-4 * a);
+      const AxisymmetricStress s2 = subsurface_stress(field, load, rho * a, 1e-5 * a);
+      CAPTURE(k, rho, p, s1.zz, s2.zz, s1.rz, s2.rz);
+      CHECK_THAT((s1.zz + p) / (s2.zz + p), WithinRel(std::pow(10., std::min(2., 2 + k)), 0.1));
+      CHECK_THAT(s1.rz / s2.rz, WithinRel(std::pow(10., std::min(1., 1 + k)), 0.05));
+      CHECK_THAT(s2.zz, WithinRel(-p, 1e-5));
+    }
+}
