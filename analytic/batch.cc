@@ -6,6 +6,7 @@
 #include <analytic/mdr.h>
 #include <analytic/mdr_contact.h>
 #include <analytic/normal.h>
+#include <analytic/subsurface.h>
 #include <analytic/tangential.h>
 
 #include <nlohmann/json.hpp>
@@ -47,6 +48,8 @@ namespace gradcontact::batch
       double Fx() const { return need(q.Fx, "Fx"); }
       double FA() const { return need(q.FA, "FA"); }
       double u0() const { return need(q.u0, "u0"); }
+      double z() const { return need(q.z, "z"); }
+      std::string component() const { return need(q.component, "component"); }
       double R() const { return need(q.geometry.R, "geometry.R"); }
       double tan_theta() const { return need(q.geometry.tan_theta, "geometry.tan_theta"); }
       double n() const { return need(q.geometry.n, "geometry.n"); }
@@ -166,6 +169,39 @@ namespace gradcontact::batch
                     "the smallest double); use r > 0 or the closed form");
     }
 
+    // --- stresses below a normal contact (subsurface.h) -----------------------------------------------
+
+    /// The component `q.component()` of the stress at (r, z) under `load`: the graded Boussinesq field of one body
+    /// superposed over the contact's pressure.
+    double stress_component(const In &q, const AxisymmetricPressure &load)
+    {
+      if (q.q.material2)
+        throw DomainError("material2: the stress below the contact is that of one graded body on a rigid indenter "
+                          "(quantity 'stress' takes material only)");
+      const GradedHalfSpace body = q.body();
+      validate("stress", body);
+      if (!(body.nu < 0.5))
+        check::fail("stress", "material.nu", body.nu, "must be < 0.5 for the stress field");
+      const std::string        component = q.component();
+      const AxisymmetricStress s = subsurface_stress(PointLoadField(body.k, body.nu), load, q.r(), q.z());
+      const double             centre = (s.rr + s.zz) / 2, radius = std::hypot((s.rr - s.zz) / 2, s.rz);
+      const double             p1 = std::max(centre + radius, s.tt), p3 = std::min(centre - radius, s.tt);
+      const std::map<std::string, double> components = {
+        {"rr", s.rr},
+        {"zz", s.zz},
+        {"tt", s.tt},
+        {"rz", s.rz},
+        {"principal_max", p1},
+        {"principal_min", p3},
+        {"max_shear", (p1 - p3) / 2},
+        {"von_mises", std::sqrt(((s.rr - s.zz) * (s.rr - s.zz) + (s.zz - s.tt) * (s.zz - s.tt) +
+                                 (s.tt - s.rr) * (s.tt - s.rr)) / 2 + 3 * s.rz * s.rz)}};
+      const auto found = components.find(component);
+      if (found == components.end())
+        throw DomainError("component = '" + component + "' must be one of " + check::keys(components));
+      return found->second;
+    }
+
     // --- normal contact -------------------------------------------------------------------------
 
     // Cone, paraboloid and power law: closed forms 9.20, 9.26, 9.30, and the numerical MDR.
@@ -183,6 +219,9 @@ namespace gradcontact::batch
       };
       t.closed_form["displacement"] = [](const In &q) {
         return with_shape(q, [&](auto shape) { return displacement(q.medium(), shape, q.a(), q.r()); });
+      };
+      t.closed_form["stress"] = [](const In &q) {
+        return with_shape(q, [&](auto shape) { return stress_component(q, contact_pressure(q.medium(), shape, q.a())); });
       };
       t.closed_form["contact_radius"] = [](const In &q) {
         if (q.q.d)
@@ -215,6 +254,9 @@ namespace gradcontact::batch
       t.closed_form["pressure"] = [punch](const In &q) { return pressure(q.medium(), punch(q), q.d(), q.r()); };
       t.closed_form["displacement"] = [punch](const In &q) {
         return displacement(q.medium(), punch(q), q.d(), q.r());
+      };
+      t.closed_form["stress"] = [punch](const In &q) {
+        return stress_component(q, contact_pressure(q.medium(), punch(q), q.d()));
       };
       t.numerical_mdr["force"] = [](const In &q) { return mdr::force(mdr::flat(q.a(), q.d()), q.medium()); };
       t.numerical_mdr["pressure"] = [](const In &q) {
@@ -286,6 +328,7 @@ namespace gradcontact::batch
       };
       t.closed_form["force"] = [load](const In &q) { return force(load(q)); };
       t.closed_form["displacement"] = [load](const In &q) { return displacement(q.medium(), load(q), q.r()); };
+      t.closed_form["stress"] = [load](const In &q) { return stress_component(q, contact_pressure(load(q))); };
       const auto foundation = [load](const In &q) {
         const UniformPressure l = load(q);
         return mdr::from_pressure([l](double r) { return r <= l.a ? l.p0 : 0.; }, q.medium(), l.a);

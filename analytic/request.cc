@@ -94,7 +94,7 @@ namespace gradcontact::batch
       {"d0", &Request::d0},         {"dgamma", &Request::dgamma}, {"sigma_th", &Request::sigma_th},
       {"mu", &Request::mu},         {"c", &Request::c},     {"Fx", &Request::Fx}, {"FA", &Request::FA},
       {"u0", &Request::u0},         {"a_lo", &Request::a_lo}, {"a_hi", &Request::a_hi},
-      {"h0", &Request::h0},         {"z0", &Request::z0}};
+      {"h0", &Request::h0},         {"z0", &Request::z0},     {"z", &Request::z}};
     const std::map<std::string, GeometryNumber> geometry_keys = {
       {"R", &Geometry::R}, {"tan_theta", &Geometry::tan_theta}, {"n", &Geometry::n},
       {"A", &Geometry::A}, {"h0", &Geometry::h0},               {"p0", &Geometry::p0}};
@@ -130,7 +130,8 @@ namespace gradcontact::batch
   Request parse(const json &j)
   {
     static const std::set<std::string> other_keys = {"id",       "case",      "quantity", "material", "material2",
-                                                     "geometry", "method",    "control",  "mechanism", "branch"};
+                                                     "geometry", "method",    "control",  "mechanism", "branch",
+                                                     "component"};
     if (!j.is_object())
       throw DomainError("request: must be a JSON object");
     for (auto it = j.begin(); it != j.end(); ++it)
@@ -176,6 +177,8 @@ namespace gradcontact::batch
       q.branch = choice(j, "branch", branch_names);
     if (j.contains("mechanism"))
       q.mechanism = choice(j, "mechanism", mechanism_names);
+    if (j.contains("component"))
+      q.component = text(j, "component");
     return q;
   }
 
@@ -215,6 +218,8 @@ namespace gradcontact::batch
       j["branch"] = name_of(branch_names, *q.branch);
     if (q.mechanism)
       j["mechanism"] = name_of(mechanism_names, *q.mechanism);
+    if (q.component)
+      j["component"] = *q.component;
     return j;
   }
 } // namespace gradcontact::batch

@@ -37,6 +37,11 @@ namespace gradcontact::batch
     std::optional<GradedHalfSpace> material2; ///< a second graded body (9.4); none: a rigid indenter
     Geometry geometry;
     std::optional<double> a, r, d, F, d0, dgamma, sigma_th, mu, c, Fx, FA, u0, a_lo, a_hi;
+    /// The depth of a stress below the surface (quantity stress).
+    std::optional<double> z;
+    /// The stress component of quantity stress: rr, zz, tt (hoop), rz, principal_max, principal_min, von_mises,
+    /// max_shear.
+    std::optional<std::string> component;
     /// The adhesive's range instead of its stress (maugis_dugdale only; parse converts either into sigma_th):
     /// the Dugdale range h0, sigma_0 = dgamma / h0, or the Lennard-Jones equilibrium spacing z0, sigma_0 =
     /// 16 dgamma / (9 sqrt(3) z0), the largest stress of that law (Maugis, J. Colloid Interface Sci. 150 (1992)

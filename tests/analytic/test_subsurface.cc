@@ -3,11 +3,14 @@
 // 0.48 a (Johnson, Contact Mechanics, 1985, eqs. 3.44-3.45, 3.41), Love's uniformly loaded circle on the axis
 // (Johnson 3.39), the radial field at Holl's ratio on the axis (a one-dimensional integral of Froehlich's
 // distribution), and the normal traction of the load at the surface for every k.
+#include <analytic/batch.h>
+#include <analytic/request.h>
 #include <analytic/subsurface.h>
 
 #include <boost/math/constants/constants.hpp>
 #include <boost/math/quadrature/tanh_sinh.hpp>
 #include <catch2/catch.hpp>
+#include <nlohmann/json.hpp>
 
 #include <cmath>
 
@@ -139,4 +142,33 @@ TEST_CASE("Just below the surface the normal stress shall tend to the contact pr
       CHECK_THAT(s1.rz / s2.rz, WithinRel(std::pow(10., std::min(1., 1 + k)), 0.05));
       CHECK_THAT(s2.zz, WithinRel(-p, 1e-5));
     }
+}
+
+TEST_CASE("eval shall answer the stress below a contact by component, and name a wrong component",
+          "[analytic][stress]")
+{
+  using Catch::Matchers::Contains;
+  // Hertz at k = 0 on the axis (Huber), through the JSON request of gradcontact eval.
+  const double nu = 0.3, R = 0.05, zeta = 0.48;
+  const nlohmann::json material = {{"E0", E}, {"c0", c0}, {"k", 0.}, {"nu", nu}};
+  const auto ask = [&](const std::string &component) {
+    return batch::evaluate(batch::parse(nlohmann::json{{"case", "paraboloid"}, {"quantity", "stress"},
+                                                       {"material", material}, {"geometry", {{"R", R}}},
+                                                       {"a", a}, {"r", 0.}, {"z", zeta * a}, {"component", component}}));
+  };
+  const double p0 = pressure(medium(GradedHalfSpace{E, c0, 0., nu}), Paraboloid{R}, a, 0.);
+  const double zz = -p0 / (1 + zeta * zeta);
+  const double rr = -p0 * ((1 + nu) * (1 - zeta * std::atan(1 / zeta)) - 0.5 / (1 + zeta * zeta));
+  CHECK_THAT(ask("zz"), WithinRel(zz, 1e-11));
+  CHECK_THAT(ask("rr"), WithinRel(rr, 1e-11));
+  CHECK_THAT(ask("tt"), WithinRel(rr, 1e-11));
+  CHECK_THAT(ask("max_shear"), WithinRel((rr - zz) / 2, 1e-11));
+  CHECK_THAT(ask("von_mises"), WithinRel(rr - zz, 1e-11));
+  CHECK_THAT(ask("principal_min"), WithinRel(zz, 1e-11));
+  CHECK_THAT(ask("principal_max"), WithinRel(rr, 1e-11));
+  CHECK_THROWS_WITH(ask("xy"), Contains("component = 'xy'") && Contains("von_mises"));
+  CHECK_THROWS_WITH(batch::evaluate(batch::parse(nlohmann::json{{"case", "flat_punch"}, {"quantity", "stress"},
+                                                                {"material", material}, {"a", a}, {"d", 1e-6},
+                                                                {"r", 0.}, {"component", "zz"}})),
+                    Contains("z: missing"));
 }
