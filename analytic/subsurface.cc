@@ -20,15 +20,51 @@ namespace gradcontact
       return std::pow((a - rho) * (a + rho) / (a * a), e);
     }
 
-    /// Breakpoints in [lo, hi] graded geometrically (ratio 2) away from `at` with first width `width`.
-    void add_graded(std::vector<double> &points, const double lo, const double hi, const double at, const double width)
+    /// Appends the breakpoints after `lo` that grade [lo, hi] toward `point` (outside or at an end of the panel).
+    void grade_panel(std::vector<double> &out, const double lo, const double hi, const double point, const double floor)
     {
-      for (double w = width; at - w > lo; w *= 2)
-        points.push_back(at - w);
-      for (double w = width; at + w < hi; w *= 2)
-        points.push_back(at + w);
-      if (at > lo && at < hi)
-        points.push_back(at);
+      std::vector<double> inner;
+      if (point >= hi)
+        for (double end = hi; end > lo;)
+          {
+            const double width = std::max(point - end, floor);
+            if (end - lo <= width || (point == hi && end == hi && floor == 0))
+              break;
+            end -= width;
+            inner.push_back(end);
+          }
+      else if (point <= lo)
+        for (double start = lo; start < hi;)
+          {
+            const double width = std::max(start - point, floor);
+            if (hi - start <= width || (point == lo && start == lo && floor == 0))
+              break;
+            start += width;
+            inner.insert(inner.begin(), start); // kept ascending below
+          }
+      std::sort(inner.begin(), inner.end());
+      out.insert(out.end(), inner.begin(), inner.end());
+      out.push_back(hi);
+    }
+
+    /// Splits the panels of `breaks` (sorted) until each is no wider than its distance to `point`, or than `floor`
+    /// near it: panels graded geometrically (ratio 2) toward a point where the integrand is singular or peaks, so that
+    /// each panel's integrand is analytic in a fixed neighbourhood. A panel ending at `point` is left (its end-point
+    /// singularity is the rule's weight).
+    void grade_toward(std::vector<double> &breaks, const double point, const double floor)
+    {
+      std::vector<double> out{breaks.front()};
+      for (std::size_t i = 0; i + 1 < breaks.size(); ++i)
+        {
+          double lo = breaks[i], hi = breaks[i + 1];
+          if (lo < point && point < hi)
+            {
+              grade_panel(out, lo, point, point, floor);
+              lo = point;
+            }
+          grade_panel(out, lo, hi, point, floor);
+        }
+      breaks = out;
     }
 
     /// The angular integral int_0^2pi of the unit point-force field of a source at radius rho, turned into the
@@ -118,11 +154,8 @@ namespace gradcontact
     // Panels in rho: graded toward r (the kernel's peak) and toward the edge (the pressure's singularity, and the
     // field point's distance to it).
     std::vector<double> breaks{0., a};
-    const double        width = std::max(z, 1e-15 * a) / 2;
-    add_graded(breaks, 0., a, std::min(r, a), width);
-    add_graded(breaks, 0., a, a, std::max(std::abs(r - a), z) / 2);
-    std::sort(breaks.begin(), breaks.end());
-    breaks.erase(std::unique(breaks.begin(), breaks.end()), breaks.end());
+    grade_toward(breaks, std::min(r, a), std::max(z, 1e-15 * a) / 2);
+    grade_toward(breaks, a, 0.);
 
     AxisymmetricStress s;
     for (std::size_t i = 0; i + 1 < breaks.size(); ++i)

@@ -38,7 +38,7 @@ namespace gradcontact
   /// geometrically with its points.
   struct SuperpositionRule
   {
-    unsigned int points = 16;
+    unsigned int points = 12;
   };
 
   /// The stress at (r >= 0, z > 0) under `load` on the half-space of `field` [Pa].

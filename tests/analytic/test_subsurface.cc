@@ -24,7 +24,7 @@ namespace
   /// Composite Gauss rules of 16 points per panel on analytic panels: rounding-limited away from the surface.
   constexpr double superposition_tol = 1e-11;
   /// At depth z the field differs from its surface value by O(z / a) (O(sqrt(z / a)) at the contact edge).
-  constexpr double surface_depth = 1e-10;
+  constexpr double surface_depth = 1e-9;
   constexpr double surface_tol   = 1e-8;
 
   const double E = 2e9, c0 = 1e-3, a = 1e-3;
