@@ -367,6 +367,16 @@ namespace gradcontact::batch
       t.closed_form["pressure"] = [](const In &q) {
         return with_shape(q, [&](auto shape) { return jkr::pressure(q.medium(), shape, q.dgamma(), q.a(), q.r()); });
       };
+      // The adhesive term is the flat punch's: the edge exponent (k - 1)/2.
+      t.closed_form["stress"] = [](const In &q) {
+        return with_shape(q, [&](auto shape) {
+          const Medium m = q.medium();
+          const double dgamma = q.dgamma(), a = q.a();
+          return stress_component(q, contact_pressure(a, (m.k - 1) / 2, [m, shape, dgamma, a](const double rho) {
+                                    return jkr::pressure(m, shape, dgamma, a, rho);
+                                  }));
+        });
+      };
       t.closed_form["displacement"] = [](const In &q) {
         return with_shape(q,
                           [&](auto shape) { return jkr::displacement(q.medium(), shape, q.dgamma(), q.a(), q.r()); });

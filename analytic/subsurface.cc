@@ -125,8 +125,17 @@ namespace gradcontact
 
   AxisymmetricPressure contact_pressure(const Medium &m, const PowerLaw &profile, const double a)
   {
-    const double e = (1 + m.k) / 2;
-    return {a, e, [m, profile, a, e](const double rho) { return pressure(m, profile, a, rho) / edge_factor(a, rho, e); }};
+    return contact_pressure(a, (1 + m.k) / 2, [m, profile, a](const double rho) { return pressure(m, profile, a, rho); });
+  }
+
+  AxisymmetricPressure contact_pressure(const double a, const double edge_exponent,
+                                        std::function<double(double)> pressure)
+  {
+    check::positive("contact_pressure", "a", a);
+    check::open_interval("contact_pressure", "edge exponent", edge_exponent, -1., 1e3);
+    return {a, edge_exponent, [a, edge_exponent, p = std::move(pressure)](const double rho) {
+              return p(rho) / edge_factor(a, rho, edge_exponent);
+            }};
   }
 
   AxisymmetricPressure contact_pressure(const UniformPressure &load)

@@ -33,6 +33,9 @@ namespace gradcontact
   AxisymmetricPressure contact_pressure(const Medium &m, const Paraboloid &paraboloid, double a);
   AxisymmetricPressure contact_pressure(const Medium &m, const PowerLaw &profile, double a);
   AxisymmetricPressure contact_pressure(const UniformPressure &load);
+  /// Any pressure p(rho) on rho < a with edge exponent e (p / (1 - rho^2/a^2)^e smooth), e.g. a JKR state (9.53,
+  /// 9.58: the flat punch's (k - 1)/2 from the adhesive term).
+  AxisymmetricPressure contact_pressure(double a, double edge_exponent, std::function<double(double)> pressure);
 
   /// Points per panel of the composite rules: the integrands are smooth on every panel, so a panel's error falls
   /// geometrically with its points.
