@@ -171,35 +171,68 @@ namespace gradcontact::batch
 
     // --- stresses below a normal contact (subsurface.h) -----------------------------------------------
 
-    /// The component `q.component()` of the stress at (r, z) under `load`: the graded Boussinesq field of one body
-    /// superposed over the contact's pressure.
-    double stress_component(const In &q, const AxisymmetricPressure &load)
+    /// The one graded body of a stress request (a rigid indenter on it), nu < 1/2.
+    GradedHalfSpace stress_body(const In &q)
     {
       if (q.q.material2)
         throw DomainError("material2: the stress below the contact is that of one graded body on a rigid indenter "
-                          "(quantity 'stress' takes material only)");
+                          "(the stress quantities take material only)");
       const GradedHalfSpace body = q.body();
       validate("stress", body);
       if (!(body.nu < 0.5))
         check::fail("stress", "material.nu", body.nu, "must be < 0.5 for the stress field");
+      return body;
+    }
+
+    /// von_mises or max_shear: the measure a maximum or a scalar stress asks.
+    StressMeasure stress_measure(const In &q)
+    {
+      const std::string component = q.component();
+      if (component == "von_mises")
+        return StressMeasure::von_mises;
+      if (component == "max_shear")
+        return StressMeasure::max_shear;
+      throw DomainError("component = '" + component + "' must be von_mises or max_shear for a largest stress");
+    }
+
+    /// The component `q.component()` of the stress at (r, z) under `load`: the graded Boussinesq field of one body
+    /// superposed over the contact's pressure.
+    double stress_component(const In &q, const AxisymmetricPressure &load)
+    {
+      const GradedHalfSpace    body      = stress_body(q);
       const std::string        component = q.component();
-      const AxisymmetricStress s = subsurface_stress(PointLoadField(body.k, body.nu), load, q.r(), q.z());
-      const double             centre = (s.rr + s.zz) / 2, radius = std::hypot((s.rr - s.zz) / 2, s.rz);
-      const double             p1 = std::max(centre + radius, s.tt), p3 = std::min(centre - radius, s.tt);
-      const std::map<std::string, double> components = {
-        {"rr", s.rr},
-        {"zz", s.zz},
-        {"tt", s.tt},
-        {"rz", s.rz},
-        {"principal_max", p1},
-        {"principal_min", p3},
-        {"max_shear", (p1 - p3) / 2},
-        {"von_mises", std::sqrt(((s.rr - s.zz) * (s.rr - s.zz) + (s.zz - s.tt) * (s.zz - s.tt) +
-                                 (s.tt - s.rr) * (s.tt - s.rr)) / 2 + 3 * s.rz * s.rz)}};
+      const AxisymmetricStress s         = subsurface_stress(PointLoadField(body.k, body.nu), load, q.r(), q.z());
+      if (component == "von_mises" || component == "max_shear")
+        return measure(s, stress_measure(q));
+      const double centre = (s.rr + s.zz) / 2, radius = std::hypot((s.rr - s.zz) / 2, s.rz);
+      const std::map<std::string, double> components = {{"rr", s.rr},
+                                                        {"zz", s.zz},
+                                                        {"tt", s.tt},
+                                                        {"rz", s.rz},
+                                                        {"principal_max", std::max(centre + radius, s.tt)},
+                                                        {"principal_min", std::min(centre - radius, s.tt)}};
       const auto found = components.find(component);
       if (found == components.end())
-        throw DomainError("component = '" + component + "' must be one of " + check::keys(components));
+        throw DomainError("component = '" + component + "' must be one of " + check::keys(components) +
+                          ", von_mises, max_shear");
       return found->second;
+    }
+
+    /// The largest von Mises stress or shear below `load` (largest_stress) and where it is.
+    StressMaximum stress_maximum(const In &q, const AxisymmetricPressure &load)
+    {
+      const GradedHalfSpace body = stress_body(q);
+      return largest_stress(PointLoadField(body.k, body.nu), load, stress_measure(q));
+    }
+
+    /// The stress quantities of a case whose contact pressure `load(q)` gives.
+    template <typename Load>
+    void add_stress(CaseTable &t, const Load &load)
+    {
+      t.closed_form["stress"] = [load](const In &q) { return stress_component(q, load(q)); };
+      t.closed_form["max_stress"] = [load](const In &q) { return stress_maximum(q, load(q)).value; };
+      t.closed_form["max_stress_radius"] = [load](const In &q) { return stress_maximum(q, load(q)).r; };
+      t.closed_form["max_stress_depth"] = [load](const In &q) { return stress_maximum(q, load(q)).z; };
     }
 
     // --- normal contact -------------------------------------------------------------------------
@@ -220,9 +253,9 @@ namespace gradcontact::batch
       t.closed_form["displacement"] = [](const In &q) {
         return with_shape(q, [&](auto shape) { return displacement(q.medium(), shape, q.a(), q.r()); });
       };
-      t.closed_form["stress"] = [](const In &q) {
-        return with_shape(q, [&](auto shape) { return stress_component(q, contact_pressure(q.medium(), shape, q.a())); });
-      };
+      add_stress(t, [](const In &q) {
+        return with_shape(q, [&](auto shape) { return contact_pressure(q.medium(), shape, q.a()); });
+      });
       t.closed_form["contact_radius"] = [](const In &q) {
         if (q.q.d)
           return contact_radius_from_depth(q.medium(), closed_power_law(q), q.d());
@@ -255,9 +288,7 @@ namespace gradcontact::batch
       t.closed_form["displacement"] = [punch](const In &q) {
         return displacement(q.medium(), punch(q), q.d(), q.r());
       };
-      t.closed_form["stress"] = [punch](const In &q) {
-        return stress_component(q, contact_pressure(q.medium(), punch(q), q.d()));
-      };
+      add_stress(t, [punch](const In &q) { return contact_pressure(q.medium(), punch(q), q.d()); });
       t.numerical_mdr["force"] = [](const In &q) { return mdr::force(mdr::flat(q.a(), q.d()), q.medium()); };
       t.numerical_mdr["pressure"] = [](const In &q) {
         return mdr::pressure(mdr::flat(q.a(), q.d()), q.medium(), q.r());
@@ -328,7 +359,7 @@ namespace gradcontact::batch
       };
       t.closed_form["force"] = [load](const In &q) { return force(load(q)); };
       t.closed_form["displacement"] = [load](const In &q) { return displacement(q.medium(), load(q), q.r()); };
-      t.closed_form["stress"] = [load](const In &q) { return stress_component(q, contact_pressure(load(q))); };
+      add_stress(t, [load](const In &q) { return contact_pressure(load(q)); });
       const auto foundation = [load](const In &q) {
         const UniformPressure l = load(q);
         return mdr::from_pressure([l](double r) { return r <= l.a ? l.p0 : 0.; }, q.medium(), l.a);
@@ -368,15 +399,15 @@ namespace gradcontact::batch
         return with_shape(q, [&](auto shape) { return jkr::pressure(q.medium(), shape, q.dgamma(), q.a(), q.r()); });
       };
       // The adhesive term is the flat punch's: the edge exponent (k - 1)/2.
-      t.closed_form["stress"] = [](const In &q) {
+      add_stress(t, [](const In &q) {
         return with_shape(q, [&](auto shape) {
           const Medium m = q.medium();
           const double dgamma = q.dgamma(), a = q.a();
-          return stress_component(q, contact_pressure(a, (m.k - 1) / 2, [m, shape, dgamma, a](const double rho) {
-                                    return jkr::pressure(m, shape, dgamma, a, rho);
-                                  }));
+          return contact_pressure(a, (m.k - 1) / 2, [m, shape, dgamma, a](const double rho) {
+            return jkr::pressure(m, shape, dgamma, a, rho);
+          });
         });
-      };
+      });
       t.closed_form["displacement"] = [](const In &q) {
         return with_shape(q,
                           [&](auto shape) { return jkr::displacement(q.medium(), shape, q.dgamma(), q.a(), q.r()); });

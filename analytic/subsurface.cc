@@ -191,4 +191,55 @@ namespace gradcontact
       }
     return s;
   }
+
+  double measure(const AxisymmetricStress &s, const StressMeasure m)
+  {
+    if (m == StressMeasure::von_mises)
+      return std::sqrt(((s.rr - s.zz) * (s.rr - s.zz) + (s.zz - s.tt) * (s.zz - s.tt) + (s.tt - s.rr) * (s.tt - s.rr)) /
+                         2 +
+                       3 * s.rz * s.rz);
+    const double centre = (s.rr + s.zz) / 2, radius = std::hypot((s.rr - s.zz) / 2, s.rz);
+    return (std::max(centre + radius, s.tt) - std::min(centre - radius, s.tt)) / 2;
+  }
+
+  StressMaximum largest_stress(const PointLoadField &field, const AxisymmetricPressure &load, const StressMeasure m)
+  {
+    const char *fn = "largest_stress";
+    if (field.k() < 0)
+      check::fail(fn, "k", field.k(),
+                  "must be >= 0: on k < 0 the surface layer's radial and hoop stresses grow like (z/r)^k as z -> 0, "
+                  "so the largest stress is unbounded at the surface (ask the stress at a depth instead)");
+    if (load.edge_exponent < 0)
+      check::fail(fn, "edge exponent", load.edge_exponent,
+                  "must be >= 0: the pressure's edge singularity (flat punch, JKR) makes the stress at the contact "
+                  "edge unbounded");
+    const double a = load.a;
+    const auto   value = [&](const double r, const double z) {
+      return measure(subsurface_stress(field, load, r, z), m);
+    };
+    StressMaximum best{-1, 0, 0};
+    for (double r = 0; r <= 2 * a * (1 + 1e-12); r += a / 20)
+      for (double z = 1e-3 * a; z <= 2 * a * (1 + 1e-12); z *= 1.25)
+        if (const double v = value(r, z); v > best.value)
+          best = {v, r, z};
+    // Pattern search: try the four neighbours at the current step, move to the best, halve the step when none is
+    // better.
+    for (double step = a / 40; step > 1e-5 * a;)
+      {
+        StressMaximum next = best;
+        for (const auto &[dr, dz] : {std::pair{1., 0.}, std::pair{-1., 0.}, std::pair{0., 1.}, std::pair{0., -1.}})
+          {
+            const double r = best.r + dr * step, z = best.z + dz * std::min(step, best.z / 2);
+            if (r < 0 || z <= 0)
+              continue;
+            if (const double v = value(r, z); v > next.value)
+              next = {v, r, z};
+          }
+        if (next.value > best.value)
+          best = next;
+        else
+          step /= 2;
+      }
+    return best;
+  }
 } // namespace gradcontact

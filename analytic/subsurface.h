@@ -47,6 +47,28 @@ namespace gradcontact
   /// The stress at (r >= 0, z > 0) under `load` on the half-space of `field` [Pa].
   AxisymmetricStress subsurface_stress(const PointLoadField &field, const AxisymmetricPressure &load, double r,
                                        double z, const SuperpositionRule &rule = {});
+
+  /// Scalar measures of a stress: von Mises' equivalent stress, and the largest shear (largest - smallest principal
+  /// stress) / 2, the hoop stress being the third principal stress.
+  enum class StressMeasure
+  {
+    von_mises,
+    max_shear
+  };
+  double measure(const AxisymmetricStress &s, StressMeasure m);
+
+  /// Where a measure is largest below a contact, and its value.
+  struct StressMaximum
+  {
+    double value = 0, r = 0, z = 0;
+  };
+
+  /// The largest `m` below `load` over 0 <= r <= 2a, 0 < z <= 2a: a grid of r (steps of a/20) and z (geometric from
+  /// 1e-3 a), then a pattern search that halves its steps down to 1e-5 a. It asks a bounded field: a load with
+  /// e >= 0 (no pressure singularity at the edge) on a medium with k >= 0. On k < 0 the surface layer's radial and hoop
+  /// stresses grow like (z/r)^k as z -> 0 (the stiff skin carries them), so the supremum is at the surface and
+  /// unbounded; a flat punch's or a JKR state's edge (e < 0) is singular for every k. Both are DomainErrors.
+  StressMaximum largest_stress(const PointLoadField &field, const AxisymmetricPressure &load, StressMeasure m);
 } // namespace gradcontact
 
 #endif

@@ -208,3 +208,28 @@ TEST_CASE("At k = 0 the axial stress below a JKR contact shall be Boussinesq's a
       CHECK_THAT(value, WithinRel(reference, 1e-9));
     }
 }
+
+TEST_CASE("eval shall find the largest shear below a paraboloid where Huber puts it, and refuse an unbounded one",
+          "[analytic][stress]")
+{
+  using Catch::Matchers::Contains;
+  const double nu = 0.3, R = 0.05;
+  const auto ask = [&](const double k, const std::string &c, const std::string &quantity, const char *shape) {
+    nlohmann::json j = {{"case", shape}, {"quantity", quantity}, {"component", c}, {"a", a},
+                        {"material", {{"E0", E}, {"c0", c0}, {"k", k}, {"nu", nu}}}};
+    if (std::string(shape) == "paraboloid")
+      j["geometry"] = {{"R", R}};
+    else
+      j["d"] = 1e-6;
+    return batch::evaluate(batch::parse(j));
+  };
+  // Johnson 3.45: the largest shear 0.31 p0 on the axis at z = 0.48 a for nu = 0.3; von Mises is twice it there.
+  const double p0 = pressure(medium(GradedHalfSpace{E, c0, 0., nu}), Paraboloid{R}, a, 0.);
+  CHECK_THAT(ask(0., "max_shear", "max_stress", "paraboloid") / p0, WithinAbs(0.31, 0.001));
+  CHECK_THAT(ask(0., "max_shear", "max_stress_depth", "paraboloid") / a, WithinAbs(0.48, 0.002));
+  CHECK_THAT(ask(0., "max_shear", "max_stress_radius", "paraboloid") / a, WithinAbs(0., 1e-4));
+  CHECK_THAT(ask(0., "von_mises", "max_stress", "paraboloid") / p0, WithinAbs(0.62, 0.002));
+  CHECK_THROWS_WITH(ask(-0.5, "von_mises", "max_stress", "paraboloid"), Contains("k = -0.5") && Contains("unbounded"));
+  CHECK_THROWS_WITH(ask(0.5, "max_shear", "max_stress", "flat_punch"), Contains("edge exponent") && Contains("unbounded"));
+  CHECK_THROWS_WITH(ask(0.5, "zz", "max_stress", "paraboloid"), Contains("von_mises or max_shear"));
+}
