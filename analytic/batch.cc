@@ -325,6 +325,14 @@ namespace gradcontact::batch
       t.closed_form["displacement"] = [punch](const In &q) {
         return displacement(q.medium(), punch(q), q.d0(), q.r());
       };
+      // Complete contact ends at the punch's edge like a flat punch's: the edge exponent (k - 1)/2 (9.34).
+      add_stress(t, [punch](const In &q) {
+        const Medium       m = q.medium();
+        const ConcavePunch p = punch(q);
+        const double       d0 = q.d0();
+        force(m, p, d0); // complete contact (9.35), or an error naming d0
+        return contact_pressure(p.a, (m.k - 1) / 2, [m, p, d0](const double rho) { return pressure(m, p, d0, rho); });
+      });
       const auto foundation = [punch](const In &q) {
         const ConcavePunch p = punch(q);
         force(q.medium(), p, q.d0()); // the validity condition of complete contact (9.35) holds here too
