@@ -8,6 +8,8 @@ runners/run_scene, the runners' one entry, includes them all). fem/ is in layers
 the layers below it:
     base < modulus < grid < io < elasticity < linear_algebra < bodies < accuracy < contact < adhesion < tangential
 fem/ includes neither analytic/ nor cases/, and analytic/ neither fem/ nor cases/. The longest include chain among the files of cases/ is at most 6 levels.
+The files of a report are written by report/ (table.h: write_text, Table::write_csv): no other part of cases/ opens
+an std::ofstream.
 Prints every violation and exits 1 when there is one; prints the longest chain either way.
 """
 import os
@@ -20,6 +22,7 @@ FEM_ORDER = ['base', 'modulus', 'grid', 'io', 'elasticity', 'linear_algebra', 'b
              'adhesion', 'tangential']
 MAX_LEVELS = 6
 INCLUDE = re.compile(r'^\s*#\s*include\s*[<"]([^>"]+)[>"]', re.M)
+OFSTREAM = re.compile(r'\bofstream\b')
 
 
 def sources(folder):
@@ -73,6 +76,11 @@ def main():
             if (part == target_part == 'runners' and stem(path) != 'run_scene' and
                     not family(stem(path), stem(target))):
                 problems.append('%s includes another runner\'s header %s' % (path, target))
+    for path in graph:
+        if path.split(os.sep)[1] != 'report':
+            with open(os.path.join(ROOT, path), encoding='utf-8', errors='replace') as f:
+                if OFSTREAM.search(f.read()):
+                    problems.append(path + ' writes a file with std::ofstream: the files of a report are written by report/')
     for path in sources('fem'):
         parts = path.split(os.sep)
         if len(parts) < 3 or parts[1] not in FEM_ORDER:

@@ -5,6 +5,7 @@
 
 #include "runners/fe_cohesive.h"
 #include "report/report.h"
+#include "report/table.h"
 #include "scene/scene.h"
 
 #include <analytic/batch.h>
@@ -291,26 +292,20 @@ namespace gradcontact::cases
                                               : "summary.shard-" + std::to_string(o.shard) + "-of-" +
                                                   std::to_string(o.shards) + ".md";
       const fs::path summary = o.reports / name;
-      const fs::path tmp = temporary_sibling(summary);
-      {
-        std::ofstream md(tmp);
-        md << "# gradcontact summary\n\n| scene | comparisons | worst error | failed | seconds | report |\n"
-              "|---|---|---|---|---|---|\n";
-        for (const SceneResult &s : results)
-          {
-            const auto failed = std::count_if(s.rows.begin(), s.rows.end(), [](const Row &r) { return !r.pass; });
-            md << "| " << s.name << " | " << s.rows.size() << " | " << format(s.worst_error()) << " | " << failed
-               << " | " << format(s.seconds) << " | [" << s.name << "/errors.md](" << s.name << "/errors.md) |\n";
-          }
-        // A link only to a file that exists: the figures are drawn by their own command.
-        if (fs::exists(o.reports / "figures" / "index.md"))
-          md << "\nThe chapter's figures, each FE point checked against the closed form: "
-                "[figures/index.md](figures/index.md) (written by `gradcontact figures`).\n";
-        else
-          md << "\nThe chapter's figures, each FE point checked against the closed form, are drawn by `gradcontact "
-                "figures cases/figures` (not drawn into this folder yet).\n";
-      }
-      fs::rename(tmp, summary);
+      Table table({Column::md_only("scene"), Column::md_only("comparisons"), Column::md_only("worst error"),
+                   Column::md_only("failed"), Column::md_only("seconds"), Column::md_only("report")});
+      for (const SceneResult &s : results)
+        table.add({s.name, s.rows.size(), s.worst_error(),
+                   std::count_if(s.rows.begin(), s.rows.end(), [](const Row &r) { return !r.pass; }), s.seconds,
+                   "[" + s.name + "/errors.md](" + s.name + "/errors.md)"});
+      // A link only to a file that exists: the figures are drawn by their own command.
+      const std::string figures =
+        fs::exists(o.reports / "figures" / "index.md")
+          ? "\nThe chapter's figures, each FE point checked against the closed form: "
+            "[figures/index.md](figures/index.md) (written by `gradcontact figures`).\n"
+          : "\nThe chapter's figures, each FE point checked against the closed form, are drawn by `gradcontact "
+            "figures cases/figures` (not drawn into this folder yet).\n";
+      write_text_atomically(summary, "# gradcontact summary\n\n" + table.md() + figures);
       const bool all_pass = std::all_of(results.begin(), results.end(), [](const SceneResult &s) { return s.pass(); });
       if (!o.quiet)
         std::cout << "summary: " << summary.string() << (all_pass ? " (all pass)" : " (FAILURES)") << "\n";

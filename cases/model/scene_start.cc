@@ -1,9 +1,10 @@
 #include "model/scene_start.h"
 
+#include "report/table.h"
+
 #include <fem/base/table_file.h>
 
 #include <cmath>
-#include <fstream>
 #include <limits>
 #include <tuple>
 
@@ -60,7 +61,7 @@ namespace gradcontact::cases
       if (const std::string note = table_fit_note(s); !note.empty())
         result.description += (result.description.empty() ? "" : " ") + std::string("(") + note + ")";
     result.kind = to_string(s.kind);
-    std::ofstream(folder / "parameters.prm") << s.resolved;
+    write_text(folder / "parameters.prm", s.resolved);
     return result;
   }
 } // namespace gradcontact::cases

@@ -1,5 +1,7 @@
 #include "report/report.h"
 
+#include "report/table.h"
+
 #include <algorithm>
 #include <exception>
 #include <cmath>
@@ -183,46 +185,61 @@ namespace gradcontact::cases
 
   namespace
   {
-    /// A Markdown table cell: a '|' inside it would end the cell.
-    std::string cell(const std::string &text)
+    /// The columns of errors.csv and errors.md; the FE contract's in the Markdown only when a row has one.
+    std::vector<Column> error_columns(const bool contract)
     {
-      std::string out;
-      for (const char c : text)
-        out += c == '|' ? std::string("\\|") : std::string(1, c);
-      return out;
+      const auto contract_column = [contract](const char *csv, const char *md) {
+        return contract ? Column::both(csv, md) : Column::csv_only(csv);
+      };
+      return {Column::both("quantity", "quantity").quoted(),
+              Column::both("metric", "metric").quoted(),
+              Column::both("method", "checked").quoted(),
+              Column::both("reference", "reference").quoted(),
+              Column::both("reference_value", "reference value"),
+              Column::both("value", "value"),
+              Column::csv_only("abs_error"),
+              Column::both("rel_error", "rel. error"),
+              Column::both("tolerance", "tolerance"),
+              Column::both("pass", "pass"),
+              Column::both("dofs", "DoFs"),
+              Column::both("seconds", "s"),
+              Column::csv_only("error").quoted(),
+              contract_column("fe_asked", "FE asked"),
+              contract_column("fe_estimate", "FE estimate"),
+              contract_column("fe_contract", "contract").quoted()};
+    }
+
+    std::vector<Cell> error_cells(const Row &r)
+    {
+      const bool failed = !r.error.empty();
+      Cell reference_value(r.reference_value), value(r.value), dofs(r.dofs);
+      return {r.quantity,
+              r.metric,
+              r.method,
+              r.reference,
+              failed ? reference_value.md_text("-") : reference_value,
+              failed ? value.md_text("error: " + r.error) : value,
+              r.abs_error,
+              r.rel_error,
+              r.tolerance,
+              Cell(r.pass ? "pass" : "FAIL").md_text(r.pass ? "pass" : "**FAIL**"),
+              r.dofs ? dofs : dofs.md_text("-"),
+              r.seconds,
+              r.error,
+              r.asked > 0 ? Cell(r.asked) : Cell(r.asked).md_text("-"),
+              r.estimate >= 0 ? Cell(r.estimate) : Cell(r.estimate).md_text("-"),
+              r.contract.empty() ? Cell(r.contract).md_text("-") : Cell(r.contract)};
     }
   } // namespace
 
   void write_errors(const SceneResult &s, const fs::path &folder)
   {
     const bool contract = std::any_of(s.rows.begin(), s.rows.end(), [](const Row &r) { return r.asked > 0; });
-    std::ofstream csv(folder / "errors.csv");
-    csv << "quantity,metric,method,reference,reference_value,value,abs_error,rel_error,tolerance,pass,dofs,seconds,error,"
-           "fe_asked,fe_estimate,fe_contract\n";
-    csv << std::setprecision(17);
+    Table table(error_columns(contract), Number{'g', 17});
     for (const Row &r : s.rows)
-      csv << csv_quote(r.quantity) << ',' << csv_quote(r.metric) << ',' << csv_quote(r.method) << ','
-          << csv_quote(r.reference) << ',' << r.reference_value << ',' << r.value << ',' << r.abs_error << ','
-          << r.rel_error << ',' << r.tolerance << ',' << (r.pass ? "pass" : "FAIL") << ',' << r.dofs << ','
-          << r.seconds << ',' << csv_quote(r.error) << ',' << r.asked << ',' << r.estimate << ','
-          << csv_quote(r.contract) << '\n';
-    std::ofstream md(folder / "errors.md");
-    md << "# " << s.name << "\n\n" << s.description << "\n\n"
-       << "| quantity | metric | checked | reference | reference value | value | rel. error | tolerance | pass | DoFs | s |"
-       << (contract ? " FE asked | FE estimate | contract |" : "") << "\n"
-       << "|---|---|---|---|---|---|---|---|---|---|---|" << (contract ? "---|---|---|" : "") << "\n";
-    for (const Row &r : s.rows)
-      {
-        md << "| " << cell(r.quantity) << " | " << cell(r.metric) << " | " << cell(r.method) << " | " << cell(r.reference)
-           << " | " << (r.error.empty() ? format(r.reference_value) : "-") << " | "
-           << (r.error.empty() ? format(r.value) : "error: " + cell(r.error)) << " | " << format(r.rel_error) << " | "
-           << format(r.tolerance) << " | " << (r.pass ? "pass" : "**FAIL**") << " | "
-           << (r.dofs ? std::to_string(r.dofs) : "-") << " | " << format(r.seconds) << " |";
-        if (contract)
-          md << ' ' << (r.asked > 0 ? format(r.asked) : "-") << " | " << (r.estimate >= 0 ? format(r.estimate) : "-")
-             << " | " << (r.contract.empty() ? "-" : cell(r.contract)) << " |";
-        md << '\n';
-      }
+      table.add(error_cells(r));
+    table.write_csv(folder / "errors.csv");
+    write_text(folder / "errors.md", "# " + s.name + "\n\n" + s.description + "\n\n" + table.md());
   }
 
   namespace

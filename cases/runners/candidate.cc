@@ -3,6 +3,7 @@
 #include "runners/candidate_coulomb.h"
 #include "model/fe_model.h"
 #include "model/scene_start.h"
+#include "report/table.h"
 
 #include <fem/adhesion/adhesion.h>
 #include <fem/adhesion/cohesive_zone.h>
@@ -21,7 +22,6 @@
 #include <chrono>
 #include <cmath>
 #include <exception>
-#include <fstream>
 #include <functional>
 #include <limits>
 #include <optional>
@@ -237,9 +237,9 @@ namespace gradcontact::cases
           largest = std::max(largest, std::abs(r));
 
       const std::string stem = "candidate_" + dealii::Utilities::replace_in_string(curve.quantity, " ", "_");
-      std::ofstream table(folder / (stem + ".csv"));
-      table << csv_quote(curve.variable) << ",candidate,numerical MDR,deviation,FE\n";
-      table.precision(16);
+      Table table({Column::csv_only(csv_quote(curve.variable)), Column::csv_only("candidate"),
+                   Column::csv_only("numerical MDR"), Column::csv_only("deviation"), Column::csv_only("FE")},
+                  Number{'g', 16});
       double worst = -1., worst_x = 0.;
       for (std::size_t i = 0; i < n; ++i)
         {
@@ -256,13 +256,12 @@ namespace gradcontact::cases
           rows.push_back(compare(curve.quantity, metric, "candidate", "numerical MDR", reference[i], candidate[i],
                                  scale, tolerance, 0, seconds[i]));
           const double deviation = rows.back().rel_error;
-          table << curve.x[i] << ',' << candidate[i] << ',' << reference[i] << ',' << deviation << ',';
-          if (const auto at = fe.find(curve.x[i]); at != fe.end())
-            table << at->second;
-          table << '\n';
+          const auto at = fe.find(curve.x[i]);
+          table.add({curve.x[i], candidate[i], reference[i], deviation, at != fe.end() ? Cell(at->second) : Cell()});
           if (!(deviation <= worst))
             worst = deviation, worst_x = curve.x[i];
         }
+      table.write_csv(folder / (stem + ".csv"));
       if (plots)
         {
           Series mdr_series{"numerical MDR", curve.x, reference, false, true};

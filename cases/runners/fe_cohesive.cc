@@ -1,6 +1,7 @@
 #include "runners/fe_cohesive.h"
 #include "model/maugis_dugdale_rows.h"
 
+#include "report/table.h"
 #include "report/thresholds.h"
 #include "model/fe_model.h"
 #include "model/scene_start.h"
@@ -17,7 +18,6 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <fstream>
 #include <iostream>
 #include <limits>
 #include <map>
@@ -330,7 +330,10 @@ namespace gradcontact::cases
     /// The outputs of a Tabor-parameter map as its points fill them: map.csv, map.md's parts, the plots' curves.
     struct CohesiveTables
     {
-      std::ofstream csv;
+      explicit CohesiveTables(Table points)
+        : csv(std::move(points))
+      {}
+      Table csv;
       std::ostringstream md, thresholds_md;
       std::map<std::string, std::vector<Series>> plots;
     };
@@ -482,28 +485,47 @@ namespace gradcontact::cases
       return solution;
     }
 
-    /// One pull-off's rows of map.csv and of the k's table in map.md.
-    void tabulate_pull_off(const CohesivePlan &plan, const double k, const Point &p, CohesiveTables &t,
-                           const bool verbose)
+    /// The column spec of a Tabor-parameter map: map.csv (every pull-off: the FE's values and the chapter's) and each
+    /// k's table in map.md (their ratios).
+    Table pull_off_table()
+    {
+      return Table({Column::csv_only("k"), Column::both("lambda", "lambda"), Column::both("control", "control"),
+                    Column::csv_only("sigma0"), Column::csv_only("h0"), Column::csv_only("force"),
+                    Column::csv_only("force_jkr"), Column::csv_only("force_deviation"), Column::md_only("F_c / F_c,JKR"),
+                    Column::csv_only("radius"), Column::csv_only("radius_jkr"), Column::csv_only("radius_deviation"),
+                    Column::md_only("a_c / a_c,JKR"), Column::csv_only("depth"), Column::csv_only("depth_jkr"),
+                    Column::md_only("d_c / d_c,JKR"), Column::both("zone_over_a", "c / a"),
+                    Column::csv_only("force_rigid"), Column::csv_only("rigid_deviation"),
+                    Column::md_only("F_c / F_rigid"), Column::csv_only("vanishing_contact"),
+                    Column::both("states", "states"), Column::both("dofs", "DoFs"), Column::both("seconds", "s"),
+                    Column::csv_only("error").quoted()},
+                   Number{'g', 10});
+    }
+
+    /// A pull-off's row of pull_off_table(): in the Markdown a failed pull-off, or none (no jump under displacement
+    /// control), says so in place of its ratios.
+    std::vector<Cell> pull_off_cells(const CohesivePlan &plan, const double k, const Point &p)
+    {
+      const bool shown = p.error.empty() && !(p.vanishing && !p.force_control);
+      const auto md = [shown](const Cell &c) { return shown ? c : c.md_text("-"); };
+      const Cell force = shown                ? Cell(p.force / p.force_jkr)
+                         : !p.error.empty()   ? Cell("failed: " + p.error)
+                                              : Cell("none (no jump" + (p.note.empty() ? "" : "; " + p.note) + ")");
+      return {k, p.lambda, Cell(p.force_control ? "force" : "displacement").md_text(control_name(p.force_control)),
+              p.strength, p.range, p.force, p.force_jkr, p.force_deviation(), force, p.radius, p.radius_jkr,
+              p.radius_deviation(), md(p.vanishing ? Cell("0 (contact vanished)") : Cell(p.radius / p.radius_jkr)),
+              p.depth, p.depth_jkr, md(p.depth / p.depth_jkr),
+              plan.smooth ? Cell(p.zone_ratio).md_text("-") : md(p.zone_ratio), p.force_rigid, p.rigid_deviation(),
+              md(std::isfinite(p.force_rigid) ? Cell(p.force / p.force_rigid) : Cell("-")), p.vanishing ? 1 : 0,
+              p.states, p.dofs, p.seconds, p.error};
+    }
+
+    /// One pull-off's row of map.csv and of the k's table in map.md.
+    void tabulate_pull_off(const CohesivePlan &plan, const double k, const Point &p, Table &table, const bool verbose)
     {
       const bool force_control = p.force_control;
       const double lambda = p.lambda;
-      t.csv << k << ',' << lambda << ',' << (force_control ? "force" : "displacement") << ',' << p.strength << ','
-            << p.range << ',' << p.force << ',' << p.force_jkr << ',' << p.force_deviation() << ',' << p.radius << ','
-            << p.radius_jkr << ',' << p.radius_deviation() << ',' << p.depth << ',' << p.depth_jkr << ',' << p.zone_ratio
-            << ',' << p.force_rigid << ',' << p.rigid_deviation() << ',' << (p.vanishing ? 1 : 0) << ',' << p.states
-            << ',' << p.dofs << ',' << p.seconds << ',' << csv_quote(p.error) << '\n';
-      std::ostringstream &md = t.md;
-      md << "| " << format(lambda) << " | " << control_name(force_control) << " | ";
-      if (!p.error.empty())
-        md << "failed: " << p.error << " | - | - | - | - |";
-      else if (p.vanishing && !force_control)
-        md << "none (no jump" << (p.note.empty() ? "" : "; " + p.note) << ") | - | - | - | - |";
-      else
-        md << format(p.force / p.force_jkr) << " | " << (p.vanishing ? "0 (contact vanished)" : format(p.radius / p.radius_jkr))
-           << " | " << format(p.depth / p.depth_jkr) << " | " << (plan.smooth ? "-" : format(p.zone_ratio)) << " | "
-           << (std::isfinite(p.force_rigid) ? format(p.force / p.force_rigid) : "-") << " |";
-      md << " " << p.states << " | " << p.dofs << " | " << format(p.seconds) << " |\n";
+      table.add(pull_off_cells(plan, k, p));
       if (verbose)
         std::cerr << "  k = " << k << ", lambda = " << lambda << ", " << control_name(force_control)
                   << ": F/F_JKR = " << p.force / p.force_jkr << (plan.smooth ? "" : ", c/a = " + format(p.zone_ratio))
@@ -562,16 +584,17 @@ namespace gradcontact::cases
                                        " a_c,JKR: " + error));
       const auto jkr_force = jkr_critical(e.medium, plan.profile, plan.dgamma, gradcontact::Control::force);
       const std::string path_name = "path-k" + format(k) + "-lambda" + format(lambda);
-      std::ofstream     path(folder / (path_name + ".csv"));
-      path.precision(10);
-      path << "a,c,d,F,consistent\n";
+      Table path({Column::csv_only("a"), Column::csv_only("c"), Column::csv_only("d"), Column::csv_only("F"),
+                  Column::csv_only("consistent")},
+                 Number{'g', 10});
       Series curve{"lambda = " + format(lambda), {}, {}, false, true};
       for (const LambdaSolution::State &st : solution.path)
         {
-          path << st.a << ',' << st.c << ',' << st.d << ',' << st.F << ',' << (st.consistent ? 1 : 0) << '\n';
+          path.add({st.a, st.c, st.d, st.F, st.consistent ? 1 : 0});
           curve.x.push_back(st.d / std::abs(jkr_force.depth));
           curve.y.push_back(st.F / std::abs(jkr_force.force));
         }
+      path.write_csv(folder / (path_name + ".csv"));
       t.plots["path k = " + format(k)].push_back(curve);
     }
 
@@ -652,8 +675,7 @@ namespace gradcontact::cases
                       SceneResult &result, const bool verbose)
     {
       CohesiveExponent e = cohesive_exponent(s, k);
-      t.md << "## k = " << format(k) << "\n\n| lambda | control | F_c / F_c,JKR | a_c / a_c,JKR | d_c / d_c,JKR | c / a | "
-              "F_c / F_rigid | states | DoFs | s |\n|---|---|---|---|---|---|---|---|---|---|\n";
+      Table table = pull_off_table();
       std::map<bool, std::vector<Point>> by_control;
       for (const double lambda : plan.lambdas)
         {
@@ -666,14 +688,15 @@ namespace gradcontact::cases
           for (const Point &p : solution->points)
             {
               by_control[p.force_control].push_back(p);
-              tabulate_pull_off(plan, k, p, t, verbose);
+              tabulate_pull_off(plan, k, p, table, verbose);
               check_pull_off(s, plan, e, p, result);
             }
           write_path(folder, plan, e, lambda, *solution, t, result);
         }
       for (const bool force_control : plan.controls)
         tabulate_control(s, plan, k, force_control, by_control[force_control], t, result);
-      t.md << '\n';
+      t.md << "## k = " << format(k) << "\n\n" << table.md() << '\n';
+      t.csv.append(table);
     }
 
     /// Maugis-Dugdale as dense curves on the force plot: the MDR solution at every k of a Dugdale map; Maugis' at
@@ -752,7 +775,7 @@ namespace gradcontact::cases
     /// One (k, control) row of the MDR threshold table, its lines of mdr_thresholds.csv and its points of the
     /// threshold curves.
     void mdr_threshold_row(const Scene &s, const CohesivePlan &plan, const double k, const bool force_control,
-                           std::ostream &mdr_md, std::ostream &mdr_csv, std::map<std::string, Series> &curves)
+                           std::ostream &mdr_md, Table &mdr_csv, std::map<std::string, Series> &curves)
     {
       const gradcontact::Medium medium =
         gradcontact::medium(gradcontact::GradedHalfSpace{s.material.E0, s.material.c0, k, s.material.nu});
@@ -772,8 +795,7 @@ namespace gradcontact::cases
             {
               mdr_md << " - (" << e.what() << ") |"; // e.g. no JKR pull-off for this tip at this k
             }
-          mdr_csv << k << ',' << control_name(force_control) << ',' << t << ','
-                  << (at ? *at : std::numeric_limits<double>::quiet_NaN()) << '\n';
+          mdr_csv.add({k, control_name(force_control), t, at ? *at : std::numeric_limits<double>::quiet_NaN()});
           const std::string name  = control_name(force_control) + ", within " + percent(t);
           Series           &curve = curves[name];
           curve.title             = name;
@@ -793,9 +815,9 @@ namespace gradcontact::cases
     std::string mdr_thresholds(const Scene &s, const fs::path &folder, const CohesivePlan &plan)
     {
       std::ostringstream mdr_md;
-      std::ofstream mdr_csv(folder / "mdr_thresholds.csv");
-      mdr_csv.precision(10);
-      mdr_csv << "k,control,threshold,lambda\n";
+      Table mdr_csv({Column::csv_only("k"), Column::csv_only("control"), Column::csv_only("threshold"),
+                     Column::csv_only("lambda")},
+                    Number{'g', 10});
       mdr_md << "\n## Where the Maugis-Dugdale solution of the graded medium (MDR) holds JKR, every k\n\n"
              << "The same Dugdale law solved by the MDR (analytic/maugis_dugdale.h; Maugis' closed form at k = 0), "
                 "which the FE pull-offs above are checked against (errors.csv): the smallest lambda from which its "
@@ -807,6 +829,7 @@ namespace gradcontact::cases
       for (const double k : dense_exponents(plan.ks))
         for (const bool force_control : plan.controls)
           mdr_threshold_row(s, plan, k, force_control, mdr_md, mdr_csv, curves);
+      mdr_csv.write_csv(folder / "mdr_thresholds.csv");
       if (s.outputs.plots)
         {
           std::vector<Series> series;
@@ -819,18 +842,14 @@ namespace gradcontact::cases
       return mdr_md.str();
     }
 
-    /// Writes map.md whole or not at all (through a partial file renamed).
+    /// Writes map.md whole or not at all.
     void write_cohesive_md(const fs::path &folder, const CohesiveTables &t, const std::string &mdr_md)
     {
-      const std::string tmp = ".map.md.partial";
-      {
-        std::ofstream out(folder / tmp);
-        out << t.md.str() << t.thresholds_md.str()
-            << "\nThe thresholds interpolate log-log between the last lambda outside and the next one toward large lambda "
-               "(the JKR limit); every lambda of the map beyond it is within.\n"
-            << mdr_md;
-      }
-      fs::rename(folder / tmp, folder / "map.md");
+      write_text_atomically(folder / "map.md",
+                            t.md.str() + t.thresholds_md.str() +
+                              "\nThe thresholds interpolate log-log between the last lambda outside and the next one "
+                              "toward large lambda (the JKR limit); every lambda of the map beyond it is within.\n" +
+                              mdr_md);
     }
 
     /// The plots of the map: F_c / F_c,JKR, the path F(d) of every k, and |deviation| with the thresholds as lines.
@@ -861,11 +880,7 @@ namespace gradcontact::cases
     const auto  start  = std::chrono::steady_clock::now();
     SceneResult result = started(s, folder);
     const CohesivePlan plan = plan_cohesive_map(s);
-    CohesiveTables t;
-    t.csv.open(folder / "map.csv");
-    t.csv.precision(10);
-    t.csv << "k,lambda,control,sigma0,h0,force,force_jkr,force_deviation,radius,radius_jkr,radius_deviation,depth,"
-             "depth_jkr,zone_over_a,force_rigid,rigid_deviation,vanishing_contact,states,dofs,seconds,error\n";
+    CohesiveTables t{pull_off_table()};
     t.md << cohesive_intro(s, plan);
     t.thresholds_md << "## Where the chapter's JKR pull-off force holds\n\n"
                     << threshold_table_head({"k", "control"}, s.map.thresholds, "when lambda");
@@ -879,6 +894,7 @@ namespace gradcontact::cases
       }
     add_maugis_dugdale_curves(s, plan, t.plots["pull-off force"]);
     const std::string mdr_md = plan.smooth ? std::string() : mdr_thresholds(s, folder, plan);
+    t.csv.write_csv(folder / "map.csv");
     write_cohesive_md(folder, t, mdr_md);
     if (s.outputs.plots)
       plot_cohesive_map(s, folder, plan, t.plots);

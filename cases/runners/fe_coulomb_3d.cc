@@ -1,5 +1,6 @@
 #include "runners/fe_coulomb_3d.h"
 
+#include "report/table.h"
 #include "report/thresholds.h"
 #include "model/fe_model.h"
 #include "model/scene_start.h"
@@ -18,7 +19,6 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <fstream>
 #include <iostream>
 #include <map>
 #include <optional>
@@ -614,49 +614,52 @@ namespace gradcontact::cases
       return resolution;
     }
 
-    /// The header of map.csv.
-    std::string coulomb_csv_head()
+    /// The column spec of the map's map.csv: a row per panel, every number of its paths.
+    std::vector<Field<CoulombPanel>> coulomb_fields(const Scene &s)
     {
-      std::ostringstream csv;
-      csv << "k,nu,holl,mu,amplitude,far_field_over_a,dofs,surface_nodes,seconds,compliance_seconds,memory_mb,"
-             "largest_iterations,normal_slip_nodes";
+      using Panel  = const CoulombPanel &;
+      using Result = const CoulombSphereResult &;
+      std::vector<Field<CoulombPanel>> f{
+        {Column::csv_only("k"), [](Panel p) { return Cell(p.k); }},
+        {Column::csv_only("nu"), [](Panel p) { return Cell(p.nu); }},
+        {Column::csv_only("holl"), [](Panel p) { return Cell(p.holl ? 1 : 0); }},
+        {Column::csv_only("mu"), [](Panel p) { return Cell(p.mu); }},
+        {Column::csv_only("amplitude"), [&s](Panel) { return Cell(s.tangential.amplitude); }},
+        {Column::csv_only("far_field_over_a"), [&s](Panel p) { return Cell(coulomb_far_field(s, p.k)); }}};
+      const auto of_result = [&f](const std::string &name, const std::function<Cell(Result)> &get) {
+        f.push_back({Column::csv_only(name), [get](Panel p) { return get(p.result); }});
+      };
+      of_result("dofs", [](Result r) { return Cell(r.dofs); });
+      of_result("surface_nodes", [](Result r) { return Cell(r.surface_nodes); });
+      of_result("seconds", [](Result r) { return Cell(r.seconds); });
+      of_result("compliance_seconds", [](Result r) { return Cell(r.compliance_seconds); });
+      of_result("memory_mb", [](Result r) { return Cell(r.memory_mb); });
+      of_result("largest_iterations", [](Result r) { return Cell(r.fe.max_iterations); });
+      of_result("normal_slip_nodes", [](Result r) { return Cell(r.fe.normal_slip); });
+      const auto name = [](std::string n) {
+        std::replace(n.begin(), n.end(), ' ', '_');
+        return n;
+      };
       for (const MapQuantity &q : map_quantities())
         {
-          std::string n = q.name;
-          std::replace(n.begin(), n.end(), ' ', '_');
-          csv << ',' << n << "_coupling," << n << "_floor," << n << "_fe";
+          of_result(name(q.name) + "_coupling", q.coupling);
+          of_result(name(q.name) + "_floor", q.floor);
+          of_result(name(q.name) + "_fe", q.direct);
         }
-      for (const char *suffix : {"_direction", "_idealised_floor"})
-        for (const MapQuantity &q : map_quantities())
-          if (q.direction)
-            {
-              std::string n = q.name;
-              std::replace(n.begin(), n.end(), ' ', '_');
-              csv << ',' << n << suffix;
-            }
-      csv << ",stick_bracket_half_width,stick_spread,stick_spread_decoupled,slip_force_y,slip_force_y_decoupled,"
-             "closure,error\n";
-      return csv.str();
-    }
-
-    /// One panel's row of map.csv.
-    void coulomb_csv_row(const Scene &s, const CoulombPanel &p, std::ostream &csv)
-    {
-      const CoulombSphereResult &r = p.result;
-      csv << p.k << ',' << p.nu << ',' << p.holl << ',' << p.mu << ',' << s.tangential.amplitude << ','
-          << coulomb_far_field(s, p.k) << ',' << r.dofs << ',' << r.surface_nodes << ',' << r.seconds << ','
-          << r.compliance_seconds << ',' << r.memory_mb << ',' << r.fe.max_iterations << ',' << r.fe.normal_slip;
-      for (const MapQuantity &q : map_quantities())
-        csv << ',' << q.coupling(r) << ',' << q.floor(r) << ',' << q.direct(r);
       for (const MapQuantity &q : map_quantities())
         if (q.direction)
-          csv << ',' << q.direction(r);
+          of_result(name(q.name) + "_direction", q.direction);
       for (const MapQuantity &q : map_quantities())
         if (q.idealised)
-          csv << ',' << q.idealised(r);
-      csv << ',' << r.fe.stick_resolution << ',' << r.fe.out_of_round << ',' << r.decoupled.out_of_round << ','
-          << r.fe.slip_force_y << ',' << r.decoupled.slip_force_y << ',' << r.fe.closure << ',' << csv_quote(p.error)
-          << '\n';
+          of_result(name(q.name) + "_idealised_floor", q.idealised);
+      of_result("stick_bracket_half_width", [](Result r) { return Cell(r.fe.stick_resolution); });
+      of_result("stick_spread", [](Result r) { return Cell(r.fe.out_of_round); });
+      of_result("stick_spread_decoupled", [](Result r) { return Cell(r.decoupled.out_of_round); });
+      of_result("slip_force_y", [](Result r) { return Cell(r.fe.slip_force_y); });
+      of_result("slip_force_y_decoupled", [](Result r) { return Cell(r.decoupled.slip_force_y); });
+      of_result("closure", [](Result r) { return Cell(r.fe.closure); });
+      f.push_back({Column::csv_only("error").quoted(), [](Panel p) { return Cell(p.error); }});
+      return f;
     }
 
     /// The title of map.md and what the map compares.
@@ -812,14 +815,10 @@ namespace gradcontact::cases
     void write_coulomb_map(const Scene &s, const std::filesystem::path &folder, const CoulombMapPlan &plan,
                            const std::vector<CoulombPanel> &panels, const std::map<std::string, double> &resolution)
     {
-      std::ofstream csv(folder / "map.csv");
-      csv.precision(10);
-      csv << coulomb_csv_head();
-      for (const CoulombPanel &p : panels)
-        coulomb_csv_row(s, p, csv);
-      std::ofstream(folder / "map.md") << coulomb_intro(s, plan) << coupling_table(panels)
-                                       << coupling_thresholds(s, plan, panels, resolution)
-                                       << direction_thresholds(s, plan, panels);
+      tabulate(coulomb_fields(s), panels, Number{'g', 10}).write_csv(folder / "map.csv");
+      write_text(folder / "map.md", coulomb_intro(s, plan) + coupling_table(panels) +
+                                      coupling_thresholds(s, plan, panels, resolution) +
+                                      direction_thresholds(s, plan, panels));
       if (s.outputs.plots)
         plot_coulomb_map(s, folder, plan, panels);
     }

@@ -1,4 +1,5 @@
 #include "runners/fe_map.h"
+#include "report/table.h"
 #include "report/thresholds.h"
 
 #include "model/analytic_reference.h"
@@ -12,7 +13,6 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <fstream>
 #include <iostream>
 #include <limits>
 #include <map>
@@ -108,20 +108,26 @@ namespace gradcontact::cases
       return p;
     }
 
-    std::string ratio_name(const Scene &s)
+    /// The name of a map's ratio in map.md and in the header of map.csv.
+    struct RatioName
+    {
+      std::string md, csv;
+    };
+
+    RatioName ratio_name(const Scene &s)
     {
       switch (s.map.parameter)
         {
           case MapParameters::Parameter::surface_depth:
-            return "a/z0";
+            return {"a/z0", "a_over_z0"};
           case MapParameters::Parameter::erf_width:
-            return "a/w";
+            return {"a/w", "a_over_w"};
           case MapParameters::Parameter::indenter_modulus:
-            return "E1/E0";
+            return {"E1/E0", "E1_over_E0"};
           case MapParameters::Parameter::friction_coefficient:
-            return "mu";
+            return {"mu", "mu"};
           default:
-            return "a/H";
+            return {"a/H", "a_over_H"};
         }
     }
 
@@ -142,15 +148,6 @@ namespace gradcontact::cases
       if (q == "pressure" && of_friction)
         return "p(r), L2 change";
       return q == "pressure" ? "p(" + format(axis_sample) + " a)" : q;
-    }
-
-    /// `text` for a markdown table cell: | escaped.
-    std::string cell(const std::string &text)
-    {
-      std::string out;
-      for (const char c : text)
-        out += c == '|' ? std::string("\\|") : std::string(1, c);
-      return out;
     }
 
     /// The points of one k, with what bounds their FE error.
@@ -184,7 +181,7 @@ namespace gradcontact::cases
     ExponentMap grading_map(const Scene &s, const double k, const std::vector<double> &ratios, SceneResult &result,
                             const bool verbose)
     {
-      const std::string x = ratio_name(s);
+      const std::string x = ratio_name(s).md;
       const bool toward_large = s.map.parameter != MapParameters::Parameter::coating_thickness;
       const std::vector<std::string> quantities = is_indenter(s) ? std::vector<std::string>{"force", "contact radius", "pressure"}
                                                                  : std::vector<std::string>{"force", "pressure"};
@@ -213,7 +210,7 @@ namespace gradcontact::cases
       md << "FE resolution at " << x << " = " << format(nearest) << " (the change with one uniform refinement more, "
          << finer.dofs << " DoFs):";
       if (out.resolution.empty())
-        md << " not measured (" << (at == out.points.end() ? "no point was solved" : cell(finer.error)) << ")";
+        md << " not measured (" << (at == out.points.end() ? "no point was solved" : md_escape(finer.error)) << ")";
       for (const auto &[q, change] : out.resolution)
         md << " " << quantity_label(q) << " " << format(change) << ";";
       out.resolution_text = md.str();
@@ -374,7 +371,7 @@ namespace gradcontact::cases
           md << "FE resolution (the error of the FE's ratio two bodies / rigid indenter where 9.4 gives it, "
              << solver->n_dofs() << " DoFs):";
           if (out.resolution.empty())
-            md << " not measured (" << cell(rigid_check.error + pair_check.error) << ")";
+            md << " not measured (" << md_escape(rigid_check.error + pair_check.error) << ")";
           for (const auto &[q, change] : out.resolution)
             md << " " << quantity_label(q) << " " << format(change) << ";";
           md << " E(a) = E0 (a/c0)^k = " << format(std::pow(a / g.material.c0, k)) << " E0, so E1/E(a) = "
@@ -384,7 +381,7 @@ namespace gradcontact::cases
       catch (const std::exception &e)
         {
           result.rows.push_back(failed("indenter-modulus map", "FE", "closed form", metric + concise(e)));
-          out.resolution_text = "not measured (" + cell(concise(e)) + ")";
+          out.resolution_text = "not measured (" + md_escape(concise(e)) + ")";
         }
       return out;
     }
@@ -593,7 +590,7 @@ namespace gradcontact::cases
              << format(coarser.stick) << " at " << steps << " steps against " << format(largest->stick) << " at "
              << 2 * steps << "):";
           if (!coarser.error.empty())
-            md << " not measured (" << cell(coarser.error) << ")";
+            md << " not measured (" << md_escape(coarser.error) << ")";
         }
       else
         md << "FE resolution: not measured (" << (steps < 2 ? "Friction/load steps < 2" : "no frictional point was solved")
@@ -631,7 +628,7 @@ namespace gradcontact::cases
                            format(friction_pressure_radii.back()) + "] (area-weighted, relative)");
           if (!smooth_check.error.empty())
             {
-              out.resolution_text = "not measured (the frictionless FE failed: " + cell(smooth_check.error) + ")";
+              out.resolution_text = "not measured (the frictionless FE failed: " + md_escape(smooth_check.error) + ")";
               return out;
             }
           const fem::UnilateralResult smooth = f.r;
@@ -643,7 +640,7 @@ namespace gradcontact::cases
       catch (const std::exception &e)
         {
           result.rows.push_back(failed("friction map", "FE", "closed form", metric + concise(e)));
-          out.resolution_text = "not measured (" + cell(concise(e)) + ")";
+          out.resolution_text = "not measured (" + md_escape(concise(e)) + ")";
         }
       return out;
     }
@@ -657,12 +654,63 @@ namespace gradcontact::cases
       double k, nu;
     };
 
-    /// What a map scene compares: its ratios (ascending) and their name, the quantities, the reference, and the
-    /// panels.
+    /// The column spec of a map kind: map.csv (every point) and each panel's table in map.md, from the kind's ratio
+    /// and what its points carry: an indenter's contact radius (map.csv has the column for every kind), friction's nu
+    /// and stick radius.
+    struct MapColumns
+    {
+      RatioName ratio;
+      bool radius = false, friction = false;
+
+      std::vector<Column> columns() const
+      {
+        std::vector<Column> c{Column::csv_only("k")};
+        if (friction)
+          c.push_back(Column::csv_only("nu").csv_as(Number{'f', 6}));
+        c.push_back(Column::both(ratio.csv, ratio.md));
+        c.push_back(Column::both("force_deviation", "force"));
+        c.push_back(radius ? Column::both("contact_radius_deviation", "contact radius")
+                           : Column::csv_only("contact_radius_deviation"));
+        c.push_back(Column::both("pressure_deviation", quantity_label("pressure", friction)));
+        if (friction)
+          c.push_back(Column::both("stick_radius_over_a", "c/a").csv_as(Number{}));
+        for (const Column &last : {Column::both("dofs", "DoFs"), Column::both("seconds", "s"),
+                                   Column::csv_only("error").quoted()})
+          c.push_back(last);
+        return c;
+      }
+
+      /// An empty table of these columns (map.csv's numbers with 10 digits).
+      Table table() const { return Table(columns(), Number{'g', 10}); }
+
+      /// A point's row: a failed one says so in the Markdown in place of its deviations.
+      std::vector<Cell> cells(const Panel &panel, const MapPoint &p) const
+      {
+        const bool failed = !p.error.empty();
+        const auto deviation = [failed](const double value) { return failed ? Cell(value).md_text("-") : Cell(value); };
+        std::vector<Cell> c{panel.k};
+        if (friction)
+          c.push_back(panel.nu);
+        c.push_back(std::isinf(p.ratio) ? Cell(p.ratio).md_text("inf (full stick)") : Cell(p.ratio));
+        c.push_back(failed ? Cell(p.force).md_text("failed: " + p.error) : Cell(p.force));
+        c.push_back(deviation(radius ? p.radius : std::nan("")));
+        c.push_back(deviation(p.pressure));
+        if (friction)
+          c.push_back(deviation(p.stick));
+        for (const Cell &last : {Cell(p.dofs), Cell(p.seconds), Cell(p.error)})
+          c.push_back(last);
+        return c;
+      }
+    };
+
+    /// What a map scene compares: its ratios (ascending), the quantities, the reference, the columns of its tables
+    /// and the panels.
     struct MapPlan
     {
       std::vector<double> ratios;
-      std::string x;
+      MapColumns columns;
+      /// The ratio's name in map.md.
+      const std::string &x() const { return columns.ratio.md; }
       bool indenter = false, of_indenter = false, of_friction = false;
       /// The chapter's idealisation is the limit a/z0 -> inf of a finite surface modulus (a/w -> inf of the error
       /// function), a/H -> 0 of a coating, E1/E0 -> inf of the indenter and mu -> 0 of friction.
@@ -679,12 +727,12 @@ namespace gradcontact::cases
       const std::vector<double> ks = s.map.exponents.empty() ? std::vector<double>{s.material.k} : s.map.exponents;
       plan.ratios = s.map.ratios;
       std::sort(plan.ratios.begin(), plan.ratios.end());
-      plan.x = ratio_name(s);
       plan.indenter = is_indenter(s);
       plan.quantities = plan.indenter ? std::vector<std::string>{"force", "contact radius", "pressure"}
                                       : std::vector<std::string>{"force", "pressure"};
       plan.of_indenter = s.map.parameter == MapParameters::Parameter::indenter_modulus;
       plan.of_friction = s.map.parameter == MapParameters::Parameter::friction_coefficient;
+      plan.columns = MapColumns{ratio_name(s), plan.indenter, plan.of_friction};
       plan.reference_name = plan.of_indenter   ? "closed form (rigid indenter)"
                             : plan.of_friction ? "FE frictionless"
                                                : "closed form (power-law idealisation E0, c0, k)";
@@ -710,23 +758,24 @@ namespace gradcontact::cases
                 : "");
     }
 
-    /// The header of map.csv.
-    std::string map_csv_head(const MapPlan &plan)
+    /// The real grading of a grading map, as map.md names it.
+    std::string grading_text(const Scene &s)
     {
-      const std::string &x = plan.x;
-      const bool of_friction = plan.of_friction;
-      std::ostringstream csv;
-      csv << "k," << (of_friction ? "nu," : "")
-          << (x == "a/z0" ? "a_over_z0" : x == "a/w" ? "a_over_w" : x == "a/H" ? "a_over_H" : x == "mu" ? "mu" : "E1_over_E0")
-          << ",force_deviation,contact_radius_deviation,pressure_deviation," << (of_friction ? "stick_radius_over_a," : "")
-          << "dofs,seconds,error\n";
-      return csv.str();
+      switch (s.map.parameter)
+        {
+          case MapParameters::Parameter::surface_depth:
+            return "E(z) = E0 ((z + z0)/c0)^k (a finite surface modulus)";
+          case MapParameters::Parameter::erf_width:
+            return "E(z) = E0 [1 + (m - 1) erfc(z/w)], m = " + format(s.material.surface_modulus_ratio) +
+                   " (the error-function grading of Lee, Barber & Thouless 2009)";
+          default:
+            return "a graded coating E0 (z/c0)^k on 0 < z <= H over the substrate E0 (H/c0)^k";
+        }
     }
 
     /// The title of map.md and what the map compares.
     std::string map_intro(const Scene &s, const MapPlan &plan)
     {
-      const std::string &x = plan.x;
       std::ostringstream md;
       md << "# " << s.info.name << ": applicability map\n\n" << (s.info.description.empty() ? "" : s.info.description + "\n\n");
       if (plan.of_indenter)
@@ -753,11 +802,7 @@ namespace gradcontact::cases
               "the contact, stick and slip sets found at every step). At Holl's ratio nu = 1/(2 + k) pressure causes no "
               "radial displacement and friction must change nothing: those rows are sharp checks.\n\n";
       else
-        md << "The FE model of "
-           << (x == "a/z0"  ? "E(z) = E0 ((z + z0)/c0)^k (a finite surface modulus)"
-               : x == "a/w" ? "E(z) = E0 [1 + (m - 1) erfc(z/w)], m = " + format(s.material.surface_modulus_ratio) +
-                                " (the error-function grading of Lee, Barber & Thouless 2009)"
-                            : "a graded coating E0 (z/c0)^k on 0 < z <= H over the substrate E0 (H/c0)^k")
+        md << "The FE model of " << grading_text(s)
            << " against the power-law closed forms (E0, c0, k; 9.1) at the FE depth: deviation = FE / closed form - 1"
            << " (force at the depth" << (plan.indenter ? ", contact radius at the depth" : "") << ", pressure at r = "
            << format(axis_sample) << " a). Load/a = " << format(s.load.a) << " m, the FE under contact-radius control.\n\n";
@@ -774,7 +819,7 @@ namespace gradcontact::cases
          << "\n\n"
          << threshold_table_head(plan.of_friction ? std::vector<std::string>{"k", "nu", "quantity"}
                                                   : std::vector<std::string>{"k", "quantity"},
-                                 s.map.thresholds, "when " + plan.x);
+                                 s.map.thresholds, "when " + plan.x());
       return md.str();
     }
 
@@ -791,7 +836,10 @@ namespace gradcontact::cases
     /// The outputs of a map scene as its panels fill them: map.csv, map.md's parts, and the plots' curves.
     struct MapTables
     {
-      std::ofstream csv;
+      explicit MapTables(Table points)
+        : csv(std::move(points))
+      {}
+      Table csv;
       std::ostringstream md, thresholds_md, largest_md;
       std::map<std::string, std::vector<Series>> plots;
     };
@@ -801,24 +849,12 @@ namespace gradcontact::cases
     void tabulate_points(const MapPlan &plan, const Panel &panel, const std::vector<MapPoint> &points, MapTables &t,
                          SceneResult &result, const bool verbose)
     {
-      const std::string &x = plan.x;
-      const bool indenter = plan.indenter, of_friction = plan.of_friction;
-      t.md << "## " << panel_name(plan, panel) << "\n\n| " << x << " | force | " << (indenter ? "contact radius | " : "")
-           << quantity_label("pressure", of_friction) << " | " << (of_friction ? "c/a | " : "") << "DoFs | s |\n|---|---|"
-           << (indenter ? "---|" : "") << (of_friction ? "---|" : "") << "---|---|---|\n";
+      const std::string &x = plan.x();
+      const bool of_friction = plan.of_friction;
+      Table table = plan.columns.table();
       for (const MapPoint &p : points)
         {
-          t.csv << panel.k << ',' << (of_friction ? std::to_string(panel.nu) + "," : "") << p.ratio << ',' << p.force
-                << ',' << (indenter ? p.radius : std::nan("")) << ',' << p.pressure << ','
-                << (of_friction ? format(p.stick) + "," : "") << p.dofs << ',' << p.seconds << ',' << csv_quote(p.error)
-                << '\n';
-          t.md << "| " << (std::isinf(p.ratio) ? std::string("inf (full stick)") : format(p.ratio));
-          if (p.error.empty())
-            t.md << " | " << format(p.force) << " | " << (indenter ? format(p.radius) + " | " : "") << format(p.pressure)
-                 << (of_friction ? " | " + format(p.stick) : "");
-          else
-            t.md << " | failed: " << cell(p.error) << " | " << (indenter ? "- | " : "") << "-" << (of_friction ? " | -" : "");
-          t.md << " | " << p.dofs << " | " << format(p.seconds) << " |\n";
+          table.add(plan.columns.cells(panel, p));
           if (verbose)
             std::cerr << "  " << panel_name(plan, panel) << ", " << x << " = " << p.ratio << ": force " << p.force
                       << ", radius " << p.radius << ", pressure " << p.pressure
@@ -828,6 +864,8 @@ namespace gradcontact::cases
             result.rows.push_back(failed("map point", "FE", plan.reference_name,
                                          panel_name(plan, panel) + ", " + x + " = " + format(p.ratio) + ": " + p.error));
         }
+      t.md << "## " << panel_name(plan, panel) << "\n\n" << table.md();
+      t.csv.append(table);
     }
 
     /// A friction panel's row of the largest effects: the largest |deviation| of each quantity, and c/a at the
@@ -949,15 +987,14 @@ namespace gradcontact::cases
     void write_map_md(const fs::path &folder, const MapPlan &plan, const MapTables &t)
     {
       const bool of_friction = plan.of_friction;
-      std::ofstream(folder / "map.md") << t.md.str() << t.largest_md.str() << (of_friction ? "\n" : "")
-                                       << t.thresholds_md.str()
-                                       << "\nThe thresholds interpolate log-log between the last ratio outside and the "
-                                          "next one toward the chapter's idealisation; every ratio of the map beyond it "
-                                          "is within."
-                                       << (of_friction ? " Full stick (mu = inf) is read on its own: \"full stick "
-                                                         "included\" when it is within too."
-                                                       : "")
-                                       << "\n";
+      write_text(folder / "map.md",
+                 t.md.str() + t.largest_md.str() + (of_friction ? "\n" : "") + t.thresholds_md.str() +
+                   "\nThe thresholds interpolate log-log between the last ratio outside and the next one toward the "
+                   "chapter's idealisation; every ratio of the map beyond it is within." +
+                   (of_friction ? " Full stick (mu = inf) is read on its own: \"full stick included\" when it is "
+                                  "within too."
+                                : "") +
+                   "\n");
     }
 
     /// The plots of |deviation| against the ratio with the thresholds as lines, and of friction's stick radius.
@@ -978,7 +1015,7 @@ namespace gradcontact::cases
                                (plan.of_indenter   ? " / rigid indenter - 1|"
                                 : plan.of_friction ? " / frictionless - 1|"
                                                    : " / power law - 1|"),
-                     plan.x, stick ? "c/a" : "|deviation|", series, true, !stick);
+                     plan.x(), stick ? "c/a" : "|deviation|", series, true, !stick);
         }
     }
   } // namespace
@@ -993,16 +1030,14 @@ namespace gradcontact::cases
     const auto start = std::chrono::steady_clock::now();
     SceneResult result = started(s, folder);
     const MapPlan plan = plan_map(s);
-    MapTables t;
-    t.csv.open(folder / "map.csv");
-    t.csv << map_csv_head(plan);
-    t.csv.precision(10);
+    MapTables t{plan.columns.table()};
     t.md << map_intro(s, plan);
     t.thresholds_md << thresholds_head(s, plan);
     if (plan.of_friction)
       t.largest_md << largest_head(s);
     for (const Panel &panel : plan.panels)
       run_panel(s, plan, panel, t, result, verbose);
+    t.csv.write_csv(folder / "map.csv");
     write_map_md(folder, plan, t);
     if (s.outputs.plots)
       plot_map(s, folder, plan, t.plots);

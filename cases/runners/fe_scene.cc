@@ -3,6 +3,7 @@
 
 #include "model/analytic_reference.h"
 #include "report/convergence_report.h"
+#include "report/table.h"
 #include "model/fe_model.h"
 
 #include <analytic/batch.h>
@@ -69,9 +70,20 @@ namespace gradcontact::cases
     void write_friction(const Scene &s, const fem::UnilateralResult &u, const fs::path &folder, const unsigned int level)
     {
       const std::string stem = "friction-" + std::to_string(level);
-      std::ofstream csv(folder / (stem + ".csv"));
-      csv.precision(12);
-      csv << "step,depth,force,contact_radius,stick_radius,stick_over_contact,active_set_solves\n";
+      Table table({Column::both("step", "step"), Column::both("depth", "d [m]"), Column::both("force", "F [N]"),
+                   Column::both("contact_radius", "a [m]"), Column::both("stick_radius", "c [m]"),
+                   Column::both("stick_over_contact", "c/a").csv_as(Number{}).missing_as("- (no contact)"),
+                   Column::both("active_set_solves", "solves")},
+                  Number{'g', 12});
+      unsigned int step = 0, before = 0;
+      for (const fem::UnilateralResult::PathPoint &p : u.path)
+        {
+          // no contact yet (the first steps may not reach a vertex beyond the axis), or none at the axis: no c/a
+          const bool touching = p.outer_edge > 0 && !std::isnan(p.stick_radius);
+          table.add({++step, p.depth, p.force, p.outer_edge, std::isnan(p.stick_radius) ? Cell() : Cell(p.stick_radius),
+                     touching ? Cell(p.stick_radius / p.outer_edge) : Cell(), p.iterations - before});
+          before = p.iterations;
+        }
       std::ostringstream md;
       md << "# " << s.info.name << ": Coulomb friction during loading (" << level << " refinement(s))\n\n"
          << "mu = " << format(s.friction.coefficient) << " between the rigid indenter and E0 (z/c0)^k (k = "
@@ -82,25 +94,10 @@ namespace gradcontact::cases
                                             " m (c/a = " + format(u.stick_radius / u.outer_edge) + ")")
          << "; of the surface vertices in contact " << u.stick_nodes << " stick, " << u.slip_inward_nodes
          << " slip inward (q > 0) and " << u.slip_outward_nodes << " outward (q < 0); " << u.iterations
-         << " active-set solves in all.\n\n| step | d [m] | F [N] | a [m] | c [m] | c/a | solves |\n|---|---|---|---|---|---|---|\n";
-      unsigned int step = 0, before = 0;
-      for (const fem::UnilateralResult::PathPoint &p : u.path)
-        {
-          ++step;
-          // no contact yet (the first steps may not reach a vertex beyond the axis), or none at the axis: no c/a
-          const bool touching = p.outer_edge > 0 && !std::isnan(p.stick_radius);
-          csv << step << ',' << p.depth << ',' << p.force << ',' << p.outer_edge << ',';
-          if (!std::isnan(p.stick_radius))
-            csv << p.stick_radius;
-          csv << ','
-              << (touching ? format(p.stick_radius / p.outer_edge) : std::string()) << ',' << p.iterations - before << '\n';
-          md << "| " << step << " | " << format(p.depth) << " | " << format(p.force) << " | " << format(p.outer_edge)
-             << " | " << (std::isnan(p.stick_radius) ? std::string("-") : format(p.stick_radius)) << " | "
-             << (touching ? format(p.stick_radius / p.outer_edge) : std::string("- (no contact)")) << " | "
-             << p.iterations - before << " |\n";
-          before = p.iterations;
-        }
-      std::ofstream(folder / (stem + ".md")) << md.str();
+         << " active-set solves in all.\n\n"
+         << table.md();
+      table.write_csv(folder / (stem + ".csv"));
+      write_text(folder / (stem + ".md"), md.str());
     }
 
     fem::Result run_unilateral(const Scene &s, const FeModel &model, const fem::OutputRequest &out,

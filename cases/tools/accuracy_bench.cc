@@ -1,5 +1,7 @@
 #include "tools/accuracy_bench.h"
 
+#include "report/table.h"
+
 #include <analytic/batch.h>
 #include <fem/accuracy/accuracy.h>
 #include <fem/modulus/modulus.h>
@@ -9,8 +11,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <fstream>
-#include <iomanip>
 #include <iostream>
 #include <map>
 #include <random>
@@ -216,17 +216,21 @@ namespace gradcontact::cases
       return r.true_error > r.tolerance + reference_floor;
     }
 
-    void write_csv(const std::vector<Row> &rows, const fs::path &file)
+    /// accuracy.csv: every answer's row.
+    Table answers_table(const std::vector<Row> &rows)
     {
-      std::ofstream csv(file);
-      csv << "set,group,k,nu,profile,tolerance,degree,levels,dofs,seconds,met,limit,quantity,true_error,estimate,"
-             "true_over_asked,true_over_estimate,reference,level_values\n";
+      Table csv({Column::csv_only("set"), Column::csv_only("group").quoted(), Column::csv_only("k"),
+                 Column::csv_only("nu"), Column::csv_only("profile"), Column::csv_only("tolerance"),
+                 Column::csv_only("degree"), Column::csv_only("levels"), Column::csv_only("dofs"),
+                 Column::csv_only("seconds"), Column::csv_only("met"), Column::csv_only("limit").quoted(),
+                 Column::csv_only("quantity"), Column::csv_only("true_error"), Column::csv_only("estimate"),
+                 Column::csv_only("true_over_asked"), Column::csv_only("true_over_estimate"),
+                 Column::csv_only("reference").csv_as(Number{'g', 10}), Column::csv_only("level_values")});
       for (const Row &r : rows)
-        csv << r.set << ",\"" << r.group << "\"," << r.k << ',' << r.nu << ',' << r.profile << ',' << r.tolerance << ',' << r.degree << ','
-            << r.levels << ',' << r.dofs << ',' << r.seconds << ',' << r.met << ",\"" << r.limit << "\"," << r.quantity
-            << ',' << r.true_error << ',' << r.estimate << ',' << r.true_error / r.tolerance << ','
-            << r.true_error / r.estimate << ',' << std::setprecision(10) << r.reference << ',' << r.values
-            << std::setprecision(6) << '\n';
+        csv.add({r.set, r.group, r.k, r.nu, r.profile, r.tolerance, r.degree, r.levels, r.dofs, r.seconds, r.met ? 1 : 0,
+                 r.limit, r.quantity, r.true_error, r.estimate, r.true_error / r.tolerance, r.true_error / r.estimate,
+                 r.reference, r.values});
+      return csv;
     }
 
     /// The contract per (k, tolerance) of one answer group: the worst true error / asked of the answers, or the
@@ -355,7 +359,7 @@ namespace gradcontact::cases
     std::vector<Row> rows;
     run_grid(options.quick, rows);
     run_random(options.quick, rows);
-    write_csv(rows, folder / "accuracy.csv");
+    answers_table(rows).write_csv(folder / "accuracy.csv");
 
     int n_broken = 0, refusals = 0, answers = 0;
     for (const Row &r : rows)
@@ -376,7 +380,7 @@ namespace gradcontact::cases
     write_contract_table(rows, "p", md);
     write_estimate_table(rows, md);
     write_cost_table(rows, md);
-    std::ofstream(folder / "accuracy.md") << md.str();
+    write_text(folder / "accuracy.md", md.str());
     std::cerr << "accuracy: " << answers << " answers, " << refusals << " refused, " << n_broken
               << " broken promises\n";
     return n_broken;

@@ -3,6 +3,7 @@
 #include "tools/fe_bench.h"
 #include "tools/fe_oracle.h"
 #include "report/report.h"
+#include "report/table.h"
 
 #include <analytic/batch.h>
 #include <analytic/reference_rows.h>
@@ -244,8 +245,14 @@ namespace gradcontact::cases
       const auto families = load(o.references);
       if (families.empty())
         throw std::runtime_error("bench: the reference table is empty");
-      std::ofstream csv(tmp / "analytic.csv");
-      csv << "family,method,rows,refused,min_seconds,median_seconds,worst_relative_error\n";
+      Table csv({Column::csv_only("family"), Column::csv_only("method"), Column::csv_only("rows"),
+                 Column::csv_only("refused"), Column::csv_only("min_seconds"), Column::csv_only("median_seconds"),
+                 Column::csv_only("worst_relative_error")});
+      Table table({Column::md_only("family"), Column::md_only("rows"),
+                   Column::md_only("closed form min [ns]").md_as(Number{'f', 0}),
+                   Column::md_only("median [ns]").md_as(Number{'f', 0}), Column::md_only("worst error").md_as(Number{'e', 1}),
+                   Column::md_only("numerical MDR min [ms]").md_as(Number{'f', 3}),
+                   Column::md_only("median [ms]").md_as(Number{'f', 3}), Column::md_only("worst error").md_as(Number{'e', 1})});
       std::ostringstream md;
       md << "# Analytic benchmarks: time per evaluation against error\n\n"
          << "Machine: " << machine() << ".  \n"
@@ -254,9 +261,7 @@ namespace gradcontact::cases
          << o.numerical_stride << "th row), evaluated " << o.repeat
          << " times (the numerical MDR once); times are per evaluation of a parsed request (batch::prepare), including "
             "the look-up of its inputs, minimum and median over the repetitions. Errors are the worst relative error "
-            "against the 34-digit references.\n\n"
-         << "| family | rows | closed form min [ns] | median [ns] | worst error | numerical MDR min [ms] | median [ms] | "
-            "worst error |\n|---|---|---|---|---|---|---|---|\n";
+            "against the 34-digit references.\n\n";
       for (const auto &entry : families)
         {
           const Timing closed = measure(entry.second, "closed_form", 1, o.repeat);
@@ -269,19 +274,17 @@ namespace gradcontact::cases
           std::cerr << entry.first << ": closed " << fmt(closed.min * 1e9) << " ns, error " << fmt(closed.worst_error)
                     << (has_numeric ? "; numerical " + fmt(numeric.min * 1e3) + " ms, error " + fmt(numeric.worst_error) : "")
                     << "\n";
-          csv << entry.first << ",closed_form," << closed.rows << ',' << closed.refused << ',' << closed.min << ','
-              << closed.median << ',' << closed.worst_error << '\n';
+          csv.add({entry.first, "closed_form", closed.rows, closed.refused, closed.min, closed.median, closed.worst_error});
           if (has_numeric)
-            csv << entry.first << ",numerical_mdr," << numeric.rows << ',' << numeric.refused << ',' << numeric.min << ','
-                << numeric.median << ',' << numeric.worst_error << '\n';
-          md << "| " << entry.first << " | " << closed.rows << " | " << fmt(closed.min * 1e9, "%.0f") << " | "
-             << fmt(closed.median * 1e9, "%.0f") << " | " << fmt(closed.worst_error, "%.1e") << " | "
-             << (has_numeric ? fmt(numeric.min * 1e3, "%.3f") : "-") << " | "
-             << (has_numeric ? fmt(numeric.median * 1e3, "%.3f") : "-") << " | "
-             << (has_numeric ? fmt(numeric.worst_error, "%.1e") + (numeric.refused ? " (" + std::to_string(numeric.refused) + " refused)" : "") : "-")
-             << " |\n";
+            csv.add({entry.first, "numerical_mdr", numeric.rows, numeric.refused, numeric.min, numeric.median,
+                     numeric.worst_error});
+          const std::string refused = numeric.refused ? " (" + std::to_string(numeric.refused) + " refused)" : "";
+          table.add({entry.first, closed.rows, closed.min * 1e9, closed.median * 1e9, closed.worst_error,
+                     has_numeric ? Cell(numeric.min * 1e3) : Cell(), has_numeric ? Cell(numeric.median * 1e3) : Cell(),
+                     has_numeric ? Cell(fmt(numeric.worst_error, "%.1e") + refused) : Cell()});
         }
-      std::ofstream(tmp / "analytic.md") << md.str();
+      csv.write_csv(tmp / "analytic.csv");
+      write_text(tmp / "analytic.md", md.str() + table.md());
     }
 
     /// oracle.{csv,md} into `tmp`: batches of random paraboloid requests answered by the FE oracle
@@ -297,9 +300,15 @@ namespace gradcontact::cases
       const auto log_uniform = [&](const double lo, const double hi) {
         return std::exp(uniform(std::log(lo), std::log(hi)));
       };
-      std::ofstream csv(tmp / "oracle.csv");
-      csv << "k,nu,requests,states,seconds,requests_per_second,worst_error_force_depth,worst_error_pressure_displacement,"
-             "median_error_over_estimate,p90_error_over_estimate,worst_error_over_estimate,refused\n";
+      Table table({Column::both("k", "k"), Column::both("nu", "nu"), Column::both("requests", "requests"),
+                   Column::both("states", "FE states"), Column::both("seconds", "s").md_as(Number{'f', 1}),
+                   Column::both("requests_per_second", "requests/s").md_as(Number{'f', 0}),
+                   Column::both("worst_error_force_depth", "worst error F, d").md_as(Number{'e', 1}),
+                   Column::both("worst_error_pressure_displacement", "worst error p, w").md_as(Number{'e', 1}),
+                   Column::both("median_error_over_estimate", "error / estimate: median").md_as(Number{'f', 2}),
+                   Column::both("p90_error_over_estimate", "90 %").md_as(Number{'f', 2}),
+                   Column::both("worst_error_over_estimate", "worst").md_as(Number{'f', 0}),
+                   Column::both("refused", "refused")});
       std::ostringstream md;
       md << "# The FE as an eval oracle: requests per second and error\n\nMachine: " << machine() << ".  \n"
          << "Per (k, nu), " << n << " paraboloid requests with \"method\": \"fe\", \"tolerance\": " << fmt(tolerance)
@@ -308,9 +317,7 @@ namespace gradcontact::cases
             "or displacement at r/a in [0, 5) (uniform). Time of the whole batch, one core (one FE state per (k, nu), "
             "the rest by scaling). Errors relative to the closed form (|value| of the request; pressures and "
             "displacements near 0 excluded below 1e-3 of the batch's scale) and against the oracle's own "
-            "error estimate (the Richardson estimate of the accuracy contract's ladder, fem/accuracy/accuracy.h).\n\n| k | nu | requests | FE states | s | "
-            "requests/s | worst error F, d | worst error p, w | error / estimate: median | 90 % | worst | refused |\n"
-            "|---|---|---|---|---|---|---|---|---|---|---|---|\n";
+            "error estimate (the Richardson estimate of the accuracy contract's ladder, fem/accuracy/accuracy.h).\n\n";
       std::ostringstream refusals; // the first refusal of each (k, nu), below the table
       for (const auto &[k, nu] : {std::pair{-0.5, 0.3}, std::pair{0., 0.3}, std::pair{0.5, 0.3}, std::pair{0., 0.49}})
         {
@@ -381,19 +388,16 @@ namespace gradcontact::cases
           const double worst = std::max(worst_scalar, worst_profile);
           std::cerr << "oracle k = " << k << ", nu = " << nu << ": " << n << " requests in " << fmt(seconds) << " s, "
                     << oracle.states_solved() << " states, worst error " << fmt(worst) << "\n";
-          csv << k << ',' << nu << ',' << n << ',' << oracle.states_solved() << ',' << seconds << ',' << n / seconds << ','
-              << worst_scalar << ',' << worst_profile << ',' << quantile(0.5) << ',' << quantile(0.9) << ','
-              << quantile(1) << ',' << errors << '\n';
+          table.add({k, nu, n, oracle.states_solved(), seconds, n / seconds, worst_scalar, worst_profile, quantile(0.5),
+                     quantile(0.9), quantile(1), errors});
           if (!first_refusal.empty())
             refusals << "- k = " << k << ", nu = " << nu << ": " << first_refusal << "\n";
-          md << "| " << k << " | " << nu << " | " << n << " | " << oracle.states_solved() << " | " << fmt(seconds, "%.1f")
-             << " | " << fmt(n / seconds, "%.0f") << " | " << fmt(worst_scalar, "%.1e") << " | "
-             << fmt(worst_profile, "%.1e") << " | " << fmt(quantile(0.5), "%.2f") << " | " << fmt(quantile(0.9), "%.2f")
-             << " | " << fmt(quantile(1), "%.0f") << " | " << errors << " |\n";
         }
+      md << table.md();
       if (!refusals.str().empty())
         md << "\nThe first refusal of each batch that had one (the limit the accuracy contract names):\n\n" << refusals.str();
-      std::ofstream(tmp / "oracle.md") << md.str();
+      table.write_csv(tmp / "oracle.csv");
+      write_text(tmp / "oracle.md", md.str());
     }
   } // namespace
 

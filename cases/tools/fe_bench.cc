@@ -1,6 +1,7 @@
 #include "tools/fe_bench.h"
 
 #include "report/report.h"
+#include "report/table.h"
 
 #include <fem/adhesion/adhesion.h>
 #include <fem/bodies/axisymmetric_solver.h>
@@ -17,7 +18,6 @@
 #include <cmath>
 #include <cstdio>
 #include <ctime>
-#include <fstream>
 #include <iomanip>
 #include <iostream>
 #include <limits>
@@ -538,24 +538,37 @@ namespace gradcontact::cases
         }
     }
 
-    /// fe_work_precision.csv: every number of every row.
-    void write_bench_csv(const fs::path &folder, const std::vector<WorkPrecisionRow> &rows)
+    /// The column spec of fe_work_precision.csv (every number of a row) and of the table of fe_work_precision.md (the
+    /// errors and times to read, the phases in one cell).
+    Table work_precision_table(const std::vector<WorkPrecisionRow> &rows)
     {
-      std::ofstream csv(folder / "fe_work_precision.csv");
-      csv << "load,k,model,degree,level,h_edge,ring_growth,L_over_a,dofs,force_error,depth_error,error,"
-             "wall_min_s,wall_median_s,wall_cold_s,cpu_min_s,mesh_s,setup_s,assemble_s,factorize_s,solve_s,"
-             "postprocess_s,note\n"
-          << std::setprecision(6);
+      const Number seconds{'f', 3};
+      Table table({Column::both("load", "scene"), Column::both("k", "k"), Column::both("model", "model"),
+                   Column::both("degree", "degree"), Column::both("level", "level"),
+                   Column::both("h_edge", "h_edge/a").md_as(Number{'e', 0}), Column::csv_only("ring_growth"),
+                   Column::csv_only("L_over_a"), Column::both("dofs", "DoFs"),
+                   Column::both("force_error", "force error").md_as(Number{'e', 2}),
+                   Column::both("depth_error", "depth error").md_as(Number{'e', 2}), Column::csv_only("error"),
+                   Column::both("wall_min_s", "wall min [s]").md_as(seconds),
+                   Column::both("wall_median_s", "median [s]").md_as(seconds),
+                   Column::both("wall_cold_s", "cold [s]").md_as(seconds),
+                   Column::both("cpu_min_s", "CPU [s]").md_as(seconds), Column::csv_only("mesh_s"),
+                   Column::csv_only("setup_s"), Column::csv_only("assemble_s"), Column::csv_only("factorize_s"),
+                   Column::csv_only("solve_s"), Column::csv_only("postprocess_s"),
+                   Column::md_only("mesh / setup / assemble / factorize / solve / post [s]"),
+                   Column::both("note", "note").quoted()});
       for (const auto &r : rows)
         {
+          // the CSV's note keeps its format: its double quotes written as single ones
           std::string note = r.note;
           std::replace(note.begin(), note.end(), '"', '\'');
-          csv << r.load << ',' << r.k << ',' << r.model << ',' << r.degree << ',' << r.level << ',' << r.h_edge << ','
-              << r.ring_growth << ',' << r.far_field << ',' << r.dofs << ',' << r.force_error << ',' << r.depth_error
-              << ',' << r.error << ',' << r.wall_min << ',' << r.wall_median << ',' << r.wall_cold << ',' << r.cpu_min
-              << ',' << r.mesh << ',' << r.setup << ',' << r.assemble << ',' << r.factorize << ',' << r.solve << ','
-              << r.postprocess << ",\"" << note << "\"\n";
+          const Cell depth_error = r.load == "paraboloid" ? Cell(r.depth_error) : Cell(r.depth_error).md_text("-");
+          table.add({r.load, r.k, r.model, r.degree, r.level, r.h_edge, r.ring_growth, r.far_field, r.dofs,
+                     r.force_error, depth_error, r.error, r.wall_min, r.wall_median, r.wall_cold, r.cpu_min, r.mesh,
+                     r.setup, r.assemble, r.factorize, r.solve, r.postprocess, phase_split(r),
+                     Cell(note).md_text(r.note)});
         }
+      return table;
     }
 
     /// The curves of a plot, each in the order of its runs (mesh level), not of x: timing noise would zig-zag it.
@@ -652,9 +665,9 @@ namespace gradcontact::cases
              "repetitions is the least disturbed.\n\n";
     }
 
-    /// Writes fe_work_precision.md: the run, what is measured, every row, and the plots.
+    /// Writes fe_work_precision.md: the run, what is measured, every row (`table`), and the plots.
     void write_bench_md(const FeBenchOptions &o, const fs::path &folder, const std::string &machine,
-                        const BenchPlan &plan, const double total, const std::vector<WorkPrecisionRow> &rows,
+                        const BenchPlan &plan, const double total, const Table &table,
                         const std::vector<std::string> &plots)
     {
       std::ostringstream md;
@@ -665,21 +678,11 @@ namespace gradcontact::cases
       if (plan.peer || !plan.peer_note.empty())
         md << "FreeFem++ peer rows (`cases/peers/freefem/`, P2, its own mesh ladder, the same L/a): see `peer.md`. "
            << plan.peer_note << "\n\n";
-      md << "## Results\n\n"
-         << "| scene | k | model | degree | level | h_edge/a | DoFs | force error | depth error | wall min [s] | "
-            "median [s] | cold [s] | CPU [s] | mesh / setup / assemble / factorize / solve / post [s] | note |\n"
-         << "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
-      for (const auto &r : rows)
-        md << "| " << r.load << " | " << fmt(r.k, "%g") << " | " << r.model << " | " << r.degree << " | " << r.level
-           << " | " << fmt(r.h_edge, "%.0e") << " | " << r.dofs << " | " << fmt(r.force_error, "%.2e") << " | "
-           << (r.load == "paraboloid" ? fmt(r.depth_error, "%.2e") : "-") << " | " << fmt(r.wall_min, "%.3f") << " | "
-           << fmt(r.wall_median, "%.3f") << " | " << fmt(r.wall_cold, "%.3f") << " | " << fmt(r.cpu_min, "%.3f")
-           << " | " << phase_split(r) << " | " << r.note << " |\n";
-      md << "\n## Plots\n\n";
+      md << "## Results\n\n" << table.md() << "\n## Plots\n\n";
       for (const auto &p : plots)
         md << "- `" << p << "_error_vs_time.png` / `" << p << "_error_vs_dofs.png` (SVG, data and gnuplot script "
            << "beside)\n";
-      std::ofstream(folder / "fe_work_precision.md") << md.str();
+      write_text(folder / "fe_work_precision.md", md.str());
     }
 
     /// The table of the peer's runs.
@@ -788,7 +791,7 @@ namespace gradcontact::cases
                 pm << headline_row(load, k, rows);
           pm << "\nThe plots `fe_<scene>_k<k>_error_vs_time.png` carry both models.\n\n" << peer_limits_text();
         }
-      std::ofstream(folder / "peer.md") << pm.str();
+      write_text(folder / "peer.md", pm.str());
     }
   } // namespace
 
@@ -807,9 +810,10 @@ namespace gradcontact::cases
         }
     const double total = seconds_since(start);
     fs::remove_all(plan.mesh_cache);
-    write_bench_csv(folder, rows);
+    const Table table = work_precision_table(rows);
+    table.write_csv(folder / "fe_work_precision.csv");
     const std::vector<std::string> plots = plot_bench(folder, plan.ks, rows);
-    write_bench_md(o, folder, machine, plan, total, rows, plots);
+    write_bench_md(o, folder, machine, plan, total, table, plots);
     if (o.with_peer)
       write_peer_md(o, folder, machine, plan, rows);
     return rows;

@@ -5,6 +5,7 @@
 #include "runners/fe_tangential.h"
 #include "report/report.h"
 #include "report/result_cache.h"
+#include "report/table.h"
 #include "runners/run_scene.h"
 #include "scene/scene.h"
 
@@ -571,37 +572,29 @@ namespace gradcontact::cases
       }
     };
 
-    // Writes `text` to `target` through a temporary sibling.
-    void write_atomically(const fs::path &target, const std::string &text)
+    /// The column spec of a figure's <name>.csv and of the table of its <name>.md: every checked point.
+    Table points_table(const std::vector<CheckedPoint> &points)
     {
-      const fs::path tmp = temporary_sibling(target);
-      {
-        std::ofstream out(tmp);
-        out << text;
-        if (!out)
-          throw std::runtime_error("figures: cannot write " + tmp.string());
-      }
-      fs::rename(tmp, target);
-    }
-
-    std::string tables_csv(const std::vector<CheckedPoint> &points)
-    {
-      std::ostringstream csv;
-      csv << std::setprecision(12)
-          << "series,x,value,reference,reference_curve,error,tolerance,pass,note\n";
+      Table table({Column::both("series", "series").quoted(), Column::both("x", "x"), Column::both("value", "value"),
+                   Column::both("reference", "reference"), Column::both("reference_curve", "reference curve").quoted(),
+                   Column::both("error", "error"), Column::both("tolerance", "tolerance"), Column::both("pass", "pass"),
+                   Column::both("note", "note").quoted()},
+                  Number{'g', 12});
       for (const CheckedPoint &p : points)
-        csv << csv_quote(p.series) << ',' << p.x << ',' << p.y << ',' << p.reference << ','
-            << csv_quote(p.reference_curve) << ',' << p.error << ',' << p.tolerance << ','
-            << (!p.pass ? "false" : p.measured ? "measured" : "true") << ',' << csv_quote(p.note) << '\n';
-      return csv.str();
+        table.add({p.series, p.x, p.y, p.reference, p.reference_curve, p.error,
+                   p.measured ? Cell(p.tolerance).md_text("-") : Cell(p.tolerance),
+                   Cell(!p.pass ? "false" : p.measured ? "measured" : "true")
+                     .md_text(!p.pass ? "**FAIL**" : p.measured ? "measured" : "pass"),
+                   p.note});
+      return table;
     }
 
-    std::string tables_md(const std::string &title, const std::string &name, const std::vector<CheckedPoint> &points,
+    std::string tables_md(const std::string &title, const std::string &name, const Table &points,
                           const std::map<std::string, std::string> &why)
     {
       std::ostringstream md;
       md << "# " << title << "\n\n![" << name << "](" << name << ".svg)\n\n";
-      if (points.empty())
+      if (points.size() == 0)
         {
           md << "No checked points: the figure draws closed forms only.\n";
           return md.str();
@@ -609,13 +602,8 @@ namespace gradcontact::cases
       md << "Each point against the closed form at the same abscissa; error = |value - reference| / max |y| of the "
             "reference curve as drawn. A point set with the tolerance \"-\" is measured, not checked: the deviation of "
             "the closed form from a model that drops its idealisation is the result (it fails only when it is not "
-            "finite or lies off its curve).\n\n| series | x | value | reference | reference curve | error | "
-            "tolerance | pass | note |\n|---|---|---|---|---|---|---|---|---|\n";
-      for (const CheckedPoint &p : points)
-        md << "| " << p.series << " | " << format(p.x) << " | " << format(p.y) << " | " << format(p.reference) << " | "
-           << p.reference_curve << " | " << format(p.error) << " | " << (p.measured ? "-" : format(p.tolerance))
-           << " | " << (!p.pass ? "**FAIL**" : p.measured ? "measured" : "pass") << " | " << p.note << " |\n";
-      md << "\nTolerances:\n\n";
+            "finite or lies off its curve).\n\n"
+         << points.md() << "\nTolerances:\n\n";
       for (const auto &[series, reason] : why)
         md << "- " << series << ": " << reason << "\n";
       return md.str();
@@ -816,9 +804,10 @@ namespace gradcontact::cases
                           fig.value("logx", false), fig.value("logy", false));
           summary.drawn = ok;
           summary.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-          write_atomically(tmp / (name + ".csv"), tables_csv(checked));
-          write_atomically(tmp / (name + ".md"), tables_md(title, name, checked, why));
-          write_atomically(tmp / (name + ".summary.json"), summary.to_json().dump(1) + "\n");
+          const Table points = points_table(checked);
+          write_text_atomically(tmp / (name + ".csv"), points.csv());
+          write_text_atomically(tmp / (name + ".md"), tables_md(title, name, points, why));
+          write_text_atomically(tmp / (name + ".summary.json"), summary.to_json().dump(1) + "\n");
           for (const auto &e : fs::directory_iterator(tmp))
             fs::rename(e.path(), folder / e.path().filename());
           fs::remove_all(tmp);
@@ -931,7 +920,7 @@ namespace gradcontact::cases
     std::vector<FigureSummary> drawn;
     for (const fs::path &f : files)
       drawn.push_back(draw(f, reports, cache));
-    write_atomically(reports / "figures" / "index.md", index_md(reports / "figures"));
+    write_text_atomically(reports / "figures" / "index.md", index_md(reports / "figures"));
     std::size_t failed = 0;
     for (const FigureSummary &f : drawn)
       failed += f.failed;

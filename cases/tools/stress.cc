@@ -1,6 +1,7 @@
 #include "tools/stress.h"
 
 #include "report/report.h"
+#include "report/table.h"
 
 #include <analytic/batch.h>
 #include <analytic/reference_rows.h>
@@ -10,7 +11,6 @@
 #include <chrono>
 #include <cmath>
 #include <filesystem>
-#include <fstream>
 #include <iostream>
 #include <limits>
 #include <map>
@@ -441,19 +441,8 @@ namespace gradcontact::cases
          << " numerical MDR). A loss of digits beyond what the inputs justify makes error/allowance exceed 1 and fails "
             "the run. Near k = +-1 (closed form vs numerical MDR, no reference) the allowance is 10 eps / (1 - |k|) plus "
             "the numerical MDR's floor: an ulp of k changes 1 -+ k by eps / (1 - |k|) relative, which every quantity "
-            "inherits.\n\n"
-         << "| method | region | rows | refused | NaN/inf | worst rel. error | worst error/allowance (its allowance) | "
-            "row of the worst ratio | within allowance |\n"
-         << "|---|---|---|---|---|---|---|---|---|\n";
+            "inherits.\n\n";
       return md.str();
-    }
-
-    /// `text` for a markdown table cell: a | inside it (|k|) would end it.
-    std::string md_cell(std::string text)
-    {
-      for (std::size_t i = text.find('|'); i != std::string::npos; i = text.find('|', i + 2))
-        text.replace(i, 1, "\\|");
-      return text;
     }
 
     /// The rows of every (method, region) into stability.md and stability.csv, and the refusals' examples; true
@@ -461,19 +450,22 @@ namespace gradcontact::cases
     bool tabulate_stress(const StressTable &table, std::ostream &md, std::ostream &csv)
     {
       bool ok = true;
-      csv << "method,region,rows,refused,nonfinite,worst_relative_error,worst_error_over_allowance,allowance_of_worst,"
-             "worst_row,refusal_example\n";
+      Table cells({Column::both("method", "method"), Column::both("region", "region").quoted(),
+                   Column::both("rows", "rows"), Column::both("refused", "refused"), Column::both("nonfinite", "NaN/inf"),
+                   Column::both("worst_relative_error", "worst rel. error"),
+                   Column::both("worst_error_over_allowance", "worst error/allowance (its allowance)"),
+                   Column::csv_only("allowance_of_worst"), Column::both("worst_row", "row of the worst ratio").quoted(),
+                   Column::csv_only("refusal_example").quoted(), Column::md_only("within allowance")});
       for (const auto &[key, t] : table)
         {
           const bool pass = t.nonfinite == 0 && t.worst_ratio <= 1.;
           ok = ok && pass;
-          md << "| " << key.first << " | " << md_cell(key.second) << " | " << t.rows << " | " << t.refused << " | "
-             << t.nonfinite << " | " << format(t.worst) << " | " << format(t.worst_ratio) << " ("
-             << format(t.worst_allowance) << ") | " << t.worst_row << " | " << (pass ? "yes" : "**NO**") << " |\n";
-          csv << key.first << ",\"" << key.second << "\"," << t.rows << ',' << t.refused << ',' << t.nonfinite << ','
-              << t.worst << ',' << t.worst_ratio << ',' << t.worst_allowance << ",\"" << t.worst_row << "\",\""
-              << t.refusal_example << "\"\n";
+          cells.add({key.first, key.second, t.rows, t.refused, t.nonfinite, t.worst,
+                     Cell(t.worst_ratio).md_text(format(t.worst_ratio) + " (" + format(t.worst_allowance) + ")"),
+                     t.worst_allowance, t.worst_row, t.refusal_example, pass ? "yes" : "**NO**"});
         }
+      md << cells.md();
+      csv << cells.csv();
       md << "\nRefusals, one example per region:\n\n";
       for (const auto &[key, t] : table)
         if (!t.refusal_example.empty())
@@ -481,19 +473,14 @@ namespace gradcontact::cases
       return ok;
     }
 
-    /// Writes stability.md and stability.csv under temporary names, renamed when complete.
+    /// Writes stability.md and stability.csv, each under a temporary name renamed when complete.
     fs::path write_stability(const Options &o, const std::string &md, const std::string &csv)
     {
       const fs::path folder = o.reports / "benchmarks";
       fs::create_directories(folder);
       remove_stale_temporaries(folder); // what a killed run left
-      for (const auto &[name, text] : {std::pair<std::string, std::string>{"stability.md", md},
-                                       std::pair<std::string, std::string>{"stability.csv", csv}})
-        {
-          const fs::path tmp = temporary_sibling(folder / name);
-          std::ofstream(tmp) << text;
-          fs::rename(tmp, folder / name);
-        }
+      write_text_atomically(folder / "stability.md", md);
+      write_text_atomically(folder / "stability.csv", csv);
       return folder;
     }
   } // namespace
