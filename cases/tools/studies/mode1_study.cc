@@ -36,7 +36,7 @@ int main(int argc, char **argv)
 {
   try
     {
-      const testing::StudyArguments args(argc, argv, "mode1_study");
+      const gradcontact::studies::StudyArguments args(argc, argv, "mode1_study");
       auto num = [&](const std::string &key, const double fallback) { return args.num(key, fallback); };
       if (args.has("load") && args.text("load") == "cylinder")
         {

@@ -84,7 +84,7 @@ int main(int argc, char **argv)
   const bool     root  = dealii::Utilities::MPI::this_mpi_process(world) == 0;
   try
     {
-      const testing::StudyArguments args(argc, argv, "fem3d");
+      const gradcontact::studies::StudyArguments args(argc, argv, "fem3d");
       auto num = [&](const std::string &key, const double fallback) { return args.num(key, fallback); };
       // The material of fem_study: E0 = 2 GPa, c0 = 3 a, a = 0.1 mm.
       const double E0 = 2e9, c0 = 3e-4, a = 1e-4, nu = num("nu", 0.3), k = num("k", 0.0);

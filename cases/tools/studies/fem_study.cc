@@ -36,7 +36,7 @@ int main(int argc, char **argv)
 {
   try
     {
-      const testing::StudyArguments args(argc, argv, "fem_study");
+      const gradcontact::studies::StudyArguments args(argc, argv, "fem_study");
       auto num = [&](const std::string &key, const double fallback) { return args.num(key, fallback); };
       const double E0 = 2e9, c0 = 3e-4, a = 1e-4, nu = num("nu", 0.3);
       const double k  = num("k", 0.0);

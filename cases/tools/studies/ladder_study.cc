@@ -24,7 +24,7 @@ int main(int argc, char **argv)
 {
   try
     {
-      const testing::StudyArguments args(argc, argv, "ladder_study");
+      const gradcontact::studies::StudyArguments args(argc, argv, "ladder_study");
       const double k = args.num("k", 0), nu = args.num("nu", 0.3), tol = args.num("tol", 1e-8);
       const double w_r = args.num("w", 2), p_r = args.num("pr", 0.5);
       const bool   punch = args.text("load", "punch") == "punch";

@@ -31,7 +31,7 @@ int main(int argc, char **argv)
 {
   try
     {
-      const testing::StudyArguments args(argc, argv, "cohesive_study");
+      const gradcontact::studies::StudyArguments args(argc, argv, "cohesive_study");
       constexpr double E0 = 1e9, c0 = 1e-3, nu = 0.3, R = 5e-3, dgamma = 0.05;
       const double     k      = args.num("k", 0.5);
       const double     lambda = args.num("lambda", 10);
