@@ -46,8 +46,8 @@ for solver in direct amg; do
     for np in $nps; do run strong "$solver" "$np" "$level"; done
   done
   for level in $levels; do
-    # The weak pair at level 3 has 3.4M DoFs on np = 2: about 3 GB per process with AMG, but MUMPS's
-    # fill would need about 16 GB (measured 6.6 GB for 1.84M DoFs on one process): AMG only.
+    # The weak pair at level 3 has millions of DoFs on np = 2: AMG's memory grows like the DoFs, but MUMPS's
+    # fill grows faster and outgrows the memory of one node (peak_mb_max of the strong runs shows it): AMG only.
     [ "$level" -ge 3 ] && [ "$solver" = direct ] && continue
     run weak "$solver" 1 "$level"
     [ "$max_np" -ge 2 ] && run weak "$solver" 2 "$level" h_surface=0.125 h_far=1.5
