@@ -113,7 +113,7 @@ namespace gradcontact::mdr
     /// int_0^1 v^k (1-v)^beta W(v, 1-v) w1D(x0 v) dv (beta1 = beta + 1) for w1D = d - x^n G(x): on [0, 1/2]
     /// as its two terms with v^k and v^(k+n) in the weights, on [1/2, 1] as it is, where the two terms cancel
     /// toward the edge (w1D(a) = 0 without adhesion; as k -> 1, g -> f and d - f(r) << d near r = a: the two
-    /// terms over all of [0, 1] lost 2.6e-10 at k = 0.999, r = (1 - 1e-5) a). W is analytic on [0, 1] but
+    /// terms over all of [0, 1] lose digits as k -> 1 and r -> a). W is analytic on [0, 1] but
     /// for a singularity at the distance delta1 beyond v = 1 (the panels on [1/2, 1] are graded toward it).
     template <class W>
     detail::JacobiQuadrature split_foundation_integral(const Foundation &w1d, const double x0, const double k,

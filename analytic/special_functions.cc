@@ -28,8 +28,8 @@ namespace gradcontact
     // Region predicate of hyp2f1_minus_one above z = 1/2: the difference F - 1 of a correctly rounded F
     // loses eps |F| / |F - 1| relative, at most one bit where |F - 1| >= |F|/2. Below that (a b -> 0, e.g.
     // k -> -1 in 9.73, where F - 1 = O(a b)) the connection formula's own rounding is amplified too: the
-    // difference loses 4.4e-14 at k = -0.906, z = 0.516 (the family of 9.73), the Taylor steps of the
-    // equation for F - 1 keep 1.6e-15 (tests/data/special_functions.csv, rows hyp2f1_minus_one).
+    // difference loses digits near k = -0.9 (the family of 9.73), the Taylor steps of the equation for F - 1
+    // keep them (tests/data/special_functions.csv, rows hyp2f1_minus_one, hold both to their tolerance).
     bool difference_keeps_digits(const double F) { return std::abs(F - 1.) >= 0.5 * std::abs(F); }
 
     double hyp2f1_taylor(const double a, const double b, const double c, const double z)
@@ -328,7 +328,7 @@ namespace gradcontact
       }
     // Two series, each converging like 2^-j, in double: Boost's incomplete beta in double loses up to
     // 1e-13 near z = 1 (where 1 - z is rounded) and B(x, y) - B(1 - z; y, x) cancels log10(1/y) digits as
-    // y -> 0; in long double it costs 1-8 us.
+    // y -> 0; in long double it is several times slower.
     // Below 1/2: 9.21 written as sum_j (1-y)_j / j! t^(x+j) / (x+j) at t = min(z, 1/2), positive terms for
     // y <= 1.
     const double t = std::min(z, 0.5);

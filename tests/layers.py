@@ -8,8 +8,12 @@ runners/run_scene, the runners' one entry, includes them all). fem/ is in layers
 the layers below it:
     base < modulus < grid < io < elasticity < linear_algebra < bodies < accuracy < contact < adhesion < tangential
 fem/ includes neither analytic/ nor cases/, and analytic/ neither fem/ nor cases/. The longest include chain among the files of cases/ is at most 6 levels.
-The files of a report are written by report/ (table.h: write_text, Table::write_csv): no other part of cases/ opens
-an std::ofstream.
+The files of a report are written by report/ (table.h: write_text, Table::write_csv): no other part of the scene
+library opens an std::ofstream (the FE studies, programs of their own, write their data files themselves).
+
+The FE studies (cases/tools/studies/) are programs of their own: nothing outside their folder includes them, and
+they include the scene library's parts only where STUDIES_WITH_CASES names them (the others link fem and analytic
+alone). The FE tests (tests/fem/) include no part of cases/: test_fem links fem and analytic only.
 Prints every violation and exits 1 when there is one; prints the longest chain either way.
 """
 import os
@@ -21,6 +25,9 @@ ORDER = ['report', 'scene', 'model', 'runners', 'tools', 'app']
 FEM_ORDER = ['base', 'modulus', 'grid', 'io', 'elasticity', 'linear_algebra', 'bodies', 'accuracy', 'contact',
              'adhesion', 'tangential']
 MAX_LEVELS = 6
+STUDIES = os.path.join('cases', 'tools', 'studies')
+# fem3d runs the Coulomb sphere's path of the scene library (runners/fe_coulomb_3d.h), shared with the Coulomb map.
+STUDIES_WITH_CASES = {os.path.join(STUDIES, 'fem3d.cc')}
 INCLUDE = re.compile(r'^\s*#\s*include\s*[<"]([^>"]+)[>"]', re.M)
 OFSTREAM = re.compile(r'\bofstream\b')
 
@@ -77,7 +84,7 @@ def main():
                     not family(stem(path), stem(target))):
                 problems.append('%s includes another runner\'s header %s' % (path, target))
     for path in graph:
-        if path.split(os.sep)[1] != 'report':
+        if path.split(os.sep)[1] != 'report' and not path.startswith(STUDIES + os.sep):
             with open(os.path.join(ROOT, path), encoding='utf-8', errors='replace') as f:
                 if OFSTREAM.search(f.read()):
                     problems.append(path + ' writes a file with std::ofstream: the files of a report are written by report/')
@@ -94,6 +101,19 @@ def main():
                     problems.append('%s includes %s, which is in no layer' % (path, name))
                 elif FEM_ORDER.index(layer) > FEM_ORDER.index(parts[1]):
                     problems.append('%s (%s) includes %s, a layer above it' % (path, parts[1], name))
+    for path, targets in graph.items():
+        for target in targets:
+            in_studies = target.startswith(STUDIES + os.sep)
+            if in_studies and not path.startswith(STUDIES + os.sep):
+                problems.append('%s includes %s: nothing outside %s includes a study' % (path, target, STUDIES))
+            if (path.startswith(STUDIES + os.sep) and not in_studies and path not in STUDIES_WITH_CASES):
+                problems.append('%s includes %s: a study links fem and analytic only (or is named in '
+                                'STUDIES_WITH_CASES, with its link in %s/CMakeLists.txt)' % (path, target, STUDIES))
+    for path in sources(os.path.join('tests', 'fem')):
+        for name in includes(path):
+            target = case_file(path, name)
+            if name.startswith('cases/') or (target and target.startswith('cases' + os.sep)):
+                problems.append('%s includes %s: the FE tests link fem and analytic only' % (path, name))
     for library, banned in (('fem', ('analytic/', 'cases/')), ('analytic', ('fem/', 'cases/'))):
         for path in sources(library):
             for name in includes(path):

@@ -102,7 +102,7 @@ namespace gradcontact::fem
     /// sign(r - c) |r - c|^{1-k} (k = 0: (r - c) ln|r - c|), whose FE value at c itself converges only like (cell
     /// width)^{1-k}, a few 1e-3 h_0 on the soft surface of k = 0.5 even with cells of 1e-10 c - a; the mean cancels
     /// the odd term, and what remains is the even part, O((delta / (c - a))^2), so the mean moves far less with the
-    /// window than the point value does between meshes (`build/tests/fem/cohesive_study` varies the window with
+    /// window than the point value does between meshes (`build/cases/tools/studies/cohesive_study` varies the window with
     /// gap_window=).
     double mean_gap(const Profile &profile, const double a, const Result &r)
     {

@@ -74,7 +74,7 @@ namespace gradcontact::fem
     // The threshold between the degree-3 and degree-4 settings: the force error that degree 3 on its mesh
     // reaches over -0.5 <= s <= 0.5 (reports/benchmarks/fe_work_precision.md of `./vv bench`).
     constexpr double degree_3_limit = 1e-6;
-    // Degree 2 on the same mesh (`build/tests/fem/fem_study p=2`, flat punch / paraboloid / cone / power law
+    // Degree 2 on the same mesh (`build/cases/tools/studies/fem_study p=2`, flat punch / paraboloid / cone / power law
     // n = 4) keeps the force well inside 2e-4 for -0.9 <= s <= 0.5 at a fraction of degree 3's time; beyond
     // s = 0.5 the u_z ~ z^{1-s} surface layer takes it out of that bound, so larger s, and the unchecked
     // s < -0.9, keep degree 3. Asked for 2e-4 or more, a case need not pay for 1e-6.

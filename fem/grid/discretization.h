@@ -78,7 +78,7 @@ namespace gradcontact::fem
   /// The cheapest settings found for a modulus E ~ z^s at the surface (s = surface_exponent: k for
   /// the power law, 0 for a layered or finite-surface modulus) and a wanted relative force error; their
   /// error and cost per degree are the work-precision table of `./vv bench`
-  /// (reports/benchmarks/fe_work_precision.md), one setting at a time `build/tests/fem/fem_study`.
+  /// (reports/benchmarks/fe_work_precision.md), one setting at a time `build/cases/tools/studies/fem_study`.
   /// force_tolerance >= 2e-4 and -0.9 <= s <= 0.5: degree 2 on the mesh of degree 3 (checked for the power
   /// law only, at nu = 0.3). force_tolerance >= 1e-6: degree 3, h_edge = 1e-5 a, rings g = 1.15. Below:
   /// degree 4, h_edge = 1e-6 a, h_far = 4 a, g = 1.3 (for k > 0 the error is limited by the u_z ~ z^{1-k}
@@ -96,7 +96,7 @@ namespace gradcontact::fem
   /// automatic (or already set) scale; returns whether it did. It pays for a contact edge at the mesh's
   /// contact radius: the map resolves the u_z ~ z^{1-k} layer with the cells the halvings would spend there,
   /// so the same error takes fewer DoFs, and near k = 1 the halvings lose the force where the map keeps it
-  /// (`build/tests/fem/fem_study load=punch k=0.5 map=auto` against `map=0`; test_surface_map.cc at k = 0.9).
+  /// (`build/cases/tools/studies/fem_study load=punch k=0.5 map=auto` against `map=0`; test_surface_map.cc at k = 0.9).
   /// Where other surface features need cells finer than the distance to that edge (a cohesive zone's end,
   /// a stick radius, an edge found by a unilateral solve) the map squeezes them and the halvings are more
   /// accurate, and at degree 2 a mesh keeps more accuracy with the halvings.

@@ -424,7 +424,7 @@ namespace gradcontact::fem
                                              const double truncation_tolerance)
   {
     // The truncation constant C of the flat-punch force error C (a/L)^{1+k}, fitted per k from two L
-    // (`build/tests/fem/fem_study load=punch L=...`); it falls as k grows, and its largest, at k = -0.5,
+    // (`build/cases/tools/studies/fem_study load=punch L=...`); it falls as k grows, and its largest, at k = -0.5,
     // is used for any s.
     constexpr double truncation_constant = 1.1;
     constexpr double min_far_field = 1e4, max_far_field = 1e16;

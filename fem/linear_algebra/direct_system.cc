@@ -371,7 +371,8 @@ namespace gradcontact::fem
 
   namespace
   {
-    /// Columns of unit loads per CHOLMOD solve: n x 128 doubles (90 MB at 90k DoFs) at a time.
+    /// Columns of unit loads per CHOLMOD solve: n x 128 doubles at a time, so that the block's memory grows with n
+    /// only, not with the number of columns asked for.
     constexpr unsigned int inverse_block_columns = 128;
   } // namespace
 

@@ -3,10 +3,10 @@
 // mpmath, independently of this code) within the row's conditioning plus 1e-13 relative, and the numerical
 // MDR engine within its conditioning plus 1e-10, over the stress grid. The conditioning (the
 // `conditioning` column: the relative change of the reference when each input moves by half an ulp) is what
-// the rounding of the inputs justifies; 1e-13 and 1e-10 are the methods' own rounding (the closed forms'
-// worst on well-conditioned rows is 4.3e-14; the numerical MDR locates critical states to ~1e-11 by central
-// differences, worst 7.2e-11). A loss beyond both fails. The four cancellation classes (A-D below) are held
-// to 1e-14 and 1e-12 on their `stress.*` rows. The closed forms answer every row; the numerical MDR every
+// the rounding of the inputs justifies; 1e-13 and 1e-10 are the methods' own rounding with a margin (the closed
+// forms' rounding on well-conditioned rows; the numerical MDR locates critical states by central differences,
+// whose step balances truncation against rounding). A loss beyond both fails. The four cancellation classes
+// (A-D below) are held to 1e-14 and 1e-12 on their `stress.*` rows. The closed forms answer every row; the numerical MDR every
 // row but two kinds, each an explicit refusal of exactly the rows its reason covers, counted and capped:
 // the rows without a numerical path (coefficients, prescribed pressures) and p(0) of tips with
 // n + k - 1 < (1 + k)/10 (random_requests.h: centre_out_of_reach).
@@ -192,7 +192,7 @@ namespace
 TEST_CASE("Cancellation A: p(0) of a tip with n + k -> 1 shall keep its digits (n + k - 1 formed without cancellation)",
           "[analytic]")
 {
-  // The reported example, as given: (n + k) - 1 with n = 1 cost 3.0e-9.
+  // The reported example, as given: (n + k) - 1 with n = 1 cancels all but the last digits of k.
   const json example = json::parse(R"({"case":"cone","quantity":"pressure","material":{"E0":49467813.677098826,
     "c0":1.6332952410350124e-06,"k":2.6108498551709687e-08,"nu":0.0},"geometry":{"tan_theta":0.08939324349288046},
     "a":50.55419540754115,"r":0.0})");

@@ -15,7 +15,7 @@
 // mean and the slowest row of those times, the median time of the first call of each request (the medium's
 // coefficients and the per-thread caches of kappa and the 2F1 steps included, a single clock reading),
 // and the worst relative error against the references and against the allowance of test_references.cc. The
-// requirement it measures: at most 1 us per evaluation for every family, 5 us for adhesive contact radii.
+// requirement it measures: at most 1 us per evaluation for every family, at most 5 us for adhesive contact radii.
 #include <analytic/adhesion.h>
 #include <analytic/batch.h>
 #include <analytic/reference_rows.h>

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # MPI strong and weak scaling of the distributed FE solver (fem/bodies/distributed_solver.h) through
-# tests/fem/fem_mpi: the flat punch at k = 0, degree 2, both linear solvers (MUMPS direct, CG + ML AMG).
+# cases/tools/studies/fem_mpi: the flat punch at k = 0, degree 2, both linear solvers (MUMPS direct, CG + ML AMG).
 #   strong: the same mesh (global refinements 1, 2, 3: 117k, 462k, 1.84M DoFs) on 1 and 2 processes;
 #   weak:   about the same DoFs per process: np = 1 on the default near field against np = 2 on the
 #           near field meshed at half the cell area (h_surface 0.125 a, h_far 1.5 a: 1.83x the DoFs);
@@ -16,7 +16,7 @@ build="${1:-$here/build}"
 out="${2:-$here/reports/benchmarks}"
 max_np="${3:-2}"
 levels="${4:-1 2 3}"
-exe="$build/tests/fem/fem_mpi"
+exe="$build/cases/tools/studies/fem_mpi"
 [ -x "$exe" ] || { echo "mpi_scaling: $exe not built (./vv build)" >&2; exit 2; }
 command -v mpirun >/dev/null || { echo "mpi_scaling: mpirun not found (Debian: openmpi-bin)" >&2; exit 2; }
 [[ "$max_np" =~ ^[1-9][0-9]*$ ]] || { echo "mpi_scaling: max-np = '$max_np' is not a positive integer" >&2; exit 2; }
@@ -46,8 +46,8 @@ for solver in direct amg; do
     for np in $nps; do run strong "$solver" "$np" "$level"; done
   done
   for level in $levels; do
-    # The weak pair at level 3 has 3.4M DoFs on np = 2: about 3 GB per process with AMG, but MUMPS's
-    # fill would need about 16 GB (measured 6.6 GB for 1.84M DoFs on one process): AMG only.
+    # The weak pair at level 3 has millions of DoFs on np = 2: AMG's memory grows like the DoFs, but MUMPS's
+    # fill grows faster and outgrows the memory of one node (peak_mb_max of the strong runs shows it): AMG only.
     [ "$level" -ge 3 ] && [ "$solver" = direct ] && continue
     run weak "$solver" 1 "$level"
     [ "$max_np" -ge 2 ] && run weak "$solver" 2 "$level" h_surface=0.125 h_far=1.5

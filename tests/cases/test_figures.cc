@@ -362,8 +362,8 @@ namespace
   }
 
   const std::vector<double> jkr_pressure_radii = {0, 0.75, 0.9};
-  // p(r) of the FE state is well within 1e-3 of max |y| (worst on the axis); 1 % of |p| at these radii is 1.9e-3
-  // to 6e-3 of max |y|, so 1e-3 passes the FE as it is and fails it 1 % off.
+  // p(r) of the FE state is well within 1e-3 of max |y| (worst on the axis); 1 % of |p| at these radii is above
+  // 1e-3 of max |y|, so 1e-3 passes the FE as it is and fails it 1 % off.
   constexpr double fe_jkr_tolerance = 1e-3;
   // The FE critical radius is far closer to JKR's than 1e-4: the abscissae r = x a_c,FE within 1e-4 a_c.
   constexpr double fe_jkr_radius_tolerance = 1e-4;

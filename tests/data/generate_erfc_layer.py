@@ -22,7 +22,7 @@ p^2 ~ 1 / (a - r) makes the layer energy diverge like ln(a / w) at the edge, cut
 B = O(1) from s ~ w and s ~ a (not computed here). J2 by mpmath tanh-sinh quadrature at 30 and 40 digits,
 printed to the agreement.
 
-Run: /usr/bin/python3 tests/data/generate_erfc_layer.py [m ...]   (nu = 0.3; under a second)
+Run: /usr/bin/python3 tests/data/generate_erfc_layer.py [m ...]   (nu = 0.3)
 """
 import sys
 

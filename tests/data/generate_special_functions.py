@@ -10,7 +10,7 @@ Inputs are exact doubles (written with repr, which round-trips). Output: special
 columns function,a,b,c,z,reference (reference with 34 significant digits). The function hyp2f1_minus_one is
 2F1(a, b; c; z) - 1, the difference formed at 40 and 50 digits.
 
-Run: /usr/bin/python3 tests/data/generate_special_functions.py  (about a minute)
+Run: /usr/bin/python3 tests/data/generate_special_functions.py
 """
 import mpmath as mp
 

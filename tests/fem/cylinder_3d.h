@@ -1,5 +1,6 @@
 // An independent 3D deal.II model of a graded cylinder under a tangential surface traction: the check of
-// the Fourier-mode-1 weak form (fem/tangential/fourier_mode1_solver.h). It exists only for that check.
+// the Fourier-mode-1 weak form (fem/tangential/fourier_mode1_solver.h). It exists for that check (test_mode1.cc), which
+// mode1_study load=cylinder runs at any refinement.
 //
 // Body: the cylinder x^2 + y^2 <= R^2, 0 <= z <= H (z into the material), E = E(z) of any ModulusField,
 // constant nu. Weak form: \int_\Omega [lambda div u div v + 2 mu eps(u) : eps(v)] dV = \int_{z=0} tau(r) v_x dA,
@@ -7,7 +8,7 @@
 // surface on a CylindricalManifold, the rest on a TransfiniteInterpolationManifold, refined globally (20 base cells: 5 in the disc, 4 slices).
 // Boundary conditions: u = 0 on the lateral surface r = R and on the bottom z = H; traction tau(r) e_x
 // on the top z = 0 (tau = 0 outside the loaded zone).
-// Solver: UMFPACK up to 60k DoFs, above CG with SSOR to a relative residual of 1e-12.
+// Solver: UMFPACK up to 5000 DoFs, above CG with SSOR to a relative residual of 1e-12.
 //
 // Output: u at (r, 0, 0) and at (0, r, 0) on the top. The mode-1 counterpart is U(r, 0) = u_x(r, 0, 0),
 // W(r, 0) = u_z(r, 0, 0), V(r, 0) = u_x(0, r, 0), and u_y = u_z = 0 at (0, r, 0).

@@ -143,7 +143,8 @@ TEST_CASE("A tolerance beyond the DoF budget shall be refused, naming the budget
   CHECK_THAT(r.limit, Contains("DoF budget") && Contains("max_dofs = 60000"));
 
   CHECK_THROWS_WITH(contract_settings(1.0, material, 0.0), Contains("tolerance") && Contains("[1e-9, 0.1]"));
-  // The factorisations kept: level 2's, predicted from the growth of levels 0 and 1, does not fit into 1 MB.
+  // The factorisations kept: level 2's, predicted from the growth of levels 0 and 1, does not fit into the budget
+  // (max_factor_bytes below).
   AccuracyBudget memory;
   memory.max_factor_bytes = 1e6;
   ContractSolver small(material, contract_settings(1.0, material, 1e-8), 1e-8, memory);

@@ -150,9 +150,9 @@ namespace
     return sxy / sxx;
   }
 
-  // Flat punch against (9.16) / Sneddon at degree 3 and the default edge grading: the power-law errors of
-  // test_fem.cc, fem/doc/accuracy-and-cost.md (7.9e-7 at k = 0, 2.1e-6 at k = 0.5, 4.0e-7 at k = -0.5) with a
-  // margin of about 2.5x.
+  // Flat punch against (9.16) / Sneddon at degree 3 and the default edge grading: the largest power-law error of
+  // test_fem.cc over k = -0.5, 0, 0.5 (fem/doc/accuracy-and-cost.md names what prints it) with a margin of about
+  // 2.5x.
   constexpr double flat_punch_tolerance = 5e-6;
 } // namespace
 
@@ -305,8 +305,8 @@ TEST_CASE("A shifted power law with z0 << a shall approach the power law (9.16) 
           "[fem]")
 {
   // Mesh: the power law's (the truncation of z^k), the surface layer halved down to z0 (cells z0/2
-  // thick): at z0 = 1e-6 a, layers 1e-12 .. 1e-6 a give the same force to 2e-10 (1e-12 a: 2e-9, the
-  // energy mismatch grows to 8e-7), 1e-5 a is 2.2e-6 off, no layer 1.2e-2 off.
+  // thick): at z0 = 1e-6 a, every layer from 1e-12 a to z0 gives the same force far inside the tolerance (the
+  // thinnest with a growing energy mismatch), while a layer thicker than z0, or none, misses the stiffer surface.
   const double   k  = 0.5;
   const double   z0 = GENERATE(1e-6 * a, 1e-8 * a);
   MeshParameters mesh          = recommended_mesh_parameters(a, k);

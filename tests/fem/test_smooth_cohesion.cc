@@ -92,8 +92,8 @@ TEST_CASE("Lennard-Jones FE: a rigid sphere's path is the Derjaguin integral, pu
 {
   // E0 = 1e10 against adhesive stresses of 0.1 (repulsion up to ~10 at the path's end): the surface moves by
   // ~1e-11 of eps, so the FE path must be the rigid one: F(d) = -2 pi R Phi(-d) exactly for the paraboloid, its
-  // minimum -2 pi dgamma R at d = -eps (DMT). (At E0 = 1e8 the worst state was 5.7e-6 off at k = 0.5, 8.4e-7 at
-  // k = 0: the elastic part, falling like 1 / E0.)
+  // minimum -2 pi dgamma R at d = -eps (DMT). (On a softer body the states are off the rigid path by the elastic
+  // part, which falls like 1 / E0.)
   const double          eps = 1e-2;
   const LennardJonesLaw law{dgamma, eps};
   for (const double k : {-0.5, 0.0, 0.5})

@@ -1,13 +1,14 @@
-// The command line of the FE study tools (fem_study, mode1_study, fem_mpi): key=value arguments, and
-// the mesh and discretisation keys they share, so that a setting means the same in every tool.
+// The command line of the FE studies (fem_study, mode1_study, cohesive_study, ladder_study, fem_mpi, fem3d):
+// key=value arguments, and the mesh and discretisation keys they share, so that a setting means the same in every
+// study.
 //
 //   mesh:            h_edge h_surface h_far g (ring growth) L (far field / a) layer (surface layer / a)
 //                    R1 (near field / a) halving_radius axis_refinements edge_refinements global
 //   discretisation:  p (degree) extra_q subdiv formulation=displacement|mixed|automatic
 //                    map=0|auto|alpha (surface map; L is not widened, fem::use_surface_map does) map_floor (tau / a, 0: h_edge)
 //   distributed:     solver=direct|amg tol threshold sweeps
-#ifndef GRADCONTACT_TESTS_FEM_STUDY_ARGUMENTS_H
-#define GRADCONTACT_TESTS_FEM_STUDY_ARGUMENTS_H
+#ifndef GRADCONTACT_CASES_TOOLS_STUDIES_STUDY_ARGUMENTS_H
+#define GRADCONTACT_CASES_TOOLS_STUDIES_STUDY_ARGUMENTS_H
 
 #include <fem/grid/discretization.h>
 #include <fem/linear_algebra/distributed_linear_solver.h>
@@ -21,7 +22,7 @@
 #include <stdexcept>
 #include <string>
 
-namespace gradcontact::fem::testing
+namespace gradcontact::studies
 {
   class StudyArguments
   {
@@ -89,7 +90,7 @@ namespace gradcontact::fem::testing
 
     /// Overrides the entries of the 3D mesh (fem/grid/mesh_3d.h) whose keys are given: R0, sectors, L, g3, h_edge, q,
     /// inner, layer, edge, grading, contact_ref, global3.
-    void apply(HalfSpaceMesh3DParameters &mesh) const
+    void apply(fem::HalfSpaceMesh3DParameters &mesh) const
     {
       mesh.core_radius             = num("R0", mesh.core_radius);
       mesh.sectors                 = count("sectors", mesh.sectors);
@@ -106,7 +107,7 @@ namespace gradcontact::fem::testing
     }
 
     /// Overrides the entries of `mesh` whose keys are given (header).
-    void apply(MeshParameters &mesh) const
+    void apply(fem::MeshParameters &mesh) const
     {
       mesh.h_edge                  = num("h_edge", mesh.h_edge);
       mesh.h_surface               = num("h_surface", mesh.h_surface);
@@ -123,7 +124,7 @@ namespace gradcontact::fem::testing
     }
 
     /// Overrides the entries of `discretization` whose keys are given (header).
-    void apply(DiscretizationParameters &discretization) const
+    void apply(fem::DiscretizationParameters &discretization) const
     {
       discretization.degree                     = count("p", discretization.degree);
       discretization.extra_quadrature_points    = count("extra_q", discretization.extra_quadrature_points);
@@ -137,25 +138,25 @@ namespace gradcontact::fem::testing
       discretization.surface_map.floor          = num("map_floor", discretization.surface_map.floor);
       const std::string far_field               = text("far", "clamped");
       if (far_field == "condensed")
-        discretization.far_field = FarField::condensed;
+        discretization.far_field = fem::FarField::condensed;
       else if (far_field != "clamped")
         throw std::invalid_argument(tool + ": far = '" + far_field + "' outside {clamped, condensed}");
       const std::string formulation             = text("formulation", "displacement");
       if (formulation == "mixed")
-        discretization.formulation = Formulation::mixed;
+        discretization.formulation = fem::Formulation::mixed;
       else if (formulation == "automatic")
-        discretization.formulation = Formulation::automatic;
+        discretization.formulation = fem::Formulation::automatic;
       else if (formulation != "displacement")
         throw std::invalid_argument(tool + ": formulation = '" + formulation +
                                     "' outside {displacement, mixed, automatic}");
     }
 
     /// solver=direct|amg tol threshold sweeps into `parameters` (fem_mpi, fem3d).
-    void apply(DistributedSolverParameters &parameters) const
+    void apply(fem::DistributedSolverParameters &parameters) const
     {
       const std::string solver = text("solver", "direct");
       if (solver == "amg")
-        parameters.method = DistributedSolverParameters::Method::amg_cg;
+        parameters.method = fem::DistributedSolverParameters::Method::amg_cg;
       else if (solver != "direct")
         throw std::invalid_argument(tool + ": solver = " + solver + " outside {direct, amg}");
       parameters.relative_tolerance    = num("tol", parameters.relative_tolerance);
@@ -168,6 +169,6 @@ namespace gradcontact::fem::testing
     std::map<std::string, std::string> values;
     mutable std::set<std::string>      queried; ///< every key asked for (has, text, num, count, apply)
   };
-} // namespace gradcontact::fem::testing
+} // namespace gradcontact::studies
 
 #endif
