@@ -742,7 +742,7 @@ namespace gradcontact::cases
              "the map), the force from the nodal reactions, the paraboloid by superposing a unit punch and "
              "the profile solution with the edge-force-zero condition (one factorisation, two solves), "
              "UMFPACK. Its errors are measured against the same closed forms as ours, by this program.\n\n"
-             "Times: wall time of the whole FreeFem++ process (including its start, about 0.02 s), "
+             "Times: wall time of the whole FreeFem++ process (including its start-up, which the rows of the smallest meshes show), "
              "minimum over the repetitions; CPU is the child's CPU time. deal.II: wall time of solver "
              "construction + run (warm mesh cache), as in `fe_work_precision.md`.\n\n";
     }
