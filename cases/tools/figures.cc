@@ -826,7 +826,7 @@ namespace gradcontact::cases
     // numbers 9.x), then the validation figures, which draw the maps of the models that drop an idealisation.
     std::string index_md(const fs::path &folder)
     {
-      std::vector<FigureSummary> chapter, validation;
+      std::vector<FigureSummary> chapter, beyond, validation;
       for (const auto &e : fs::directory_iterator(folder))
         {
           const std::string file = e.path().filename().string();
@@ -844,10 +844,11 @@ namespace gradcontact::cases
               throw std::runtime_error("figures: " + e.path().string() + " is not a figure summary (" + error.what() +
                                        "); delete it and draw the figure again");
             }
-          (f.figure.rfind("9.", 0) == 0 ? chapter : validation).push_back(f);
+          (f.figure.rfind("9.", 0) == 0 ? chapter : f.figure.rfind("S.", 0) == 0 ? beyond : validation).push_back(f);
         }
       const auto by_name = [](const FigureSummary &a, const FigureSummary &b) { return a.name < b.name; };
       std::sort(chapter.begin(), chapter.end(), by_name);
+      std::sort(beyond.begin(), beyond.end(), by_name);
       std::sort(validation.begin(), validation.end(), by_name);
       const auto link = [](const FigureSummary &f) {
         return "[" + f.name + "](" + f.name + ".svg) | " + f.caption + " | " + std::to_string(f.points) + " | " +
@@ -868,6 +869,14 @@ namespace gradcontact::cases
       for (std::size_t i = 0; i < missing.size(); ++i)
         md << (i ? ", " : "") << missing[i];
       md << (missing.empty() ? "none.\n" : ".\n");
+      if (!beyond.empty())
+        {
+          md << "\n## Beyond the chapter\n\nQuantities the chapter does not give (figure numbers S.x: the stresses below "
+                "the contact, analytic/subsurface.h), drawn and checked like the chapter's.\n\n| figure | plot | caption "
+                "| checked points | worst error | failed | table |\n|---|---|---|---|---|---|---|\n";
+          for (const FigureSummary &f : beyond)
+            md << "| " << f.figure << " | " << link(f) << f.failed << " | [" << f.name << ".md](" << f.name << ".md) |\n";
+        }
       md << "\n## Validation figures\n\nThe maps of the FE models that drop one of the chapter's idealisations "
             "(`gradcontact figures cases/figures/validation`, reusing the map reports of `gradcontact run "
             "cases/validation`): each point set is either checked against a closed form that is exact there (a sharp "

@@ -43,7 +43,7 @@
 // of a curve, e.g. the turning point of a loop, may carry an FE error in its abscissa).
 // Output: reports/figures/<name>.png/.svg with the data and the gnuplot script, <name>.csv/.md with one row
 // per checked point, <name>.summary.json, and reports/figures/index.md listing every figure drawn into the
-// folder so far (the chapter's, numbered 9.x, then the validation figures); each written under a
+// folder so far (the chapter's, numbered 9.x, those beyond it, S.x, then the validation figures); each written under a
 // temporary name and renamed when complete. FE point sets are cached in reports/figures/cache/ by the scene's
 // resolved parameters, the point set's request and the program's build, so an unchanged figure redraws without the
 // FE.
