@@ -1,7 +1,9 @@
 #include "model/fe_model.h"
 
 #include <algorithm>
+#include <cmath>
 #include <filesystem>
+#include <limits>
 #include <map>
 #include <memory>
 #include <stdexcept>
@@ -75,6 +77,25 @@ namespace gradcontact::cases
     return fem::Formulation::displacement;
   }
 
+  std::optional<fem::Profile> fe_indenter_profile(const LoadParameters &l)
+  {
+    switch (l.type)
+      {
+        case Type::paraboloid:
+          return fem::Profile::paraboloid(l.R);
+        case Type::cone:
+          return fem::Profile::cone(l.tan_theta);
+        case Type::power_law:
+          return fem::Profile::power_law(l.n, l.A);
+        case Type::concave_punch:
+          return fem::Profile::concave_paraboloid(l.h0);
+        case Type::flat_punch:
+        case Type::constant_pressure:
+          break;
+      }
+    return std::nullopt;
+  }
+
   fem::LoadCase fe_load(const Scene &s)
   {
     const LoadParameters &l = s.load;
@@ -88,20 +109,16 @@ namespace gradcontact::cases
         case Type::concave_punch:
           lc.type = fem::LoadType::concave_punch;
           lc.depth = l.depth;
-          lc.profile = fem::Profile::concave_paraboloid(l.h0);
+          lc.profile = *fe_indenter_profile(l);
           return lc;
         case Type::constant_pressure:
           lc.type = fem::LoadType::constant_pressure;
           lc.pressure = l.p0;
           return lc;
         case Type::paraboloid:
-          lc.profile = fem::Profile::paraboloid(l.R);
-          break;
         case Type::cone:
-          lc.profile = fem::Profile::cone(l.tan_theta);
-          break;
         case Type::power_law:
-          lc.profile = fem::Profile::power_law(l.n, l.A);
+          lc.profile = *fe_indenter_profile(l);
           break;
       }
     lc.type = l.control == Control::contact_radius ? fem::LoadType::indenter
@@ -158,6 +175,11 @@ namespace gradcontact::cases
     return fem::use_condensed_far_field(settings, material, L);
   }
 
+  fem::Profile candidate_indenter(const mdr::Profile &profile)
+  {
+    return fem::Profile::custom(profile.f, 2.);
+  }
+
   FeModel candidate_fe_model(const Scene &s, const fem::Profile &profile)
   {
     FeModel model = fe_model(s, finest_refinement(s));
@@ -165,6 +187,22 @@ namespace gradcontact::cases
     model.load.type = fem::LoadType::indenter;
     model.load.profile = profile;
     return model;
+  }
+
+  fem::Result solve_candidate(const Scene &s, const mdr::Profile &profile)
+  {
+    FeModel model = candidate_fe_model(s, candidate_indenter(profile));
+    condense_far_field(s, model.material, model.settings);
+    fem::AxisymmetricSolver solver(model.material, model.settings.mesh, model.settings.discretization);
+    return solver.run(model.load, output_request(s));
+  }
+
+  double largest_magnitude(const std::vector<fem::Sample> &samples)
+  {
+    double largest = 0.;
+    for (const fem::Sample &x : samples)
+      largest = std::max(largest, std::abs(x.value));
+    return largest;
   }
 
   /// Outputs/pressure radii and displacement radii (in units of Load/a) as FE sample radii.
@@ -193,5 +231,24 @@ namespace gradcontact::cases
     fem::Remeshing remeshing;
     remeshing.indenter_body = model.indenter_body;
     return fem::solve_remeshed(model.material, model.settings, load, s.load.a, out, remeshing);
+  }
+
+  fem::Indenter candidate_unilateral_indenter(const Scene &s, const std::function<double(double)> &profile)
+  {
+    const CandidateParameters &c = s.candidate;
+    fem::Indenter              indenter;
+    if (!c.profile_table.empty())
+      {
+        // A relative path is taken from the scene's folder.
+        std::filesystem::path table(c.profile_table);
+        if (table.is_relative() && !s.file.empty())
+          table = std::filesystem::path(s.file).parent_path() / table;
+        indenter = fem::Indenter::from_csv(table.string());
+      }
+    else
+      indenter = fem::Indenter{profile, std::numeric_limits<double>::infinity(), "candidate profile"};
+    if (c.indenter_radius > 0.)
+      indenter.extent = std::min(indenter.extent, c.indenter_radius);
+    return indenter;
   }
 } // namespace gradcontact::cases

@@ -19,6 +19,8 @@
 #include <fem/modulus/modulus.h>
 #include <fem/contact/unilateral_contact.h>
 
+#include <analytic/mdr.h>
+
 #include <optional>
 
 namespace gradcontact::cases
@@ -33,6 +35,10 @@ namespace gradcontact::cases
 
   /// Discretization/formulation as the FE enum.
   fem::Formulation fe_formulation(const Scene &scene);
+
+  /// Load/type as a rigid indenter (the adhesive models take it as their profile): paraboloid, cone, power law,
+  /// concave punch; none for the flat punch and the constant pressure.
+  std::optional<fem::Profile> fe_indenter_profile(const LoadParameters &l);
 
   /// Load/type and Load/control as an FE load: flat punch (depth d), concave punch (d0), constant
   /// pressure (p0), or a curved indenter under contact-radius, depth or force control.
@@ -64,9 +70,20 @@ namespace gradcontact::cases
   /// Outputs/displacement radii); returns whether it applied.
   bool condense_far_field(const Scene &scene, const fem::Material &material, fem::Settings &settings);
 
+  /// A candidate's profile f(r) as a rigid FE indenter; its growth exponent 2 only seeds the depth and force
+  /// searches of a depth- or force-controlled indenter.
+  fem::Profile candidate_indenter(const mdr::Profile &profile);
+
   /// The FE model of a candidate scene (Candidate/profile): `profile`, the user's f(r), as a rigid indenter
   /// under contact-radius control at Load/a, at the finest refinement level.
   FeModel candidate_fe_model(const Scene &scene, const fem::Profile &profile);
+
+  /// The FE solve of candidate_fe_model for the user's f(r) (candidate_indenter), with the condensed far field of
+  /// Discretization/far field condition, sampled at output_request(scene).
+  fem::Result solve_candidate(const Scene &scene, const mdr::Profile &profile);
+
+  /// The largest |value| of FE samples (the scale of p(r)'s relative errors); 0 for none.
+  double largest_magnitude(const std::vector<fem::Sample> &samples);
 
   /// Outputs/pressure radii and displacement radii (in units of Load/a) as FE sample radii.
   fem::OutputRequest output_request(const Scene &s);
@@ -75,6 +92,11 @@ namespace gradcontact::cases
   /// scene's elastic indenter, meshes graded from Load/a toward the edge found.
   fem::UnilateralResult solve_unilateral(const Scene &s, const FeModel &model, fem::Indenter indenter, bool by_force,
                                          const fem::OutputRequest &out);
+
+  /// The rigid indenter of a unilateral candidate scene (Load/contact = unilateral): Candidate/profile table (a CSV
+  /// file of r, f rows; a relative path is taken from the scene's folder) or, without one, `profile` (the user's
+  /// f(r)), bounded by Candidate/indenter radius.
+  fem::Indenter candidate_unilateral_indenter(const Scene &s, const std::function<double(double)> &profile);
 } // namespace gradcontact::cases
 
 #endif

@@ -2,13 +2,11 @@
 
 #include "runners/candidate_coulomb.h"
 #include "model/fe_model.h"
+#include "model/fe_adhesive.h"
+#include "model/mode1_model.h"
 #include "model/scene_start.h"
 #include "report/table.h"
 
-#include <fem/adhesion/adhesion.h>
-#include <fem/adhesion/cohesive_zone.h>
-#include <fem/tangential/fourier_mode1_solver.h>
-#include <fem/adhesion/smooth_cohesion.h>
 
 #include <analytic/material.h>
 #include <analytic/mdr_contact.h>
@@ -331,6 +329,12 @@ namespace gradcontact::cases
         result.description += (result.description.empty() ? "" : "; ") + note;
     }
 
+    /// Candidate/critical control as the analytic control.
+    Control control_of(const bool force_control)
+    {
+      return force_control ? Control::force : Control::displacement;
+    }
+
     /// An adhesive FE state as the family's rows compare it, and what it cost.
     struct FeAdhesiveState
     {
@@ -403,26 +407,10 @@ namespace gradcontact::cases
         }
     }
 
-    /// The scene's FE settings at contact radius a (the adhesive searches solve at many), at its finest refinement.
-    fem::AdhesiveContact::SettingsFunction settings_at(const Scene &s, const fem::Material &material)
-    {
-      const unsigned int level = finest_refinement(s);
-      return [&s, material, level](const double a) {
-        fem::Settings st = fe_settings(s, material, a, level);
-        condense_far_field(s, material, st);
-        return st;
-      };
-    }
-
-    fem::AdhesionControl fe_control(const bool force_control)
-    {
-      return force_control ? fem::AdhesionControl::force : fem::AdhesionControl::displacement;
-    }
-
     /// The adhesive pressure candidate against the JKR FE's own p(r) at Load/a (p_n - delta p_1 with the FE's
     /// pull-back delta(a), 9.53 for the paraboloid) at Outputs/pressure radii, relative to the largest |p| among them
     /// (the pressure is tensile and singular at the edge); Tolerances/pressure.
-    void adhesive_pressure_fe_rows(const Scene &s, fem::AdhesiveContact &model,
+    void adhesive_pressure_fe_rows(const Scene &s, AdhesiveModel &model,
                                    const std::map<std::string, double> &constants, std::vector<Row> &rows,
                                    FeValues &fe)
     {
@@ -437,11 +425,9 @@ namespace gradcontact::cases
           std::vector<double> r;
           for (const double xi : x)
             r.push_back(xi * a);
-          const std::vector<fem::Sample> p = model.profiles(a, s.adhesion.work_of_adhesion, r, {}).pressure;
+          const std::vector<fem::Sample> p = model.surface(a, r, {}).pressure;
           const double seconds = elapsed(start);
-          double       largest = 0.;
-          for (const fem::Sample &sample : p)
-            largest = std::max(largest, std::abs(sample.value));
+          const double largest = largest_magnitude(p);
           const auto g = parse_candidate_expression<2>("adhesive pressure", "r,a", c.adhesive_pressure, constants);
           for (std::size_t i = 0; i < p.size(); ++i)
             {
@@ -470,17 +456,15 @@ namespace gradcontact::cases
     void adhesive_fe_rows(const Scene &s, const mdr::Profile &profile, const std::vector<double> &radii,
                           const std::map<std::string, double> &constants, std::vector<Row> &rows, FeValues &fe)
     {
-      const fem::Material  material = fe_material(s);
-      const double         dgamma   = s.adhesion.work_of_adhesion;
-      fem::AdhesiveContact model(material, fem::Profile::custom(profile.f, 2.), settings_at(s, material));
-      const auto state = [&](const double a) {
-        const auto                start = std::chrono::steady_clock::now();
-        const fem::AdhesiveState st    = model.adhesive_state(a, dgamma);
+      AdhesiveModel model(s, candidate_indenter(profile));
+      const auto    state = [&](const double a) {
+        const auto          start = std::chrono::steady_clock::now();
+        const AdhesivePoint st    = model.state(a);
         return FeAdhesiveState{st.radius, st.depth, st.force, 0, elapsed(start)};
       };
       const auto critical = [&](const bool force_control) {
-        const auto                   start = std::chrono::steady_clock::now();
-        const fem::AdhesiveState st = model.critical_state(dgamma, fe_control(force_control), s.load.a).state;
+        const auto          start = std::chrono::steady_clock::now();
+        const AdhesivePoint st    = model.critical_state(control_of(force_control), s.load.a).state;
         return FeAdhesiveState{st.radius, st.depth, st.force, 0, elapsed(start)};
       };
       adhesive_model_rows(s, "FE", "", state, critical, radii, constants, rows, &fe);
@@ -494,43 +478,16 @@ namespace gradcontact::cases
     void dugdale_fe_rows(const Scene &s, const mdr::Profile &profile, const std::vector<double> &radii,
                          const std::map<std::string, double> &constants, std::vector<Row> &rows)
     {
-      const fem::Material  material = fe_material(s);
-      fem::CohesiveContact model(material, fem::Profile::custom(profile.f, 2.),
-                                 fem::DugdaleLaw{s.adhesion.cohesive_strength, s.adhesion.work_of_adhesion},
-                                 settings_at(s, material));
-      const auto state = [&](const double a) {
+      DugdaleModel model(s, candidate_indenter(profile));
+      const auto   state = [&](const double a) {
         const fem::CohesiveState &st = model.state(a);
         return FeAdhesiveState{st.radius, st.depth, st.force, st.n_dofs, st.seconds};
       };
       const auto critical = [&](const bool force_control) {
-        const fem::CohesiveCriticalState c = model.critical_state(fe_control(force_control), s.load.a);
+        const fem::CohesiveCriticalState c = model.critical_state(control_of(force_control), s.load.a);
         return FeAdhesiveState{c.state.radius, c.state.depth, c.state.force, c.max_dofs, c.seconds};
       };
       adhesive_model_rows(s, "FE (Dugdale)", " (JKR idealisation)", state, critical, radii, constants, rows, nullptr);
-    }
-
-    /// The Lennard-Jones path's state at contact radius a: linear between the two states of the contact branch
-    /// whose peak radii (the adhesive zone's inner end, JKR's a as the Tabor parameter grows) bracket a, the last such
-    /// pair along the path (the branch toward the pressed contact, past the jumps of snap-in); its depth shifted by
-    /// the law's equilibrium separation (the approach beyond the touching of the surfaces, JKR's depth).
-    FeAdhesiveState lennard_jones_state(const fem::SmoothCohesionPath &path, const double separation, const double a)
-    {
-      const std::vector<fem::SmoothCohesionState> &st = path.states;
-      for (std::size_t i = st.size(); i-- > 1;)
-        {
-          const double r0 = st[i - 1].peak_radius, r1 = st[i].peak_radius;
-          if (r0 > 0. && r1 > r0 && r0 <= a && a <= r1)
-            {
-              const double t = (a - r0) / (r1 - r0);
-              return FeAdhesiveState{a, (1 - t) * st[i - 1].depth + t * st[i].depth + separation,
-                                     (1 - t) * st[i - 1].force + t * st[i].force, path.n_dofs, path.seconds};
-            }
-        }
-      double largest = 0.;
-      for (const fem::SmoothCohesionState &x : st)
-        largest = std::max(largest, x.peak_radius);
-      throw std::runtime_error("the Lennard-Jones path does not reach the contact radius a = " + format(a) +
-                               " on its contact branch (its largest peak radius is " + format(largest) + ")");
     }
 
     /// Adhesion/law = Lennard-Jones: the adhesive family against the smooth Lennard-Jones FE of fem/adhesion/smooth_cohesion.h
@@ -541,58 +498,22 @@ namespace gradcontact::cases
                                const std::vector<double> &radii, const std::map<std::string, double> &constants,
                                std::vector<Row> &rows)
     {
-      const double               dgamma   = s.adhesion.work_of_adhesion;
-      const fem::Material        material = fe_material(s);
-      const fem::LennardJonesLaw law = fem::LennardJonesLaw::with_max_stress(s.adhesion.cohesive_strength, dgamma);
-      fem::SmoothCohesionParameters parameters;
-      parameters.follow_edge = true;
-      parameters.max_steps   = 20000;
+      const double dgamma = s.adhesion.work_of_adhesion;
       // past the largest radius of the range: its JKR force, and a margin for the finite range's lower force
-      parameters.stop_force =
-        std::max(0., 1.1 * mdr::force(mdr::indentation(profile, m, radii.back(), dgamma), m));
-      const double a_c = mdr::critical_state(profile, m, dgamma, Control::force).radius;
-      const std::string method = "FE (Lennard-Jones)";
-      // The adhesive zone narrows as the cohesive strength grows; a path whose F(d) folds at the nodes (the edge's
-      // cells too coarse for the zone) or that does not converge is traced again with the edge's cells halved, up
-      // to fem::max_edge_refinement.
-      fem::SmoothCohesionPath path;
-      std::string             why;
-      for (double edge_refinement = 1; edge_refinement <= fem::max_edge_refinement; edge_refinement *= 2)
+      const double stop_force = std::max(0., 1.1 * mdr::force(mdr::indentation(profile, m, radii.back(), dgamma), m));
+      const double a_c        = mdr::critical_state(profile, m, dgamma, Control::force).radius;
+      const std::string       method = "FE (Lennard-Jones)";
+      const LennardJonesTrace trace  = trace_lennard_jones(s, candidate_indenter(profile), a_c, stop_force);
+      if (!trace.failure.empty())
         {
-          fem::SmoothCohesionParameters refined = parameters;
-          refined.edge_band = parameters.edge_band / std::sqrt(edge_refinement);
-          try
-            {
-              fem::SmoothCohesiveContact model(material, fem::Profile::custom(profile.f, 2.),
-                                               fem::smooth_cohesion_settings(material, a_c,
-                                                                             std::pow(2.0, finest_refinement(s)),
-                                                                             edge_refinement),
-                                               refined);
-              path = model.trace(law);
-              why  = path.converged ? "" : path.message;
-            }
-          catch (const std::exception &e)
-            {
-              why = concise(e);
-            }
-          if (why.empty())
-            break;
-          why += " (edge refinement " + format(edge_refinement) + ")";
-        }
-      if (!why.empty())
-        {
-          rows.push_back(failed("Lennard-Jones path", "candidate", method, why));
+          rows.push_back(failed("Lennard-Jones path", "candidate", method, trace.failure));
           return;
         }
-      const auto state    = [&](const double a) { return lennard_jones_state(path, law.separation, a); };
-      const auto critical = [&](const bool force_control) {
-        if (force_control ? !path.has_force_minimum : !path.has_depth_jump)
-          throw std::runtime_error(force_control ? "the Lennard-Jones path has no minimum of F before the contact" :
-                                                   "the Lennard-Jones path has no jump under displacement control "
-                                                   "(d grows monotonically: a small Tabor parameter)");
-        const fem::SmoothCohesionState &c = force_control ? path.force_pull_off : path.depth_pull_off;
-        return FeAdhesiveState{c.peak_radius, c.depth + law.separation, c.force, path.n_dofs, path.seconds};
+      const auto of_trace = [&trace](const AdhesivePoint &p) {
+        return FeAdhesiveState{p.radius, p.depth, p.force, trace.n_dofs(), trace.seconds()};
       };
+      const auto state    = [&](const double a) { return of_trace(trace.state(a)); };
+      const auto critical = [&](const bool force_control) { return of_trace(trace.pull_off(control_of(force_control))); };
       adhesive_model_rows(s, method, " (JKR idealisation)", state, critical, radii, constants, rows, nullptr);
     }
 
@@ -602,8 +523,8 @@ namespace gradcontact::cases
     class LoadingStates
     {
     public:
-      LoadingStates(const mdr::PartialSlip &slip, fem::FourierMode1Solver &solver, const double a)
-        : slip(slip), solver(solver), a(a)
+      LoadingStates(const mdr::PartialSlip &slip, Mode1Model &model, const double a)
+        : slip(slip), model(model), a(a)
       {}
       /// u0 (the mean u_x over the stick zone) and the DoFs of the loading to stick radius rho.
       const fem::TangentialResult &at(const double rho)
@@ -614,9 +535,8 @@ namespace gradcontact::cases
             const auto start = std::chrono::steady_clock::now();
             const mdr::PartialSlip &theory = slip;
             found = states
-                      .emplace(rho, solver.run(fem::TangentialLoad::profile(
-                                      [&theory, rho](const double r) { return theory.traction(rho, r); }, a, rho,
-                                      {rho})))
+                      .emplace(rho, model.traction([&theory, rho](const double r) { return theory.traction(rho, r); },
+                                                   a, rho, {rho}))
                       .first;
             spent += elapsed(start);
           }
@@ -626,7 +546,7 @@ namespace gradcontact::cases
 
     private:
       const mdr::PartialSlip                   &slip;
-      fem::FourierMode1Solver                  &solver;
+      Mode1Model                               &model;
       const double                              a;
       std::map<double, fem::TangentialResult>   states;
       double                                    spent = 0;
@@ -775,16 +695,10 @@ namespace gradcontact::cases
       };
       try
         {
-          const fem::Material material = fe_material(s);
-          fem::Settings       settings = fe_settings(s, material, a, finest_refinement(s));
-          condense_far_field(s, material, settings);
-          fem::SurfaceRefinement refinement;
-          refinement.radii  = stick;
-          refinement.levels = stick.empty() ? 0 : s.tangential.stick_levels;
-          fem::FourierMode1Solver solver(material, settings.mesh, settings.discretization, refinement);
+          Mode1Model model(s, stick);
           if (!c.tangential_stiffness.empty())
             {
-              const fem::TangentialResult r = solver.run(fem::TangentialLoad::flat_punch(1e-3 * a));
+              const fem::TangentialResult r = model.flat_punch(1e-3 * a);
               const double value = parse_candidate_expression<1>("tangential stiffness", "a", c.tangential_stiffness,
                                                                  constants)->value(dealii::Point<1>(a));
               row("tangential stiffness", "a [m] = " + format(a) + ", relative", value, r.stiffness,
@@ -794,8 +708,8 @@ namespace gradcontact::cases
           for (const double cc : of_c ? stick : std::vector<double>{})
             {
               // tau(r) = mu [p(r; a) - p(r; c)] as PartialSlip::traction forms it: one integral over [c, a] (9.12).
-              const fem::TangentialResult r = solver.run(fem::TangentialLoad::profile(
-                [slip, cc](const double rr) { return slip->traction(cc, rr); }, a, cc, {cc}));
+              const fem::TangentialResult r =
+                model.traction([slip, cc](const double rr) { return slip->traction(cc, rr); }, a, cc, {cc});
               const std::string metric = "c / a = " + format(cc / a) + ", relative";
               const dealii::Point<2> at(cc, a);
               if (!c.tangential_force.empty())
@@ -812,7 +726,7 @@ namespace gradcontact::cases
             }
           if (loop)
             {
-              LoadingStates  loading(*slip, solver, a);
+              LoadingStates  loading(*slip, model, a);
               const LoopRule rule(s, *slip);
               loop_fe_rows(s, *slip, rule, loading, constants, rows, fe);
               if (!c.dissipated_energy.empty())
@@ -1138,29 +1052,18 @@ namespace gradcontact::cases
       const CandidateParameters &c = s.candidate;
       const auto t0 = std::chrono::steady_clock::now();
       const FeModel model = fe_model(s, finest_refinement(s));
-      fem::Indenter indenter;
-      if (!c.profile_table.empty())
-        {
-          // A relative path is taken from the scene's folder.
-          fs::path table(c.profile_table);
-          if (table.is_relative() && !s.file.empty())
-            table = fs::path(s.file).parent_path() / table;
-          indenter = fem::Indenter::from_csv(table.string());
-        }
-      else
+      std::function<double(double)> profile; // the expression's, when there is no Candidate/profile table
+      if (c.profile_table.empty())
         {
           const auto f = parse_candidate_expression<1>("profile", "r", c.profile, constants);
-          indenter = fem::Indenter{[f](const double r) { return f->value(dealii::Point<1>(r)); },
-                                   std::numeric_limits<double>::infinity(), "candidate profile"};
+          profile      = [f](const double r) { return f->value(dealii::Point<1>(r)); };
         }
-      if (c.indenter_radius > 0.)
-        indenter.extent = std::min(indenter.extent, c.indenter_radius);
-      const bool by_force = s.load.control == Control::force;
-      const fem::OutputRequest out = output_request(s);
+      fem::Indenter         indenter = candidate_unilateral_indenter(s, profile);
+      const bool            by_force = s.load.control == Control::force;
       fem::UnilateralResult fe;
       try
         {
-          fe = solve_unilateral(s, model, std::move(indenter), by_force, out);
+          fe = solve_unilateral(s, model, std::move(indenter), by_force, output_request(s));
         }
       catch (const std::exception &e)
         {
@@ -1201,9 +1104,7 @@ namespace gradcontact::cases
       // outer edge.
       row("inner radius", "relative to the outer radius", c.inner_radius, inner, s.tolerances.contact_radius,
           std::nullopt, fe.outer_edge);
-      double p_max = 0.;
-      for (const fem::Sample &p : fe.pressure)
-        p_max = std::max(p_max, std::abs(p.value));
+      const double p_max = largest_magnitude(fe.pressure);
       for (const fem::Sample &p : fe.pressure)
         row("pressure", "r/a = " + format(p.r / a) + ", rel. to max |p|", c.pressure, p.value, s.tolerances.pressure,
             p.r, p_max);
@@ -1227,10 +1128,7 @@ namespace gradcontact::cases
       const double a = s.load.a;
       const auto at = [](const CandidateFunction<1> &g, const double r) { return g.value(dealii::Point<1>(r)); };
       const auto t0 = std::chrono::steady_clock::now();
-      FeModel model = candidate_fe_model(s, fem::Profile::custom(profile.f, 2.));
-      condense_far_field(s, model.material, model.settings);
-      fem::AxisymmetricSolver solver(model.material, model.settings.mesh, model.settings.discretization);
-      const fem::Result fe = solver.run(model.load, output_request(s));
+      const fem::Result fe = solve_candidate(s, profile);
       const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
       const auto fe_row = [&](const std::string &quantity, const std::string &metric, const std::string &expression,
                               const double fe_value, const double tolerance, const std::optional<double> r) {

@@ -2,6 +2,7 @@
 
 #include "runners/candidate.h"
 #include "model/coulomb_body.h"
+#include "model/fe_model.h"
 #include "model/mpi_session.h"
 
 #include <fem/tangential/coulomb_contact_3d.h>
@@ -66,7 +67,7 @@ namespace gradcontact::cases
       dofs                               = static_cast<unsigned int>(surface.dofs);
       fem::CoulombParameters     friction;
       friction.mu = body.mu;
-      fem::CoulombContact3D contact(surface.compliance, fem::Profile::custom(profile.f, 2.), friction);
+      fem::CoulombContact3D contact(surface.compliance, candidate_indenter(profile), friction);
       const unsigned int    m = s.tangential.load_steps;
       std::vector<Step>     path;
       const auto step = [&](const std::string &phase, const Branch branch, const double d, const double delta) {

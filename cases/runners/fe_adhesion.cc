@@ -3,18 +3,13 @@
 #include "model/fe_contract.h"
 
 #include "report/convergence_report.h"
-#include "model/fe_model.h"
+#include "model/fe_adhesive.h"
 
 #include "model/analytic_reference.h"
 #include "model/scene_start.h"
 
 #include <analytic/batch.h>
 #include <analytic/maugis_dugdale.h>
-#include <fem/accuracy/accuracy.h>
-#include <fem/adhesion/adhesion.h>
-#include <fem/adhesion/cohesive_zone.h>
-#include <fem/bodies/axisymmetric_solver.h>
-
 
 #include <algorithm>
 #include <chrono>
@@ -44,9 +39,9 @@ namespace gradcontact::cases
       return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     }
 
-    std::string control_name(const fem::AdhesionControl c)
+    std::string control_name(const Control c)
     {
-      return c == fem::AdhesionControl::force ? "force control" : "displacement control";
+      return c == Control::force ? "force control" : "displacement control";
     }
 
     /// One refinement level of the scene.
@@ -59,71 +54,6 @@ namespace gradcontact::cases
   } // namespace
 
 
-
-  namespace
-  {
-    /// The FE settings of the scene at any contact radius a (the searches solve at many) and one level.
-    fem::AdhesiveContact::SettingsFunction settings_at(const Scene &s, const fem::Material &material,
-                                                        const unsigned int level)
-    {
-      return [&s, material, level](const double a) {
-        fem::Settings st = fe_settings(s, material, a, level);
-        condense_far_field(s, material, st);
-        return st;
-      };
-    }
-
-    std::optional<fem::Profile> fe_profile_of(const LoadParameters &l);
-
-    /// The same under Discretization/accuracy = contract: level `level` of the ladder of fem/accuracy/accuracy.h at
-    /// Discretization/force tolerance, graded toward the axis for a cone's tip.
-    fem::AdhesiveContact::SettingsFunction contract_settings_at(const Scene &s, const fem::Material &material,
-                                                                 const unsigned int level)
-    {
-      const double                      tolerance = s.discretization.force_tolerance;
-      const std::optional<fem::Profile> profile   = fe_profile_of(s.load);
-      return [material, level, tolerance, profile](const double a) {
-        fem::Settings base = fem::contract_settings(a, material, tolerance);
-        if (profile)
-          {
-            fem::LoadCase load;
-            load.type    = fem::LoadType::indenter;
-            load.profile = *profile;
-            fem::grade_axis(base, load);
-          }
-        return fem::ladder_settings(base, fem::contract_ladder(material), level);
-      };
-    }
-
-    std::optional<fem::Profile> fe_profile_of(const LoadParameters &l)
-    {
-      switch (l.type)
-        {
-          case Type::paraboloid:
-            return fem::Profile::paraboloid(l.R);
-          case Type::cone:
-            return fem::Profile::cone(l.tan_theta);
-          case Type::power_law:
-            return fem::Profile::power_law(l.n, l.A);
-          case Type::concave_punch:
-            return fem::Profile::concave_paraboloid(l.h0);
-          default:
-            return std::nullopt;
-        }
-    }
-
-    /// The FE search's parameters; under the contract (tolerance > 0) the critical search ends far below the asked
-    /// tolerance, since the ladder cannot see its own stopping error (the same on every level).
-    fem::AdhesionParameters fe_parameters(const AdhesionParameters &ad, const double contract_tolerance = 0)
-    {
-      fem::AdhesionParameters parameters;
-      parameters.stencil_ratio = ad.stencil_ratio;
-      parameters.local_stencil = ad.local_stencil;
-      if (contract_tolerance > 0)
-        parameters.radius_tolerance = std::clamp(contract_tolerance / 1000, 1e-12, parameters.radius_tolerance);
-      return parameters;
-    }
-  } // namespace
 
   FeAdhesiveCurve fe_adhesive_curve(const Scene &s, const std::vector<double> &a_over_ac, const bool force_control,
                                     const std::vector<double> &pressure_radii)
@@ -140,16 +70,13 @@ namespace gradcontact::cases
                                     format(pressure_radii[j]) +
                                     " (r / a) is outside the valid range [0, 1): the adhesive pressure is singular at "
                                     "the contact edge r = a and zero beyond it");
-    const fem::Material material = fe_material(s);
-    fem::AdhesiveContact model(material, fe_profile_of(l), settings_at(s, material, finest_refinement(s)),
-                               fe_parameters(s.adhesion));
+    AdhesiveModel model(s, finest_refinement(s), false);
     const double a0 = s.adhesion.initial_radius > 0. ? s.adhesion.initial_radius : l.a;
-    const fem::AdhesiveCriticalState c = model.critical_state(
-      s.adhesion.work_of_adhesion, force_control ? fem::AdhesionControl::force : fem::AdhesionControl::displacement, a0);
+    const AdhesiveCriticalPoint c = model.critical_state(force_control ? Control::force : Control::displacement, a0);
     FeAdhesiveCurve curve;
     for (const double x : a_over_ac)
       {
-        const fem::AdhesiveState st = model.adhesive_state(x * c.state.radius, s.adhesion.work_of_adhesion);
+        const AdhesivePoint st = model.state(x * c.state.radius);
         curve.radius.push_back(st.radius);
         curve.depth.push_back(st.depth);
         curve.force.push_back(st.force);
@@ -160,7 +87,7 @@ namespace gradcontact::cases
         for (const double x : pressure_radii)
           r.push_back(x * st.radius);
         std::vector<double> p;
-        for (const fem::Sample &sample : model.profiles(st.radius, s.adhesion.work_of_adhesion, r, {}).pressure)
+        for (const fem::Sample &sample : model.surface(st.radius, r, {}).pressure)
           p.push_back(sample.value);
         curve.pressure.push_back(p);
       }
@@ -194,8 +121,7 @@ namespace gradcontact::cases
               LevelResult lr;
               lr.refinement = level;
               level_tag = s.discretization.refinements.size() > 1 ? ", refinement " + std::to_string(level) : "";
-              const fem::Material material = fe_material(s);
-              solve_level(material, settings_at(s, material, level), level == s.discretization.refinements.back(), lr);
+              solve_level(level, level == s.discretization.refinements.back(), lr);
               levels.push_back(lr);
             }
         plot_force_depth();
@@ -206,17 +132,17 @@ namespace gradcontact::cases
       /// level's plot points stay.
       void run_contract()
       {
-        const fem::Material material = fe_material(s);
+        const fem::Material material    = fe_material(s);
         std::size_t         first_curve = curve_series.size();
         run_on_ladder(
-          material, contract_settings_at(s, material, 0)(l.a), s.discretization.force_tolerance, verbose, result,
+          material, adhesive_settings(s, material, 0, true)(l.a), s.discretization.force_tolerance, verbose, result,
           [&](const unsigned int level, LadderLevel &out) {
             level_start = std::chrono::steady_clock::now();
             LevelResult lr;
             lr.refinement = level;
             first_curve   = curve_series.size();
             ladder_level  = &out;
-            const bool solved = solve_level(material, contract_settings_at(s, material, level), true, lr);
+            const bool solved = solve_level(level, true, lr);
             ladder_level      = nullptr;
             out.dofs          = lr.dofs;
             levels.push_back(lr);
@@ -225,27 +151,24 @@ namespace gradcontact::cases
           [&] { curve_series.erase(curve_series.begin() + static_cast<std::ptrdiff_t>(first_curve), curve_series.end()); });
       }
 
-      /// One level: the optimal profile (9.69-9.74) or the FE model's own critical states. False when the FE failed
-      /// (a row says why).
-      bool solve_level(const fem::Material &material, const fem::AdhesiveContact::SettingsFunction &settings,
-                       const bool finest, LevelResult &lr)
+      /// One level (of Discretization/refinements, or of the contract's ladder): the optimal profile (9.69-9.74) or
+      /// the FE model's own critical states. False when the FE failed (a row says why).
+      bool solve_level(const unsigned int level, const bool finest, LevelResult &lr)
       {
         bool solved = true;
         if (l.type == Type::constant_pressure)
-          optimal_profile(material, settings(l.a), finest, lr);
+          optimal_profile(level, finest, lr);
         else
           {
-            fem::AdhesiveContact model(material, fe_profile_of(l), settings,
-                                       fe_parameters(ad, s.discretization.contract ? s.discretization.force_tolerance : 0));
+            AdhesiveModel model(s, level, s.discretization.contract);
             try
               {
                 if (l.type == Type::flat_punch)
-                  report_state("periphery (edge)", model.periphery_state(l.a, ad.work_of_adhesion), Inputs{}, false,
-                               lr);
+                  report_state("periphery (edge)", model.periphery_state(l.a), Inputs{}, false, lr);
                 else if (l.type == Type::concave_punch)
                   concave_punch(model, lr);
                 else if (ad.law == AdhesionParameters::Law::dugdale)
-                  cohesive_profile(material, settings, lr);
+                  cohesive_profile(level, lr);
                 else
                   curved_profile(model, finest, lr);
               }
@@ -288,21 +211,14 @@ namespace gradcontact::cases
       }
 
       /// 9.69-9.74: the surface under p = -sigma_th on r <= a; f_opt(r) = w_c - w(r).
-      void optimal_profile(const fem::Material &material, const fem::Settings &st, const bool finest, LevelResult &lr)
+      void optimal_profile(const unsigned int level, const bool finest, LevelResult &lr)
       {
-        fem::AxisymmetricSolver solver(material, st.mesh, st.discretization);
-        fem::LoadCase tension;
-        tension.type = fem::LoadType::constant_pressure;
-        tension.pressure = -ad.tensile_strength;
-        fem::OutputRequest out;
-        for (const double x : s.outputs.displacement_radii)
-          out.displacement_radii.push_back(x * l.a);
-        const fem::Result r = solver.run(tension, out);
-        lr.dofs = r.n_dofs;
+        const TensionSurface r = optimal_profile_surface(s, level, s.discretization.contract);
+        lr.dofs = r.dofs;
         lr.seconds = seconds_since(level_start);
         if (!r.reliable)
           result.rows.push_back(failed("FE solve", "FE", "-", r.message));
-        const double wc = r.depth;
+        const double wc = r.centre_displacement;
         lr.values["centre displacement w_c,opt"] = check("centre displacement w_c,opt", "relative" + level_tag, wc, "depth",
                                                           Inputs{}, s.tolerances.depth, lr.dofs, lr.seconds);
         Series fe_profile{"FE (w_c - w)", {}, {}, true};
@@ -343,7 +259,7 @@ namespace gradcontact::cases
 
       /// The rows of one FE critical state: pull-off force, critical radius (`with_radius`) and depth against the
       /// references, and for the power law the scaling identity a K'(a)/K(a) = 1 + k of the FE G(a).
-      void report_state(const std::string &name, const fem::AdhesiveCriticalState &c, const Inputs &extra,
+      void report_state(const std::string &name, const AdhesiveCriticalPoint &c, const Inputs &extra,
                         const bool with_radius, LevelResult &lr)
       {
         const double k = s.material.k;
@@ -366,22 +282,21 @@ namespace gradcontact::cases
 
       /// The concave punch (9.65-9.68): the periphery mechanism, with a tensile strength the centre one and the
       /// transition h0, and p(r) in each critical state.
-      void concave_punch(fem::AdhesiveContact &model, LevelResult &lr)
+      void concave_punch(AdhesiveModel &model, LevelResult &lr)
       {
-        const double dgamma = ad.work_of_adhesion;
-        report_state("periphery (9.65-9.66)", model.periphery_state(l.a, dgamma), input::mechanism(Mechanism::periphery), false, lr);
+        report_state("periphery (9.65-9.66)", model.periphery_state(l.a), input::mechanism(Mechanism::periphery), false, lr);
         {
-          const fem::AdhesiveCriticalState pc = model.periphery_state(l.a, dgamma);
+          const AdhesiveCriticalPoint pc = model.periphery_state(l.a);
           critical_pressure(model, "periphery", pc.state.delta, input::mechanism(Mechanism::periphery), lr);
         }
         if (ad.tensile_strength > 0.)
           {
-            const fem::AdhesiveCriticalState cc = model.centre_state(l.a, dgamma, ad.tensile_strength);
+            const AdhesiveCriticalPoint cc = model.centre_state(l.a);
             report_state("centre (9.67-9.68)", cc, input::mechanism(Mechanism::centre), false, lr);
             critical_pressure(model, "centre", cc.state.delta, input::mechanism(Mechanism::centre), lr);
             try
               {
-                const double h_star = model.transition_h0(l.a, dgamma, ad.tensile_strength);
+                const double h_star = model.transition_h0(l.a);
                 lr.values["transition h0"] = check("transition h0", "periphery -> centre" + level_tag, h_star,
                                                    "transition_h0", Inputs{}, s.tolerances.depth, lr.dofs,
                                                    seconds_since(level_start));
@@ -394,7 +309,7 @@ namespace gradcontact::cases
       }
 
       /// p(r) in a critical state of the concave punch (9.66, 9.68) against the closed form, relative to max |p|.
-      void critical_pressure(fem::AdhesiveContact &model, const std::string &name, const double delta,
+      void critical_pressure(AdhesiveModel &model, const std::string &name, const double delta,
                              const Inputs &mechanism, const LevelResult &lr)
       {
         if (s.outputs.pressure_radii.empty())
@@ -402,10 +317,8 @@ namespace gradcontact::cases
         std::vector<double> pr;
         for (const double x : s.outputs.pressure_radii)
           pr.push_back(x * l.a);
-        const auto prof = model.profiles_at_delta(l.a, delta, pr, {});
-        double scale = 0.;
-        for (const fem::Sample &p : prof.pressure)
-          scale = std::max(scale, std::abs(p.value));
+        const auto prof = model.surface_at_delta(l.a, delta, pr, {});
+        const double scale = largest_magnitude(prof.pressure);
         for (const fem::Sample &p : prof.pressure)
           {
             // The centre state is defined by p(0) = -sigma_th: that row would hold by construction.
@@ -419,29 +332,28 @@ namespace gradcontact::cases
 
       /// A curved profile: the critical states under force and displacement control (JKR 1971 too for the
       /// paraboloid at k = 0), then p(r), w(r) and the force-depth points of the force-controlled one.
-      void curved_profile(fem::AdhesiveContact &model, const bool finest, LevelResult &lr)
+      void curved_profile(AdhesiveModel &model, const bool finest, LevelResult &lr)
       {
         const double a0 = ad.initial_radius > 0. ? ad.initial_radius : l.a;
-        std::optional<fem::AdhesiveCriticalState> force_state;
-        for (const auto control : {fem::AdhesionControl::force, fem::AdhesionControl::displacement})
+        std::optional<AdhesiveCriticalPoint> force_state;
+        for (const Control control : {Control::force, Control::displacement})
           {
-            if ((control == fem::AdhesionControl::force && !ad.force_control) ||
-                (control == fem::AdhesionControl::displacement && !ad.displacement_control))
+            if (!controlled(control))
               continue;
-            const Inputs extra = input::control(control == fem::AdhesionControl::force ? Control::force : Control::displacement);
+            const Inputs extra = input::control(control);
             // The second search starts from the first one's answer (and reuses its FE radii).
             const double start_radius = force_state ? force_state->state.radius : a0;
             try
               {
-                const fem::AdhesiveCriticalState c = model.critical_state(ad.work_of_adhesion, control, start_radius);
-                if (control == fem::AdhesionControl::force)
+                const AdhesiveCriticalPoint c = model.critical_state(control, start_radius);
+                if (control == Control::force)
                   force_state = c;
                 report_state(control_name(control), c, extra, true, lr);
                 if (l.type == Type::paraboloid && s.material.k == 0.)
                   {
                     // Johnson-Kendall-Roberts (1971): -3/2 pi dgamma R (force), -5/6 pi dgamma R (displacement).
                     const double jkr =
-                      (control == fem::AdhesionControl::force ? -1.5 : -5. / 6.) * pi * ad.work_of_adhesion * l.R;
+                      (control == Control::force ? -1.5 : -5. / 6.) * pi * ad.work_of_adhesion * l.R;
                     result.rows.push_back(compare("pull-off force", control_name(control) + level_tag, "FE", "JKR (1971)",
                                                   jkr, c.state.force, jkr, s.tolerances.force, c.max_dofs,
                                                   seconds_since(level_start)));
@@ -464,8 +376,7 @@ namespace gradcontact::cases
       /// closed forms ("(JKR idealisation)": how far they are for this adhesive), and against Maugis-Dugdale, which
       /// holds for any Tabor parameter (Maugis' closed form at k = 0 for the paraboloid, the MDR's on the graded
       /// medium otherwise; a power-law modulus only).
-      void cohesive_profile(const fem::Material &material, const fem::AdhesiveContact::SettingsFunction &settings,
-                            LevelResult &lr)
+      void cohesive_profile(const unsigned int level, LevelResult &lr)
       {
         const double dgamma     = ad.work_of_adhesion;
         const bool   paraboloid = l.type == Type::paraboloid;
@@ -479,16 +390,14 @@ namespace gradcontact::cases
         };
         if (ad.tabor_parameter > 0.)
           sigma0 = cohesive_strength(ad.tabor_parameter, medium_of_scene(), jkr_profile(), dgamma);
-        fem::CohesiveContact model(material, *fe_profile_of(l), fem::DugdaleLaw{sigma0, dgamma}, settings);
+        DugdaleModel model(s, sigma0, level, s.discretization.contract);
         double start = ad.initial_radius > 0. ? ad.initial_radius : l.a;
-        for (const auto control : {fem::AdhesionControl::force, fem::AdhesionControl::displacement})
+        for (const Control control : {Control::force, Control::displacement})
           {
-            if ((control == fem::AdhesionControl::force && !ad.force_control) ||
-                (control == fem::AdhesionControl::displacement && !ad.displacement_control))
+            if (!controlled(control))
               continue;
-            const Control analytic_control = control == fem::AdhesionControl::force ? Control::force : Control::displacement;
-            const Inputs  extra            = input::control(analytic_control);
-            const std::string name         = control_name(control) + ", Dugdale sigma_0 = " + format(sigma0) + " Pa";
+            const Inputs      extra = input::control(control);
+            const std::string name  = control_name(control) + ", Dugdale sigma_0 = " + format(sigma0) + " Pa";
             try
               {
                 const fem::CohesiveCriticalState c = model.critical_state(control, start);
@@ -501,7 +410,7 @@ namespace gradcontact::cases
                             << " s)" << (c.at_vanishing_contact ? ", the contact vanishes" : "") << "\n";
                 if (!c.state.consistent)
                   result.rows.push_back(failed("cohesive state", "FE", "-", name + ": " + c.state.message));
-                if (c.at_vanishing_contact && control == fem::AdhesionControl::displacement)
+                if (c.at_vanishing_contact && control == Control::displacement)
                   {
                     for (const AnalyticReference &ref : references)
                       result.rows.push_back(failed("critical state (" + control_name(control) + ")", "FE (Dugdale)",
@@ -522,7 +431,7 @@ namespace gradcontact::cases
                     if (lambda < 1e-3 || lambda > 1e3)
                       continue;
                     if (const auto row = maugis_dugdale_row(
-                          lambda, control == fem::AdhesionControl::force, true, c.state.force, c.state.depth, dgamma, l.R,
+                          lambda, control == Control::force, true, c.state.force, c.state.depth, dgamma, l.R,
                           E_star, name + ", lambda = " + format(lambda) + level_tag, "FE",
                           std::min(s.tolerances.force, 1e-3), std::min(s.tolerances.depth, 1e-3), c.max_dofs, t))
                       result.rows.push_back(*row);
@@ -532,7 +441,7 @@ namespace gradcontact::cases
                     {
                       // The graded medium: the MDR's Maugis-Dugdale solution (analytic/maugis_dugdale.h).
                       if (const auto row = graded_maugis_dugdale_row(
-                            medium_of_scene(), jkr_profile(), sigma0, dgamma, control == fem::AdhesionControl::force,
+                            medium_of_scene(), jkr_profile(), sigma0, dgamma, control == Control::force,
                             true, c.state.force, c.state.depth, name + level_tag, "FE",
                             std::min(s.tolerances.force, 1e-3), std::min(s.tolerances.depth, 1e-3), c.max_dofs, t))
                         result.rows.push_back(*row);
@@ -553,7 +462,7 @@ namespace gradcontact::cases
 
       /// "No critical state" (e.g. 2n + k - 1 <= 0, 9.60) is a finding: it passes when every analytic reference
       /// finds none either, and fails when one of them has a state.
-      void no_critical_state(const fem::AdhesionControl control, const Inputs &extra, const std::string &what)
+      void no_critical_state(const Control control, const Inputs &extra, const std::string &what)
       {
         const std::string quantity = "critical state (" + control_name(control) + ")";
         if (what.find("no critical state") == std::string::npos || references.empty())
@@ -582,7 +491,7 @@ namespace gradcontact::cases
 
       /// p(r) and w(r) of the FE critical state (force control) against the closed form at the same radius
       /// (9.53-9.54, 9.58-9.59): one more FE solve.
-      void critical_profiles(fem::AdhesiveContact &model, const fem::AdhesiveCriticalState &c)
+      void critical_profiles(AdhesiveModel &model, const AdhesiveCriticalPoint &c)
       {
         if (s.outputs.pressure_radii.empty() && s.outputs.displacement_radii.empty())
           return;
@@ -591,11 +500,9 @@ namespace gradcontact::cases
           pr.push_back(x * c.state.radius);
         for (const double x : s.outputs.displacement_radii)
           wr.push_back(x * c.state.radius);
-        const auto prof = model.profiles(c.state.radius, ad.work_of_adhesion, pr, wr);
+        const auto prof = model.surface(c.state.radius, pr, wr);
         const double ac = c.state.radius, t = seconds_since(level_start);
-        double p_scale = 0., w_scale = std::abs(prof.state.depth);
-        for (const fem::Sample &p : prof.pressure)
-          p_scale = std::max(p_scale, std::abs(p.value));
+        const double p_scale = largest_magnitude(prof.pressure), w_scale = std::abs(prof.state.depth);
         for (const fem::Sample &p : prof.pressure)
           check("adhesive pressure p(r)",
                 "critical state (force control), r/a_c = " + format(p.r / ac) + ", relative to max |p|" + level_tag, p.value,
@@ -607,7 +514,7 @@ namespace gradcontact::cases
       }
 
       /// FE points on the adhesive force-depth curve (force control, figures 9.22-9.23) and the closed-form curve.
-      void force_depth_points(fem::AdhesiveContact &model, const fem::AdhesiveCriticalState &c)
+      void force_depth_points(AdhesiveModel &model, const AdhesiveCriticalPoint &c)
       {
         if (ad.curve_points.empty())
           return;
@@ -615,7 +522,7 @@ namespace gradcontact::cases
         const double Fc = std::abs(c.state.force), dc = std::abs(c.state.depth);
         for (const double x : ad.curve_points)
           {
-            const fem::AdhesiveState st = model.adhesive_state(x * c.state.radius, ad.work_of_adhesion);
+            const AdhesivePoint st = model.state(x * c.state.radius);
             const std::string metric = "a = " + format(x) + " a_c, relative to |F_c|";
             check("adhesive force F(a)", metric, st.force, "force", input::a(st.radius), s.tolerances.force, c.max_dofs,
                   seconds_since(level_start), Fc);
@@ -642,6 +549,12 @@ namespace gradcontact::cases
             {
             }
         curve_series.insert(curve_series.begin(), curve);
+      }
+
+      /// Whether the scene asks for the critical state under `control` (Adhesion/force control, displacement control).
+      bool controlled(const Control control) const
+      {
+        return control == Control::force ? ad.force_control : ad.displacement_control;
       }
 
       /// The largest relative error of the rows of `quantity` that evaluated.

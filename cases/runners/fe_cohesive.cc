@@ -3,7 +3,7 @@
 
 #include "report/table.h"
 #include "report/thresholds.h"
-#include "model/fe_model.h"
+#include "model/fe_adhesive.h"
 #include "model/scene_start.h"
 #include "report/result_cache.h"
 
@@ -173,9 +173,7 @@ namespace gradcontact::cases
           p.depth_jkr        = jkr.depth;
           try
             {
-              const auto c = contact.critical_state(force_control ? fem::AdhesionControl::force :
-                                                                    fem::AdhesionControl::displacement,
-                                                    jkr.radius);
+              const auto c = contact.critical_state(fe_control(control), jkr.radius);
               p.force      = c.state.force;
               p.radius     = c.state.radius;
               p.depth      = c.state.depth;
@@ -222,50 +220,41 @@ namespace gradcontact::cases
                                        const JkrProfile &profile, const double dgamma, const Point &base,
                                        const std::vector<bool> &controls)
     {
-      LambdaSolution             solution;
-      const fem::LennardJonesLaw law = fem::LennardJonesLaw::with_max_stress(base.strength, dgamma);
-      fem::SmoothCohesionPath    path;
-      try
-        {
-          path = contact.trace(law);
-        }
-      catch (const std::exception &e)
-        {
-          path.converged = false;
-          path.message   = concise(e);
-        }
+      LambdaSolution          solution;
+      const LennardJonesTrace trace = trace_lennard_jones(contact, base.strength, dgamma);
       for (const bool force_control : controls)
         {
           Point p            = base;
           p.force_control    = force_control;
-          const auto jkr     = jkr_critical(medium, profile, dgamma,
-                                            force_control ? gradcontact::Control::force : gradcontact::Control::displacement);
+          const auto control = force_control ? gradcontact::Control::force : gradcontact::Control::displacement;
+          const auto jkr     = jkr_critical(medium, profile, dgamma, control);
           p.force_jkr        = jkr.force;
           p.radius_jkr       = jkr.radius;
           p.depth_jkr        = jkr.depth;
           p.zone_ratio       = std::nan("");
-          p.states           = path.steps;
-          p.dofs             = path.n_dofs;
-          p.seconds          = path.seconds;
-          const bool found   = force_control ? path.has_force_minimum : path.has_depth_jump;
-          const fem::SmoothCohesionState &c = force_control ? path.force_pull_off : path.depth_pull_off;
-          if (!path.converged)
-            p.error = "Lennard-Jones path: " + path.message + " (" + std::to_string(path.steps) + " steps, " +
-                      std::to_string(path.rejected_steps) + " rejected, " + std::to_string(path.newton_iterations) +
-                      " Newton solves, " + std::to_string(path.factorisations) + " factorisations)";
+          p.states           = trace.path.steps;
+          p.dofs             = trace.path.n_dofs;
+          p.seconds          = trace.path.seconds;
+          const bool found   = trace.has_pull_off(control);
+          if (!trace.path.converged)
+            p.error = "Lennard-Jones path: " + trace.path.message + " (" + std::to_string(trace.path.steps) +
+                      " steps, " + std::to_string(trace.path.rejected_steps) + " rejected, " +
+                      std::to_string(trace.path.newton_iterations) + " Newton solves, " +
+                      std::to_string(trace.path.factorisations) + " factorisations)";
           else if (!found && force_control)
             p.error = "Lennard-Jones path: no minimum of F before the contact";
           p.vanishing = !force_control && !found;
           if (found)
             {
-              p.force  = c.force;
-              p.radius = c.peak_radius; // the adhesive zone's inner end: JKR's a as lambda grows
-              p.depth  = c.depth + law.separation;
+              const AdhesivePoint c = trace.pull_off(control); // its radius: JKR's a as lambda grows
+              p.force               = c.force;
+              p.radius              = c.radius;
+              p.depth               = c.depth;
             }
           solution.points.push_back(p);
         }
-      for (const fem::SmoothCohesionState &st : path.states)
-        solution.path.push_back({st.peak_radius, std::nan(""), st.depth + law.separation, st.force, true});
+      for (const AdhesivePoint &st : trace.states())
+        solution.path.push_back({st.radius, std::nan(""), st.depth, st.force, true});
       return solution;
     }
   } // namespace
@@ -312,7 +301,7 @@ namespace gradcontact::cases
       plan.paraboloid = s.load.type == Type::paraboloid;
       plan.profile = plan.paraboloid ? JkrProfile{gradcontact::Paraboloid{s.load.R}}
                                      : JkrProfile{gradcontact::PowerLaw{s.load.n, s.load.A}};
-      plan.fe_profile = plan.paraboloid ? fem::Profile::paraboloid(s.load.R) : fem::Profile::power_law(s.load.n, s.load.A);
+      plan.fe_profile = *fe_indenter_profile(s.load); // the scene refuses a map of any other Load/type
       plan.ks = s.map.exponents.empty() ? std::vector<double>{s.material.k} : s.map.exponents;
       plan.lambdas = s.map.ratios;
       std::sort(plan.lambdas.begin(), plan.lambdas.end());

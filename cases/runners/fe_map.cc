@@ -3,7 +3,7 @@
 #include "report/thresholds.h"
 
 #include "model/analytic_reference.h"
-#include "model/fe_model.h"
+#include "model/normal_model.h"
 #include "model/scene_start.h"
 #include "model/map_published.h"
 
@@ -78,10 +78,9 @@ namespace gradcontact::cases
       try
         {
           const FeModel model = fe_model(g, finest_refinement(g) + extra_refinements);
-          fem::AxisymmetricSolver solver(model.material, model.settings.mesh, model.settings.discretization);
           fem::OutputRequest out;
           out.pressure_radii = {axis_sample * g.load.a};
-          const fem::Result r = solver.run(model.load, out);
+          const fem::Result r = solve_disc(model, out).result;
           p.dofs = r.n_dofs;
           if (!r.reliable)
             throw std::runtime_error("the FE solve is flagged unreliable: " + r.message);
@@ -235,36 +234,6 @@ namespace gradcontact::cases
       if (!r.reliable)
         return "the FE solve is flagged unreliable: " + r.message;
       return {};
-    }
-
-    /// A panel of the two-solver maps (indenter modulus, friction): the scene at exponent k and Poisson ratio nu
-    /// with a rigid indenter under contact-radius control at Load/a, its FE model, the closed forms there and the
-    /// unilateral load at their depth.
-    struct UnilateralPanel
-    {
-      Scene scene;
-      FeModel model;
-      std::unique_ptr<AnalyticReference> reference;
-      fem::UnilateralLoad load;
-    };
-
-    UnilateralPanel unilateral_panel(const Scene &s, const double k, const double nu)
-    {
-      UnilateralPanel p;
-      p.scene = s;
-      p.scene.material.k = k;
-      p.scene.material.nu = nu;
-      p.scene.map.parameter = MapParameters::Parameter::none;
-      p.scene.load.control = LoadParameters::Control::contact_radius;
-      p.scene.indenter.elasticity = IndenterParameters::Elasticity::rigid;
-      if (nu >= 0.5)
-        p.scene.discretization.formulation = DiscretizationParameters::Formulation::mixed;
-      p.model = fe_model(p.scene, finest_refinement(p.scene));
-      p.reference = std::make_unique<AnalyticReference>(p.scene, batch::Method::closed_form,
-                                                        AnalyticReference::Problem::normal);
-      p.load.indenter = fem::Indenter::of(p.model.load.profile, s.load.a);
-      p.load.depth = p.reference->get("depth");
-      return p;
     }
 
     /// A homogeneous elastic indenter (E1 = ratio E0, Indenter/nu) on the power law at exponent k, at the rigid
@@ -434,31 +403,6 @@ namespace gradcontact::cases
       return p;
     }
 
-    /// The friction map's one solver at (k, nu) (the shear operator built once), its load with the sampled radii
-    /// of p(r), the last result and the seconds of its setup.
-    struct FrictionSolver
-    {
-      std::unique_ptr<fem::UnilateralContactSolver> solver;
-      fem::UnilateralLoad load;
-      fem::OutputRequest request;
-      fem::UnilateralResult r;
-      double setup = 0.;
-    };
-
-    FrictionSolver friction_solver(const Scene &s, const UnilateralPanel &panel)
-    {
-      FrictionSolver f;
-      f.load = panel.load;
-      f.load.friction.load_steps = s.friction.load_steps;
-      for (const double x : friction_pressure_radii)
-        f.request.pressure_radii.push_back(x * s.load.a);
-      f.setup = seconds_of([&] {
-        f.solver = std::make_unique<fem::UnilateralContactSolver>(panel.model.material, panel.model.settings.mesh,
-                                                                  panel.model.settings.discretization, 1.6 * s.load.a);
-      });
-      return f;
-    }
-
     /// Runs `f` at friction coefficient mu: its seconds, or the error.
     std::pair<double, std::string> run_friction(FrictionSolver &f, const double mu)
     {
@@ -621,7 +565,7 @@ namespace gradcontact::cases
       try
         {
           const UnilateralPanel panel = unilateral_panel(s, k, nu);
-          FrictionSolver f = friction_solver(s, panel);
+          FrictionSolver f = friction_solver(s, panel, friction_pressure_radii);
           const MapPoint smooth_check = frictionless_check(f, *panel.reference, s.load.a);
           add_check_rows(s, smooth_check, metric + "frictionless", result,
                          "pressure, L2 change over r/a in [" + format(friction_pressure_radii.front()) + ", " +

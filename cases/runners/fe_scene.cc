@@ -4,15 +4,12 @@
 #include "model/analytic_reference.h"
 #include "report/convergence_report.h"
 #include "report/table.h"
-#include "model/fe_model.h"
+#include "model/normal_model.h"
 
 #include <analytic/batch.h>
 #include <analytic/material.h>
 #include <analytic/mdr.h>
-#include <fem/accuracy/accuracy.h>
-#include <fem/bodies/axisymmetric_solver.h>
 #include <fem/base/table_file.h>
-#include <fem/contact/unilateral_contact.h>
 
 #include <deal.II/base/point.h>
 #include <deal.II/base/utilities.h>
@@ -103,74 +100,25 @@ namespace gradcontact::cases
     fem::Result run_unilateral(const Scene &s, const FeModel &model, const fem::OutputRequest &out,
                                const fs::path &folder, const unsigned int level)
     {
-      const bool by_force = s.load.type != Type::concave_punch && s.load.control == Control::force;
-      const fem::UnilateralResult u =
-        solve_unilateral(s, model, fem::Indenter::of(model.load.profile, s.load.a), by_force, out);
-      fem::Result r;
-      static_cast<fem::RunReport &>(r) = u;
-      r.force          = u.force;
-      r.depth          = u.depth;
-      r.contact_radius = u.outer_edge;
-      r.edge_node_radius   = u.edge_bracket.first;
-      r.active_set_size    = u.active_nodes;
-      r.iterations         = u.iterations;
-      r.pressure           = u.pressure;
-      r.displacement       = u.displacement;
-      if (model.indenter_body)
-        {
-          // The chapter's w of two bodies (9.4) is the approach of both surfaces: w + w'.
-          for (std::size_t i = 0; i < r.displacement.size(); ++i)
-            r.displacement[i].value += u.indenter_displacement.at(i).value;
-          r.message += " elastic indenter: w(r) is the sum of both surfaces' displacements;";
-        }
+      const fem::UnilateralResult u = solve_normal_unilateral(s, model, out);
       if (s.friction.enabled())
         write_friction(s, u, folder, level);
-      if (s.friction.enabled())
-        r.message += " Coulomb friction mu = " + format(s.friction.coefficient) + " during loading (" +
-                     std::to_string(u.path.size()) + " load steps, " + std::to_string(u.iterations) +
-                     " active-set solves): " +
-                     (std::isnan(u.stick_radius) ? std::string("no stick zone at the axis")
-                                                 : "stick radius " + format(u.stick_radius / u.outer_edge) + " of the contact") +
-                     ", " +
-                     std::to_string(u.stick_nodes) + " vertices stick, " + std::to_string(u.slip_inward_nodes) +
-                     " slip inward, " + std::to_string(u.slip_outward_nodes) + " outward;";
-      r.consistent_contact = u.zones.size() == 1;
-      if (u.zones.size() != 1)
-        {
-          r.message += " unilateral contact in " + std::to_string(u.zones.size()) + " zones (r/a):";
-          for (const fem::ContactZone &z : u.zones)
-            r.message += " [" + format(z.r_in / s.load.a) + ", " + format(z.r_out / s.load.a) + "]";
-          r.message += ";";
-        }
-      if (!u.zones.empty() && u.zones.front().r_in > 0)
-        r.message += " the contact is an annulus from r = " + format(u.zones.front().r_in) + ";";
-      return r;
+      return as_disc_result(s, model, u);
     }
 
     FeRun run_fe(const Scene &s, const unsigned int refinement, const fs::path &folder)
     {
       const auto start = std::chrono::steady_clock::now();
-      FeModel model = fe_model(s, refinement);
-      // The pressure of a cone (and of f = A r^n, n < 2) is singular at the axis: grade the mesh
-      // toward (0, 0) (fem/doc/accuracy-and-cost.md, "What limits the error", cone axis).
-      fem::grade_axis(model.settings, model.load);
-      // The rigid frictionless model with its contact edge at the mesh's: the surface map where it applies
-      // (not with the mixed formulation, whose degree-3 force it leaves 10x less accurate than the halvings).
-      if (s.discretization.surface_map && s.load.contact != LoadParameters::Contact::unilateral &&
-          fem::resolve_formulation(model.settings.discretization, model.material.nu) != fem::Formulation::mixed)
-        fem::use_surface_map(model.settings, *model.material.modulus);
-      if (s.load.contact != LoadParameters::Contact::unilateral)
-        condense_far_field(s, model.material, model.settings);
+      const FeModel model = normal_fe_model(s, refinement);
       fem::OutputRequest out = output_request(s);
       if (s.outputs.vtu)
         out.vtu_file = (folder / ("fields-" + std::to_string(refinement) + ".vtu")).string();
       if (s.load.contact == LoadParameters::Contact::unilateral)
         return {refinement, run_unilateral(s, model, out, folder, refinement),
                 std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), {}};
-      fem::AxisymmetricSolver solver(model.material, model.settings.mesh, model.settings.discretization);
-      const fem::Result       r = solver.run(model.load, out);
-      return {refinement, r, std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), {},
-              double(solver.factor_bytes())};
+      const DiscSolve disc = solve_disc(model, out);
+      return {refinement, disc.result, std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(),
+              {}, disc.factor_bytes};
     }
 
     // The scalar quantities a scene compares, with the FE value and the reference quantity name.
@@ -390,17 +338,11 @@ namespace gradcontact::cases
     FeRun solve_contract(const Scene &s, const bool verbose, SceneResult &result)
     {
       const auto start = std::chrono::steady_clock::now();
-      FeModel model = fe_model(s, 0);
-      double w_max = 0;
-      for (const double x : s.outputs.displacement_radii)
-        w_max = std::max(w_max, x * s.load.a);
-      fem::Settings settings = fem::contract_settings(s.load.a, model.material, s.discretization.force_tolerance, w_max);
-      fem::grade_axis(settings, model.load); // the tip's pressure at the axis (as run_fe)
+      const FeModel model = fe_model(s, 0);
       if (verbose)
         std::cerr << "  " << s.info.name << ": FE ladder to the relative tolerance "
                   << format(s.discretization.force_tolerance) << "\n";
-      fem::ContractSolver solver(model.material, settings, s.discretization.force_tolerance);
-      fem::ContractResult contract = solver.run(model.load, output_request(s));
+      fem::ContractResult contract = solve_normal_contract(s, model);
       if (!contract.met)
         result.rows.push_back(failed("FE contract", "FE (contract)", "-",
                                      "tolerance " + format(contract.tolerance) + " not reached: " + contract.limit));

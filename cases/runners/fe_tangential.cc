@@ -4,14 +4,12 @@
 #include "model/scene_start.h"
 #include "model/fe_contract.h"
 #include "model/fe_model.h"
+#include "model/mode1_model.h"
 
 #include <analytic/batch.h>
 #include <analytic/material.h>
 #include <analytic/normal.h>
 #include <analytic/tangential.h>
-#include <fem/accuracy/accuracy.h>
-#include <fem/bodies/axisymmetric_solver.h>
-#include <fem/tangential/fourier_mode1_solver.h>
 
 #include <deal.II/base/quadrature_lib.h>
 
@@ -76,43 +74,15 @@ namespace gradcontact::cases
       return s;
     }
 
-    /// Level `level` of the accuracy contract's ladder (fem/accuracy/accuracy.h) at Discretization/force tolerance, in the
-    /// displacement formulation (mode 1 has no mixed one).
-    fem::Settings contract_level_settings(const Scene &s, const fem::Material &material, const unsigned int level)
+    /// The stick radii that grade the mode-1 mesh: those inside the contact (c = a is a mesh node already).
+    std::vector<double> graded_radii(const Scene &s, const std::vector<double> &stick_radii)
     {
-      fem::Settings base = fem::contract_settings(s.load.a, material, s.discretization.force_tolerance);
-      base.discretization.formulation = fem::Formulation::displacement;
-      return fem::ladder_settings(base, fem::contract_ladder(material), level);
+      std::vector<double> radii;
+      for (const double c : stick_radii)
+        if (c > 0. && c < s.load.a * (1. - 1e-12))
+          radii.push_back(c);
+      return radii;
     }
-
-    /// The mode-1 FE model of a scene: one mesh (graded toward `stick_radii` by Tangential/stick levels), one
-    /// factorisation, any number of tangential loads. `contract_level`: the settings of that level of the contract's
-    /// ladder instead of the scene's.
-    struct Mode1Model
-    {
-      Mode1Model(const Scene &s, const std::vector<double> &stick_radii,
-                 const std::optional<unsigned int> contract_level = std::nullopt)
-      {
-        material = fe_material(s);
-        if (contract_level)
-          settings = contract_level_settings(s, material, *contract_level);
-        else
-          {
-            settings = fe_settings(s, material, s.load.a, finest_refinement(s)); // the mode-1 solver refuses mixed
-            condense_far_field(s, material, settings);
-          }
-        fem::SurfaceRefinement refinement;
-        for (const double c : stick_radii)
-          if (c > 0. && c < s.load.a * (1. - 1e-12)) // c = a is a mesh node already
-            refinement.radii.push_back(c);
-        refinement.levels = refinement.radii.empty() ? 0 : s.tangential.stick_levels;
-        solver = std::make_unique<fem::FourierMode1Solver>(material, settings.mesh, settings.discretization,
-                                                           refinement);
-      }
-      fem::Material material;
-      fem::Settings settings;
-      std::unique_ptr<fem::FourierMode1Solver> solver;
-    };
 
     /// The surface sample radii r <= a.
     std::vector<double> profile_radii(const double a)
@@ -152,10 +122,7 @@ namespace gradcontact::cases
       const auto pressure = [&medium, sphere](const double r, const double b) {
         return r < b ? gradcontact::pressure(medium, sphere, b, r) : 0.;
       };
-      fem::TangentialOutputRequest out;
-      out.displacement_radii = radii;
-      return model.solver->run(
-        fem::TangentialLoad::partial_slip(pressure, s.tangential.friction_coefficient, s.load.a, c), out);
+      return model.partial_slip(pressure, s.tangential.friction_coefficient, s.load.a, c, radii);
     }
 
     /// The oscillation after loading to A (F_A = amplitude mu F_N): F_N, F_A and the stick radius c_A of A.
@@ -190,9 +157,7 @@ namespace gradcontact::cases
       const auto tau = [&medium, slip, a, o, Fx](const double r) {
         return t::traction(medium, slip, a, o.FA, t::Branch::unloading, Fx, r);
       };
-      fem::TangentialOutputRequest out;
-      out.displacement_radii = radii;
-      return model.solver->run(fem::TangentialLoad::profile(tau, a, o.cA, kinks), out);
+      return model.traction(tau, a, o.cA, kinks, radii);
     }
 
     gradcontact::Medium medium_of(const Scene &s)
@@ -293,7 +258,7 @@ namespace gradcontact::cases
       const double a = s.load.a, k = s.material.k, E0 = s.material.E0, c0 = s.material.c0, nu = s.material.nu;
       Mode1Model model(s, {}, contract_level);
       const double delta = punch_displacement * a;
-      const fem::TangentialResult t = model.solver->run(fem::TangentialLoad::flat_punch(delta));
+      const fem::TangentialResult t = model.flat_punch(delta);
       reliability(t, "tangential flat punch");
       const double t_tangential = seconds_since(start);
       const double tol = s.tolerances.force;
@@ -310,11 +275,7 @@ namespace gradcontact::cases
                                         t_tangential));
         }
       // alpha = K_N / K_T (9.78) with K_N from the normal flat punch on the same mesh and discretisation.
-      fem::AxisymmetricSolver normal(model.material, model.settings.mesh, model.settings.discretization);
-      fem::LoadCase punch;
-      punch.type = fem::LoadType::flat_punch;
-      punch.depth = delta;
-      const fem::Result n = normal.run(punch);
+      const fem::Result n = model.normal_flat_punch(delta);
       if (!n.reliable)
         result.rows.push_back(failed("FE solve", "FE", "-", "normal flat punch: " + n.message));
       const double K_N = n.force / delta, seconds = seconds_since(start);
@@ -336,7 +297,7 @@ namespace gradcontact::cases
       std::vector<double> radii;
       for (const double x : c_over_a)
         radii.push_back(x * a);
-      Mode1Model model(s, radii, contract_level);
+      Mode1Model model(s, graded_radii(s, radii), contract_level);
       const double FN = gradcontact::force(medium, gradcontact::Paraboloid{s.load.R}, a);
       const double mu = tp.friction_coefficient;
       double u_gross = 0.;
@@ -428,7 +389,7 @@ namespace gradcontact::cases
     {
       const auto        start = std::chrono::steady_clock::now();
       const Oscillation o     = oscillation_of(s, medium);
-      Mode1Model        model(s, {o.cA}, contract_level);
+      Mode1Model        model(s, graded_radii(s, {o.cA}), contract_level);
       double            uA = 0.;
       try
         {
@@ -531,7 +492,7 @@ namespace gradcontact::cases
           W += 2. * w * solve_unloading(s, model, medium, o, F, {}).stick.mean_ux;
         }
       const double seconds = seconds_since(start);
-      const unsigned int dofs = model.solver->n_dofs();
+      const unsigned int dofs = model.n_dofs();
       check("dissipated energy per cycle W", "relative", W, "9.86 corrected (ERRATA.md)",
             [&] { return reference.get("oscillating_sphere", "dissipated_energy", [&](batch::Request &q) { q.FA = o.FA; }); }, s.tolerances.force, dofs,
             seconds);
@@ -592,7 +553,7 @@ namespace gradcontact::cases
         std::vector<double> radii;
         for (const double x : curve_stick_radii(s.tangential))
           radii.push_back(x * a);
-        Mode1Model model(s, radii);
+        Mode1Model model(s, graded_radii(s, radii));
         for (const double c : radii)
           {
             if (c >= a)
@@ -606,7 +567,7 @@ namespace gradcontact::cases
     if (s.tangential.study == Study::oscillation)
       {
         const Oscillation o = oscillation_of(s, medium);
-        Mode1Model model(s, {o.cA});
+        Mode1Model model(s, graded_radii(s, {o.cA}));
         for (const double f : unloading_forces(s.tangential))
           {
             const double u = solve_unloading(s, model, medium, o, f * o.FA, {}).stick.mean_ux;
@@ -655,7 +616,7 @@ namespace gradcontact::cases
     void run_contract(const Scene &s, const fs::path &folder, const bool verbose, SceneResult &result)
     {
       const fem::Material material = fe_material(s);
-      run_on_ladder(material, contract_level_settings(s, material, 0), s.discretization.force_tolerance, verbose,
+      run_on_ladder(material, mode1_contract_settings(s, material, 0), s.discretization.force_tolerance, verbose,
                     result, [&](const unsigned int level, LadderLevel &out) {
                       TangentialStudy study(s, folder, verbose, result, level);
                       const bool      solved = run_study(s, study, result);
