@@ -16,7 +16,7 @@ namespace gradcontact::cases
       throw std::invalid_argument(std::string("format: Number style '") + n.style + "'; valid: 'g', 'e' or 'f'");
     const char spec[] = {'%', '.', '*', n.style, '\0'};
     char b[64];
-    // a fixed-point number may be longer than the buffer: measured first
+    // a fixed-point number may be longer than the buffer: its length is asked of snprintf first
     const int length = std::snprintf(b, sizeof b, spec, n.digits, x);
     if (length < 0 || static_cast<std::size_t>(length) < sizeof b)
       return b;

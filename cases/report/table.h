@@ -1,7 +1,7 @@
 // gradcontact/cases: a table written as CSV and as Markdown from one column spec, and the writing of report files.
 //
 // A report's table is read twice: by a program (the .csv, every digit, plain headers) and by a person (the .md,
-// short numbers, readable headers, a placeholder where a value is missing). Both are written here from one list of
+// short numbers, readable headers, a dash where a value is missing). Both are written here from one list of
 // columns, so that a column added, renamed or dropped changes both files, and the CSV quoting and the Markdown
 // escaping are decided in one place rather than in every runner. A column may be in one of the two files only (a
 // CSV column of raw inputs, a Markdown column of a ratio made for reading); a cell may show another text in the

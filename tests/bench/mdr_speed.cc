@@ -164,96 +164,82 @@ namespace
     std::printf("\nslowest family mean %.0f ns, worst relative error %.1e\n", worst_mean * 1e9, worst_error);
     return 0;
   }
-} // namespace
 
-int main(int argc, char **argv)
-{
-  double min_time = 0.05;
-  bool closed = false;
-  std::string references = GRADCONTACT_DATA_DIR "/references.jsonl";
-  for (int i = 1; i < argc; ++i)
-    if (std::string(argv[i]) == "--min-time" && i + 1 < argc)
-      min_time = std::atof(argv[++i]);
-    else if (std::string(argv[i]) == "--closed")
-      closed = true;
-    else if (std::string(argv[i]) == "--references" && i + 1 < argc)
-      references = argv[++i];
-    else
+  /// The geometry of the runs: contact radius, sphere radius, cone slope, power law, punch depth, work of adhesion.
+  constexpr double a = 1e-4, R = 1e-2, tan_theta = 0.1, n = 1.5, d = 1e-6, dgamma = 0.05;
+  const double     A = 1e-6 / std::pow(a, n);
+
+  /// Warm calls per case, quantity and k: time and error against the closed forms.
+  void warm_calls(const double min_time)
+  {
+    std::printf("| case | quantity | k | time [ms] | relative error |\n|---|---|---|---|---|\n");
+    double worst_time = 0., worst_error = 0.;
+    for (const double k : {-0.9, -0.5, 0., 0.5, 0.9})
       {
-        std::fprintf(stderr, "usage: bench_mdr_speed [--closed [--references file]] [--min-time seconds]\n");
-        return 2;
-      }
-  if (closed)
-    return closed_forms(references, min_time);
-
-  const double a = 1e-4, R = 1e-2, tan_theta = 0.1, n = 1.5, A = 1e-6 / std::pow(a, n), d = 1e-6,
-               dgamma = 0.05;
-  std::printf("| case | quantity | k | time [ms] | relative error |\n|---|---|---|---|---|\n");
-  double worst_time = 0., worst_error = 0.;
-  for (const double k : {-0.9, -0.5, 0., 0.5, 0.9})
-    {
-      const Medium m = medium(GradedHalfSpace{1e9, 1e-3, k, 0.3});
-      const mdr::Profile parab = mdr::power_law(2., 1. / (2. * R)), cone = mdr::power_law(1., tan_theta),
-                         power = mdr::power_law(n, A);
-      const Paraboloid P{R};
-      const Cone C{tan_theta};
-      const PowerLaw W{n, A};
-      const FlatPunch F{a};
-      std::vector<Row> rows;
-      const auto add_profile = [&](const std::string &name, const mdr::Profile &f, auto closed_shape) {
-        rows.push_back({name + " | force", [&, f] { return mdr::force(mdr::indentation(f, m, a), m); },
-                        [&, closed_shape] { return force(m, closed_shape, a); }});
-        for (const double r : {0.5 * a, 0.99 * a})
-          rows.push_back({name + " | pressure r/a = " + std::to_string(r / a).substr(0, 4),
-                          [&, f, r] { return mdr::pressure(mdr::indentation(f, m, a), m, r); },
-                          [&, closed_shape, r] { return pressure(m, closed_shape, a, r); }});
+        const Medium m = medium(GradedHalfSpace{1e9, 1e-3, k, 0.3});
+        const mdr::Profile parab = mdr::power_law(2., 1. / (2. * R)), cone = mdr::power_law(1., tan_theta),
+                           power = mdr::power_law(n, A);
+        const Paraboloid P{R};
+        const Cone C{tan_theta};
+        const PowerLaw W{n, A};
+        const FlatPunch F{a};
+        std::vector<Row> rows;
+        const auto add_profile = [&](const std::string &name, const mdr::Profile &f, auto closed_shape) {
+          rows.push_back({name + " | force", [&, f] { return mdr::force(mdr::indentation(f, m, a), m); },
+                          [&, closed_shape] { return force(m, closed_shape, a); }});
+          for (const double r : {0.5 * a, 0.99 * a})
+            rows.push_back({name + " | pressure r/a = " + std::to_string(r / a).substr(0, 4),
+                            [&, f, r] { return mdr::pressure(mdr::indentation(f, m, a), m, r); },
+                            [&, closed_shape, r] { return pressure(m, closed_shape, a, r); }});
+          for (const double r : {0.5 * a, 2. * a})
+            rows.push_back({name + " | displacement r/a = " + std::to_string(r / a).substr(0, 4),
+                            [&, f, r] { return mdr::displacement(mdr::indentation(f, m, a), m, r); },
+                            [&, closed_shape, r] { return displacement(m, closed_shape, a, r); }});
+        };
+        add_profile("paraboloid", parab, P);
+        add_profile("cone", cone, C);
+        add_profile("power law n = 1.5", power, W);
+        rows.push_back({"flat punch | force", [&] { return mdr::force(mdr::flat(a, d), m); },
+                        [&] { return force(m, F, d); }});
+        rows.push_back({"flat punch | pressure r/a = 0.5", [&] { return mdr::pressure(mdr::flat(a, d), m, 0.5 * a); },
+                        [&] { return pressure(m, F, d, 0.5 * a); }});
         for (const double r : {0.5 * a, 2. * a})
-          rows.push_back({name + " | displacement r/a = " + std::to_string(r / a).substr(0, 4),
-                          [&, f, r] { return mdr::displacement(mdr::indentation(f, m, a), m, r); },
-                          [&, closed_shape, r] { return displacement(m, closed_shape, a, r); }});
-      };
-      add_profile("paraboloid", parab, P);
-      add_profile("cone", cone, C);
-      add_profile("power law n = 1.5", power, W);
-      rows.push_back({"flat punch | force", [&] { return mdr::force(mdr::flat(a, d), m); },
-                      [&] { return force(m, F, d); }});
-      rows.push_back({"flat punch | pressure r/a = 0.5", [&] { return mdr::pressure(mdr::flat(a, d), m, 0.5 * a); },
-                      [&] { return pressure(m, F, d, 0.5 * a); }});
-      for (const double r : {0.5 * a, 2. * a})
-        rows.push_back({"flat punch | displacement r/a = " + std::to_string(r / a).substr(0, 4),
-                        [&, r] { return mdr::displacement(mdr::flat(a, d), m, r); },
-                        [&, r] { return displacement(m, F, d, r); }});
-      rows.push_back({"JKR paraboloid | pressure r/a = 0.5",
-                      [&] { return mdr::pressure(mdr::indentation(parab, m, a, dgamma), m, 0.5 * a); },
-                      [&] { return jkr::pressure(m, P, dgamma, a, 0.5 * a); }});
-      rows.push_back({"JKR paraboloid | displacement r/a = 2.0",
-                      [&] { return mdr::displacement(mdr::indentation(parab, m, a, dgamma), m, 2. * a); },
-                      [&] { return jkr::displacement(m, P, dgamma, a, 2. * a); }});
-      for (const Control control : {Control::force, Control::displacement})
-        {
-          const std::string c = control == Control::force ? "force" : "displacement";
-          rows.push_back({"JKR paraboloid | critical force (" + c + " control)",
-                          [&, control] { return mdr::critical_state(parab, m, dgamma, control).force; },
-                          [&, control] { return jkr::critical_state(m, P, dgamma, control).force; }});
-          rows.push_back({"JKR power law n = 1.5 | critical force (" + c + " control)",
-                          [&, control] { return mdr::critical_state(power, m, dgamma, control).force; },
-                          [&, control] { return jkr::critical_state(m, W, dgamma, control).force; }});
-        }
-      for (const Row &row : rows)
-        {
-          const auto [time, value] = time_call(row.numeric, min_time);
-          const double reference = row.closed();
-          const double error = std::abs(value - reference) / std::abs(reference);
-          std::printf("| %s | %g | %.3f | %.1e |\n", row.name.c_str(), k, time * 1e3, error);
-          std::fflush(stdout);
-          worst_time = std::max(worst_time, time);
-          worst_error = std::max(worst_error, error);
-        }
-    }
-  std::printf("\nworst time %.3f ms, worst relative error %.1e\n", worst_time * 1e3, worst_error);
+          rows.push_back({"flat punch | displacement r/a = " + std::to_string(r / a).substr(0, 4),
+                          [&, r] { return mdr::displacement(mdr::flat(a, d), m, r); },
+                          [&, r] { return displacement(m, F, d, r); }});
+        rows.push_back({"JKR paraboloid | pressure r/a = 0.5",
+                        [&] { return mdr::pressure(mdr::indentation(parab, m, a, dgamma), m, 0.5 * a); },
+                        [&] { return jkr::pressure(m, P, dgamma, a, 0.5 * a); }});
+        rows.push_back({"JKR paraboloid | displacement r/a = 2.0",
+                        [&] { return mdr::displacement(mdr::indentation(parab, m, a, dgamma), m, 2. * a); },
+                        [&] { return jkr::displacement(m, P, dgamma, a, 2. * a); }});
+        for (const Control control : {Control::force, Control::displacement})
+          {
+            const std::string c = control == Control::force ? "force" : "displacement";
+            rows.push_back({"JKR paraboloid | critical force (" + c + " control)",
+                            [&, control] { return mdr::critical_state(parab, m, dgamma, control).force; },
+                            [&, control] { return jkr::critical_state(m, P, dgamma, control).force; }});
+            rows.push_back({"JKR power law n = 1.5 | critical force (" + c + " control)",
+                            [&, control] { return mdr::critical_state(power, m, dgamma, control).force; },
+                            [&, control] { return jkr::critical_state(m, W, dgamma, control).force; }});
+          }
+        for (const Row &row : rows)
+          {
+            const auto [time, value] = time_call(row.numeric, min_time);
+            const double reference = row.closed();
+            const double error = std::abs(value - reference) / std::abs(reference);
+            std::printf("| %s | %g | %.3f | %.1e |\n", row.name.c_str(), k, time * 1e3, error);
+            std::fflush(stdout);
+            worst_time = std::max(worst_time, time);
+            worst_error = std::max(worst_error, error);
+          }
+      }
+    std::printf("\nworst time %.3f ms, worst relative error %.1e\n", worst_time * 1e3, worst_error);
+  }
 
-  // Cold calls: a new k on every call, so that no Gauss-Jacobi rule is in the thread's cache (each call
-  // builds the rules it needs).
+  /// Cold calls: a new k on every call, so that no Gauss-Jacobi rule is in the thread's cache (each call builds the
+  /// rules it needs).
+  void cold_calls()
   {
     std::printf("\n| cold call (new k each call) | time [ms] | worst relative error |\n|---|---|---|\n");
     const mdr::Profile power = mdr::power_law(n, A);
@@ -281,42 +267,70 @@ int main(int argc, char **argv)
          [&](const Medium &m) { return jkr::critical_state(m, W, dgamma, Control::force).force; });
   }
 
-  // The edges: k -> +-1, r -> 0 and r -> a from both sides, p(0) with n + k -> 1.
-  std::printf("\n| edge | k | time [ms] | relative error |\n|---|---|---|---|\n");
-  for (const double k : {-0.999, -0.99, 0.99, 0.999})
-    {
-      const Medium m = medium(GradedHalfSpace{1e9, 1e-3, k, 0.3});
-      const mdr::Profile power = mdr::power_law(n, A);
-      const PowerLaw W{n, A};
-      std::vector<Row> rows;
-      for (const double r : {1e-6 * a, 1e-3 * a, 0.5 * a, (1. - 1e-5) * a})
-        rows.push_back({"power law pressure r/a = " + std::to_string(r / a),
-                        [&, r] { return mdr::pressure(mdr::indentation(power, m, a), m, r); },
-                        [&, r] { return pressure(m, W, a, r); }});
-      for (const double r : {1e-6 * a, (1. - 1e-5) * a, (1. + 1e-10) * a, (1. + 1e-5) * a, 1e3 * a})
-        rows.push_back({"power law displacement r/a = " + std::to_string(r / a),
-                        [&, r] { return mdr::displacement(mdr::indentation(power, m, a), m, r); },
-                        [&, r] { return displacement(m, W, a, r); }});
-      for (const Row &row : rows)
-        {
-          const auto [time, value] = time_call(row.numeric, min_time);
-          const double reference = row.closed();
-          std::printf("| %s | %g | %.3f | %.1e |\n", row.name.c_str(), k, time * 1e3,
-                      std::abs(value - reference) / std::abs(reference));
-          std::fflush(stdout);
-        }
-    }
-  for (const double k : {-0.5, 0.5})
-    for (const double excess : {1e-1, 1e-3})
+  /// The edges: k -> +-1, r -> 0 and r -> a from both sides, p(0) with n + k -> 1.
+  void edges(const double min_time)
+  {
+    std::printf("\n| edge | k | time [ms] | relative error |\n|---|---|---|---|\n");
+    for (const double k : {-0.999, -0.99, 0.99, 0.999})
       {
-        // p(0) of a tip with n + k - 1 = excess (1 + k)
         const Medium m = medium(GradedHalfSpace{1e9, 1e-3, k, 0.3});
-        const double nn = (1. - k) + excess * (1. + k);
-        const mdr::Profile tip = mdr::power_law(nn, 1.);
-        const auto [time, value] = time_call([&] { return mdr::pressure(mdr::indentation(tip, m, a), m, 0.); }, min_time);
-        const double reference = pressure(m, PowerLaw{nn, 1.}, a, 0.);
-        std::printf("| p(0), n + k - 1 = %g (1 + k) | %g | %.3f | %.1e |\n", excess, k, time * 1e3,
-                    std::abs(value - reference) / std::abs(reference));
+        const mdr::Profile power = mdr::power_law(n, A);
+        const PowerLaw W{n, A};
+        std::vector<Row> rows;
+        for (const double r : {1e-6 * a, 1e-3 * a, 0.5 * a, (1. - 1e-5) * a})
+          rows.push_back({"power law pressure r/a = " + std::to_string(r / a),
+                          [&, r] { return mdr::pressure(mdr::indentation(power, m, a), m, r); },
+                          [&, r] { return pressure(m, W, a, r); }});
+        for (const double r : {1e-6 * a, (1. - 1e-5) * a, (1. + 1e-10) * a, (1. + 1e-5) * a, 1e3 * a})
+          rows.push_back({"power law displacement r/a = " + std::to_string(r / a),
+                          [&, r] { return mdr::displacement(mdr::indentation(power, m, a), m, r); },
+                          [&, r] { return displacement(m, W, a, r); }});
+        for (const Row &row : rows)
+          {
+            const auto [time, value] = time_call(row.numeric, min_time);
+            const double reference = row.closed();
+            std::printf("| %s | %g | %.3f | %.1e |\n", row.name.c_str(), k, time * 1e3,
+                        std::abs(value - reference) / std::abs(reference));
+            std::fflush(stdout);
+          }
       }
+    for (const double k : {-0.5, 0.5})
+      for (const double excess : {1e-1, 1e-3})
+        {
+          // p(0) of a tip with n + k - 1 = excess (1 + k)
+          const Medium m = medium(GradedHalfSpace{1e9, 1e-3, k, 0.3});
+          const double nn = (1. - k) + excess * (1. + k);
+          const mdr::Profile tip = mdr::power_law(nn, 1.);
+          const auto [time, value] = time_call([&] { return mdr::pressure(mdr::indentation(tip, m, a), m, 0.); }, min_time);
+          const double reference = pressure(m, PowerLaw{nn, 1.}, a, 0.);
+          std::printf("| p(0), n + k - 1 = %g (1 + k) | %g | %.3f | %.1e |\n", excess, k, time * 1e3,
+                      std::abs(value - reference) / std::abs(reference));
+        }
+  }
+} // namespace
+
+int main(int argc, char **argv)
+{
+  double min_time = 0.05;
+  bool closed = false;
+  std::string references = GRADCONTACT_DATA_DIR "/references.jsonl";
+  for (int i = 1; i < argc; ++i)
+    if (std::string(argv[i]) == "--min-time" && i + 1 < argc)
+      min_time = std::atof(argv[++i]);
+    else if (std::string(argv[i]) == "--closed")
+      closed = true;
+    else if (std::string(argv[i]) == "--references" && i + 1 < argc)
+      references = argv[++i];
+    else
+      {
+        std::fprintf(stderr, "usage: bench_mdr_speed [--closed [--references file]] [--min-time seconds]\n");
+        return 2;
+      }
+  if (closed)
+    return closed_forms(references, min_time);
+
+  warm_calls(min_time);
+  cold_calls();
+  edges(min_time);
   return 0;
 }
