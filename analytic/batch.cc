@@ -199,23 +199,9 @@ namespace gradcontact::batch
     /// superposed over the contact's pressure.
     double stress_component(const In &q, const AxisymmetricPressure &load)
     {
-      const GradedHalfSpace    body      = stress_body(q);
-      const std::string        component = q.component();
-      const AxisymmetricStress s         = subsurface_stress(PointLoadField(body.k, body.nu), load, q.r(), q.z());
-      if (component == "von_mises" || component == "max_shear")
-        return measure(s, stress_measure(q));
-      const double centre = (s.rr + s.zz) / 2, radius = std::hypot((s.rr - s.zz) / 2, s.rz);
-      const std::map<std::string, double> components = {{"rr", s.rr},
-                                                        {"zz", s.zz},
-                                                        {"tt", s.tt},
-                                                        {"rz", s.rz},
-                                                        {"principal_max", std::max(centre + radius, s.tt)},
-                                                        {"principal_min", std::min(centre - radius, s.tt)}};
-      const auto found = components.find(component);
-      if (found == components.end())
-        throw DomainError("component = '" + component + "' must be one of " + check::keys(components) +
-                          ", von_mises, max_shear");
-      return found->second;
+      const GradedHalfSpace body = stress_body(q);
+      return gradcontact::stress_component(subsurface_stress(PointLoadField(body.k, body.nu), load, q.r(), q.z()),
+                                           q.component());
     }
 
     /// The largest von Mises stress or shear below `load` (largest_stress) and where it is.

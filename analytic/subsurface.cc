@@ -7,6 +7,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
+#include <string>
 #include <vector>
 
 namespace gradcontact
@@ -201,6 +203,28 @@ namespace gradcontact
     const double centre = (s.rr + s.zz) / 2, radius = std::hypot((s.rr - s.zz) / 2, s.rz);
     return (std::max(centre + radius, s.tt) - std::min(centre - radius, s.tt)) / 2;
   }
+
+  double stress_component(const AxisymmetricStress &s, const std::string &name)
+  {
+    if (name == "von_mises")
+      return measure(s, StressMeasure::von_mises);
+    if (name == "max_shear")
+      return measure(s, StressMeasure::max_shear);
+    const double centre = (s.rr + s.zz) / 2, radius = std::hypot((s.rr - s.zz) / 2, s.rz);
+    const std::map<std::string, double> components = {{"rr", s.rr},
+                                                      {"zz", s.zz},
+                                                      {"tt", s.tt},
+                                                      {"rz", s.rz},
+                                                      {"principal_max", std::max(centre + radius, s.tt)},
+                                                      {"principal_min", std::min(centre - radius, s.tt)}};
+    const auto found = components.find(name);
+    if (found == components.end())
+      throw DomainError("component = '" + name + "' must be one of " + check::keys(components) +
+                        ", von_mises, max_shear");
+    return found->second;
+  }
+
+
 
   StressMaximum largest_stress(const PointLoadField &field, const AxisymmetricPressure &load, const StressMeasure m)
   {

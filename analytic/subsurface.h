@@ -16,6 +16,7 @@
 #include <analytic/point_load.h>
 
 #include <functional>
+#include <string>
 
 namespace gradcontact
 {
@@ -56,6 +57,9 @@ namespace gradcontact
     max_shear
   };
   double measure(const AxisymmetricStress &s, StressMeasure m);
+  /// The component `name` of a stress: rr, zz, tt (hoop), rz, principal_max, principal_min (of the meridian pair and
+  /// the hoop stress), von_mises or max_shear. A DomainError naming the valid ones when it is none of them.
+  double stress_component(const AxisymmetricStress &s, const std::string &name);
 
   /// Where a measure is largest below a contact, and its value.
   struct StressMaximum

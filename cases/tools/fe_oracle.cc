@@ -3,12 +3,18 @@
 #include <analytic/batch.h>
 #include <analytic/errors.h>
 #include <analytic/material.h>
+#include <analytic/subsurface.h>
 #include <fem/accuracy/accuracy.h>
 #include <fem/modulus/modulus.h>
 
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
+#include <array>
 #include <cmath>
+#include <functional>
+#include <limits>
+#include <map>
 #include <cstdio>
 #include <memory>
 #include <optional>
@@ -53,6 +59,107 @@ namespace gradcontact::cases
     }
   } // namespace
 
+  /// The largest stress measure below a contact and where it is (FeOracle's header).
+  struct Maximum
+  {
+    fem::Estimated value;       ///< of the measure at (r, z)
+    fem::Estimated r, z;        ///< r/a, z/a with the estimate of the header
+  };
+
+  namespace
+  {
+    fem::Estimated stress_measure(const std::array<fem::Estimated, 4> &c, const std::string &name);
+
+    /// The measure `name` of the components on ladder level l.
+    double on_level(const std::array<fem::Estimated, 4> &c, const std::string &name, const std::size_t l)
+    {
+      return stress_component(AxisymmetricStress{c[0].levels[l], c[1].levels[l], c[2].levels[l], c[3].levels[l]},
+                              name);
+    }
+
+    /// The grid of the first pass of the search (FeOracle's header): r/a in steps of 1/20 up to 2, z/a geometric
+    /// from 1e-3 to 2.
+    std::vector<fem::StressPoint> first_grid()
+    {
+      std::vector<fem::StressPoint> points;
+      for (unsigned int i = 0; i <= 40; ++i)
+        for (unsigned int j = 0; j < 30; ++j)
+          points.push_back({i / 20.0, 1e-3 * std::pow(2e3, j / 29.0)});
+      return points;
+    }
+
+    /// A 7 x 7 grid about (r, z) with steps dr, dz, inside r >= 0, z > 0: its points, and the index of the point
+    /// (r + i dr, z + j dz) at index[i + 3][j + 3] (-1 outside).
+    struct LocalGrid
+    {
+      std::vector<fem::StressPoint> points;
+      int                           index[7][7];
+      double                        dr = 0, dz = 0;
+    };
+    LocalGrid local_grid(const double r, const double z, const double dr, const double dz)
+    {
+      LocalGrid g;
+      g.dr = dr;
+      g.dz = dz;
+      for (int i = -3; i <= 3; ++i)
+        for (int j = -3; j <= 3; ++j)
+          {
+            g.index[i + 3][j + 3] = -1;
+            if (r + i * dr >= 0 && z + j * dz > 0)
+              {
+                g.index[i + 3][j + 3] = static_cast<int>(g.points.size());
+                g.points.push_back({r + i * dr, z + j * dz});
+              }
+          }
+      return g;
+    }
+
+    /// The vertex of the parabola through (-1, fm), (0, f0), (1, fp): its abscissa, within [-1, 1], and the rise of
+    /// its value over f0 (0 and 0 when the three values do not bend down).
+    std::pair<double, double> vertex(const double fm, const double f0, const double fp)
+    {
+      const double bend = fm - 2 * f0 + fp;
+      if (!(bend < 0))
+        return {0.0, 0.0};
+      const double x = std::clamp((fm - fp) / (2 * bend), -1.0, 1.0);
+      return {x, -bend * x * x / 2};
+    }
+
+    /// The largest measure on the grid of one ladder level, refined by a parabola through the grid point and its
+    /// neighbours at `step` grid steps in r and in z (the measure is even in r, so r = 0 is its own mirror).
+    struct Fit
+    {
+      double r = 0, z = 0, value = 0;
+    };
+    Fit fit(const LocalGrid &g, const std::function<double(int)> &measure, const int bi, const int bj, const int step)
+    {
+      const fem::StressPoint &b  = g.points[g.index[bi + 3][bj + 3]];
+      const auto              at = [&](const int i, const int j) {
+        if (i < -3 || i > 3 || j < -3 || j > 3 || g.index[i + 3][j + 3] < 0)
+          return std::numeric_limits<double>::quiet_NaN();
+        return measure(g.index[i + 3][j + 3]);
+      };
+      // On the axis the point at -step dr is the mirror of the one at +step dr.
+      const auto mirrored = [&](const int i, const int j) { return b.r == 0 && i < bi ? at(2 * bi - i, j) : at(i, j); };
+      const double            f0 = measure(g.index[bi + 3][bj + 3]);
+      Fit                     out{b.r, b.z, f0};
+      const double rm = mirrored(bi - step, bj), rp = at(bi + step, bj), zm = at(bi, bj - step), zp = at(bi, bj + step);
+      if (std::isfinite(rm) && std::isfinite(rp))
+        {
+          const auto [x, rise] = vertex(rm, f0, rp);
+          out.r += x * step * g.dr;
+          out.value += rise;
+        }
+      if (std::isfinite(zm) && std::isfinite(zp))
+        {
+          const auto [x, rise] = vertex(zm, f0, zp);
+          out.z += x * step * g.dz;
+          out.value += rise;
+        }
+      return out;
+    }
+  } // namespace
+
   struct FeOracle::UnitState
   {
     fem::LoadCase load;
@@ -64,14 +171,19 @@ namespace gradcontact::cases
     std::map<std::pair<bool, double>, fem::Estimated> samples;
     /// radii announced by FeOracle::plan, solved together with the first one asked
     std::map<bool, std::set<double>> planned;
+    /// (r/a, z/a) -> the estimated stress components, and the points announced
+    std::map<std::pair<double, double>, std::array<fem::Estimated, 4>> stresses;
+    std::set<std::pair<double, double>>                              planned_stress;
+    /// measure -> its largest value below the contact (largest())
+    std::map<std::string, Maximum> maxima;
 
     /// Refuses an answer that the contract did not deliver, naming what limits it and what the finest level gives. A
     /// quantity whose own estimate is within the tolerance is delivered though another one of the same run is not
     /// (a pressure's estimate counts from three levels on, fem/accuracy/accuracy.h).
     void check(const fem::ContractResult &r, const fem::Estimated &e, const char *what) const
     {
-      const bool pressure = std::string(what) == "pressure";
-      const bool own = e.relative() <= r.tolerance && (!pressure || e.levels.size() >= 3);
+      const bool local = std::string(what) == "pressure" || std::string(what) == "stress";
+      const bool own = e.relative() <= r.tolerance && (!local || e.levels.size() >= 3);
       if (!r.met && !own)
         throw std::runtime_error(std::string("fe: the ") + what + " does not reach tolerance " +
                                  check::format(r.tolerance) + ": " + r.limit + " (the finest level, " +
@@ -113,7 +225,114 @@ namespace gradcontact::cases
       planned[pressure].clear();
       return samples.at(key);
     }
+
+    /// The stress components at (r/a, z/a), with every planned point not solved yet in the same ladder run.
+    const std::array<fem::Estimated, 4> &stress(const double r, const double z)
+    {
+      const auto key = std::make_pair(r, z);
+      if (const auto found = stresses.find(key); found != stresses.end())
+        return found->second;
+      std::set<std::pair<double, double>> points = planned_stress;
+      points.insert(key);
+      fem::OutputRequest outputs;
+      for (const auto &[x, y] : points)
+        if (!stresses.count({x, y}))
+          outputs.stress_points.push_back({x, y});
+      const fem::ContractResult result = solver->run(load, outputs);
+      if (result.stress.size() != outputs.stress_points.size())
+        throw std::runtime_error("fe: " + std::to_string(result.stress.size()) + " FE stress samples for " +
+                                 std::to_string(outputs.stress_points.size()) + " points (" + result.limit +
+                                 result.result.message + ")");
+      for (std::size_t i = 0; i < result.stress.size(); ++i)
+        {
+          for (const fem::Estimated &e : result.stress[i])
+            check(result, e, "stress");
+          stresses[{outputs.stress_points[i].r, outputs.stress_points[i].z}] = result.stress[i];
+        }
+      planned_stress.clear();
+      return stresses.at(key);
+    }
+
+    /// The index of the largest measure `name` on ladder level l (the last one: -1) over a run's points.
+    static std::size_t argmax(const fem::ContractResult &r, const std::string &name, const std::size_t level)
+    {
+      std::size_t best = 0;
+      for (std::size_t i = 1; i < r.stress.size(); ++i)
+        if (on_level(r.stress[i], name, level) > on_level(r.stress[best], name, level))
+          best = i;
+      return best;
+    }
+
+    /// The largest measure `name` below the contact (FeOracle's header).
+    const Maximum &largest(const std::string &name)
+    {
+      if (const auto found = maxima.find(name); found != maxima.end())
+        return found->second;
+      fem::OutputRequest outputs;
+      outputs.stress_points        = first_grid();
+      fem::ContractResult result   = solver->run(load, outputs);
+      fem::StressPoint    best     = outputs.stress_points.at(argmax(result, name, result.level_dofs.size() - 1));
+      LocalGrid           g;
+      g.dr = 1 / 20.0;
+      g.dz = best.z * (std::pow(2e3, 1 / 29.0) - 1);
+      for (unsigned int pass = 0; pass < 4; ++pass)
+        {
+          g                     = local_grid(best.r, best.z, g.dr / 3, g.dz / 3);
+          outputs.stress_points = g.points;
+          result                = solver->run(load, outputs);
+          best = outputs.stress_points.at(argmax(result, name, result.level_dofs.size() - 1));
+        }
+      return maxima[name] = located(result, g, name);
+    }
+
+    /// The maximum of the last grid (largest()): the parabolic fit about its best point on the finest level, with
+    /// the estimates of FeOracle's header.
+    Maximum located(const fem::ContractResult &result, const LocalGrid &g, const std::string &name) const
+    {
+      const std::size_t levels = result.level_dofs.size(), i = argmax(result, name, levels - 1);
+      int               bi = 0, bj = 0;
+      for (int x = 0; x < 7; ++x)
+        for (int y = 0; y < 7; ++y)
+          if (g.index[x][y] == static_cast<int>(i))
+            bi = x - 3, bj = y - 3;
+      const auto level = [&](const std::size_t l) {
+        return [&result, &name, l](const int k) { return on_level(result.stress[k], name, l); };
+      };
+      const Fit finest = fit(g, level(levels - 1), bi, bj, 1), coarse_grid = fit(g, level(levels - 1), bi, bj, 2);
+      const Fit below  = levels > 1 ? fit(g, level(levels - 2), bi, bj, 1) : finest;
+      Maximum   m;
+      m.value = stress_measure(result.stress[i], name);
+      check(result, m.value, "stress");
+      m.value.error += std::abs(finest.value - m.value.value) + std::abs(finest.value - coarse_grid.value);
+      m.value.value = finest.value;
+      m.r.value     = finest.r;
+      m.r.error     = std::max(std::abs(finest.r - coarse_grid.r), std::abs(finest.r - below.r));
+      m.r.scale     = 1;
+      m.z.value     = finest.z;
+      m.z.error     = std::max(std::abs(finest.z - coarse_grid.z), std::abs(finest.z - below.z));
+      m.z.scale     = finest.z;
+      return m;
+    }
   };
+
+  namespace
+  {
+    /// The component `name` of the estimated stress and its error bound (the header's propagation to the measures).
+    fem::Estimated stress_measure(const std::array<fem::Estimated, 4> &c, const std::string &name)
+    {
+      const AxisymmetricStress s{c[0].value, c[1].value, c[2].value, c[3].value};
+      fem::Estimated           e;
+      e.value = stress_component(s, name);
+      e.scale = c[0].scale;
+      const std::map<std::string, std::size_t> own = {{"rr", 0}, {"zz", 1}, {"tt", 2}, {"rz", 3}};
+      if (const auto found = own.find(name); found != own.end())
+        return c[found->second];
+      const double F = std::sqrt(c[0].error * c[0].error + c[1].error * c[1].error + c[2].error * c[2].error +
+                                 2 * c[3].error * c[3].error);
+      e.error = name == "von_mises" ? std::sqrt(1.5) * F : F;
+      return e;
+    }
+  } // namespace
 
   FeOracle::FeOracle() = default;
   FeOracle::~FeOracle() = default;
@@ -149,7 +368,9 @@ namespace gradcontact::cases
     fem::LoadCase load;
     std::string quantity;
     double E_a = 0, a = 0, amplitude = 0;
-    double r = 0;               ///< r / a (pressure, displacement)
+    double r = 0;               ///< r / a (pressure, displacement, stress)
+    double z = 0;               ///< z / a (stress)
+    std::string component;      ///< of a stress
     bool   outside = false;     ///< a pressure outside the contact: exactly 0
   };
 
@@ -215,8 +436,40 @@ namespace gradcontact::cases
       refuse("case = '" + c + "' has no FE answer (valid: flat_punch, paraboloid, cone, power_law)");
 
     p.quantity = q.quantity;
-    if (p.quantity != "force" && p.quantity != "depth" && p.quantity != "pressure" && p.quantity != "displacement")
-      refuse("quantity = '" + p.quantity + "' has no FE answer (valid: force, depth, pressure, displacement)");
+    const bool maximum = p.quantity == "max_stress" || p.quantity == "max_stress_radius" ||
+                         p.quantity == "max_stress_depth";
+    if (p.quantity != "force" && p.quantity != "depth" && p.quantity != "pressure" && p.quantity != "displacement" &&
+        p.quantity != "stress" && !maximum)
+      refuse("quantity = '" + p.quantity + "' has no FE answer (valid: force, depth, pressure, displacement, stress, "
+             "max_stress, max_stress_radius, max_stress_depth)");
+    if (maximum)
+      {
+        if (!q.component || (*q.component != "von_mises" && *q.component != "max_shear"))
+          refuse("component: " + (q.component ? "= '" + *q.component + "'" : std::string("missing")) +
+                 "; valid: von_mises, max_shear (the measure of a largest stress)");
+        if (body.k < 0)
+          refuse("k = " + check::format(body.k) + ": on a stiff surface the radial and hoop stresses grow without "
+                 "bound toward the surface, so a largest stress does not exist; valid: k >= 0");
+        if (c == "flat_punch")
+          refuse("case = 'flat_punch': its edge makes every stress measure unbounded; valid: paraboloid, cone, "
+                 "power_law");
+        p.component = *q.component;
+      }
+    if (p.quantity == "stress")
+      {
+        if (!q.r || !q.z)
+          refuse(std::string(q.r ? "z" : "r") + ": missing (the point of the stress)");
+        p.r = *q.r / p.a;
+        p.z = *q.z / p.a;
+        if (!(std::isfinite(p.r) && p.r >= 0))
+          refuse("r = " + check::format(*q.r) + "; valid: [0, inf)");
+        if (!(std::isfinite(p.z) && p.z > 0))
+          refuse("z = " + check::format(*q.z) + "; valid: (0, inf) (below the surface)");
+        if (!q.component)
+          refuse("component: missing (rr, zz, tt, rz, principal_max, principal_min, von_mises, max_shear)");
+        p.component = *q.component;
+        stress_component(AxisymmetricStress{}, p.component); // names the valid components when it is none
+      }
     if (p.quantity == "depth" && c == "flat_punch")
       refuse("quantity = 'depth' of the flat punch is its input d");
     if (p.quantity == "pressure" || p.quantity == "displacement")
@@ -254,11 +507,16 @@ namespace gradcontact::cases
       {
         return; // evaluate() reports it
       }
+    const auto found = states.find(p.key);
+    if (p.quantity == "stress")
+      {
+        (found != states.end() ? found->second->planned_stress : stress_plans[p.key]).insert({p.r, p.z});
+        return;
+      }
     if (p.quantity != "pressure" && p.quantity != "displacement")
       return;
     if (p.outside)
       return;
-    const auto found = states.find(p.key);
     auto &radii = found != states.end() ? found->second->planned : plans[p.key];
     radii[p.quantity == "pressure"].insert(p.r);
   }
@@ -272,6 +530,8 @@ namespace gradcontact::cases
       {
         state.planned = std::move(plans[p.key]);
         plans.erase(p.key);
+        state.planned_stress = std::move(stress_plans[p.key]);
+        stress_plans.erase(p.key);
       }
     Answer answer;
     answer.dofs = state.scalars.level_dofs.empty() ? 0 : state.scalars.level_dofs.back();
@@ -292,6 +552,22 @@ namespace gradcontact::cases
         v = state.scalars.depth;
         state.check(state.scalars, v, "depth");
         scale = p.a * p.amplitude;
+      }
+    else if (p.quantity == "stress")
+      {
+        v     = stress_measure(state.stress(p.r, p.z), p.component);
+        scale = p.E_a * p.amplitude;
+      }
+    else if (p.quantity == "max_stress")
+      {
+        v     = state.largest(p.component).value;
+        scale = p.E_a * p.amplitude;
+      }
+    else if (p.quantity == "max_stress_radius" || p.quantity == "max_stress_depth")
+      {
+        const Maximum &m = state.largest(p.component);
+        v                = p.quantity == "max_stress_radius" ? m.r : m.z;
+        scale            = p.a;
       }
     else
       {

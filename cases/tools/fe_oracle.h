@@ -4,10 +4,22 @@
 // error of the force, default 1e-6, in [1e-8, 1e-2]) is answered by the axisymmetric FE model
 // (fem/bodies/axisymmetric_solver.h) instead of a closed form: the cases flat_punch (at depth d), paraboloid, cone and
 // power_law (at contact radius a, the contact-radius control of the FE model), the quantities force, depth
-// (indenters), pressure and displacement (at r). The FE keeps the accuracy contract of fem/accuracy/accuracy.h: the
+// (indenters), pressure and displacement (at r) and stress (at r, z > 0: a component of the recovered stress,
+// fem/elasticity/stress_recovery.h). The FE keeps the accuracy contract of fem/accuracy/accuracy.h: the
 // answer comes from the ladder of uniform refinements that first brings the Richardson estimate within the
 // tolerance, and carries that estimate, absolute ("error_estimate") and relative ("relative_error_estimate": to
-// |F|, |d|, |w(r)|, and for a pressure to the largest |p| sampled with it). A tolerance the ladder cannot reach is
+// |F|, |d|, |w(r)|, for a pressure to the largest |p| sampled with it, for a stress to the largest component
+// sampled with it). A stress measure (principal, von Mises, largest shear) carries the bound its components'
+// estimates give: a principal stress moves by at most the Frobenius norm F of the components' errors (Weyl's
+// inequality; F^2 = e_rr^2 + e_zz^2 + e_tt^2 + 2 e_rz^2), the largest shear by at most F, von Mises by at most
+// sqrt(3/2) F.
+//
+// The largest stress ("max_stress", "max_stress_radius", "max_stress_depth" with component von_mises or max_shear;
+// k >= 0 and the indenters only, as on the closed-form side, analytic/subsurface.h): the recovered field on the
+// grid r/a = 0, 1/20, ..., 2 by 30 depths geometric from 1e-3 a to 2 a, all in one ladder run, then four runs of a
+// 7 x 7 grid about the best point with a third of the steps each time. The value's estimate is the measure's at
+// that point; the location's is the larger of its change from the level below to the finest and half the last
+// step (relative to a for the radius, to the depth for the depth). A tolerance the ladder cannot reach is
 // a refusal that names the limit (the DoF budget, the far field, an unreliable solve), never a value.
 //
 // Reuse. Besides c0 the power-law half-space has no length of its own, and c0 enters only through
@@ -15,7 +27,7 @@
 // load is linear in its amplitude s (d/a for the flat punch; a/R, tan theta, A a^(n-1) for the profile in units
 // of a). So one FE state per (k, nu, tolerance, case, n), solved at radius 1 on E = z^k with unit amplitude,
 // answers every request of that kind:
-//   F = E_a a^2 s F~,  d = a s d~,  p(r) = E_a s p~(r/a),  w(r) = a s w~(r/a).
+//   F = E_a a^2 s F~,  d = a s d~,  p(r) = E_a s p~(r/a),  w(r) = a s w~(r/a),  sigma(r, z) = E_a s sigma~(r/a, z/a).
 // A pressure or displacement at a new r/a is one more run of the same factorised solver (back-substitutions).
 #ifndef GRADCONTACT_CASES_FE_ORACLE_H
 #define GRADCONTACT_CASES_FE_ORACLE_H
@@ -31,6 +43,7 @@
 #include <memory>
 #include <ostream>
 #include <set>
+#include <utility>
 #include <string>
 
 namespace gradcontact::cases
@@ -54,8 +67,9 @@ namespace gradcontact::cases
     /// request's parsing) naming the entry when the request is not one the FE answers.
     Answer evaluate(const nlohmann::json &request);
 
-    /// Announces a request that will follow: its pressure or displacement radius is then sampled in the same
-    /// run as the first one of its unit state (a batch costs one run per state and quantity). Never throws.
+    /// Announces a request that will follow: its pressure or displacement radius, or its stress point, is then
+    /// sampled in the same run as the first one of its unit state (a batch costs one run per state and quantity).
+    /// Never throws.
     void plan(const nlohmann::json &request);
 
     /// FE states solved so far (each a ladder of meshes) and requests answered from them.
@@ -70,6 +84,7 @@ namespace gradcontact::cases
 
     std::map<std::string, std::unique_ptr<UnitState>>          states;
     std::map<std::string, std::map<bool, std::set<double>>>    plans; ///< radii of states not built yet
+    std::map<std::string, std::set<std::pair<double, double>>> stress_plans; ///< (r/a, z/a) of states not built yet
     unsigned int                                       solved = 0, answered = 0;
   };
 

@@ -1,4 +1,5 @@
 #include "tools/figures.h"
+#include "tools/fe_oracle.h"
 
 #include "runners/fe_adhesion.h"
 #include "runners/fe_scene.h"
@@ -264,7 +265,36 @@ namespace gradcontact::cases
       ResultCache cache;
     };
 
-    /// The FE point set of curve `c` (kinds "fe", "fe_adhesion", "fe_tangential"), through the cache.
+    /// FE points in the eval vocabulary: "request" with "method": "fe" (cases/tools/fe_oracle.h) at every one of
+    /// "values" of its "key", times "scale"; the abscissa is the value times "x_scale". One oracle answers the set,
+    /// so the points of one unit state share its ladder run.
+    Series fe_eval_points(const json &fe, const std::string &title, PointCache &cache)
+    {
+      return cache.get("fe_eval\n" + fe.dump(), [&] {
+        const std::string         key    = fe.at("key");
+        const std::vector<double> values = fe.at("values").get<std::vector<double>>();
+        std::vector<json>         requests;
+        for (const double v : values)
+          {
+            json request      = fe.at("request");
+            request[key]      = v;
+            request["method"] = "fe";
+            requests.push_back(request);
+          }
+        FeOracle oracle;
+        for (const json &request : requests)
+          oracle.plan(request);
+        Series points{title, {}, {}, true};
+        for (std::size_t i = 0; i < values.size(); ++i)
+          {
+            points.x.push_back(values[i] * fe.value("x_scale", 1.));
+            points.y.push_back(oracle.evaluate(requests[i]).value * fe.value("scale", 1.));
+          }
+        return points;
+      });
+    }
+
+    /// The FE point set of curve `c` (kinds "fe", "fe_eval", "fe_adhesion", "fe_tangential"), through the cache.
     Series fe_points(const json &c, PointCache &cache)
     {
       const std::string title = c.value("title", "FE");
@@ -282,6 +312,8 @@ namespace gradcontact::cases
             return Series{title, p.x, p.y, true};
           });
         }
+      if (c.contains("fe_eval"))
+        return fe_eval_points(c.at("fe_eval"), title, cache);
       if (c.contains("fe_adhesion"))
         {
           // FE adhesive states (fem/adhesion/adhesion.h) of a .prm scene at a = x a_c (a_c: the FE critical radius
@@ -698,14 +730,14 @@ namespace gradcontact::cases
           if (c.contains("points"))
             points = {c.value("title", "points"), c.at("points").at("x").get<std::vector<double>>(),
                       c.at("points").at("y").get<std::vector<double>>(), true};
-          else if (c.contains("fe") || c.contains("fe_adhesion") || c.contains("fe_tangential"))
+          else if (c.contains("fe") || c.contains("fe_eval") || c.contains("fe_adhesion") || c.contains("fe_tangential"))
             points = fe_points(c, cache);
           else if (c.contains("fe_map"))
             points = map_points(c, cache, reports);
           else
             throw std::invalid_argument("figures: " + file.string() + ": curve '" + c.value("title", "") +
-                                        "' has none of sweep, prescribed, points, fe, fe_adhesion, fe_tangential, "
-                                        "fe_map");
+                                        "' has none of sweep, prescribed, points, fe, fe_eval, fe_adhesion, "
+                                        "fe_tangential, fe_map");
           if (points.x.size() != points.y.size())
             throw std::invalid_argument("figures: " + file.string() + ": point set '" + points.title + "' has " +
                                         std::to_string(points.x.size()) + " abscissae and " +

@@ -34,7 +34,8 @@ namespace gradcontact::fem
     }
 
     /// The quantities the contract covers for `load`, as the values of one level's result.
-    std::vector<LadderValue> quantities(const LoadCase &load, const Result &r, const double contact_radius)
+    std::vector<LadderValue> quantities(const LoadCase &load, const Result &r, const double contact_radius,
+                                        const std::vector<StressPoint> &points)
     {
       std::vector<LadderValue> q;
       if (load.type != LoadType::constant_pressure)
@@ -53,6 +54,19 @@ namespace gradcontact::fem
         q.push_back({"p(" + format(s.r) + ")", s.value, p_max, true});
       for (const Sample &s : r.displacement)
         q.push_back({"w(" + format(s.r) + ")", s.value, std::abs(s.value), false, s.r / contact_radius});
+      // A stress sample: relative to the largest stress component sampled (a component that crosses zero would
+      // otherwise ask for an error far below the field's size), and, recovered like the pressure, on three levels.
+      double s_max = 0;
+      for (const StressValue &s : r.stress)
+        s_max = std::max({s_max, std::abs(s.rr), std::abs(s.zz), std::abs(s.tt), std::abs(s.rz)});
+      for (std::size_t i = 0; i < r.stress.size(); ++i)
+        {
+          const StressValue &s     = r.stress[i];
+          const std::string  where = "(" + format(points[i].r) + ", " + format(points[i].z) + ")";
+          for (const auto &[name, value] : {std::pair{"sigma_rr", s.rr}, std::pair{"sigma_zz", s.zz},
+                                            std::pair{"sigma_tt", s.tt}, std::pair{"sigma_rz", s.rz}})
+            q.push_back({name + where, value, s_max, true});
+        }
       return q;
     }
   } // namespace
@@ -114,6 +128,9 @@ namespace gradcontact::fem
         worst = std::max(worst, e->relative());
     for (const auto *samples : {&pressure, &displacement})
       for (const Estimated &e : *samples)
+        worst = std::max(worst, e.relative());
+    for (const auto &point : stress)
+      for (const Estimated &e : point)
         worst = std::max(worst, e.relative());
     return worst;
   }
@@ -480,7 +497,7 @@ namespace gradcontact::fem
             out.result = std::move(r);
             break;
           }
-        const bool stop = record.add(quantities(load, r, base.mesh.contact_radius), r.n_dofs);
+        const bool stop = record.add(quantities(load, r, base.mesh.contact_radius, outputs.stress_points), r.n_dofs);
         out.result      = std::move(r);
         if (stop)
           break;
@@ -505,6 +522,13 @@ namespace gradcontact::fem
           out.pressure.push_back(record.estimate(i++));
         for (std::size_t j = 0; j < out.result.displacement.size(); ++j)
           out.displacement.push_back(record.estimate(i++));
+        for (std::size_t j = 0; j < out.result.stress.size(); ++j)
+          {
+            std::array<Estimated, 4> components;
+            for (Estimated &c : components)
+              c = record.estimate(i++);
+            out.stress.push_back(components);
+          }
       }
     out.seconds = seconds_since(start);
     return out;

@@ -29,8 +29,9 @@
 // the budget (so that a refusal does not cost the largest solves), or when a level's solve is unreliable.
 //
 // What is estimated: the force, the depth (under contact-radius control) or the contact radius (under depth or
-// force control), p(r) at the asked radii relative to the largest |p| sampled (on three levels at least), and w(r)
-// relative to |w(r)|.
+// force control), p(r) at the asked radii relative to the largest |p| sampled (on three levels at least), w(r)
+// relative to |w(r)|, and the recovered stress components at the asked points (fem/elasticity/stress_recovery.h)
+// relative to the largest component sampled (on three levels at least).
 #ifndef GRADCONTACT_FEM_ACCURACY_H
 #define GRADCONTACT_FEM_ACCURACY_H
 
@@ -38,6 +39,7 @@
 
 #include <deal.II/base/types.h>
 
+#include <array>
 #include <limits>
 #include <memory>
 #include <string>
@@ -79,6 +81,8 @@ namespace gradcontact::fem
     Result result;    ///< the finest level's run: its values are the answer
     Estimated force, depth, contact_radius;
     std::vector<Estimated> pressure, displacement; ///< at the OutputRequest's radii, in its order
+    /// (sigma_rr, sigma_zz, sigma_tt, sigma_rz) at the OutputRequest's stress points, in its order
+    std::vector<std::array<Estimated, 4>> stress;
     double tolerance = 0;                          ///< the relative tolerance asked
     bool   met       = false;                      ///< every estimate within the tolerance
     /// Empty when met; else what stopped the ladder: "DoF budget: ...", "no convergence: ...", "unreliable solve: ...".

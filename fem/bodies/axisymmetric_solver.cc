@@ -700,13 +700,21 @@ namespace gradcontact::fem
         for (const double r : outputs.displacement_radii)
           result.displacement.push_back({r, evaluate_on_surface(nodal, r)});
       }
+    std::unique_ptr<StressRecovery> stresses;
+    if (!outputs.stress_points.empty() || !outputs.vtu_file.empty())
+      stresses = std::make_unique<StressRecovery>(
+        dof_handler, mapping, state.u, material,
+        SurfaceMap<2>(discretization.surface_map, *material.modulus, a, mesh_parameters.h_edge), a);
+    for (const StressPoint &x : outputs.stress_points)
+      result.stress.push_back(stresses->at(x.r, x.z));
     if (!outputs.vtu_file.empty())
-      output_results(state.u, outputs.vtu_file);
+      output_results(state.u, stresses.get(), outputs.vtu_file);
   }
 
 
 
-  void AxisymmetricSolver::output_results(const Vector<double> &u, const std::string &filename) const
+  void AxisymmetricSolver::output_results(const Vector<double> &u, const StressRecovery *stresses,
+                                          const std::string &filename) const
   {
     MeridianDataOut data_out;
     data_out.surface_map =
@@ -715,8 +723,11 @@ namespace gradcontact::fem
     std::vector<std::string> names{"u_r", "u_z"};
     if (used_formulation == Formulation::mixed)
       names.push_back(mixed_pressure_name(material)); // lambda div u, or (lambda / E) div u on a stiff surface
-    data_out.add_data_vector(with_physical_pressure(u, dof_handler, fe, material, mesh_parameters.contact_radius),
-                             names);
+    const Vector<double> fields = with_physical_pressure(u, dof_handler, fe, material, mesh_parameters.contact_radius);
+    data_out.add_data_vector(fields, names);
+    if (stresses)
+      for (unsigned int c = 0; c < 4; ++c)
+        data_out.add_data_vector(stresses->dofs(), stresses->field(c), StressRecovery::name(c));
     Vector<float> modulus(triangulation.n_active_cells());
     for (const auto &cell : triangulation.active_cell_iterators())
       modulus[cell->active_cell_index()] =

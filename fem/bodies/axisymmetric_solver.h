@@ -67,6 +67,7 @@
 #include <fem/bodies/loads.h>
 #include <fem/grid/mesh.h>
 #include <fem/modulus/modulus.h>
+#include <fem/elasticity/stress_recovery.h>
 #include <fem/elasticity/surface_trace.h>
 
 #include <deal.II/dofs/dof_handler.h>
@@ -96,6 +97,8 @@ namespace gradcontact::fem
     double depth          = 0; ///< d; d0 for the concave punch; w_c for constant pressure
     std::vector<Sample> pressure;     ///< p(r), compressive positive
     std::vector<Sample> displacement; ///< w(r) = u_z(r, 0), into the material positive
+    /// The recovered stresses at OutputRequest::stress_points, in its order (fem/elasticity/stress_recovery.h).
+    std::vector<StressValue> stress;
 
     /// Contact consistency: the most tensile contact node of fem/base/contact_check.h relative to the
     /// largest nodal force (>= -1e-3 when consistent) and the smallest gap outside the contact relative
@@ -194,7 +197,9 @@ namespace gradcontact::fem
     /// The column for modifying the surface z-DoF `dof`: prescribed value 1 (dof in the contact
     /// zone of the mesh) or unit point load (outside), all other contact DoFs held at 0. Cached.
     const std::pair<dealii::Vector<double>, dealii::Vector<double>> &column(dealii::types::global_dof_index dof);
-    void   output_results(const dealii::Vector<double> &u, const std::string &filename) const;
+    /// The VTU file: displacements, the mixed pressure, E per cell and, when given, the recovered stresses.
+    void   output_results(const dealii::Vector<double> &u, const StressRecovery *stresses,
+                          const std::string &filename) const;
 
     const Material                 material;
     const MeshParameters           mesh_parameters;

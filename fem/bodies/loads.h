@@ -81,11 +81,19 @@ namespace gradcontact::fem
     void validate() const;
   };
 
+  /// A point of the meridian plane, z into the material.
+  struct StressPoint
+  {
+    double r = 0, z = 0;
+  };
+
   /// Only what is asked for is computed.
   struct OutputRequest
   {
     std::vector<double> pressure_radii;     ///< sample p(r) here (r <= a)
     std::vector<double> displacement_radii; ///< sample w(r) = u_z(r, 0) here (any r <= L)
+    /// Sample the recovered stresses (fem/elasticity/stress_recovery.h) at these physical points, z >= 0.
+    std::vector<StressPoint> stress_points;
     std::string         vtu_file;           ///< write the fields here when not empty
   };
 

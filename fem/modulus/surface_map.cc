@@ -2,6 +2,7 @@
 #include <fem/modulus/surface_map.h>
 
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 
 namespace gradcontact::fem
@@ -103,6 +104,37 @@ namespace gradcontact::fem
     if (active() && x[dim - 1] > 0)
       p[dim - 1] = at(x).z;
     return p;
+  }
+
+  template <int dim>
+  dealii::Point<dim> SurfaceMap<dim>::mesh_point(const dealii::Point<dim> &p) const
+  {
+    const double z = p[dim - 1];
+    if (!active() || !(z > 0))
+      return p;
+    // Phi <= zeta (q < 1, beta > 1), so zeta >= z; widen the upper end until Phi reaches z.
+    dealii::Point<dim> x  = p;
+    double             lo = z, hi = 2 * z;
+    x[dim - 1]            = hi;
+    while (at(x).z < z)
+      {
+        lo = hi;
+        hi *= 2;
+        x[dim - 1] = hi;
+      }
+    double zeta = 0.5 * (lo + hi);
+    for (unsigned int i = 0; i < 200 && hi - lo > 4 * std::numeric_limits<double>::epsilon() * hi; ++i)
+      {
+        x[dim - 1]    = zeta;
+        const Value v = at(x);
+        (v.z < z ? lo : hi) = zeta;
+        const double newton = zeta - (v.z - z) / v.dz;
+        zeta                = (newton > lo && newton < hi) ? newton : 0.5 * (lo + hi);
+        if (std::abs(v.z - z) <= 2 * std::numeric_limits<double>::epsilon() * z)
+          break;
+      }
+    x[dim - 1] = zeta;
+    return x;
   }
 
   template class SurfaceMap<2>;

@@ -116,6 +116,9 @@ namespace gradcontact::fem
     Value at(const dealii::Point<dim> &x) const;
     /// The physical point of mesh point x (for output).
     dealii::Point<dim> physical(const dealii::Point<dim> &x) const;
+    /// The mesh point whose image is the physical point p (the inverse of physical(): Phi is increasing in zeta,
+    /// so zeta solves Phi(x_t, zeta) = z by bracketing and Newton steps kept inside the bracket).
+    dealii::Point<dim> mesh_point(const dealii::Point<dim> &p) const;
     /// T at mesh point x.
     double length(const dealii::Point<dim> &x) const;
 

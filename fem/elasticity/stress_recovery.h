@@ -1,0 +1,103 @@
+// The stresses of an axisymmetric FE solution, recovered as continuous fields.
+//
+// Stress. At a point of a cell, from the displacement gradient in the mesh coordinates (r, zeta) and the surface map
+// (fem/modulus/surface_map.h; the identity without one), du/dz = g_zeta / Phi_zeta and du/dr = g_r - shift g_zeta:
+//   eps_rr = d u_r / dr,  eps_zz = d u_z / dz,  eps_tt = u_r / r (d u_r / dr on the axis),  gamma_rz = d u_r / dz + d u_z / dr,
+//   sigma = lambda(z) tr eps I + 2 mu(z) eps,  sigma_rz = mu(z) gamma_rz,
+// with the Lame parameters of the pointwise modulus (fem/bodies/axisymmetric_solver.h). In the mixed formulation
+// lambda tr eps is the pressure unknown q (q = S q_hat, or E(z) q_hat on a stiff surface;
+// fem/elasticity/graded_elasticity.h), which stays bounded as nu -> 1/2 where lambda tr eps is 0 times infinity.
+// Tension positive; z into the material, so sigma_rz is the shear on a plane z = const in the +r direction
+// exerted by the material below on the material above. Under the map the soft surface layer of E ~ z^s, s > 0,
+// has eps_zz ~ zeta^-gamma and E ~ zeta^gamma (gamma = s / (1 - s)): their product, the stress, is a regular
+// function of the mesh coordinates, which is what makes the recovery below converge there.
+//
+// Recovery. Cell by cell the stress is a discontinuous function: its jumps across faces are of the order of the
+// discretisation error, and its values at a point on a face depend on the cell asked. The recovered field is the
+// weighted least-squares fit of the cell stresses by the continuous elements FE_Q(p) of the displacement's degree,
+// the global smoothing of Hinton & Campbell (Int. J. Numer. Methods Eng. 8 (1974) 461):
+//   find s_c in Q_p:  \int s_c v r dr dzeta = \int sigma_c v r dr dzeta  for all v in Q_p,   c = rr, zz, tt, rz,
+// in the mesh coordinates (the weight of the meridian plane without the map's Jacobian, which vanishes at a soft
+// surface: every cell's stresses then weigh by the mesh's cell size, not by the physical one). The mass matrix is
+// well conditioned after its diagonal scaling on any graded mesh, so conjugate gradients with Jacobi
+// preconditioning solve it to round-off. Where the exact stress is smooth the fit converges at the order of the
+// displacement gradient; near a singular edge it spreads that cell's error over a few cells, no further.
+// On a stiff surface (E ~ z^s, s < 0) the radial and hoop stresses outside the contact grow like z^s toward
+// the surface, which no polynomial follows: there, in the first cell layer, neither the cell values nor the fit
+// converge, and the accuracy contract (fem/accuracy/accuracy.h) says so.
+#ifndef GRADCONTACT_FEM_STRESS_RECOVERY_H
+#define GRADCONTACT_FEM_STRESS_RECOVERY_H
+
+#include <fem/modulus/modulus.h>
+#include <fem/modulus/surface_map.h>
+
+#include <deal.II/base/point.h>
+#include <deal.II/dofs/dof_handler.h>
+#include <deal.II/fe/fe_q.h>
+#include <deal.II/fe/mapping_q1.h>
+#include <deal.II/grid/grid_tools_cache.h>
+#include <deal.II/lac/affine_constraints.h>
+#include <deal.II/lac/vector.h>
+
+#include <array>
+#include <memory>
+#include <string>
+
+namespace gradcontact::fem
+{
+  /// Cylindrical stress components [Pa], tension positive, z into the material.
+  struct StressValue
+  {
+    double rr = 0, zz = 0, tt = 0, rz = 0;
+  };
+
+  /// The stress of an axisymmetric solution u (as solved: the mixed formulation's pressure in its solved units) and
+  /// its recovered fields (the header). Keeps references to the DoF handler and the mapping, which must outlive it.
+  class StressRecovery
+  {
+  public:
+    /// `map`: the surface map of the solve; `contact_radius`: the mesh's a (the mixed pressure's scale S = E(a)).
+    StressRecovery(const dealii::DoFHandler<2> &dof_handler, const dealii::Mapping<2> &mapping,
+                   const dealii::Vector<double> &u, const Material &material, const SurfaceMap<2> &map,
+                   double contact_radius);
+    ~StressRecovery();
+
+    /// The recovered stress at the physical point (r, z), r >= 0, z >= 0, inside the meshed body. Throws
+    /// std::invalid_argument naming the point when it is not.
+    StressValue at(double r, double z) const;
+
+    /// The recovered fields, component c in (rr, zz, tt, rz), on dofs() (for output).
+    const dealii::Vector<double> &field(unsigned int c) const { return fields[c]; }
+    const dealii::DoFHandler<2> &dofs() const { return scalar_dofs; }
+    /// The names of the components, "sigma_rr" and so on.
+    static std::string name(unsigned int c);
+
+  private:
+    /// The stress at mesh point x of `cell` from the solution's values and gradients there.
+    StressValue from_gradients(const dealii::Point<2> &x, const std::array<double, 2> &u_value,
+                               const std::array<dealii::Tensor<1, 2>, 2> &grad, double q_hat) const;
+    void        project();
+    /// The cell (of the displacement's DoF handler) around the physical point and the point's reference
+    /// coordinates; `who` names the caller in the error.
+    std::pair<dealii::DoFHandler<2>::active_cell_iterator, dealii::Point<2>> locate(double r, double z,
+                                                                                   const std::string &who) const;
+
+    const dealii::DoFHandler<2> &dof_handler;
+    const dealii::Mapping<2>    &mapping;
+    const dealii::Vector<double> u;
+    const Material               material;
+    const SurfaceMap<2>          map;
+    const bool                   mixed;
+    const bool                   weighted_pressure; ///< q = E(z) q_hat (stiff surface), else q = S q_hat
+    const double                 pressure_scale;    ///< S
+    const double                 lambda_factor, mu_factor; ///< lambda / E, mu / E
+
+    dealii::FE_Q<2>                   scalar_fe;
+    dealii::DoFHandler<2>             scalar_dofs;
+    dealii::AffineConstraints<double> scalar_constraints;
+    std::array<dealii::Vector<double>, 4> fields;
+    std::unique_ptr<dealii::GridTools::Cache<2>> cache;
+  };
+} // namespace gradcontact::fem
+
+#endif
