@@ -154,13 +154,14 @@ namespace gradcontact::cases
          sweep},
         {"figures", "<file.json|folder> [--reports DIR] [--no-cache]",
          "draw the chapter's figures (cases/figures), check their FE points -> reports/figures/", figures},
-        {"bench", "[--part analytic|fe|peer|oracle|accuracy|all] [--quick] [--reports DIR] [--repeat N]\n"
+        {"bench", "[--part analytic|fe|peer|oracle|accuracy|stresses|all] [--quick] [--reports DIR] [--repeat N]\n"
                   "    [--fe-repeat N] [--references FILE] [--peer-scripts DIR]\n"
                   "    [--scene flat_punch,paraboloid,jkr_paraboloid,tangential_punch]",
          "work-precision benchmarks -> reports/benchmarks/ (analytic closed\n"
          "forms; FE degrees 1-4 against wall time and DoFs; the FreeFem++ peer when\n"
          "FreeFem++ is installed; batches of FE eval requests; the accuracy\n"
-         "contract over k, nu, profiles and asked tolerances)",
+         "contract over k, nu, profiles and asked tolerances; the stresses below a\n"
+         "sphere, closed form against FE)",
          bench},
         {"stress", "[--reports DIR] [--references FILE] [--mdr-stride N]",
          "numerical-stability tables of the analytic module by region and\n"

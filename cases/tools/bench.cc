@@ -1,5 +1,6 @@
 #include "tools/bench.h"
 #include "tools/accuracy_bench.h"
+#include "tools/stress_bench.h"
 #include "tools/fe_bench.h"
 #include "tools/fe_oracle.h"
 #include "report/report.h"
@@ -97,9 +98,9 @@ namespace gradcontact::cases
             {
               o.part = value("--part");
               if (o.part != "analytic" && o.part != "fe" && o.part != "peer" && o.part != "oracle" &&
-                  o.part != "accuracy" && o.part != "all")
+                  o.part != "accuracy" && o.part != "stresses" && o.part != "all")
                 throw std::invalid_argument("bench: --part = '" + o.part +
-                                            "' is not one of analytic, fe, peer, oracle, accuracy, all");
+                                            "' is not one of analytic, fe, peer, oracle, accuracy, stresses, all");
             }
           else if (args[i] == "--quick")
             o.quick = true;
@@ -421,6 +422,12 @@ namespace gradcontact::cases
             accuracy.quick = o.quick;
             broken = run_accuracy_bench(accuracy, tmp, machine());
           }
+        if (o.part == "stresses" || o.part == "all")
+          {
+            StressBenchOptions stresses;
+            stresses.quick = o.quick;
+            broken += run_stress_bench(stresses, tmp, machine());
+          }
         if (o.part == "analytic" || o.part == "all")
           analytic_part(o, tmp);
         if (o.part == "oracle" || o.part == "all")
@@ -450,7 +457,7 @@ namespace gradcontact::cases
     std::cout << "wrote " << folder.string() << "/ (part " << o.part << (o.quick ? ", quick" : "") << ")\n";
     if (broken > 0)
       std::cerr << "bench: the accuracy contract is broken in " << broken << " answers (" << (folder / "accuracy.md").string()
-                << ")\n";
+                << ", " << (folder / "stresses.md").string() << ")\n";
     return broken > 0 ? 1 : 0;
   }
 } // namespace gradcontact::cases

@@ -727,7 +727,7 @@ namespace gradcontact::fem
     data_out.add_data_vector(fields, names);
     if (stresses)
       for (unsigned int c = 0; c < 4; ++c)
-        data_out.add_data_vector(stresses->dofs(), stresses->field(c), StressRecovery::name(c));
+        data_out.add_data_vector(stresses->dofs(), stresses->field(c), stresses->name(c));
     Vector<float> modulus(triangulation.n_active_cells());
     for (const auto &cell : triangulation.active_cell_iterators())
       modulus[cell->active_cell_index()] =

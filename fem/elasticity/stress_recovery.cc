@@ -7,9 +7,7 @@
 #include <deal.II/fe/fe_values.h>
 #include <deal.II/grid/grid_tools.h>
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
-#include <deal.II/lac/precondition.h>
-#include <deal.II/lac/solver_cg.h>
-#include <deal.II/lac/solver_control.h>
+#include <deal.II/lac/sparse_direct.h>
 #include <deal.II/lac/sparse_matrix.h>
 #include <deal.II/lac/sparsity_pattern.h>
 
@@ -44,6 +42,7 @@ namespace gradcontact::fem
     , map(map_)
     , mixed(dof_handler_.get_fe().n_components() == 3)
     , weighted_pressure(mixed && depth_weighted_pressure(material_))
+    , over_modulus(material_.modulus->surface_exponent() < 0)
     , pressure_scale(mixed ? mixed_pressure_scale(material_, contact_radius) : 1.0)
     , lambda_factor(material_.nu / ((1 + material_.nu) * (1 - 2 * material_.nu)))
     , mu_factor(1 / (2 * (1 + material_.nu)))
@@ -67,10 +66,10 @@ namespace gradcontact::fem
 
 
 
-  std::string StressRecovery::name(const unsigned int c)
+  std::string StressRecovery::name(const unsigned int c) const
   {
     static const char *names[4] = {"sigma_rr", "sigma_zz", "sigma_tt", "sigma_rz"};
-    return names[c];
+    return std::string(names[c]) + (over_modulus ? "_over_E" : "");
   }
 
 
@@ -133,7 +132,8 @@ namespace gradcontact::fem
             const Point<2>   &x = values.quadrature_point(q);
             const StressValue s = from_gradients(x, {{value[q][0], value[q][1]}}, {{gradient[q][0], gradient[q][1]}},
                                                  mixed ? value[q][2] : 0.0);
-            const double      c[4] = {s.rr, s.zz, s.tt, s.rz};
+            const double      f    = over_modulus ? 1 / material.modulus->value(map.at(x).z) : 1.0;
+            const double      c[4] = {f * s.rr, f * s.zz, f * s.tt, f * s.rz};
             const double      w    = x[0] * values.JxW(q);
             for (unsigned int i = 0; i < n; ++i)
               {
@@ -151,17 +151,14 @@ namespace gradcontact::fem
         ++scalar_cell;
       }
 
-    PreconditionJacobi<SparseMatrix<double>> jacobi;
-    jacobi.initialize(mass);
+    // A direct solve: the cells span many orders of magnitude of size, so the entries of M do too, and an iterative
+    // solve stopped at a residual relative to the whole right-hand side would leave the small cells' values
+    // unresolved; the factorisation's accuracy depends on the condition of the diagonally scaled M only.
+    SparseDirectUMFPACK direct;
+    direct.initialize(mass);
     for (auto &f : fields)
       {
-        const Vector<double> rhs = f;
-        f                        = 0;
-        if (rhs.l2_norm() == 0)
-          continue;
-        SolverControl            control(10 * scalar_dofs.n_dofs() + 100, 1e-14 * rhs.l2_norm());
-        SolverCG<Vector<double>> cg(control);
-        cg.solve(mass, f, rhs, jacobi);
+        direct.solve(f);
         scalar_constraints.distribute(f);
       }
   }
@@ -188,6 +185,10 @@ namespace gradcontact::fem
 
   StressValue StressRecovery::at(const double r, const double z) const
   {
+    if (over_modulus && !(z > 0))
+      throw std::invalid_argument("StressRecovery::at: the point " + point_text(r, z) +
+                                  " lies on a stiff surface (E infinite at z = 0), where the skin's stresses are "
+                                  "infinite; valid: z > 0");
     const auto [cell, unit] = locate(r, z, "StressRecovery::at");
     const DoFHandler<2>::active_cell_iterator scalar_cell(&dof_handler.get_triangulation(), cell->level(),
                                                          cell->index(), &scalar_dofs);
@@ -200,6 +201,7 @@ namespace gradcontact::fem
         for (unsigned int k = 0; k < 4; ++k)
           c[k] += fields[k][indices[i]] * phi;
       }
-    return {c[0], c[1], c[2], c[3]};
+    const double E = over_modulus ? material.modulus->value(z) : 1.0;
+    return {E * c[0], E * c[1], E * c[2], E * c[3]};
   }
 } // namespace gradcontact::fem

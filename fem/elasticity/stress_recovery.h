@@ -19,12 +19,16 @@
 //   find s_c in Q_p:  \int s_c v r dr dzeta = \int sigma_c v r dr dzeta  for all v in Q_p,   c = rr, zz, tt, rz,
 // in the mesh coordinates (the weight of the meridian plane without the map's Jacobian, which vanishes at a soft
 // surface: every cell's stresses then weigh by the mesh's cell size, not by the physical one). The mass matrix is
-// well conditioned after its diagonal scaling on any graded mesh, so conjugate gradients with Jacobi
-// preconditioning solve it to round-off. Where the exact stress is smooth the fit converges at the order of the
+// well conditioned after its diagonal scaling on any graded mesh, but its entries span the cells' range of sizes,
+// so it is factorised (UMFPACK) rather than iterated to a residual that the large cells dominate. Where the exact
+// stress is smooth the fit converges at the order of the
 // displacement gradient; near a singular edge it spreads that cell's error over a few cells, no further.
-// On a stiff surface (E ~ z^s, s < 0) the radial and hoop stresses outside the contact grow like z^s toward
-// the surface, which no polynomial follows: there, in the first cell layer, neither the cell values nor the fit
-// converge, and the accuracy contract (fem/accuracy/accuracy.h) says so.
+// On a stiff surface (E ~ z^s, s < 0) the skin carries radial and hoop stresses that grow like z^s toward the
+// surface, which no polynomial follows, and whose fit (not even square integrable from s = -1/2 on) would spread
+// that layer's error into the body. There the fitted fields are sigma / E(z), linear combinations of the strains,
+// which stay bounded and smooth at a stiff surface (as the mixed formulation's unknown q / E,
+// fem/elasticity/graded_elasticity.h), and a stress at a point is E(z) times the fitted value: the z^s growth is
+// then exact, and at z = 0 the stress is infinite, which at() refuses.
 #ifndef GRADCONTACT_FEM_STRESS_RECOVERY_H
 #define GRADCONTACT_FEM_STRESS_RECOVERY_H
 
@@ -62,15 +66,16 @@ namespace gradcontact::fem
                    double contact_radius);
     ~StressRecovery();
 
-    /// The recovered stress at the physical point (r, z), r >= 0, z >= 0, inside the meshed body. Throws
-    /// std::invalid_argument naming the point when it is not.
+    /// The recovered stress at the physical point (r, z), r >= 0, z >= 0 (z > 0 on a stiff surface), inside the meshed
+    /// body. Throws std::invalid_argument naming the point when it is not.
     StressValue at(double r, double z) const;
 
-    /// The recovered fields, component c in (rr, zz, tt, rz), on dofs() (for output).
+    /// The fitted fields, component c in (rr, zz, tt, rz), on dofs() (for output): the stresses, or on a stiff
+    /// surface the stresses over E(z) (header).
     const dealii::Vector<double> &field(unsigned int c) const { return fields[c]; }
     const dealii::DoFHandler<2> &dofs() const { return scalar_dofs; }
-    /// The names of the components, "sigma_rr" and so on.
-    static std::string name(unsigned int c);
+    /// The names of the fitted fields: "sigma_rr" and so on, "sigma_rr_over_E" on a stiff surface.
+    std::string name(unsigned int c) const;
 
   private:
     /// The stress at mesh point x of `cell` from the solution's values and gradients there.
@@ -89,6 +94,7 @@ namespace gradcontact::fem
     const SurfaceMap<2>          map;
     const bool                   mixed;
     const bool                   weighted_pressure; ///< q = E(z) q_hat (stiff surface), else q = S q_hat
+    const bool                   over_modulus;      ///< the fields are sigma / E(z) (stiff surface)
     const double                 pressure_scale;    ///< S
     const double                 lambda_factor, mu_factor; ///< lambda / E, mu / E
 

@@ -127,11 +127,11 @@ namespace gradcontact::fem
       {
         x[dim - 1]    = zeta;
         const Value v = at(x);
+        if (std::abs(v.z - z) <= 2 * std::numeric_limits<double>::epsilon() * z)
+          break;
         (v.z < z ? lo : hi) = zeta;
         const double newton = zeta - (v.z - z) / v.dz;
         zeta                = (newton > lo && newton < hi) ? newton : 0.5 * (lo + hi);
-        if (std::abs(v.z - z) <= 2 * std::numeric_limits<double>::epsilon() * z)
-          break;
       }
     x[dim - 1] = zeta;
     return x;

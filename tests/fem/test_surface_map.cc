@@ -93,6 +93,27 @@ TEST_CASE("The surface map's dPhi/dzeta and tangential shift equal central diffe
   REQUIRE_THAT(std::pow(phi(map2, x1), 1 - s) / std::pow(phi(map2, x0), 1 - s), WithinRel(2.0, 1e-9));
 }
 
+TEST_CASE("The surface map's inverse returns the mesh point of every physical point", "[fem][quick]")
+{
+  // Points on the axis, at the contact edge and far out, from the surface layer to deep below; the inverse's Newton
+  // steps must not stop on a bracket's midpoint once they have converged.
+  for (const double k : {0.2, 0.5, 0.9})
+    {
+      const PowerLawModulus modulus(E0, c0, k);
+      const SurfaceMap<2>   map(map_on(), modulus, a, 1e-5);
+      for (const double r : {0.0, 0.02 * a, a, 1.5 * a, 100 * a})
+        for (const double z : {1e-9 * a, 1e-3 * a, 0.1 * a, 0.25 * a, 2 * a, 1e3 * a})
+          {
+            const dealii::Point<2> x = map.mesh_point(dealii::Point<2>(r, z));
+            CAPTURE(k, r / a, z / a, x[1] / a);
+            CHECK(x[0] == r);
+            CHECK(std::abs(map.physical(x)[1] - z) <= 1e-14 * z);
+          }
+    }
+}
+
+
+
 TEST_CASE("The surface map refuses what it cannot map, naming the parameter", "[fem][quick]")
 {
   // Off, or a modulus finite at the surface: the identity.
