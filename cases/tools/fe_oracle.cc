@@ -374,6 +374,37 @@ namespace gradcontact::cases
     bool   outside = false;     ///< a pressure outside the contact: exactly 0
   };
 
+  void FeOracle::parse_stress(const batch::Request &q, const double k, const std::string &c, Parsed &p)
+  {
+    if (p.quantity != "stress")
+      {
+        // max_stress, max_stress_radius, max_stress_depth
+        if (!q.component || (*q.component != "von_mises" && *q.component != "max_shear"))
+          refuse("component: " + (q.component ? "= '" + *q.component + "'" : std::string("missing")) +
+                 "; valid: von_mises, max_shear (the measure of a largest stress)");
+        if (k < 0)
+          refuse("k = " + check::format(k) + ": on a stiff surface the radial and hoop stresses grow without "
+                 "bound toward the surface, so a largest stress does not exist; valid: k >= 0");
+        if (c == "flat_punch")
+          refuse("case = 'flat_punch': its edge makes every stress measure unbounded; valid: paraboloid, cone, "
+                 "power_law");
+        p.component = *q.component;
+        return;
+      }
+    if (!q.r || !q.z)
+      refuse(std::string(q.r ? "z" : "r") + ": missing (the point of the stress)");
+    p.r = *q.r / p.a;
+    p.z = *q.z / p.a;
+    if (!(std::isfinite(p.r) && p.r >= 0))
+      refuse("r = " + check::format(*q.r) + "; valid: [0, inf)");
+    if (!(std::isfinite(p.z) && p.z > 0))
+      refuse("z = " + check::format(*q.z) + "; valid: (0, inf) (below the surface)");
+    if (!q.component)
+      refuse("component: missing (rr, zz, tt, rz, principal_max, principal_min, von_mises, max_shear)");
+    p.component = *q.component;
+    stress_component(AxisymmetricStress{}, p.component); // names the valid components when it is none
+  }
+
   FeOracle::Parsed FeOracle::parse(const json &request) const
   {
     if (!request.is_object())
@@ -442,34 +473,8 @@ namespace gradcontact::cases
         p.quantity != "stress" && !maximum)
       refuse("quantity = '" + p.quantity + "' has no FE answer (valid: force, depth, pressure, displacement, stress, "
              "max_stress, max_stress_radius, max_stress_depth)");
-    if (maximum)
-      {
-        if (!q.component || (*q.component != "von_mises" && *q.component != "max_shear"))
-          refuse("component: " + (q.component ? "= '" + *q.component + "'" : std::string("missing")) +
-                 "; valid: von_mises, max_shear (the measure of a largest stress)");
-        if (body.k < 0)
-          refuse("k = " + check::format(body.k) + ": on a stiff surface the radial and hoop stresses grow without "
-                 "bound toward the surface, so a largest stress does not exist; valid: k >= 0");
-        if (c == "flat_punch")
-          refuse("case = 'flat_punch': its edge makes every stress measure unbounded; valid: paraboloid, cone, "
-                 "power_law");
-        p.component = *q.component;
-      }
-    if (p.quantity == "stress")
-      {
-        if (!q.r || !q.z)
-          refuse(std::string(q.r ? "z" : "r") + ": missing (the point of the stress)");
-        p.r = *q.r / p.a;
-        p.z = *q.z / p.a;
-        if (!(std::isfinite(p.r) && p.r >= 0))
-          refuse("r = " + check::format(*q.r) + "; valid: [0, inf)");
-        if (!(std::isfinite(p.z) && p.z > 0))
-          refuse("z = " + check::format(*q.z) + "; valid: (0, inf) (below the surface)");
-        if (!q.component)
-          refuse("component: missing (rr, zz, tt, rz, principal_max, principal_min, von_mises, max_shear)");
-        p.component = *q.component;
-        stress_component(AxisymmetricStress{}, p.component); // names the valid components when it is none
-      }
+    if (maximum || p.quantity == "stress")
+      parse_stress(q, body.k, c, p);
     if (p.quantity == "depth" && c == "flat_punch")
       refuse("quantity = 'depth' of the flat punch is its input d");
     if (p.quantity == "pressure" || p.quantity == "displacement")

@@ -34,6 +34,7 @@
 
 #include "report/result_cache.h"
 
+#include <analytic/request.h>
 #include <fem/bodies/axisymmetric_solver.h>
 
 #include <nlohmann/json_fwd.hpp>
@@ -80,6 +81,9 @@ namespace gradcontact::cases
     struct UnitState; ///< the unit problem of one (k, nu, tolerance, case, n) on its ladder
     struct Parsed;
     Parsed     parse(const nlohmann::json &request) const;
+    /// The point and component of a stress request, or the measure of a largest stress, into `p` (k: the grading,
+    /// c: the case); refuses what has no FE answer.
+    static void parse_stress(const batch::Request &q, double k, const std::string &c, Parsed &p);
     UnitState &unit_state(const std::string &key, double k, double nu, double tolerance, const fem::LoadCase &load);
 
     std::map<std::string, std::unique_ptr<UnitState>>          states;
