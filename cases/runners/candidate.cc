@@ -1169,7 +1169,7 @@ namespace gradcontact::cases
         return run_unilateral_candidate(s, constants);
       SceneResult result;
       const mdr::Profile profile = candidate_profile(s, constants);
-      // (a pressure candidate without f'' is refused by scene_kind: see there why)
+      // (a pressure candidate without f'' is refused by validate: see there why)
       std::vector<Row> fe_rows;
       std::map<std::string, double> fe_at_a;
       std::map<std::string, std::map<double, double>> fe_profiles;

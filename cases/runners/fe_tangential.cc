@@ -64,10 +64,10 @@ namespace gradcontact::cases
     }
 
     /// The scene with Tangential/Holl ratio applied (nu = 1 / (2 + k), the decoupled pairing of 9.3.1); the
-    /// entries are checked by scene_kind (k > 0 for the Holl ratio, the load of each study).
+    /// entries are checked by validate (k > 0 for the Holl ratio, the load of each study).
     Scene with_holl_ratio(const Scene &scene)
     {
-      scene_kind(scene);
+      validate(scene, decide_kind(scene));
       Scene s = scene;
       if (s.tangential.holl_ratio)
         s.material.nu = 1. / (2. + s.material.k);

@@ -116,6 +116,10 @@ namespace gradcontact::cases
     surface_modulus_ratio = prm.get_double("surface modulus ratio");
     erf_width = prm.get_double("erf width");
     prm.leave_subsection();
+  }
+
+  void MaterialParameters::check() const
+  {
     if (modulus == Modulus::shifted_power_law && !(surface_depth > 0.))
       throw std::invalid_argument("Material/surface depth = " + format(surface_depth) +
                                   " must be z0 in (0, inf) [m] with Material/modulus = shifted power law");
@@ -210,6 +214,10 @@ namespace gradcontact::cases
     E = prm.get_double("E");
     nu = prm.get_double("nu");
     prm.leave_subsection();
+  }
+
+  void IndenterParameters::check() const
+  {
     if (elasticity != Elasticity::rigid && !(E > 0.))
       throw std::invalid_argument("Indenter/E: " + format(E) + " must be in (0, inf) for an elastic indenter");
   }
@@ -455,13 +463,20 @@ namespace gradcontact::cases
                       "pressure, displacement). The FE is less accurate than the numerical MDR, so the two differ.");
     prm.leave_subsection();
   }
+  bool CandidateParameters::has_adhesive_entries() const
+  {
+    return !(adhesive_depth.empty() && adhesive_force.empty() && adhesive_pressure.empty() && critical_radius.empty() &&
+             critical_force.empty() && critical_depth.empty());
+  }
+  bool CandidateParameters::has_tangential_entries() const
+  {
+    return !(tangential_stiffness.empty() && tangential_force.empty() && tangential_displacement.empty() &&
+             stick_radius.empty() && dissipated_energy.empty() && unloading_displacement.empty() &&
+             reloading_displacement.empty());
+  }
   CandidateParameters::Family CandidateParameters::family() const
   {
-    const bool adhesive = !(adhesive_depth.empty() && adhesive_force.empty() && adhesive_pressure.empty() &&
-                            critical_radius.empty() && critical_force.empty() && critical_depth.empty());
-    const bool tangential = !(tangential_stiffness.empty() && tangential_force.empty() &&
-                              tangential_displacement.empty() && stick_radius.empty() && dissipated_energy.empty() &&
-                              unloading_displacement.empty() && reloading_displacement.empty());
+    const bool adhesive = has_adhesive_entries(), tangential = has_tangential_entries();
     if (adhesive && tangential)
       throw std::invalid_argument("Candidate: adhesive and tangential candidate entries in one scene; the two are "
                                   "different contacts (tangential contact is non-adhesive): give one family per scene");
@@ -625,6 +640,10 @@ namespace gradcontact::cases
     stick_levels = prm.get_integer("stick levels");
     assumption_tolerance = prm.get_double("assumption tolerance");
     prm.leave_subsection();
+  }
+
+  void TangentialParameters::check() const
+  {
     // The patterns admit the closed ends; the open ones are checked here (9.80: 0 < c <= a; F_A < mu F_N).
     if (!(friction_coefficient > 0.))
       throw std::invalid_argument("Tangential/friction coefficient = " + format(friction_coefficient) +
@@ -689,6 +708,10 @@ namespace gradcontact::cases
     full_stick = prm.get_bool("full stick");
     thresholds = to_doubles(prm.get("thresholds"));
     prm.leave_subsection();
+  }
+
+  void MapParameters::check() const
+  {
     for (const double r : ratios)
       if (!(r > 0.))
         throw std::invalid_argument("Map/ratios: " + format(r) + " must be in (0, inf)");
@@ -1105,59 +1128,93 @@ namespace gradcontact::cases
     }
   } // namespace
 
-  SceneKind scene_kind(const Scene &s)
+  SceneKind decide_kind(const Scene &s)
+  {
+    const CandidateParameters &c = s.candidate;
+    if (s.map.enabled())
+      return SceneKind::map;
+    // an adhesive or tangential candidate brings its own adhesion or tangential path
+    if (c.enabled() && (c.has_adhesive_entries() || c.has_tangential_entries()))
+      return SceneKind::candidate;
+    if (s.tangential.enabled())
+      return SceneKind::tangential;
+    if (s.adhesion.enabled(s.load))
+      return SceneKind::adhesion;
+    if (c.enabled())
+      return SceneKind::candidate;
+    return s.references.fem ? SceneKind::normal : SceneKind::analytic;
+  }
+
+  namespace
+  {
+    /// Every map: the checks of its parameter.
+    void check_map(const Scene &s, const std::string &where)
+    {
+      if (s.map.parameter == MapParameters::Parameter::coulomb_3d)
+        check_coulomb_map(s, where);
+      else if (s.map.parameter == MapParameters::Parameter::tabor_parameter)
+        check_tabor_map(s, where);
+      else
+        check_normal_map(s, where);
+    }
+
+    /// The sections' own ranges, named like the entries' parse errors ("scene <file>: Section/entry ...").
+    void check_sections(const Scene &s)
+    {
+      try
+        {
+          s.material.check();
+          s.indenter.check();
+          s.tangential.check();
+          s.map.check();
+        }
+      catch (const std::exception &e)
+        {
+          throw std::invalid_argument("scene " + s.file + ": " + concise(e));
+        }
+    }
+  } // namespace
+
+  void validate(const Scene &s, const SceneKind kind)
   {
     const std::string where = "scene " + s.file + ": ";
+    check_sections(s);
     check_contract(s, where);
     check_common(s, where);
-    if (s.map.parameter == MapParameters::Parameter::coulomb_3d)
+    switch (kind)
       {
-        check_coulomb_map(s, where);
-        return SceneKind::map;
+        case SceneKind::map:
+          check_map(s, where);
+          break;
+        case SceneKind::candidate:
+          if (s.candidate.family() == CandidateParameters::Family::normal)
+            check_candidate(s);
+          else
+            check_family_candidate(s, where);
+          break;
+        case SceneKind::tangential:
+          if (s.adhesion.enabled(s.load))
+            throw std::invalid_argument(where + "Tangential/study is set and the scene is adhesive "
+                                        "(Adhesion/work of adhesion or tensile strength > 0): tangential contact is "
+                                        "non-adhesive (9.75-9.87); choose one");
+          check_tangential(s, where);
+          break;
+        case SceneKind::adhesion:
+          check_adhesion(s, where);
+          break;
+        case SceneKind::normal:
+        case SceneKind::analytic:
+          break;
       }
-    if (s.map.parameter == MapParameters::Parameter::tabor_parameter)
-      {
-        check_tabor_map(s, where);
-        return SceneKind::map;
-      }
-    if (s.map.enabled())
-      {
-        check_normal_map(s, where);
-        return SceneKind::map;
-      }
-    if (s.candidate.enabled() && s.candidate.family() != CandidateParameters::Family::normal)
-      {
-        check_family_candidate(s, where);
-        return SceneKind::candidate;
-      }
-    if (s.tangential.enabled())
-      {
-        if (s.adhesion.enabled(s.load))
-          throw std::invalid_argument(where + "Tangential/study is set and the scene is adhesive "
-                                      "(Adhesion/work of adhesion or tensile strength > 0): tangential contact is "
-                                      "non-adhesive (9.75-9.87); choose one");
-        check_tangential(s, where);
-        return SceneKind::tangential;
-      }
-    if (s.adhesion.enabled(s.load))
-      {
-        check_adhesion(s, where);
-        return SceneKind::adhesion;
-      }
-    if (s.candidate.enabled())
-      {
-        check_candidate(s);
-        return SceneKind::candidate;
-      }
-    return s.references.fem ? SceneKind::normal : SceneKind::analytic;
   }
 
   void require_kind(const Scene &s, const SceneKind kind, const std::string &function)
   {
-    const SceneKind actual = scene_kind(s);
+    const SceneKind actual = decide_kind(s);
     if (actual != kind)
       throw std::invalid_argument(function + ": scene " + s.file + " is a " + to_string(actual) + " scene, not a " +
                                   to_string(kind) + " scene");
+    validate(s, kind);
   }
 
   namespace
@@ -1351,7 +1408,8 @@ namespace gradcontact::cases
     std::ostringstream out;
     prm.print_parameters(out, ParameterHandler::ShortPRM);
     s.resolved = out.str();
-    s.kind = scene_kind(s);
+    s.kind = decide_kind(s);
+    validate(s, s.kind);
     return s;
   }
 

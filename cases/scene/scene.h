@@ -45,6 +45,8 @@ namespace gradcontact::cases
     double erf_width = 0.;       ///< error function: w [m], > 0
     static void declare(dealii::ParameterHandler &prm);
     void parse(dealii::ParameterHandler &prm);
+    /// The section's own ranges, those its patterns cannot state (open ends, entries that go together).
+    void check() const;
   };
 
   struct LoadParameters
@@ -101,6 +103,8 @@ namespace gradcontact::cases
     bool covered_by_9_4(double k) const { return elasticity != Elasticity::homogeneous || k == 0.; }
     static void declare(dealii::ParameterHandler &prm);
     void parse(dealii::ParameterHandler &prm);
+    /// The section's own ranges, those its patterns cannot state (open ends, entries that go together).
+    void check() const;
   };
 
   /// Coulomb friction between a rigid indenter and the surface during normal loading (Load/contact = unilateral,
@@ -238,7 +242,10 @@ namespace gradcontact::cases
       adhesive,
       tangential
     };
+    /// The family of the entries set; throws when both the adhesive and the tangential family's are set.
     Family family() const;
+    bool has_adhesive_entries() const;   ///< an adhesive depth, force or pressure, or a critical state
+    bool has_tangential_entries() const; ///< any of the tangential candidate formulas
     /// A candidate scene: a profile expression or a profile table.
     bool enabled() const { return !profile.empty() || !profile_table.empty(); }
     double tolerance = 1e-8; ///< relative, of every row against the numerical MDR
@@ -274,6 +281,8 @@ namespace gradcontact::cases
     bool enabled() const { return study != Study::none; }
     static void declare(dealii::ParameterHandler &prm);
     void parse(dealii::ParameterHandler &prm);
+    /// The section's own ranges, those its patterns cannot state (open ends, entries that go together).
+    void check() const;
   };
 
   /// An applicability map (cases/runners/fe_map.h): the FE model of a real grading (a finite surface modulus or a
@@ -302,9 +311,11 @@ namespace gradcontact::cases
     bool enabled() const { return parameter != Parameter::none; }
     static void declare(dealii::ParameterHandler &prm);
     void parse(dealii::ParameterHandler &prm);
+    /// The section's own ranges, those its patterns cannot state (open ends, entries that go together).
+    void check() const;
   };
 
-  /// What a scene checks, decided once from its entries by scene_kind(); the runner dispatches on it.
+  /// What a scene checks, decided once from its entries by decide_kind(); the runner dispatches on it.
   enum class SceneKind
   {
     normal,     ///< the FE model against the closed form and/or the numerical MDR (cases/runners/fe_scene.h)
@@ -337,17 +348,22 @@ namespace gradcontact::cases
     FrictionParameters friction;
     MapParameters map;
     std::string resolved; ///< every entry after overrides, as a .prm, stored with the report
-    SceneKind kind = SceneKind::normal; ///< scene_kind() of the entries, set by read_scene
+    SceneKind kind = SceneKind::normal; ///< decide_kind() of the entries, set (and validated) by read_scene
   };
 
-  /// The kind of `scene`, in this order: tangential when Tangential/study is set; adhesion when
-  /// AdhesionParameters::enabled; candidate when Candidate/profile is set; analytic when References/fem is
-  /// false; else normal. Also checks the entries that are valid alone but not together, for that kind; an
-  /// error names the scene file, the entries, their values and what is valid.
-  SceneKind scene_kind(const Scene &scene);
+  /// The kind of `scene`, from its entries only (no checks), in this order: map when Map/parameter is set; candidate
+  /// when Candidate/profile (or profile table) is set with adhesive or tangential candidate entries; tangential when
+  /// Tangential/study is set; adhesion when AdhesionParameters::enabled; candidate when Candidate/profile is set;
+  /// analytic when References/fem is false; else normal.
+  SceneKind decide_kind(const Scene &scene);
+
+  /// Checks `scene` as a scene of `kind`: every section's own ranges, then the entries that are valid alone but
+  /// not together, for that kind. Throws std::invalid_argument naming the scene file, the entries (Section/name),
+  /// their values and what is valid.
+  void validate(const Scene &scene, SceneKind kind);
 
   /// For the runner of one kind: throws std::invalid_argument naming `function`, the scene and its kind when
-  /// scene_kind(scene) is not `kind`.
+  /// decide_kind(scene) is not `kind`; then validate(scene, kind).
   void require_kind(const Scene &scene, SceneKind kind, const std::string &function);
 
   /// An override "Section/key=value" (Section may be nested: "A/B/key=value").
