@@ -20,6 +20,7 @@
 namespace gradcontact::cases
 {
   using dealii::ParameterHandler;
+  using dealii::Utilities::trim;
   namespace Patterns = dealii::Patterns;
 
   namespace
@@ -226,11 +227,14 @@ namespace gradcontact::cases
   {
     prm.enter_subsection("Friction");
     prm.declare_entry("coefficient", "0", Patterns::Anything(),
-                      "Coulomb coefficient mu between the rigid indenter and the surface during normal loading, >= 0, "
-                      "or inf (full stick); 0: frictionless (the chapter's assumption). Needs Load/contact = unilateral "
-                      "and a rigid indenter; the closed-form rows then measure the frictionless idealisation.");
+                      "The Coulomb friction coefficient mu, the scene's one entry for it. A tangential scene (Tangential/"
+                      "study, a tangential candidate, a Coulomb 3D map without Map/values): the mu of 9.80-9.87, in "
+                      "(0, inf). Any other scene: friction between the rigid indenter and the surface during normal "
+                      "loading, >= 0, or inf (full stick); 0: frictionless (the chapter's assumption); mu > 0 needs "
+                      "Load/contact = unilateral and a rigid indenter, and the closed-form rows then measure the "
+                      "frictionless idealisation. Formerly also Tangential/friction coefficient (a deprecated name).");
     prm.declare_entry("load steps", "24", Patterns::Integer(1, 10000),
-                      "Steps of the loading path from zero (the frictional answer depends on the path; a vertex that "
+                      "Normal loading with friction: steps of the loading path from zero (the frictional answer depends on the path; a vertex that "
                       "comes into contact during a step carries no shear in it: an error of the step's size).");
     prm.leave_subsection();
   }
@@ -397,7 +401,7 @@ namespace gradcontact::cases
                       "Constants of the expressions, \"name = expression, ...\", each of which may use the names before "
                       "it and the functions (kappa = n/2 * beta(n/2, (1+k)/2)). Always defined: E0, c0, k, nu, pi, "
                       "the coefficients h_N (9.5), h_T (9.79), beta, C, cN0 = c_N0 (9.4), cT0 = c_T0, alpha = "
-                      "cN0/cT0 (9.78), dgamma (Adhesion/work of adhesion) and mu (Tangential/friction coefficient).");
+                      "cN0/cT0 (9.78), dgamma (Adhesion/work of adhesion) and mu (Friction/coefficient).");
     prm.declare_entry("depth", "", Patterns::Anything(), "Candidate d(a) (variable a).");
     prm.declare_entry("force", "", Patterns::Anything(), "Candidate F_N(a) (variable a).");
     prm.declare_entry("pressure", "", Patterns::Anything(), "Candidate p(r, a) (variables r, a), at Outputs/pressure radii.");
@@ -428,7 +432,7 @@ namespace gradcontact::cases
     prm.declare_entry("critical force", "", Patterns::Anything(), "JKR candidate critical force F_c (a constant).");
     prm.declare_entry("critical depth", "", Patterns::Anything(), "JKR candidate critical depth d_c (a constant).");
     prm.declare_entry("tangential stiffness", "", Patterns::Anything(),
-                      "Candidate K_T(a) (variable a), over `range`; Tangential/friction coefficient is mu.");
+                      "Candidate K_T(a) (variable a), over `range`; Friction/coefficient is mu.");
     prm.declare_entry("tangential force", "", Patterns::Anything(),
                       "Candidate F_x(c, a) of partial slip with stick radius c (variables c, a) at Load/a.");
     prm.declare_entry("tangential displacement", "", Patterns::Anything(),
@@ -606,8 +610,6 @@ namespace gradcontact::cases
                       "partial slip (Load/type = paraboloid: the traction mu [p(r; a) - p(r; c)] of 9.80, F_x and the "
                       "stick-zone displacement, the F_x(u0) curve); oscillation (paraboloid: +-F_A after loading, "
                       "9.81-9.87: unloading branch, hysteresis loop, dissipated energy, points A to E).");
-    prm.declare_entry("friction coefficient", "0.3", Patterns::Double(0.),
-                      "Coulomb friction coefficient mu, > 0 (partial slip, oscillation).");
     prm.declare_entry("stick radius", "0.5", Patterns::Double(0., 1.),
                       "Partial slip: stick radius c / a, in (0, 1] (c = a: no slip yet, tau = 0: no FE row at that point).");
     prm.declare_entry("amplitude", "0.9", Patterns::Double(0., 1.),
@@ -632,7 +634,6 @@ namespace gradcontact::cases
             : st == "partial slip" ? Study::partial_slip
             : st == "oscillation"  ? Study::oscillation
                                    : Study::none;
-    friction_coefficient = prm.get_double("friction coefficient");
     stick_radius = prm.get_double("stick radius");
     amplitude = prm.get_double("amplitude");
     load_steps = prm.get_integer("load steps");
@@ -645,9 +646,6 @@ namespace gradcontact::cases
   void TangentialParameters::check() const
   {
     // The patterns admit the closed ends; the open ones are checked here (9.80: 0 < c <= a; F_A < mu F_N).
-    if (!(friction_coefficient > 0.))
-      throw std::invalid_argument("Tangential/friction coefficient = " + format(friction_coefficient) +
-                                  " must be in (0, inf)");
     if (!(stick_radius > 0. && stick_radius <= 1.))
       throw std::invalid_argument("Tangential/stick radius = " + format(stick_radius) + " must be c/a in (0, 1]");
     if (!(amplitude > 0. && amplitude < 1.))
@@ -661,21 +659,21 @@ namespace gradcontact::cases
     prm.declare_entry("parameter", "none",
                       Patterns::Selection("none|surface depth|coating thickness|erf width|indenter modulus|friction coefficient|"
                                          "Tabor parameter|Coulomb 3D"),
-                      "What the ratios set: none (no map), surface depth (Material/modulus = shifted power law, "
-                      "z0 = a / ratio), coating thickness (Material/modulus = coating, H = a / ratio), erf width "
-                      "(Material/modulus = error function with Material/surface modulus ratio, w = a / ratio; k = 0) "
-                      "or indenter modulus (a homogeneous elastic indenter E1 = ratio E0 with Indenter/nu, against the "
-                      "rigid indenter's closed forms), or friction coefficient (Coulomb friction mu = ratio between "
-                      "a rigid indenter and the surface during loading, Friction/load steps, against the frictionless "
-                      "indenter, for every k and nu of the map), or Tabor parameter (a Dugdale cohesive zone of Tabor "
-                      "parameter lambda = ratio, cases/runners/fe_cohesive.h, against the chapter's JKR pull-off; needs "
-                      "Adhesion/work of adhesion and a paraboloid or power law), or Coulomb 3D (the 3D model of a rigid "
-                      "sphere with Coulomb friction, cases/runners/fe_coulomb_3d.h: normal loading, Tangential/amplitude and one "
-                      "cycle, for every k and nu of the map, against 9.80-9.86; ratios: the friction coefficients mu, empty: "
-                      "Tangential/friction coefficient).");
-    prm.declare_entry("ratios", "", Patterns::List(Patterns::Double(0.), 0, 100),
-                      "The ratios a/z0, a/H, a/w, E1/E0, the friction coefficients mu or the Tabor parameters lambda of "
-                      "the map, > 0.");
+                      "The map's variable, whose values Map/values gives: none (no map), surface depth (values a/z0; "
+                      "Material/modulus = shifted power law, z0 = a / value), coating thickness (values a/H; "
+                      "Material/modulus = coating, H = a / value), erf width (values a/w; Material/modulus = error "
+                      "function with Material/surface modulus ratio, w = a / value; k = 0) or indenter modulus (values "
+                      "E1/E0; a homogeneous elastic indenter E1 = value E0 with Indenter/nu, against the rigid "
+                      "indenter's closed forms), or friction coefficient (values mu; Coulomb friction between a rigid "
+                      "indenter and the surface during loading, Friction/load steps, against the frictionless indenter, "
+                      "for every k and nu of the map), or Tabor parameter (values lambda; a Dugdale cohesive zone, "
+                      "cases/runners/fe_cohesive.h, against the chapter's JKR pull-off; needs Adhesion/work of adhesion "
+                      "and a paraboloid or power law), or Coulomb 3D (values mu, empty: Friction/coefficient; the 3D "
+                      "model of a rigid sphere with Coulomb friction, cases/runners/fe_coulomb_3d.h: normal loading, "
+                      "Tangential/amplitude and one cycle, for every k and nu of the map, against 9.80-9.86).");
+    prm.declare_entry("values", "", Patterns::List(Patterns::Double(0.), 0, 100),
+                      "The values of the variable Map/parameter names, > 0: a/z0, a/H, a/w, E1/E0, the friction "
+                      "coefficients mu or the Tabor parameters lambda. Formerly Map/ratios (a deprecated name).");
     prm.declare_entry("k values", "", Patterns::List(Patterns::Double(-1., 1.), 0, 20),
                       "The exponents k of the map, -1 < k < 1; empty: Material/k.");
     prm.declare_entry("nu values", "", Patterns::List(Patterns::Double(0., 0.5), 0, 20),
@@ -701,7 +699,7 @@ namespace gradcontact::cases
                 : p == "Tabor parameter"      ? Parameter::tabor_parameter
                 : p == "Coulomb 3D"           ? Parameter::coulomb_3d
                                            : Parameter::none;
-    ratios = to_doubles(prm.get("ratios"));
+    values = to_doubles(prm.get("values"));
     exponents = to_doubles(prm.get("k values"));
     poisson_ratios = to_doubles(prm.get("nu values"));
     holl_ratio = prm.get_bool("Holl ratio");
@@ -712,9 +710,9 @@ namespace gradcontact::cases
 
   void MapParameters::check() const
   {
-    for (const double r : ratios)
-      if (!(r > 0.))
-        throw std::invalid_argument("Map/ratios: " + format(r) + " must be in (0, inf)");
+    for (const double v : values)
+      if (!(v > 0.))
+        throw std::invalid_argument("Map/values: " + format(v) + " must be in (0, inf)");
     for (const double k : exponents)
       if (!(k > -1. && k < 1.))
         throw std::invalid_argument("Map/k values: " + format(k) + " must be in (-1, 1)");
@@ -745,7 +743,17 @@ namespace gradcontact::cases
 
   namespace
   {
-    /// The tangential studies need their load (9.78-9.87) and, for the Holl pairing, k > 0.
+    /// The mu of tangential contact (9.80-9.87): slip at |tau| = mu p, a finite positive coefficient.
+    void check_tangential_mu(const Scene &s, const std::string &where)
+    {
+      const double mu = s.friction.coefficient;
+      if (!(mu > 0.) || !std::isfinite(mu))
+        throw std::invalid_argument(where + "Friction/coefficient = " + format(mu) +
+                                    " must be in (0, inf) in a tangential scene (the mu of 9.80-9.87; formerly "
+                                    "Tangential/friction coefficient, whose default was 0.3)");
+    }
+
+    /// The tangential studies need their load (9.78-9.87), a friction coefficient and, for the Holl pairing, k > 0.
     void check_tangential(const Scene &s, const std::string &where)
     {
       using Study = TangentialParameters::Study;
@@ -766,6 +774,7 @@ namespace gradcontact::cases
                                             "be contact radius");
       if (!(s.load.a > 0.))
         throw std::invalid_argument(where + "Load/a = " + format(s.load.a) + " must be in (0, inf)");
+      check_tangential_mu(s, where);
     }
 
     /// JKR needs a work of adhesion; the optimal profile (a prescribed tension) a tensile strength and none.
@@ -866,9 +875,7 @@ namespace gradcontact::cases
       if (s.adhesion.enabled(s.load))
         throw std::invalid_argument(where + "a tangential candidate is non-adhesive (9.75-9.87): Adhesion/work of "
                                     "adhesion = 0");
-      if (!(s.tangential.friction_coefficient > 0.))
-        throw std::invalid_argument(where + "Tangential/friction coefficient = " +
-                                    format(s.tangential.friction_coefficient) + " must be in (0, inf)");
+      check_tangential_mu(s, where);
     }
 
     /// A candidate checks at least one formula at one point; a pressure needs f'' (see the message).
@@ -948,9 +955,9 @@ namespace gradcontact::cases
                                     "= Tabor parameter, which gives its lambdas)");
       // The edge's cells of the Lennard-Jones path shrink like lambda^-2 (lennard_jones_edge_refinement).
       if (s.adhesion.law == AdhesionParameters::Law::lennard_jones)
-        for (const double lambda : s.map.ratios)
+        for (const double lambda : s.map.values)
           if (!(lambda <= largest_lennard_jones_lambda))
-            throw std::invalid_argument(where + "Map/ratios: lambda = " + std::to_string(lambda) +
+            throw std::invalid_argument(where + "Map/values: lambda = " + std::to_string(lambda) +
                                         " with Adhesion/law = Lennard-Jones; the valid range is (0, " +
                                         format(largest_lennard_jones_lambda) +
                                         "] (the adhesive zone narrows like lambda^-2, and the edge refinement and the "
@@ -975,7 +982,7 @@ namespace gradcontact::cases
             throw std::invalid_argument(where + "Load/contact = unilateral is a normal-contact scene (no Adhesion or "
                                         "Tangential entries)");
         }
-      if (s.friction.enabled())
+      if (frictional_loading(s))
         {
           if (s.load.contact != LoadParameters::Contact::unilateral)
             throw std::invalid_argument(where + "Friction/coefficient = " + format(s.friction.coefficient) +
@@ -986,8 +993,8 @@ namespace gradcontact::cases
                                         " is modelled for a rigid indenter: Indenter/elasticity must be rigid");
           if (s.candidate.enabled() || s.map.enabled())
             throw std::invalid_argument(where + "Friction/coefficient = " + format(s.friction.coefficient) +
-                                        " with a Candidate or Map: a friction map sets mu from Map/ratios (Map/parameter "
-                                        "= friction coefficient); a candidate is checked frictionless");
+                                        " with a Candidate or Map: a friction map sets mu from Map/values (Map/parameter "
+                                        "= friction coefficient); a normal candidate is checked frictionless");
         }
       if (s.indenter.elasticity != IndenterParameters::Elasticity::rigid)
         {
@@ -1015,10 +1022,11 @@ namespace gradcontact::cases
     if (s.tangential.study != TangentialParameters::Study::oscillation)
       throw std::invalid_argument(where + "Map/parameter = Coulomb 3D needs Tangential/study = oscillation (its "
                                   "friction coefficient, amplitude and load steps set the path)");
-    if (s.adhesion.enabled(s.load) || s.candidate.enabled() || s.load.contact == LoadParameters::Contact::unilateral ||
-        s.friction.enabled())
-      throw std::invalid_argument(where + "Map/parameter = Coulomb 3D: no Adhesion, Candidate or Friction entries and "
+    if (s.adhesion.enabled(s.load) || s.candidate.enabled() || s.load.contact == LoadParameters::Contact::unilateral)
+      throw std::invalid_argument(where + "Map/parameter = Coulomb 3D: no Adhesion or Candidate entries and "
                                   "Load/contact = disc (the 3D model finds the contact and stick zones itself)");
+    if (s.map.values.empty())
+      check_tangential_mu(s, where);
     if (s.load.type != LoadParameters::Type::paraboloid)
       throw std::invalid_argument(where + "Map/parameter = Coulomb 3D needs Load/type = paraboloid (the sphere of "
                                   "9.80-9.86)");
@@ -1050,7 +1058,7 @@ namespace gradcontact::cases
                                   "Candidate entries, Load/contact = disc)");
     if (s.adhesion.tabor_parameter > 0. || s.adhesion.cohesive_strength > 0.)
       throw std::invalid_argument(where + "Map/parameter = Tabor parameter: Adhesion/Tabor parameter and cohesive "
-                                  "strength are not set (Map/ratios gives the lambdas)");
+                                  "strength are not set (Map/values gives the lambdas)");
     if (!(s.adhesion.work_of_adhesion > 0.))
       throw std::invalid_argument(where + "Map/parameter = Tabor parameter with Adhesion/work of adhesion = " +
                                   format(s.adhesion.work_of_adhesion) + ": it must be in (0, inf)");
@@ -1062,8 +1070,8 @@ namespace gradcontact::cases
                                   "map isolates the range of adhesion)");
     if (!s.references.fem)
       throw std::invalid_argument(where + "Map/parameter is set with References/fem = false: a map is FE data");
-    if (s.map.ratios.empty())
-      throw std::invalid_argument(where + "Map/ratios is empty: give the Tabor parameters lambda of the map");
+    if (s.map.values.empty())
+      throw std::invalid_argument(where + "Map/values is empty: give the Tabor parameters lambda of the map");
     if (!s.map.poisson_ratios.empty())
       throw std::invalid_argument(where + "Map/nu values is set for Map/parameter = Tabor parameter: the map runs at "
                                   "Material/nu");
@@ -1100,8 +1108,9 @@ namespace gradcontact::cases
                                   "runs at Load/a and compares at the FE depth)");
     if (!s.references.fem)
       throw std::invalid_argument(where + "Map/parameter is set with References/fem = false: a map is FE data");
-    if (s.map.ratios.empty())
-      throw std::invalid_argument(where + "Map/ratios is empty: give the ratios a/z0, a/H, a/w or E1/E0 of the map");
+    if (s.map.values.empty())
+      throw std::invalid_argument(where + "Map/values is empty: give the values of the map's variable (a/z0, a/H, a/w, "
+                                  "E1/E0 or mu, after Map/parameter)");
     if (s.map.parameter == MapParameters::Parameter::indenter_modulus)
       require_curved_power_law(s, where, "indenter modulus", "the elastic indenter's contact set is found",
                                "the indenter's elasticity");
@@ -1124,7 +1133,7 @@ namespace gradcontact::cases
                                       (s.map.exponents.empty() ? "Material/k" : "Map/k values") +
                                       "): the error-function grading needs k = 0 (homogeneous E0 below the skin)");
     if (!(s.load.a > 0.))
-      throw std::invalid_argument(where + "Load/a = " + format(s.load.a) + " must be in (0, inf) (z0 or H = a / ratio)");
+      throw std::invalid_argument(where + "Load/a = " + format(s.load.a) + " must be in (0, inf) (z0 or H = a / value)");
     }
   } // namespace
 
@@ -1144,6 +1153,13 @@ namespace gradcontact::cases
       return SceneKind::candidate;
     return s.references.fem ? SceneKind::normal : SceneKind::analytic;
   }
+
+  bool friction_is_tangential(const Scene &s)
+  {
+    return s.tangential.enabled() || (s.candidate.enabled() && s.candidate.has_tangential_entries());
+  }
+
+  bool frictional_loading(const Scene &s) { return s.friction.coefficient > 0. && !friction_is_tangential(s); }
 
   namespace
   {
@@ -1217,8 +1233,24 @@ namespace gradcontact::cases
     validate(s, kind);
   }
 
+  const std::vector<DeprecatedName> &deprecated_names()
+  {
+    static const std::vector<DeprecatedName> names{{"Tangential/friction coefficient", "Friction/coefficient"},
+                                                   {"Map/ratios", "Map/values"}};
+    return names;
+  }
+
   namespace
   {
+    /// The deprecated name `name` stands for, or nullptr.
+    const DeprecatedName *deprecated(const std::string &name)
+    {
+      for (const DeprecatedName &d : deprecated_names())
+        if (d.old_name == name)
+          return &d;
+      return nullptr;
+    }
+
     void declare_all(ParameterHandler &prm)
     {
       SceneInfo::declare(prm);
@@ -1266,19 +1298,29 @@ namespace gradcontact::cases
           }
     }
 
-    /// The entries a .prm file sets ("set" lines under their "subsection"s), as "Section/entry".
-    std::vector<std::string> paths_set_in(const std::string &file)
+    /// A "set" line of a .prm text: its index among the lines, how many lines it spans (a trailing backslash
+    /// continues it), "Section/entry" and the value.
+    struct SetLine
     {
-      std::vector<std::string> paths, stack;
-      std::ifstream            in(file);
-      const auto               trim = [](std::string t) {
-        t.erase(0, t.find_first_not_of(" \t"));
-        t.erase(t.find_last_not_of(" \t\r") + 1);
-        return t;
-      };
-      for (std::string line; std::getline(in, line);)
+      std::size_t line, count;
+      std::string path, value;
+    };
+
+    /// The "set" lines of a .prm text under their "subsection"s (comments dropped).
+    std::vector<SetLine> set_lines(const std::vector<std::string> &lines)
+    {
+      std::vector<SetLine>     found;
+      std::vector<std::string> stack;
+      for (std::size_t i = 0; i < lines.size(); ++i)
         {
-          line = trim(line.substr(0, line.find('#')));
+          const auto        uncommented = [&](const std::size_t j) { return trim(lines[j].substr(0, lines[j].find('#'))); };
+          std::string       line        = uncommented(i);
+          const std::size_t first       = i;
+          while (!line.empty() && line.back() == '\\' && i + 1 < lines.size())
+            {
+              ++i;
+              line = trim(line.substr(0, line.size() - 1) + " " + uncommented(i));
+            }
           if (line.rfind("subsection ", 0) == 0)
             stack.push_back(trim(line.substr(11)));
           else if (line == "end" && !stack.empty())
@@ -1288,9 +1330,29 @@ namespace gradcontact::cases
               std::string path;
               for (const std::string &section : stack)
                 path += section + "/";
-              paths.push_back(path + trim(line.substr(4, line.find('=') - 4)));
+              const std::size_t eq = line.find('=');
+              found.push_back({first, i + 1 - first, path + trim(line.substr(4, eq - 4)),
+                               eq == std::string::npos ? "" : trim(line.substr(eq + 1))});
             }
         }
+      return found;
+    }
+
+    std::vector<std::string> lines_of(const std::string &file)
+    {
+      std::vector<std::string> lines;
+      std::ifstream            in(file);
+      for (std::string line; std::getline(in, line);)
+        lines.push_back(line);
+      return lines;
+    }
+
+    /// The entries a .prm file sets, as "Section/entry".
+    std::vector<std::string> paths_set_in(const std::string &file)
+    {
+      std::vector<std::string> paths;
+      for (const SetLine &set : set_lines(lines_of(file)))
+        paths.push_back(set.path);
       return paths;
     }
 
@@ -1306,7 +1368,7 @@ namespace gradcontact::cases
       declared_paths(nlohmann::json::parse(tree.str()), "", declared);
       for (const std::string &path : used)
         {
-          if (std::find(declared.begin(), declared.end(), path) != declared.end())
+          if (std::find(declared.begin(), declared.end(), path) != declared.end() || deprecated(path))
             continue;
           std::string best;
           std::size_t best_distance = std::numeric_limits<std::size_t>::max();
@@ -1321,15 +1383,169 @@ namespace gradcontact::cases
     }
   } // namespace
 
+  namespace
+  {
+    std::vector<std::string> split_path(const std::string &name)
+    {
+      std::vector<std::string> path;
+      std::stringstream        in(name);
+      for (std::string part; std::getline(in, part, '/');)
+        path.push_back(part);
+      return path;
+    }
+
+    std::string joined(const std::vector<std::string> &path)
+    {
+      std::string name;
+      for (const std::string &p : path)
+        name += (name.empty() ? "" : "/") + p;
+      return name;
+    }
+
+    /// A scene file's entry under a deprecated name, to be set under its new one after the file is read.
+    struct Renamed
+    {
+      DeprecatedName name;
+      std::string    value;
+    };
+
+    /// An old name set beside its new one is ambiguous: which value was meant?
+    void refuse_both(const DeprecatedName &d)
+    {
+      throw std::invalid_argument(d.old_name + " is the deprecated name of " + d.new_name +
+                                  ", which the file also sets: keep " + d.new_name + " only");
+    }
+
+    /// Reads a .prm file into `prm` but for the lines setting a deprecated name, which are blanked (every other
+    /// line keeps its number for deal.II's errors) and returned.
+    std::vector<Renamed> parse_prm(ParameterHandler &prm, const std::string &file)
+    {
+      std::vector<std::string> lines = lines_of(file);
+      const std::vector<SetLine> sets = set_lines(lines);
+      std::vector<Renamed>       renamed;
+      for (const SetLine &set : sets)
+        if (const DeprecatedName *d = deprecated(set.path))
+          {
+            if (std::any_of(sets.begin(), sets.end(), [&](const SetLine &t) { return t.path == d->new_name; }))
+              refuse_both(*d);
+            renamed.push_back({*d, set.value});
+            std::fill_n(lines.begin() + set.line, set.count, std::string());
+          }
+      std::ostringstream text;
+      for (const std::string &line : lines)
+        text << line << '\n';
+      std::istringstream in(text.str());
+      prm.parse_input(in, file, "", false);
+      return renamed;
+    }
+
+    /// The same for a JSON file, an object of subsections ({"Material": {"k": "0.5"}, ...}).
+    std::vector<Renamed> parse_json(ParameterHandler &prm, const std::string &file)
+    {
+      std::ifstream        in(file);
+      nlohmann::json       tree = nlohmann::json::parse(in);
+      std::vector<Renamed> renamed;
+      const auto find = [&](const std::vector<std::string> &path) -> nlohmann::json * {
+        if (!tree.contains(path[0]) || !tree[path[0]].is_object() || !tree[path[0]].contains(path[1]))
+          return nullptr;
+        return &tree[path[0]][path[1]];
+      };
+      for (const DeprecatedName &d : deprecated_names())
+        if (const nlohmann::json *value = find(split_path(d.old_name)))
+          {
+            if (find(split_path(d.new_name)))
+              refuse_both(d);
+            renamed.push_back({d, value->is_string() ? value->get<std::string>() : value->dump()});
+            tree[split_path(d.old_name)[0]].erase(split_path(d.old_name)[1]);
+          }
+      std::istringstream text(tree.dump());
+      prm.parse_input_from_json(text, false);
+      return renamed;
+    }
+
+    /// Reads `file` into `prm`. Errors name the file; a misspelt entry of a .prm file gets the closest one.
+    std::vector<Renamed> parse_scene_file(ParameterHandler &prm, const std::string &file)
+    {
+      const bool json = std::filesystem::path(file).extension() == ".json";
+      try
+        {
+          if (!std::filesystem::is_regular_file(file))
+            throw std::invalid_argument("no such file");
+          return json ? parse_json(prm, file) : parse_prm(prm, file);
+        }
+      catch (const std::invalid_argument &e)
+        {
+          throw std::invalid_argument("scene " + file + ": " + concise(e));
+        }
+      catch (const std::exception &e)
+        {
+          // deal.II names the line, the entry and the pattern it violates
+          throw std::invalid_argument("scene " + file + ": " + concise(e) + (json ? "" : did_you_mean(paths_set_in(file))));
+        }
+    }
+
+    /// Sets `name` = `value` in `prm`; an error names `origin` (where the value came from) and the closest entry.
+    void set_entry(ParameterHandler &prm, const std::string &name, const std::string &value, const std::string &origin)
+    {
+      const std::vector<std::string> path = split_path(name);
+      try
+        {
+          for (std::size_t i = 0; i + 1 < path.size(); ++i)
+            prm.enter_subsection(path[i]);
+          prm.set(path.back(), value);
+          for (std::size_t i = 0; i + 1 < path.size(); ++i)
+            prm.leave_subsection();
+        }
+      catch (const std::exception &e)
+        {
+          throw std::invalid_argument(origin + ": " + concise(e) + did_you_mean({name}));
+        }
+    }
+
+    /// Every section of `prm` into a Scene (the entries' translations: selections, lists, "inf").
+    Scene parse_scene(ParameterHandler &prm, const std::string &file)
+    {
+      Scene s;
+      s.file = file;
+      try
+        {
+          s.info.parse(prm);
+          s.material.parse(prm);
+          s.load.parse(prm);
+          s.indenter.parse(prm);
+          s.discretization.parse(prm);
+          s.outputs.parse(prm);
+          s.references.parse(prm);
+          s.tolerances.parse(prm);
+          s.candidate.parse(prm);
+          if (s.candidate.fe_tolerance > 0.)
+            s.tolerances = {s.candidate.fe_tolerance, s.candidate.fe_tolerance, s.candidate.fe_tolerance,
+                            s.candidate.fe_tolerance, s.candidate.fe_tolerance};
+          s.adhesion.parse(prm);
+          s.tangential.parse(prm);
+          s.friction.parse(prm);
+          s.map.parse(prm);
+        }
+      catch (const std::exception &e)
+        {
+          throw std::invalid_argument("scene " + file + ": " + concise(e));
+        }
+      if (s.info.name.empty())
+        s.info.name = std::filesystem::path(file).stem().string();
+      std::ostringstream out;
+      prm.print_parameters(out, ParameterHandler::ShortPRM);
+      s.resolved = out.str();
+      return s;
+    }
+  } // namespace
+
   Override parse_override(const std::string &text)
   {
     const auto eq = text.find('=');
     if (eq == std::string::npos || eq == 0)
       throw std::invalid_argument("--set '" + text + "': expected Section/key=value");
     Override o;
-    std::stringstream path(text.substr(0, eq));
-    for (std::string part; std::getline(path, part, '/');)
-      o.path.push_back(part);
+    o.path = split_path(text.substr(0, eq));
     if (o.path.size() < 2)
       throw std::invalid_argument("--set '" + text + "': expected Section/key=value (the section is missing)");
     o.value = text.substr(eq + 1);
@@ -1340,75 +1556,19 @@ namespace gradcontact::cases
   {
     ParameterHandler prm;
     declare_all(prm);
-    try
-      {
-        if (!std::filesystem::is_regular_file(file))
-          throw std::invalid_argument("no such file");
-        if (std::filesystem::path(file).extension() == ".json")
-          {
-            // the same entries as a JSON object of subsections ({"Material": {"k": "0.5"}, ...})
-            std::ifstream in(file);
-            prm.parse_input_from_json(in, false);
-          }
-        else
-          prm.parse_input(file, "", false);
-      }
-    catch (const std::exception &e)
-      {
-        // deal.II names the line, the entry and the pattern it violates; a misspelt entry gets the closest one.
-        const bool prm_file = std::filesystem::path(file).extension() != ".json";
-        throw std::invalid_argument("scene " + file + ": " + concise(e) + (prm_file ? did_you_mean(paths_set_in(file)) : ""));
-      }
+    // a deprecated name, in the file or an override, sets its new name (after the file, before the overrides)
+    for (const Renamed &r : parse_scene_file(prm, file))
+      set_entry(prm, r.name.new_name, r.value,
+                "scene " + file + ": " + r.name.old_name + " = " + r.value + " (the deprecated name of " +
+                  r.name.new_name + ")");
     for (const Override &o : overrides)
       {
-        try
-          {
-            for (std::size_t i = 0; i + 1 < o.path.size(); ++i)
-              prm.enter_subsection(o.path[i]);
-            prm.set(o.path.back(), o.value);
-            for (std::size_t i = 0; i + 1 < o.path.size(); ++i)
-              prm.leave_subsection();
-          }
-        catch (const std::exception &e)
-          {
-            std::string name;
-            for (const std::string &p : o.path)
-              name += (name.empty() ? "" : "/") + p;
-            throw std::invalid_argument("scene " + file + ": --set " + name + "=" + o.value + ": " + concise(e) +
-                                        did_you_mean({name}));
-          }
+        const std::string     name = joined(o.path);
+        const DeprecatedName *d    = deprecated(name);
+        set_entry(prm, d ? d->new_name : name, o.value, "scene " + file + ": --set " + name + "=" + o.value);
       }
-    Scene s;
-    s.file = file;
-    try
-      {
-        s.info.parse(prm);
-        s.material.parse(prm);
-        s.load.parse(prm);
-        s.indenter.parse(prm);
-        s.discretization.parse(prm);
-        s.outputs.parse(prm);
-        s.references.parse(prm);
-        s.tolerances.parse(prm);
-        s.candidate.parse(prm);
-        if (s.candidate.fe_tolerance > 0.)
-          s.tolerances = {s.candidate.fe_tolerance, s.candidate.fe_tolerance, s.candidate.fe_tolerance,
-                          s.candidate.fe_tolerance, s.candidate.fe_tolerance};
-        s.adhesion.parse(prm);
-        s.tangential.parse(prm);
-        s.friction.parse(prm);
-        s.map.parse(prm);
-      }
-    catch (const std::exception &e)
-      {
-        throw std::invalid_argument("scene " + file + ": " + concise(e));
-      }
-    if (s.info.name.empty())
-      s.info.name = std::filesystem::path(file).stem().string();
-    std::ostringstream out;
-    prm.print_parameters(out, ParameterHandler::ShortPRM);
-    s.resolved = out.str();
-    s.kind = decide_kind(s);
+    Scene s = parse_scene(prm, file);
+    s.kind  = decide_kind(s);
     validate(s, s.kind);
     return s;
   }
@@ -1419,6 +1579,9 @@ namespace gradcontact::cases
     declare_all(prm);
     std::ostringstream out;
     prm.print_parameters(out, ParameterHandler::PRM);
+    out << "\n# Deprecated names, still read as their new ones:\n";
+    for (const DeprecatedName &d : deprecated_names())
+      out << "#   " << d.old_name << " -> " << d.new_name << "\n";
     return out.str();
   }
 } // namespace gradcontact::cases

@@ -107,15 +107,16 @@ namespace gradcontact::cases
     void check() const;
   };
 
-  /// Coulomb friction between a rigid indenter and the surface during normal loading (Load/contact = unilateral,
-  /// fem::Friction): the frictionless assumption of the chapter (9.1-9.44) dropped. The answer depends on the
-  /// loading path: the load grows from zero in `load_steps` steps. The closed-form rows then compare the chapter's
-  /// frictionless idealisation with the frictional FE.
+  /// The Coulomb friction coefficient mu of the scene, the one entry Friction/coefficient whatever the scene:
+  /// the mu of the tangential contact of 9.75-9.87 in a tangential scene (friction_is_tangential), else friction
+  /// between a rigid indenter and the surface during normal loading (Load/contact = unilateral, fem::Friction):
+  /// the frictionless assumption of the chapter (9.1-9.44) dropped. That answer depends on the loading path: the
+  /// load grows from zero in `load_steps` steps; the closed-form rows then compare the chapter's frictionless
+  /// idealisation with the frictional FE.
   struct FrictionParameters
   {
     double coefficient = 0.;       ///< mu in [0, inf]; 0: frictionless, inf: full stick
-    unsigned int load_steps = 24;  ///< steps of the loading path (mu > 0)
-    bool enabled() const { return coefficient > 0.; }
+    unsigned int load_steps = 24;  ///< steps of the normal loading path (mu > 0)
     static void declare(dealii::ParameterHandler &prm);
     void parse(dealii::ParameterHandler &prm);
   };
@@ -227,7 +228,7 @@ namespace gradcontact::cases
     std::string adhesive_depth, adhesive_force, adhesive_pressure;
     std::string critical_radius, critical_force, critical_depth;
     bool critical_force_control = true; ///< Candidate/critical control = force (else displacement)
-    /// Tangential (Ciavarella-Jaeger, Tangential/friction coefficient) candidates at Load/a: K_T(a) over `range`;
+    /// Tangential (Ciavarella-Jaeger, Friction/coefficient) candidates at Load/a: K_T(a) over `range`;
     /// F_x(c, a), u0(c, a) over stick radii; c(Fx, a) and the dissipated energy W(FA, a) over forces and
     /// amplitudes up to gross slip; u0(Fx, FA, a) on the unloading and reloading branches at Tangential/amplitude.
     std::string tangential_stiffness, tangential_force, tangential_displacement, stick_radius, dissipated_energy;
@@ -271,7 +272,6 @@ namespace gradcontact::cases
       oscillation   ///< Load/type = paraboloid: +-F_A after loading to A (9.81-9.87), hysteresis, dissipation
     };
     Study study = Study::none;
-    double friction_coefficient = 0.3; ///< mu > 0
     double stick_radius = 0.5;         ///< c / a in (0, 1] (partial slip)
     double amplitude = 0.9;            ///< F_A / (mu F_N) in (0, 1) (oscillation)
     unsigned int load_steps = 5;       ///< FE points on the F_x(u0) curve or the unloading branch
@@ -286,23 +286,24 @@ namespace gradcontact::cases
   };
 
   /// An applicability map (cases/runners/fe_map.h): the FE model of a real grading (a finite surface modulus or a
-  /// coating) against the power-law closed forms, over ratios a/z0 or a/H and several k. A scene is a map
-  /// when `parameter` is not none.
+  /// coating), of an elastic indenter, friction or a finite range of adhesion against the power-law closed forms,
+  /// over the values of one variable and several k. `parameter` names the variable, `values` holds its values; a
+  /// scene is a map when `parameter` is not none.
   struct MapParameters
   {
     enum class Parameter
     {
       none,
-      surface_depth,    ///< Material/modulus = shifted power law, z0 = a / ratio
-      coating_thickness, ///< Material/modulus = coating, H = a / ratio
-      erf_width,         ///< Material/modulus = error function, w = a / ratio (k = 0)
-      indenter_modulus,  ///< a homogeneous elastic indenter (Indenter/nu), E1 = ratio E0, against the rigid one
-      friction_coefficient, ///< Coulomb friction mu = ratio (Friction/load steps) against the frictionless indenter
-      tabor_parameter,      ///< a Dugdale cohesive zone of Tabor parameter lambda = ratio against JKR (cases/runners/fe_cohesive.h)
-      coulomb_3d            ///< the 3D Coulomb sphere over k, nu and mu = ratio against 9.80-9.86 (cases/runners/fe_coulomb_3d.h)
+      surface_depth,    ///< Material/modulus = shifted power law; values a/z0
+      coating_thickness, ///< Material/modulus = coating; values a/H
+      erf_width,         ///< Material/modulus = error function (k = 0); values a/w
+      indenter_modulus,  ///< a homogeneous elastic indenter (Indenter/nu) against the rigid one; values E1/E0
+      friction_coefficient, ///< Coulomb friction (Friction/load steps) against the frictionless indenter; values mu
+      tabor_parameter,      ///< a Dugdale cohesive zone against JKR (cases/runners/fe_cohesive.h); values lambda
+      coulomb_3d            ///< the 3D Coulomb sphere over k and nu against 9.80-9.86 (cases/runners/fe_coulomb_3d.h); values mu
     };
     Parameter parameter = Parameter::none;
-    std::vector<double> ratios;     ///< a/z0, a/H, a/w, E1/E0 or mu, > 0
+    std::vector<double> values;     ///< of the variable `parameter` names: a/z0, a/H, a/w, E1/E0, mu or lambda, > 0
     std::vector<double> exponents;  ///< k values; empty: Material/k
     std::vector<double> poisson_ratios; ///< nu values of a friction or Coulomb 3D map; empty: Material/nu
     bool holl_ratio = true;         ///< friction and Coulomb 3D maps: also nu = 1/(2 + k) (the decoupled pairing)
@@ -351,6 +352,12 @@ namespace gradcontact::cases
     SceneKind kind = SceneKind::normal; ///< decide_kind() of the entries, set (and validated) by read_scene
   };
 
+  /// Friction/coefficient is the mu of tangential contact (9.75-9.87): a tangential study (a Coulomb 3D map
+  /// included, which needs one) or a tangential candidate; elsewhere it is friction during normal loading.
+  bool friction_is_tangential(const Scene &scene);
+  /// Coulomb friction during normal loading: Friction/coefficient > 0 outside the tangential scenes.
+  bool frictional_loading(const Scene &scene);
+
   /// The kind of `scene`, from its entries only (no checks), in this order: map when Map/parameter is set; candidate
   /// when Candidate/profile (or profile table) is set with adhesive or tangential candidate entries; tangential when
   /// Tangential/study is set; adhesion when AdhesionParameters::enabled; candidate when Candidate/profile is set;
@@ -374,8 +381,16 @@ namespace gradcontact::cases
   };
   Override parse_override(const std::string &text);
 
-  /// Reads a scene, applies the overrides and decides its kind. Errors name the file, the entry and the valid
-  /// range.
+  /// An entry's former name ("Section/entry"), still read as its new one: one name per concept (the friction
+  /// coefficient, the map's values). A scene that sets both names is an error.
+  struct DeprecatedName
+  {
+    std::string old_name, new_name;
+  };
+  const std::vector<DeprecatedName> &deprecated_names();
+
+  /// Reads a scene (a deprecated name read as its new one), applies the overrides, decides its kind and validates
+  /// it. Errors name the file, the entry and the valid range.
   Scene read_scene(const std::string &file, const std::vector<Override> &overrides);
 
   /// Every entry with its documentation and default (for --help-scene).
