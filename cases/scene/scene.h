@@ -1,7 +1,8 @@
 // gradcontact/cases: a scene, i.e. one deal.II ParameterHandler file (.prm).
 //
-// One struct per subsection, each with declare() and parse() (the code-gallery pattern): ranges in
-// the patterns, a doc string on every entry. Variants of a scene are overrides on the command line
+// One struct per subsection, whose declare() declares its entries and binds each to its member (deal.II's
+// add_parameter pattern): ranges in the patterns, a doc string on every entry; check() the ranges a pattern
+// cannot state. Variants of a scene are overrides on the command line
 // (`--set Section/key=value`), never copied files. `gradcontact run --help-scene` prints every entry.
 #ifndef GRADCONTACT_CASES_SCENE_H
 #define GRADCONTACT_CASES_SCENE_H
@@ -17,8 +18,8 @@ namespace gradcontact::cases
   {
     std::string name; ///< report folder; empty: the file's stem
     std::string description;
-    static void declare(dealii::ParameterHandler &prm);
-    void parse(dealii::ParameterHandler &prm);
+    /// Declares the section's entries, each bound to its member (set as the file and the overrides are read).
+    void declare(dealii::ParameterHandler &prm);
   };
 
   struct MaterialParameters
@@ -43,8 +44,8 @@ namespace gradcontact::cases
     std::string table_file;      ///< table: the CSV file (relative to the scene's folder)
     double surface_modulus_ratio = 10.; ///< error function: m = E(0) / E0, > 0
     double erf_width = 0.;       ///< error function: w [m], > 0
-    static void declare(dealii::ParameterHandler &prm);
-    void parse(dealii::ParameterHandler &prm);
+    /// Declares the section's entries, each bound to its member (set as the file and the overrides are read).
+    void declare(dealii::ParameterHandler &prm);
     /// The section's own ranges, those its patterns cannot state (open ends, entries that go together).
     void check() const;
   };
@@ -78,8 +79,8 @@ namespace gradcontact::cases
     double depth = 1e-6;  ///< d (flat punch, depth control), d0 (concave punch)
     double force = 1e-2;  ///< F_N (force control)
     double R = 1e-2, tan_theta = 0.1, n = 2., A = 1., h0 = 1e-7, p0 = 1e6;
-    static void declare(dealii::ParameterHandler &prm);
-    void parse(dealii::ParameterHandler &prm);
+    /// Declares the section's entries, each bound to its member (set as the file and the overrides are read).
+    void declare(dealii::ParameterHandler &prm);
   };
 
   /// The indenter's elasticity (Load/contact = unilateral, fem::UnilateralContactSolver): rigid, a homogeneous
@@ -101,8 +102,8 @@ namespace gradcontact::cases
     /// The chapter's closed forms hold for this pairing (rigid, a graded body of the Material's law, or a
     /// homogeneous one on a homogeneous half-space).
     bool covered_by_9_4(double k) const { return elasticity != Elasticity::homogeneous || k == 0.; }
-    static void declare(dealii::ParameterHandler &prm);
-    void parse(dealii::ParameterHandler &prm);
+    /// Declares the section's entries, each bound to its member (set as the file and the overrides are read).
+    void declare(dealii::ParameterHandler &prm);
     /// The section's own ranges, those its patterns cannot state (open ends, entries that go together).
     void check() const;
   };
@@ -117,7 +118,9 @@ namespace gradcontact::cases
   {
     double coefficient = 0.;       ///< mu in [0, inf]; 0: frictionless, inf: full stick
     unsigned int load_steps = 24;  ///< steps of the normal loading path (mu > 0)
-    static void declare(dealii::ParameterHandler &prm);
+    /// Declares the section's entries, each bound to its member (set as the file and the overrides are read).
+    void declare(dealii::ParameterHandler &prm);
+    /// The entry whose text needs translating, read after the file and the overrides: Friction/coefficient (a number or inf).
     void parse(dealii::ParameterHandler &prm);
   };
 
@@ -151,7 +154,9 @@ namespace gradcontact::cases
     /// The exterior of max(r, z) = L condensed onto it (fem::use_condensed_far_field) where it applies, in the
     /// scenes of fem::AxisymmetricSolver and fem::FourierMode1Solver; off: u = 0 at L.
     bool condensed_far_field = true;
-    static void declare(dealii::ParameterHandler &prm);
+    /// Declares the section's entries, each bound to its member (set as the file and the overrides are read).
+    void declare(dealii::ParameterHandler &prm);
+    /// The entry whose text needs translating, read after the file and the overrides: Discretization/refinements (each in 0..10).
     void parse(dealii::ParameterHandler &prm);
   };
 
@@ -162,8 +167,8 @@ namespace gradcontact::cases
     std::vector<double> displacement_radii; ///< / a
     bool vtu = false;
     bool plots = true;
-    static void declare(dealii::ParameterHandler &prm);
-    void parse(dealii::ParameterHandler &prm);
+    /// Declares the section's entries, each bound to its member (set as the file and the overrides are read).
+    void declare(dealii::ParameterHandler &prm);
   };
 
   struct ReferenceParameters
@@ -171,15 +176,15 @@ namespace gradcontact::cases
     bool closed_form = true;
     bool numerical_mdr = false;
     bool fem = true; ///< false: only the analytic references are compared (closed form vs MDR)
-    static void declare(dealii::ParameterHandler &prm);
-    void parse(dealii::ParameterHandler &prm);
+    /// Declares the section's entries, each bound to its member (set as the file and the overrides are read).
+    void declare(dealii::ParameterHandler &prm);
   };
 
   struct ToleranceParameters
   {
     double force = 1e-5, depth = 1e-4, contact_radius = 1e-4, pressure = 1e-3, displacement = 1e-4;
-    static void declare(dealii::ParameterHandler &prm);
-    void parse(dealii::ParameterHandler &prm);
+    /// Declares the section's entries, each bound to its member (set as the file and the overrides are read).
+    void declare(dealii::ParameterHandler &prm);
   };
 
   /// JKR adhesion (9.45-9.74) checked by the FE model (fem/adhesion/adhesion.h). A scene is adhesive when the work of
@@ -207,8 +212,8 @@ namespace gradcontact::cases
     double tabor_parameter = 0.;    ///< lambda > 0 (Dugdale; or cohesive_strength)
     double cohesive_strength = 0.;  ///< sigma_0 [Pa] > 0 (Dugdale; or tabor_parameter)
     bool enabled(const LoadParameters &load) const;
-    static void declare(dealii::ParameterHandler &prm);
-    void parse(dealii::ParameterHandler &prm);
+    /// Declares the section's entries, each bound to its member (set as the file and the overrides are read).
+    void declare(dealii::ParameterHandler &prm);
   };
 
   /// A user's candidate closed form for an axisymmetric profile, checked against the numerical MDR.
@@ -256,7 +261,9 @@ namespace gradcontact::cases
     /// Tangential family: also one loading path of the 3D Coulomb model (cases/runners/fe_coulomb_3d.h) with the candidate's
     /// profile, whose rows say how far Coulomb's law is from the candidate.
     bool coulomb_3d = false;
-    static void declare(dealii::ParameterHandler &prm);
+    /// Declares the section's entries, each bound to its member (set as the file and the overrides are read).
+    void declare(dealii::ParameterHandler &prm);
+    /// The entry whose text needs translating, read after the file and the overrides: Candidate/FE tolerance (empty or a number).
     void parse(dealii::ParameterHandler &prm);
   };
 
@@ -279,8 +286,8 @@ namespace gradcontact::cases
     unsigned int stick_levels = 8;     ///< SurfaceRefinement levels toward the stick radii
     double assumption_tolerance = 1e-4; ///< of the measured assumption error (spread, |u_y|), against 0
     bool enabled() const { return study != Study::none; }
-    static void declare(dealii::ParameterHandler &prm);
-    void parse(dealii::ParameterHandler &prm);
+    /// Declares the section's entries, each bound to its member (set as the file and the overrides are read).
+    void declare(dealii::ParameterHandler &prm);
     /// The section's own ranges, those its patterns cannot state (open ends, entries that go together).
     void check() const;
   };
@@ -310,8 +317,8 @@ namespace gradcontact::cases
     bool full_stick = true;         ///< friction map: also mu = inf
     std::vector<double> thresholds = {0.01, 0.001}; ///< deviations whose ratio the map reports
     bool enabled() const { return parameter != Parameter::none; }
-    static void declare(dealii::ParameterHandler &prm);
-    void parse(dealii::ParameterHandler &prm);
+    /// Declares the section's entries, each bound to its member (set as the file and the overrides are read).
+    void declare(dealii::ParameterHandler &prm);
     /// The section's own ranges, those its patterns cannot state (open ends, entries that go together).
     void check() const;
   };

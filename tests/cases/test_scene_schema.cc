@@ -152,3 +152,35 @@ TEST_CASE("A deprecated name shall be an error naming its new name when the new 
                     Contains("Line <5> of file") && Contains("line.prm"));
   CHECK(scene_documentation().find("Tangential/friction coefficient -> Friction/coefficient") != std::string::npos);
 }
+
+TEST_CASE("Every kind of entry shall set its member: numbers, flags, text, lists and selections", "[cases][quick]")
+{
+  const Scene s = scene_with({"Material/E0=2e9", "Material/layers=7", "Material/modulus=layered", "Outputs/vtu=true",
+                              "Candidate/constants=R=0.01", "Outputs/pressure radii=0, 0.5", "Load/type=cone",
+                              "Load/control=depth", "Discretization/memory guard=off",
+                              "Discretization/formulation=mixed", "Adhesion/control=force",
+                              "Adhesion/curve points=0.5, 2"});
+  CHECK(s.material.E0 == 2e9);
+  CHECK(s.material.layers == 7);
+  CHECK(s.material.modulus == MaterialParameters::Modulus::layered);
+  CHECK(s.outputs.vtu);
+  CHECK(s.candidate.constants == "R=0.01");
+  CHECK(s.outputs.pressure_radii == std::vector<double>{0, 0.5});
+  CHECK(s.load.type == LoadParameters::Type::cone);
+  CHECK(s.load.control == LoadParameters::Control::depth);
+  CHECK_FALSE(s.discretization.memory_guard);
+  CHECK(s.discretization.formulation == DiscretizationParameters::Formulation::mixed);
+  CHECK(s.adhesion.force_control);
+  CHECK_FALSE(s.adhesion.displacement_control);
+  CHECK(s.adhesion.curve_points == std::vector<double>{0.5, 2});
+  // the entries left alone keep the declared defaults, which are the members' initial values
+  const Scene defaults = scene_with({});
+  const Scene by_hand;
+  CHECK(defaults.material.E0 == by_hand.material.E0);
+  CHECK(defaults.adhesion.stencil_ratio == by_hand.adhesion.stencil_ratio);
+  CHECK(defaults.discretization.refinements == by_hand.discretization.refinements);
+  CHECK(defaults.map.thresholds == by_hand.map.thresholds);
+  CHECK(defaults.candidate.range == by_hand.candidate.range);
+  CHECK(defaults.tangential.study == by_hand.tangential.study);
+  CHECK(defaults.discretization.surface_map == by_hand.discretization.surface_map);
+}
