@@ -1453,15 +1453,23 @@ namespace gradcontact::cases
     ParameterHandler prm;
     declare_all(prm, s);
     // a deprecated name, in the file or an override, sets its new name (after the file, before the overrides)
+    const auto note = [&](const DeprecatedName &d) {
+      s.notes.push_back(d.old_name + " is a deprecated name, read as " + d.new_name + ": write " + d.new_name);
+    };
     for (const Renamed &r : parse_scene_file(prm, file))
-      set_entry(prm, r.name.new_name, r.value,
-                "scene " + file + ": " + r.name.old_name + " = " + r.value + " (the deprecated name of " +
-                  r.name.new_name + ")");
+      {
+        set_entry(prm, r.name.new_name, r.value,
+                  "scene " + file + ": " + r.name.old_name + " = " + r.value + " (the deprecated name of " +
+                    r.name.new_name + ")");
+        note(r.name);
+      }
     for (const Override &o : overrides)
       {
         const std::string     name = joined(o.path);
         const DeprecatedName *d    = deprecated(name);
         set_entry(prm, d ? d->new_name : name, o.value, "scene " + file + ": --set " + name + "=" + o.value);
+        if (d)
+          note(*d);
       }
     finish_scene(prm, s);
     s.kind = decide_kind(s);

@@ -356,6 +356,8 @@ namespace gradcontact::cases
     FrictionParameters friction;
     MapParameters map;
     std::string resolved; ///< every entry after overrides, as a .prm, stored with the report
+    /// What reading the scene wants its author to know: each deprecated name it set, and the name now read.
+    std::vector<std::string> notes;
     SceneKind kind = SceneKind::normal; ///< decide_kind() of the entries, set (and validated) by read_scene
   };
 

@@ -98,6 +98,10 @@ TEST_CASE("A deprecated entry name shall parse to the same scene as its new name
   const Scene new_names =
     scene_of(folder, "new.prm", load + study + "end\nsubsection Friction\n  set coefficient = 0.4\nend\n");
   CHECK(old_names.friction.coefficient == 0.4);
+  REQUIRE(old_names.notes.size() == 1);
+  CHECK_THAT(old_names.notes[0], Contains("Tangential/friction coefficient is a deprecated name, read as "
+                                          "Friction/coefficient"));
+  CHECK(new_names.notes.empty());
   CHECK(old_names.kind == new_names.kind);
   CHECK(old_names.resolved == new_names.resolved);
 
