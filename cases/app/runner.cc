@@ -238,6 +238,8 @@ namespace gradcontact::cases
           return s;
         }
       Scene scene = read_scene(file.string(), overrides);
+      for (const std::string &note : scene.notes)
+        std::cerr << "gradcontact: scene " << file.string() << ": " << note << "\n";
       scene.info.name += suffix;
       // a variant says so in its report: the description was written for the file's own values
       if (!overrides.empty())

@@ -97,14 +97,14 @@ namespace gradcontact::cases
       base.material2 = GradedHalfSpace{
         indenter.E, m.c0, indenter.elasticity == IndenterParameters::Elasticity::graded ? m.k : 0., indenter.nu};
     idealised_indenter = !indenter.covered_by_9_4(m.k);
-    idealised_surface  = s.friction.enabled();
+    idealised_surface  = frictional_loading(s);
     idealised_adhesion = s.adhesion.law != AdhesionParameters::Law::jkr;
     base.method = method;
     if (problem == Problem::tangential)
       {
         base.a = s.load.a;
         base.geometry.R = s.load.R;
-        base.mu = s.tangential.friction_coefficient;
+        base.mu = s.friction.coefficient;
         return;
       }
     set_case(base, s, problem);

@@ -68,7 +68,7 @@ namespace gradcontact::cases
           r.displacement[i].value += u.indenter_displacement.at(i).value;
         r.message += " elastic indenter: w(r) is the sum of both surfaces' displacements;";
       }
-    if (s.friction.enabled())
+    if (frictional_loading(s))
       r.message += friction_message(s, u);
     r.consistent_contact = u.zones.size() == 1;
     if (u.zones.size() != 1)

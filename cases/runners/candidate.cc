@@ -50,7 +50,7 @@ namespace gradcontact::cases
                                     {"beta", beta(m.k, m.nu)},
                                     {"C", C(m.k, m.nu)},
                                     {"dgamma", s.adhesion.work_of_adhesion},
-                                    {"mu", s.tangential.friction_coefficient}};
+                                    {"mu", s.friction.coefficient}};
     // name = expression, ...: each expression may use the names before it and the functions; commas inside
     // parentheses belong to a function's arguments
     std::vector<std::string> items(1);
@@ -572,7 +572,7 @@ namespace gradcontact::cases
       LoopRule(const Scene &s, const mdr::PartialSlip &slip)
       {
         const double a = s.load.a;
-        FA             = s.tangential.amplitude * s.tangential.friction_coefficient * slip.normal_force(a);
+        FA             = s.tangential.amplitude * s.friction.coefficient * slip.normal_force(a);
         c_A            = slip.stick_radius(FA);
         const double exact = slip.dissipated_energy(FA);
         for (n = 2;; ++n)
@@ -582,7 +582,7 @@ namespace gradcontact::cases
             for (unsigned int q = 0; q < n; ++q)
               {
                 radii[q]   = c_A + (a - c_A) * gauss.point(q)[0];
-                weights[q] = (a - c_A) * gauss.weight(q) * s.tangential.friction_coefficient *
+                weights[q] = (a - c_A) * gauss.weight(q) * s.friction.coefficient *
                              slip.normal_force_slope(radii[q]);
               }
             error = energy([&](const double c) { return slip.tangential_displacement(c); }) / exact - 1;
@@ -953,7 +953,7 @@ namespace gradcontact::cases
     const auto                 constants = candidate_constants(s);
     const mdr::Profile         profile   = candidate_profile(s, constants);
     const Medium               m         = scene_medium(s);
-    const double               mu = s.tangential.friction_coefficient, a = s.load.a;
+    const double               mu = s.friction.coefficient, a = s.load.a;
     const bool                 plots = s.outputs.plots;
     SceneResult                result;
     FeValues fe;
@@ -1169,7 +1169,7 @@ namespace gradcontact::cases
         return run_unilateral_candidate(s, constants);
       SceneResult result;
       const mdr::Profile profile = candidate_profile(s, constants);
-      // (a pressure candidate without f'' is refused by scene_kind: see there why)
+      // (a pressure candidate without f'' is refused by validate: see there why)
       std::vector<Row> fe_rows;
       std::map<std::string, double> fe_at_a;
       std::map<std::string, std::map<double, double>> fe_profiles;

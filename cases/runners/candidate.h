@@ -38,7 +38,7 @@ namespace gradcontact::cases
 {
   /// The names a candidate's expressions may use: E0, c0, k, nu, pi; the chapter's coefficients of the material,
   /// h_N (9.5), h_T (9.79), beta, C, cN0 = c_N0 (9.4), cT0 = c_T0 and alpha = cN0 / cT0 (9.78); dgamma
-  /// (Adhesion/work of adhesion) and mu (Tangential/friction coefficient); then Candidate/constants, which may
+  /// (Adhesion/work of adhesion) and mu (Friction/coefficient); then Candidate/constants, which may
   /// override them.
   std::map<std::string, double> candidate_constants(const Scene &scene);
 

@@ -96,7 +96,7 @@ namespace gradcontact::cases
                                  const std::map<std::string, double> &constants, std::vector<Row> &rows)
   {
     const CandidateParameters &c      = s.candidate;
-    const double               a      = s.load.a, mu = s.tangential.friction_coefficient;
+    const double               a      = s.load.a, mu = s.friction.coefficient;
     const std::string          method = "FE (3D Coulomb)";
     const auto                 start  = std::chrono::steady_clock::now();
     std::vector<Step>          path;

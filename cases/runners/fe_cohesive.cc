@@ -303,7 +303,7 @@ namespace gradcontact::cases
                                      : JkrProfile{gradcontact::PowerLaw{s.load.n, s.load.A}};
       plan.fe_profile = *fe_indenter_profile(s.load); // the scene refuses a map of any other Load/type
       plan.ks = s.map.exponents.empty() ? std::vector<double>{s.material.k} : s.map.exponents;
-      plan.lambdas = s.map.ratios;
+      plan.lambdas = s.map.values;
       std::sort(plan.lambdas.begin(), plan.lambdas.end());
       if (s.adhesion.force_control)
         plan.controls.push_back(true);

@@ -486,14 +486,14 @@ namespace gradcontact::cases
     };
 
     /// The panels: every k and nu, and Holl's ratio where it is a Poisson ratio (k >= 0; 1/2 at k = 0, with the
-    /// mixed formulation), each at every mu of Map/ratios (Tangential/friction coefficient when empty); the mu of one
+    /// mixed formulation), each at every mu of Map/values (Friction/coefficient when empty); the mu of one
     /// body share its surface compliance.
     CoulombMapPlan plan_coulomb_map(const Scene &s)
     {
       CoulombMapPlan plan;
       const std::vector<double> ks  = s.map.exponents.empty() ? std::vector<double>{s.material.k} : s.map.exponents;
       const std::vector<double> nus = s.map.poisson_ratios.empty() ? std::vector<double>{s.material.nu} : s.map.poisson_ratios;
-      plan.mus = s.map.ratios.empty() ? std::vector<double>{s.tangential.friction_coefficient} : s.map.ratios;
+      plan.mus = s.map.values.empty() ? std::vector<double>{s.friction.coefficient} : s.map.values;
       std::sort(plan.mus.begin(), plan.mus.end());
       for (const double k : ks)
         {

@@ -125,8 +125,8 @@ namespace gradcontact::cases
                      const std::function<void(const CoulombSphereStep &, const fem::SurfaceCompliance3D &)> &on_step = {});
 
   /// The map of Map/parameter = Coulomb 3D into `folder`: for every k of Map/k values and nu of Map/nu values (and
-  /// Holl's ratio nu = 1/(2 + k) for k >= 0 with Map/Holl ratio) and every mu of Map/ratios (Tangential/friction
-  /// coefficient when empty; the mu of one body share its surface compliance), the case above with the sphere of Load/R, the mesh
+  /// Holl's ratio nu = 1/(2 + k) for k >= 0 with Map/Holl ratio) and every mu of Map/values (Friction/coefficient
+  /// when empty; the mu of one body share its surface compliance), the case above with the sphere of Load/R, the mesh
   /// graded toward Load/a (4 sectors, h_edge = a/100, rings of at most a/40 inside the contact, candidate nodes
   /// within 1.15 a, L = Discretization/far field or 1000 a for k >= 0 and 1e5 a for k < 0), loaded to the chapter's depth of contact radius a, then to the chapter's delta_A of F_A =
   /// Tangential/amplitude mu F_N and one cycle, in Tangential/load steps, with the decoupled reference. The map

@@ -669,7 +669,7 @@ namespace gradcontact::cases
     {
       MapPlan plan;
       const std::vector<double> ks = s.map.exponents.empty() ? std::vector<double>{s.material.k} : s.map.exponents;
-      plan.ratios = s.map.ratios;
+      plan.ratios = s.map.values;
       std::sort(plan.ratios.begin(), plan.ratios.end());
       plan.indenter = is_indenter(s);
       plan.quantities = plan.indenter ? std::vector<std::string>{"force", "contact radius", "pressure"}

@@ -101,7 +101,7 @@ namespace gradcontact::cases
                                const fs::path &folder, const unsigned int level)
     {
       const fem::UnilateralResult u = solve_normal_unilateral(s, model, out);
-      if (s.friction.enabled())
+      if (frictional_loading(s))
         write_friction(s, u, folder, level);
       return as_disc_result(s, model, u);
     }

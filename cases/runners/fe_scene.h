@@ -22,7 +22,7 @@ namespace gradcontact::cases
   FeProfile fe_profile(const Scene &scene, const std::string &quantity, const std::vector<double> &radii_over_a,
                        const std::string &normaliser, double normaliser_r_over_a, bool per_area);
 
-  /// Each runs a scene of its kind (scene_kind) and writes its plots and tables into `folder` (which the
+  /// Each runs a scene of its kind (decide_kind) and writes its plots and tables into `folder` (which the
   /// caller makes atomically); a scene of another kind is an error.
   SceneResult run_normal_scene(const Scene &scene, const std::filesystem::path &folder, bool verbose);
   SceneResult run_analytic_scene(const Scene &scene, const std::filesystem::path &folder);

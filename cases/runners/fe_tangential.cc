@@ -64,10 +64,10 @@ namespace gradcontact::cases
     }
 
     /// The scene with Tangential/Holl ratio applied (nu = 1 / (2 + k), the decoupled pairing of 9.3.1); the
-    /// entries are checked by scene_kind (k > 0 for the Holl ratio, the load of each study).
+    /// entries are checked by validate (k > 0 for the Holl ratio, the load of each study).
     Scene with_holl_ratio(const Scene &scene)
     {
-      scene_kind(scene);
+      validate(scene, decide_kind(scene));
       Scene s = scene;
       if (s.tangential.holl_ratio)
         s.material.nu = 1. / (2. + s.material.k);
@@ -122,7 +122,7 @@ namespace gradcontact::cases
       const auto pressure = [&medium, sphere](const double r, const double b) {
         return r < b ? gradcontact::pressure(medium, sphere, b, r) : 0.;
       };
-      return model.partial_slip(pressure, s.tangential.friction_coefficient, s.load.a, c, radii);
+      return model.partial_slip(pressure, s.friction.coefficient, s.load.a, c, radii);
     }
 
     /// The oscillation after loading to A (F_A = amplitude mu F_N): F_N, F_A and the stick radius c_A of A.
@@ -133,8 +133,8 @@ namespace gradcontact::cases
     Oscillation oscillation_of(const Scene &s, const gradcontact::Medium &medium)
     {
       const double FN = gradcontact::force(medium, gradcontact::Paraboloid{s.load.R}, s.load.a);
-      const double FA = s.tangential.amplitude * s.tangential.friction_coefficient * FN;
-      const gradcontact::tangential::SphereSlip slip{s.load.R, s.tangential.friction_coefficient};
+      const double FA = s.tangential.amplitude * s.friction.coefficient * FN;
+      const gradcontact::tangential::SphereSlip slip{s.load.R, s.friction.coefficient};
       return {FN, FA, gradcontact::tangential::stick_radius(medium, slip, s.load.a, FA)}; // 9.80
     }
 
@@ -145,7 +145,7 @@ namespace gradcontact::cases
                                           const Oscillation &o, const double Fx, const std::vector<double> &radii)
     {
       namespace t = gradcontact::tangential;
-      const t::SphereSlip slip{s.load.R, s.tangential.friction_coefficient};
+      const t::SphereSlip slip{s.load.R, s.friction.coefficient};
       const double a = s.load.a;
       const double b = t::reversal_radius(medium, slip, a, o.FA, t::Branch::unloading, Fx); // 9.81
       std::vector<double> kinks;
@@ -299,7 +299,7 @@ namespace gradcontact::cases
         radii.push_back(x * a);
       Mode1Model model(s, graded_radii(s, radii), contract_level);
       const double FN = gradcontact::force(medium, gradcontact::Paraboloid{s.load.R}, a);
-      const double mu = tp.friction_coefficient;
+      const double mu = s.friction.coefficient;
       double u_gross = 0.;
       try
         {
@@ -411,7 +411,7 @@ namespace gradcontact::cases
                                            const std::chrono::steady_clock::time_point start, HysteresisPlots &plots)
     {
       namespace t = gradcontact::tangential;
-      const double a = s.load.a, mu = s.tangential.friction_coefficient;
+      const double a = s.load.a, mu = s.friction.coefficient;
       // Unloading branch at `load steps` forces (the first is A, the last E) and the points A to E (9.34-9.35).
       const std::vector<double> forces = unloading_forces(s.tangential);
       const std::vector<std::pair<std::string, double>> labelled{{"A", 1.}, {"B", 0.5}, {"C", 0.}, {"D", -0.5}, {"E", -1.}};
@@ -481,7 +481,7 @@ namespace gradcontact::cases
     void TangentialStudy::dissipated_energy(Mode1Model &model, const Oscillation &o,
                                             const std::chrono::steady_clock::time_point start)
     {
-      const double a = s.load.a, nu = s.material.nu, E0 = s.material.E0, mu = s.tangential.friction_coefficient;
+      const double a = s.load.a, nu = s.material.nu, E0 = s.material.E0, mu = s.friction.coefficient;
       // Dissipated energy per cycle, W = \int_{-F_A}^{F_A} [u_un(F) - u_re(F)] dF, u_re(F) = -u_un(-F), by
       // Gauss-Legendre in F on the FE u_un (the nodes are symmetric: sum_q w_q [u(F_q) + u(-F_q)] = 2 sum_q w_q u(F_q)).
       const dealii::QGauss<1> gauss(energy_gauss_points);

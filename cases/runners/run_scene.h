@@ -1,4 +1,4 @@
-// gradcontact/cases: the runners' one entry (runner part): a scene run by the runner of its kind (scene_kind in
+// gradcontact/cases: the runners' one entry (runner part): a scene run by the runner of its kind (decide_kind in
 // scene.h), and its report written atomically.
 #ifndef GRADCONTACT_CASES_RUN_SCENE_H
 #define GRADCONTACT_CASES_RUN_SCENE_H

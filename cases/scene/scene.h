@@ -1,7 +1,8 @@
 // gradcontact/cases: a scene, i.e. one deal.II ParameterHandler file (.prm).
 //
-// One struct per subsection, each with declare() and parse() (the code-gallery pattern): ranges in
-// the patterns, a doc string on every entry. Variants of a scene are overrides on the command line
+// One struct per subsection, whose declare() declares its entries and binds each to its member (deal.II's
+// add_parameter pattern): ranges in the patterns, a doc string on every entry; check() the ranges a pattern
+// cannot state. Variants of a scene are overrides on the command line
 // (`--set Section/key=value`), never copied files. `gradcontact run --help-scene` prints every entry.
 #ifndef GRADCONTACT_CASES_SCENE_H
 #define GRADCONTACT_CASES_SCENE_H
@@ -17,8 +18,8 @@ namespace gradcontact::cases
   {
     std::string name; ///< report folder; empty: the file's stem
     std::string description;
-    static void declare(dealii::ParameterHandler &prm);
-    void parse(dealii::ParameterHandler &prm);
+    /// Declares the section's entries, each bound to its member (set as the file and the overrides are read).
+    void declare(dealii::ParameterHandler &prm);
   };
 
   struct MaterialParameters
@@ -43,8 +44,10 @@ namespace gradcontact::cases
     std::string table_file;      ///< table: the CSV file (relative to the scene's folder)
     double surface_modulus_ratio = 10.; ///< error function: m = E(0) / E0, > 0
     double erf_width = 0.;       ///< error function: w [m], > 0
-    static void declare(dealii::ParameterHandler &prm);
-    void parse(dealii::ParameterHandler &prm);
+    /// Declares the section's entries, each bound to its member (set as the file and the overrides are read).
+    void declare(dealii::ParameterHandler &prm);
+    /// The section's own ranges, those its patterns cannot state (open ends, entries that go together).
+    void check() const;
   };
 
   struct LoadParameters
@@ -76,8 +79,8 @@ namespace gradcontact::cases
     double depth = 1e-6;  ///< d (flat punch, depth control), d0 (concave punch)
     double force = 1e-2;  ///< F_N (force control)
     double R = 1e-2, tan_theta = 0.1, n = 2., A = 1., h0 = 1e-7, p0 = 1e6;
-    static void declare(dealii::ParameterHandler &prm);
-    void parse(dealii::ParameterHandler &prm);
+    /// Declares the section's entries, each bound to its member (set as the file and the overrides are read).
+    void declare(dealii::ParameterHandler &prm);
   };
 
   /// The indenter's elasticity (Load/contact = unilateral, fem::UnilateralContactSolver): rigid, a homogeneous
@@ -99,20 +102,25 @@ namespace gradcontact::cases
     /// The chapter's closed forms hold for this pairing (rigid, a graded body of the Material's law, or a
     /// homogeneous one on a homogeneous half-space).
     bool covered_by_9_4(double k) const { return elasticity != Elasticity::homogeneous || k == 0.; }
-    static void declare(dealii::ParameterHandler &prm);
-    void parse(dealii::ParameterHandler &prm);
+    /// Declares the section's entries, each bound to its member (set as the file and the overrides are read).
+    void declare(dealii::ParameterHandler &prm);
+    /// The section's own ranges, those its patterns cannot state (open ends, entries that go together).
+    void check() const;
   };
 
-  /// Coulomb friction between a rigid indenter and the surface during normal loading (Load/contact = unilateral,
-  /// fem::Friction): the frictionless assumption of the chapter (9.1-9.44) dropped. The answer depends on the
-  /// loading path: the load grows from zero in `load_steps` steps. The closed-form rows then compare the chapter's
-  /// frictionless idealisation with the frictional FE.
+  /// The Coulomb friction coefficient mu of the scene, the one entry Friction/coefficient whatever the scene:
+  /// the mu of the tangential contact of 9.75-9.87 in a tangential scene (friction_is_tangential), else friction
+  /// between a rigid indenter and the surface during normal loading (Load/contact = unilateral, fem::Friction):
+  /// the frictionless assumption of the chapter (9.1-9.44) dropped. That answer depends on the loading path: the
+  /// load grows from zero in `load_steps` steps; the closed-form rows then compare the chapter's frictionless
+  /// idealisation with the frictional FE.
   struct FrictionParameters
   {
     double coefficient = 0.;       ///< mu in [0, inf]; 0: frictionless, inf: full stick
-    unsigned int load_steps = 24;  ///< steps of the loading path (mu > 0)
-    bool enabled() const { return coefficient > 0.; }
-    static void declare(dealii::ParameterHandler &prm);
+    unsigned int load_steps = 24;  ///< steps of the normal loading path (mu > 0)
+    /// Declares the section's entries, each bound to its member (set as the file and the overrides are read).
+    void declare(dealii::ParameterHandler &prm);
+    /// The entry whose text needs translating, read after the file and the overrides: Friction/coefficient (a number or inf).
     void parse(dealii::ParameterHandler &prm);
   };
 
@@ -146,7 +154,9 @@ namespace gradcontact::cases
     /// The exterior of max(r, z) = L condensed onto it (fem::use_condensed_far_field) where it applies, in the
     /// scenes of fem::AxisymmetricSolver and fem::FourierMode1Solver; off: u = 0 at L.
     bool condensed_far_field = true;
-    static void declare(dealii::ParameterHandler &prm);
+    /// Declares the section's entries, each bound to its member (set as the file and the overrides are read).
+    void declare(dealii::ParameterHandler &prm);
+    /// The entry whose text needs translating, read after the file and the overrides: Discretization/refinements (each in 0..10).
     void parse(dealii::ParameterHandler &prm);
   };
 
@@ -157,8 +167,8 @@ namespace gradcontact::cases
     std::vector<double> displacement_radii; ///< / a
     bool vtu = false;
     bool plots = true;
-    static void declare(dealii::ParameterHandler &prm);
-    void parse(dealii::ParameterHandler &prm);
+    /// Declares the section's entries, each bound to its member (set as the file and the overrides are read).
+    void declare(dealii::ParameterHandler &prm);
   };
 
   struct ReferenceParameters
@@ -166,15 +176,15 @@ namespace gradcontact::cases
     bool closed_form = true;
     bool numerical_mdr = false;
     bool fem = true; ///< false: only the analytic references are compared (closed form vs MDR)
-    static void declare(dealii::ParameterHandler &prm);
-    void parse(dealii::ParameterHandler &prm);
+    /// Declares the section's entries, each bound to its member (set as the file and the overrides are read).
+    void declare(dealii::ParameterHandler &prm);
   };
 
   struct ToleranceParameters
   {
     double force = 1e-5, depth = 1e-4, contact_radius = 1e-4, pressure = 1e-3, displacement = 1e-4;
-    static void declare(dealii::ParameterHandler &prm);
-    void parse(dealii::ParameterHandler &prm);
+    /// Declares the section's entries, each bound to its member (set as the file and the overrides are read).
+    void declare(dealii::ParameterHandler &prm);
   };
 
   /// JKR adhesion (9.45-9.74) checked by the FE model (fem/adhesion/adhesion.h). A scene is adhesive when the work of
@@ -202,8 +212,8 @@ namespace gradcontact::cases
     double tabor_parameter = 0.;    ///< lambda > 0 (Dugdale; or cohesive_strength)
     double cohesive_strength = 0.;  ///< sigma_0 [Pa] > 0 (Dugdale; or tabor_parameter)
     bool enabled(const LoadParameters &load) const;
-    static void declare(dealii::ParameterHandler &prm);
-    void parse(dealii::ParameterHandler &prm);
+    /// Declares the section's entries, each bound to its member (set as the file and the overrides are read).
+    void declare(dealii::ParameterHandler &prm);
   };
 
   /// A user's candidate closed form for an axisymmetric profile, checked against the numerical MDR.
@@ -223,7 +233,7 @@ namespace gradcontact::cases
     std::string adhesive_depth, adhesive_force, adhesive_pressure;
     std::string critical_radius, critical_force, critical_depth;
     bool critical_force_control = true; ///< Candidate/critical control = force (else displacement)
-    /// Tangential (Ciavarella-Jaeger, Tangential/friction coefficient) candidates at Load/a: K_T(a) over `range`;
+    /// Tangential (Ciavarella-Jaeger, Friction/coefficient) candidates at Load/a: K_T(a) over `range`;
     /// F_x(c, a), u0(c, a) over stick radii; c(Fx, a) and the dissipated energy W(FA, a) over forces and
     /// amplitudes up to gross slip; u0(Fx, FA, a) on the unloading and reloading branches at Tangential/amplitude.
     std::string tangential_stiffness, tangential_force, tangential_displacement, stick_radius, dissipated_energy;
@@ -238,7 +248,10 @@ namespace gradcontact::cases
       adhesive,
       tangential
     };
+    /// The family of the entries set; throws when both the adhesive and the tangential family's are set.
     Family family() const;
+    bool has_adhesive_entries() const;   ///< an adhesive depth, force or pressure, or a critical state
+    bool has_tangential_entries() const; ///< any of the tangential candidate formulas
     /// A candidate scene: a profile expression or a profile table.
     bool enabled() const { return !profile.empty() || !profile_table.empty(); }
     double tolerance = 1e-8; ///< relative, of every row against the numerical MDR
@@ -248,7 +261,9 @@ namespace gradcontact::cases
     /// Tangential family: also one loading path of the 3D Coulomb model (cases/runners/fe_coulomb_3d.h) with the candidate's
     /// profile, whose rows say how far Coulomb's law is from the candidate.
     bool coulomb_3d = false;
-    static void declare(dealii::ParameterHandler &prm);
+    /// Declares the section's entries, each bound to its member (set as the file and the overrides are read).
+    void declare(dealii::ParameterHandler &prm);
+    /// The entry whose text needs translating, read after the file and the overrides: Candidate/FE tolerance (empty or a number).
     void parse(dealii::ParameterHandler &prm);
   };
 
@@ -264,7 +279,6 @@ namespace gradcontact::cases
       oscillation   ///< Load/type = paraboloid: +-F_A after loading to A (9.81-9.87), hysteresis, dissipation
     };
     Study study = Study::none;
-    double friction_coefficient = 0.3; ///< mu > 0
     double stick_radius = 0.5;         ///< c / a in (0, 1] (partial slip)
     double amplitude = 0.9;            ///< F_A / (mu F_N) in (0, 1) (oscillation)
     unsigned int load_steps = 5;       ///< FE points on the F_x(u0) curve or the unloading branch
@@ -272,39 +286,44 @@ namespace gradcontact::cases
     unsigned int stick_levels = 8;     ///< SurfaceRefinement levels toward the stick radii
     double assumption_tolerance = 1e-4; ///< of the measured assumption error (spread, |u_y|), against 0
     bool enabled() const { return study != Study::none; }
-    static void declare(dealii::ParameterHandler &prm);
-    void parse(dealii::ParameterHandler &prm);
+    /// Declares the section's entries, each bound to its member (set as the file and the overrides are read).
+    void declare(dealii::ParameterHandler &prm);
+    /// The section's own ranges, those its patterns cannot state (open ends, entries that go together).
+    void check() const;
   };
 
   /// An applicability map (cases/runners/fe_map.h): the FE model of a real grading (a finite surface modulus or a
-  /// coating) against the power-law closed forms, over ratios a/z0 or a/H and several k. A scene is a map
-  /// when `parameter` is not none.
+  /// coating), of an elastic indenter, friction or a finite range of adhesion against the power-law closed forms,
+  /// over the values of one variable and several k. `parameter` names the variable, `values` holds its values; a
+  /// scene is a map when `parameter` is not none.
   struct MapParameters
   {
     enum class Parameter
     {
       none,
-      surface_depth,    ///< Material/modulus = shifted power law, z0 = a / ratio
-      coating_thickness, ///< Material/modulus = coating, H = a / ratio
-      erf_width,         ///< Material/modulus = error function, w = a / ratio (k = 0)
-      indenter_modulus,  ///< a homogeneous elastic indenter (Indenter/nu), E1 = ratio E0, against the rigid one
-      friction_coefficient, ///< Coulomb friction mu = ratio (Friction/load steps) against the frictionless indenter
-      tabor_parameter,      ///< a Dugdale cohesive zone of Tabor parameter lambda = ratio against JKR (cases/runners/fe_cohesive.h)
-      coulomb_3d            ///< the 3D Coulomb sphere over k, nu and mu = ratio against 9.80-9.86 (cases/runners/fe_coulomb_3d.h)
+      surface_depth,    ///< Material/modulus = shifted power law; values a/z0
+      coating_thickness, ///< Material/modulus = coating; values a/H
+      erf_width,         ///< Material/modulus = error function (k = 0); values a/w
+      indenter_modulus,  ///< a homogeneous elastic indenter (Indenter/nu) against the rigid one; values E1/E0
+      friction_coefficient, ///< Coulomb friction (Friction/load steps) against the frictionless indenter; values mu
+      tabor_parameter,      ///< a Dugdale cohesive zone against JKR (cases/runners/fe_cohesive.h); values lambda
+      coulomb_3d            ///< the 3D Coulomb sphere over k and nu against 9.80-9.86 (cases/runners/fe_coulomb_3d.h); values mu
     };
     Parameter parameter = Parameter::none;
-    std::vector<double> ratios;     ///< a/z0, a/H, a/w, E1/E0 or mu, > 0
+    std::vector<double> values;     ///< of the variable `parameter` names: a/z0, a/H, a/w, E1/E0, mu or lambda, > 0
     std::vector<double> exponents;  ///< k values; empty: Material/k
     std::vector<double> poisson_ratios; ///< nu values of a friction or Coulomb 3D map; empty: Material/nu
     bool holl_ratio = true;         ///< friction and Coulomb 3D maps: also nu = 1/(2 + k) (the decoupled pairing)
     bool full_stick = true;         ///< friction map: also mu = inf
     std::vector<double> thresholds = {0.01, 0.001}; ///< deviations whose ratio the map reports
     bool enabled() const { return parameter != Parameter::none; }
-    static void declare(dealii::ParameterHandler &prm);
-    void parse(dealii::ParameterHandler &prm);
+    /// Declares the section's entries, each bound to its member (set as the file and the overrides are read).
+    void declare(dealii::ParameterHandler &prm);
+    /// The section's own ranges, those its patterns cannot state (open ends, entries that go together).
+    void check() const;
   };
 
-  /// What a scene checks, decided once from its entries by scene_kind(); the runner dispatches on it.
+  /// What a scene checks, decided once from its entries by decide_kind(); the runner dispatches on it.
   enum class SceneKind
   {
     normal,     ///< the FE model against the closed form and/or the numerical MDR (cases/runners/fe_scene.h)
@@ -337,17 +356,30 @@ namespace gradcontact::cases
     FrictionParameters friction;
     MapParameters map;
     std::string resolved; ///< every entry after overrides, as a .prm, stored with the report
-    SceneKind kind = SceneKind::normal; ///< scene_kind() of the entries, set by read_scene
+    /// What reading the scene wants its author to know: each deprecated name it set, and the name now read.
+    std::vector<std::string> notes;
+    SceneKind kind = SceneKind::normal; ///< decide_kind() of the entries, set (and validated) by read_scene
   };
 
-  /// The kind of `scene`, in this order: tangential when Tangential/study is set; adhesion when
-  /// AdhesionParameters::enabled; candidate when Candidate/profile is set; analytic when References/fem is
-  /// false; else normal. Also checks the entries that are valid alone but not together, for that kind; an
-  /// error names the scene file, the entries, their values and what is valid.
-  SceneKind scene_kind(const Scene &scene);
+  /// Friction/coefficient is the mu of tangential contact (9.75-9.87): a tangential study (a Coulomb 3D map
+  /// included, which needs one) or a tangential candidate; elsewhere it is friction during normal loading.
+  bool friction_is_tangential(const Scene &scene);
+  /// Coulomb friction during normal loading: Friction/coefficient > 0 outside the tangential scenes.
+  bool frictional_loading(const Scene &scene);
+
+  /// The kind of `scene`, from its entries only (no checks), in this order: map when Map/parameter is set; candidate
+  /// when Candidate/profile (or profile table) is set with adhesive or tangential candidate entries; tangential when
+  /// Tangential/study is set; adhesion when AdhesionParameters::enabled; candidate when Candidate/profile is set;
+  /// analytic when References/fem is false; else normal.
+  SceneKind decide_kind(const Scene &scene);
+
+  /// Checks `scene` as a scene of `kind`: every section's own ranges, then the entries that are valid alone but
+  /// not together, for that kind. Throws std::invalid_argument naming the scene file, the entries (Section/name),
+  /// their values and what is valid.
+  void validate(const Scene &scene, SceneKind kind);
 
   /// For the runner of one kind: throws std::invalid_argument naming `function`, the scene and its kind when
-  /// scene_kind(scene) is not `kind`.
+  /// decide_kind(scene) is not `kind`; then validate(scene, kind).
   void require_kind(const Scene &scene, SceneKind kind, const std::string &function);
 
   /// An override "Section/key=value" (Section may be nested: "A/B/key=value").
@@ -358,8 +390,16 @@ namespace gradcontact::cases
   };
   Override parse_override(const std::string &text);
 
-  /// Reads a scene, applies the overrides and decides its kind. Errors name the file, the entry and the valid
-  /// range.
+  /// An entry's former name ("Section/entry"), still read as its new one: one name per concept (the friction
+  /// coefficient, the map's values). A scene that sets both names is an error.
+  struct DeprecatedName
+  {
+    std::string old_name, new_name;
+  };
+  const std::vector<DeprecatedName> &deprecated_names();
+
+  /// Reads a scene (a deprecated name read as its new one), applies the overrides, decides its kind and validates
+  /// it. Errors name the file, the entry and the valid range.
   Scene read_scene(const std::string &file, const std::vector<Override> &overrides);
 
   /// Every entry with its documentation and default (for --help-scene).

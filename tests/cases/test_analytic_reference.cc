@@ -80,7 +80,7 @@ TEST_CASE("The adhesive reference of a cone shall be the JKR power law n = 1", "
 TEST_CASE("The tangential reference shall carry the scene's sphere and friction to any case", "[cases][quick]")
 {
   const Scene s = scene_with(with_material({"Load/type=paraboloid", "Load/R=0.01", "Load/a=1e-4",
-                                            "Tangential/friction coefficient=0.4"}));
+                                            "Tangential/study=partial slip", "Friction/coefficient=0.4"}));
   const AnalyticReference closed(s, batch::Method::closed_form, AnalyticReference::Problem::tangential);
   const std::string sphere = material + R"(,"geometry":{"R":0.01},"a":1e-4,"mu":0.4)";
   const double FA = 0.5 * 0.4 * value_of(R"({"case":"paraboloid","quantity":"force",)" + material +

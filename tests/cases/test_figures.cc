@@ -435,7 +435,7 @@ namespace
                             "subsection Load\n  set type = flat punch\n  set a = 1e-4\n  set depth = 1e-6\nend\n"
                             "subsection Discretization\n  set degree = 1\n  set force tolerance = 1e-3\nend\n"
                             "subsection Tolerances\n  set force = 1e-2\n  set pressure = 1e-1\nend\n"
-                            "subsection Map\n  set parameter = coating thickness\n  set ratios = 0.01, 1\nend\n";
+                            "subsection Map\n  set parameter = coating thickness\n  set values = 0.01, 1\nend\n";
   }
 
   std::string map_figure(const fs::path &scene, const std::string &check)

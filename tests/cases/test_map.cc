@@ -71,7 +71,7 @@ TEST_CASE("A map scene shall check the power law itself and write the map, its t
                           "subsection Load\n  set type = flat punch\n  set a = 1e-4\n  set depth = 1e-6\nend\n"
                           "subsection Discretization\n  set degree = 1\n  set force tolerance = 1e-3\nend\n"
                           "subsection Tolerances\n  set force = 1e-2\n  set pressure = 1e-1\nend\n"
-                          "subsection Map\n  set parameter = coating thickness\n  set ratios = 0.01, 1\nend\n";
+                          "subsection Map\n  set parameter = coating thickness\n  set values = 0.01, 1\nend\n";
   const fs::path reports = folder.path() / "reports";
   REQUIRE(run({scene.string(), "--reports", reports.string(), "--quiet"}) == 0);
   const fs::path out = reports / "small_map";
@@ -97,7 +97,7 @@ TEST_CASE("A map scene with a load it cannot map shall be an error naming the en
   const TemporaryFolder folder("gradcontact-map-bad");
   const fs::path scene = folder.path() / "bad_map.prm";
   std::ofstream(scene) << "subsection Load\n  set type = constant pressure\nend\n"
-                          "subsection Map\n  set parameter = surface depth\n  set ratios = 1\nend\n";
+                          "subsection Map\n  set parameter = surface depth\n  set values = 1\nend\n";
   CHECK_THROWS_WITH(read_scene(scene.string(), {}), Catch::Contains("bad_map.prm") && Catch::Contains("Map/parameter") &&
                                                   Catch::Contains("constant pressure"));
 }
@@ -117,11 +117,11 @@ TEST_CASE("An error-function scene shall name its entries, values and ranges whe
   CHECK_THROWS_WITH(with({"Material/surface modulus ratio=0"}),
                     Catch::Contains("Material/surface modulus ratio = 0") && Catch::Contains("(0, inf)"));
   // A map over a/w needs k = 0, from Material/k or every Map/k value.
-  CHECK_THROWS_WITH(scene_with({"Map/parameter=erf width", "Map/ratios=1"}),
+  CHECK_THROWS_WITH(scene_with({"Map/parameter=erf width", "Map/values=1"}),
                     Catch::Contains("Map/parameter = erf width with k = 0.5 (Material/k)"));
-  CHECK_THROWS_WITH(scene_with({"Map/parameter=erf width", "Map/ratios=1", "Map/k values=0, 0.25"}),
+  CHECK_THROWS_WITH(scene_with({"Map/parameter=erf width", "Map/values=1", "Map/k values=0, 0.25"}),
                     Catch::Contains("k = 0.25 (Map/k values)"));
-  CHECK(scene_with({"Map/parameter=erf width", "Map/ratios=1", "Material/k=0"}).kind == SceneKind::map);
+  CHECK(scene_with({"Map/parameter=erf width", "Map/values=1", "Material/k=0"}).kind == SceneKind::map);
 }
 
 TEST_CASE("The load-displacement exponent of a map shall be exact for power-law deviations", "[cases][quick]")
@@ -158,7 +158,7 @@ TEST_CASE("An erf-width map shall write the published comparison with the trend 
                           "subsection Discretization\n  set degree = 1\n  set force tolerance = 1e-3\nend\n"
                           "subsection Tolerances\n  set force = 1e-2\n  set contact radius = 1e-2\n"
                           "  set pressure = 1e-1\nend\n"
-                          "subsection Map\n  set parameter = erf width\n  set ratios = 0.1, 1, 10\nend\n";
+                          "subsection Map\n  set parameter = erf width\n  set values = 0.1, 1, 10\nend\n";
   const fs::path reports = folder.path() / "reports";
   REQUIRE(run({scene.string(), "--reports", reports.string(), "--quiet"}) == 0);
   const std::string md = testing::read_text(reports / "erf_map" / "map.md");
@@ -185,7 +185,7 @@ TEST_CASE("An indenter-modulus map at k = 0 shall be Hertz's two elastic bodies"
                           "subsection Discretization\n  set degree = 2\nend\n"
                           "subsection Tolerances\n  set force = 1e-4\n  set contact radius = 1e-4\n"
                           "  set pressure = 1e-3\nend\n"
-                          "subsection Map\n  set parameter = indenter modulus\n  set ratios = 1, 10, 100, 1000\n"
+                          "subsection Map\n  set parameter = indenter modulus\n  set values = 1, 10, 100, 1000\n"
                           "  set thresholds = 0.01\nend\n";
   const fs::path reports = folder.path() / "reports";
   REQUIRE(run({scene.string(), "--reports", reports.string(), "--quiet"}) == 0);
@@ -245,7 +245,7 @@ TEST_CASE("A friction map shall check the frictionless FE and Holl's ratio, and 
                           "subsection Discretization\n  set degree = 2\n  set force tolerance = 1e-2\nend\n"
                           "subsection Tolerances\n  set force = 1e-2\n  set contact radius = 1e-2\n"
                           "  set pressure = 5e-2\nend\n"
-                          "subsection Map\n  set parameter = friction coefficient\n  set ratios = 1\n"
+                          "subsection Map\n  set parameter = friction coefficient\n  set values = 1\n"
                           "  set k values = 0.5\n  set thresholds = 0.01\nend\n";
   const fs::path reports = folder.path() / "reports";
   REQUIRE(run({scene.string(), "--reports", reports.string(), "--quiet"}) == 0);
@@ -361,7 +361,7 @@ TEST_CASE("A Tabor-parameter map shall check Maugis-Dugdale at k = 0 and write t
                           "subsection Adhesion\n  set work of adhesion = 0.05\n  set control = force\nend\n"
                           "subsection Discretization\n  set degree = 2\nend\n"
                           "subsection Tolerances\n  set force = 1e-4\nend\n"
-                          "subsection Map\n  set parameter = Tabor parameter\n  set ratios = 1, 3\n"
+                          "subsection Map\n  set parameter = Tabor parameter\n  set values = 1, 3\n"
                           "  set thresholds = 0.1\nend\n";
   const fs::path reports = folder.path() / "reports";
   REQUIRE(run({scene.string(), "--reports", reports.string(), "--quiet"}) == 0);
@@ -414,7 +414,7 @@ TEST_CASE("A Coulomb 3D map shall read the shipped scene and name the entries it
 
   using testing::scene_with;
   const std::vector<std::string> base{"Map/parameter=Coulomb 3D", "Tangential/study=oscillation", "Load/type=paraboloid",
-                                      "Load/R=5e-3"};
+                                      "Load/R=5e-3", "Friction/coefficient=0.3"};
   const auto with = [&](std::vector<std::string> extra) {
     extra.insert(extra.begin(), base.begin(), base.end());
     return scene_with(extra);
@@ -422,8 +422,8 @@ TEST_CASE("A Coulomb 3D map shall read the shipped scene and name the entries it
   CHECK(with({}).kind == SceneKind::map);
   CHECK_THROWS_WITH(scene_with({"Map/parameter=Coulomb 3D", "Load/type=paraboloid"}),
                     Catch::Contains("Tangential/study = oscillation"));
-  CHECK(with({"Map/ratios=0.1, 0.3"}).map.ratios.size() == 2); // the friction coefficients
-  CHECK_THROWS_WITH(with({"Map/ratios=0"}), Catch::Contains("Map/ratios: 0 must be in (0, inf)"));
+  CHECK(with({"Map/values=0.1, 0.3"}).map.values.size() == 2); // the friction coefficients
+  CHECK_THROWS_WITH(with({"Map/values=0"}), Catch::Contains("Map/values: 0 must be in (0, inf)"));
   CHECK_THROWS_WITH(with({"Load/type=flat punch"}), Catch::Contains("Load/type = paraboloid"));
   CHECK(with({"Map/nu values=0.3, 0.5"}).map.poisson_ratios.size() == 2); // nu = 1/2 runs the mixed 3D element
   CHECK_THROWS_WITH(with({"Tangential/Holl ratio=true"}), Catch::Contains("use Map/Holl ratio"));
@@ -438,7 +438,7 @@ TEST_CASE("A Lennard-Jones Tabor map shall follow the path from DMT toward JKR a
                           "subsection Load\n  set type = paraboloid\n  set R = 5e-3\nend\n"
                           "subsection Adhesion\n  set work of adhesion = 0.05\n  set control = both\n"
                           "  set law = Lennard-Jones\nend\n"
-                          "subsection Map\n  set parameter = Tabor parameter\n  set ratios = 0.3, 1\n"
+                          "subsection Map\n  set parameter = Tabor parameter\n  set values = 0.3, 1\n"
                           "  set thresholds = 0.1\nend\n";
   const fs::path reports = folder.path() / "reports";
   REQUIRE(run({scene.string(), "--reports", reports.string(), "--quiet"}) == 0);
@@ -469,9 +469,9 @@ TEST_CASE("A Lennard-Jones Tabor map shall follow the path from DMT toward JKR a
   CHECK_THROWS_WITH(scene_with({"Load/type=paraboloid", "Adhesion/work of adhesion=0.05", "Adhesion/law=Lennard-Jones"}),
                     Catch::Contains("Lennard-Jones runs in Tabor-parameter maps and adhesive candidates only"));
   CHECK_THROWS_WITH(scene_with({"Load/type=paraboloid", "Adhesion/work of adhesion=0.05", "Adhesion/law=Lennard-Jones",
-                                "Map/parameter=Tabor parameter", "Map/ratios=1", "Adhesion/Tabor parameter=2"}),
-                    Catch::Contains("Map/ratios gives the lambdas"));
+                                "Map/parameter=Tabor parameter", "Map/values=1", "Adhesion/Tabor parameter=2"}),
+                    Catch::Contains("Map/values gives the lambdas"));
   CHECK_THROWS_WITH(scene_with({"Load/type=paraboloid", "Adhesion/work of adhesion=0.05", "Adhesion/law=Lennard-Jones",
-                                "Map/parameter=Tabor parameter", "Map/ratios=1, 50"}),
-                    Catch::Contains("Map/ratios: lambda = 50"));
+                                "Map/parameter=Tabor parameter", "Map/values=1, 50"}),
+                    Catch::Contains("Map/values: lambda = 50"));
 }

@@ -8,6 +8,9 @@ using namespace gradcontact::cases;
 using Catch::Matchers::Contains;
 using testing::scene_with;
 
+/// The friction coefficient a tangential scene needs (the mu of 9.80-9.87).
+const std::string mu = "Friction/coefficient=0.3";
+
 TEST_CASE("The scene kind shall follow the entries that are set", "[cases][quick]")
 {
   CHECK(scene_with({}).kind == SceneKind::normal);
@@ -15,8 +18,8 @@ TEST_CASE("The scene kind shall follow the entries that are set", "[cases][quick
   CHECK(scene_with({"Candidate/profile=r^2/0.02", "Candidate/force=1"}).kind == SceneKind::candidate);
   CHECK(scene_with({"Load/type=paraboloid", "Adhesion/work of adhesion=0.05"}).kind == SceneKind::adhesion);
   CHECK(scene_with({"Load/type=constant pressure", "Adhesion/tensile strength=1e6"}).kind == SceneKind::adhesion);
-  CHECK(scene_with({"Tangential/study=stiffness"}).kind == SceneKind::tangential);
-  CHECK(scene_with({"Load/type=paraboloid", "Tangential/study=partial slip"}).kind == SceneKind::tangential);
+  CHECK(scene_with({"Tangential/study=stiffness", mu}).kind == SceneKind::tangential);
+  CHECK(scene_with({"Load/type=paraboloid", "Tangential/study=partial slip", mu}).kind == SceneKind::tangential);
   // A tensile strength alone makes only the constant pressure adhesive (the optimal profile).
   CHECK(scene_with({"Adhesion/tensile strength=1e6"}).kind == SceneKind::normal);
 }
@@ -32,18 +35,18 @@ TEST_CASE("Adhesion shall take precedence over a candidate, and the FE switch sh
 
 TEST_CASE("Contradicting entries shall be an error naming the file and the entries", "[cases][quick]")
 {
-  REQUIRE_THROWS_WITH(scene_with({"Tangential/study=stiffness", "Adhesion/work of adhesion=0.05"}),
+  REQUIRE_THROWS_WITH(scene_with({"Tangential/study=stiffness", mu, "Adhesion/work of adhesion=0.05"}),
                       Contains("defaults.prm") && Contains("Tangential/study is set and the scene is adhesive") &&
                         Contains("choose one"));
   REQUIRE_THROWS_WITH(scene_with({"Load/type=constant pressure", "Adhesion/work of adhesion=0.05"}),
                       Contains("defaults.prm") &&
                         Contains("Adhesion/work of adhesion = 0.05 with Load/type = constant pressure"));
-  REQUIRE_THROWS_WITH(scene_with({"Load/type=paraboloid", "Tangential/study=oscillation", "Tangential/Holl ratio=true",
+  REQUIRE_THROWS_WITH(scene_with({"Load/type=paraboloid", "Tangential/study=oscillation", mu, "Tangential/Holl ratio=true",
                                   "Material/k=-0.5"}),
                       Contains("Tangential/Holl ratio = true with Material/k = -0.5") && Contains("k in (0, 1)"));
-  REQUIRE_THROWS_WITH(scene_with({"Tangential/study=stiffness", "Load/type=cone"}),
+  REQUIRE_THROWS_WITH(scene_with({"Tangential/study=stiffness", mu, "Load/type=cone"}),
                       Contains("Tangential/study = stiffness needs Load/type = flat punch"));
-  REQUIRE_THROWS_WITH(scene_with({"Load/type=paraboloid", "Tangential/study=partial slip", "Load/control=force"}),
+  REQUIRE_THROWS_WITH(scene_with({"Load/type=paraboloid", "Tangential/study=partial slip", mu, "Load/control=force"}),
                       Contains("Load/control must be contact radius"));
   REQUIRE_THROWS_WITH(scene_with({"Candidate/profile=r^2/0.02", "Candidate/pressure=1"}),
                       Contains("Candidate/profile curvature: needed for a pressure candidate"));
@@ -60,8 +63,8 @@ TEST_CASE("An adhesive or tangential candidate shall be a candidate scene, its f
   const std::string profile = "Candidate/profile=r^2/0.02";
   CHECK(scene_with({"Load/a=1e-4", "Adhesion/work of adhesion=0.05", profile, "Candidate/adhesive force=1"}).kind ==
         SceneKind::candidate);
-  CHECK(scene_with({"Load/a=1e-4", profile, "Candidate/tangential stiffness=1"}).kind == SceneKind::candidate);
-  CHECK(scene_with({"Load/a=1e-4", profile, "Candidate/tangential stiffness=1"}).candidate.family() ==
+  CHECK(scene_with({"Load/a=1e-4", profile, "Candidate/tangential stiffness=1", mu}).kind == SceneKind::candidate);
+  CHECK(scene_with({"Load/a=1e-4", profile, "Candidate/tangential stiffness=1", mu}).candidate.family() ==
         CandidateParameters::Family::tangential);
 
   REQUIRE_THROWS_WITH(scene_with({"Load/a=1e-4", profile, "Candidate/critical force=1"}),
@@ -70,12 +73,12 @@ TEST_CASE("An adhesive or tangential candidate shall be a candidate scene, its f
                                   "Candidate/adhesive force=1", "Candidate/stick radius=1"}),
                       Contains("adhesive and tangential candidate entries in one scene"));
   REQUIRE_THROWS_WITH(scene_with({"Load/a=1e-4", "Adhesion/work of adhesion=0.05", profile,
-                                  "Candidate/tangential force=1"}),
+                                  "Candidate/tangential force=1", mu}),
                       Contains("a tangential candidate is non-adhesive"));
   REQUIRE_THROWS_WITH(scene_with({"Load/a=1e-4", "Adhesion/work of adhesion=0.05", profile,
                                   "Candidate/adhesive force=1", "Candidate/force=1"}),
                       Contains("non-adhesive normal family's"));
-  REQUIRE_THROWS_WITH(scene_with({"Load/a=1e-4", profile, "Candidate/tangential stiffness=1", "Candidate/range=2, 1"}),
+  REQUIRE_THROWS_WITH(scene_with({"Load/a=1e-4", profile, "Candidate/tangential stiffness=1", mu, "Candidate/range=2, 1"}),
                       Contains("Candidate/range = 2, 1") && Contains("0 < range[0] < range[1]"));
   REQUIRE_THROWS_WITH(scene_with({"Load/a=1e-4", "Adhesion/work of adhesion=0.05", profile,
                                   "Candidate/adhesive pressure=1"}),
@@ -100,11 +103,11 @@ TEST_CASE("An adhesive or tangential candidate shall be a candidate scene, its f
 
   // A grading outside the chapter: against the FE only, and the tangential family by its stiffness alone.
   const std::string shifted = "Material/modulus=shifted power law", depth = "Material/surface depth=1e-5";
-  CHECK(scene_with({"Load/a=1e-4", shifted, depth, profile, "Candidate/tangential stiffness=1"}).kind ==
+  CHECK(scene_with({"Load/a=1e-4", shifted, depth, profile, "Candidate/tangential stiffness=1", mu}).kind ==
         SceneKind::candidate);
-  REQUIRE_THROWS_WITH(scene_with({"Load/a=1e-4", shifted, depth, profile, "Candidate/tangential force=1"}),
+  REQUIRE_THROWS_WITH(scene_with({"Load/a=1e-4", shifted, depth, profile, "Candidate/tangential force=1", mu}),
                       Contains("only Candidate/tangential stiffness can be checked"));
   REQUIRE_THROWS_WITH(scene_with({"Load/a=1e-4", shifted, depth, "References/fem=false", profile,
-                                  "Candidate/tangential stiffness=1"}),
+                                  "Candidate/tangential stiffness=1", mu}),
                       Contains("checked against the FE only") && Contains("References/fem must be true"));
 }
