@@ -21,8 +21,8 @@
 // surface: every cell's stresses then weigh by the mesh's cell size, not by the physical one). The mass matrix is
 // well conditioned after its diagonal scaling on any graded mesh, but its entries span the cells' range of sizes,
 // so it is factorised (UMFPACK) rather than iterated to a residual that the large cells dominate. Where the exact
-// stress is smooth the fit converges at the order of the
-// displacement gradient; near a singular edge it spreads that cell's error over a few cells, no further.
+// stress is smooth the fit converges at the order of the displacement gradient; near a singular edge it spreads
+// that cell's error over a few cells, no further.
 // On a stiff surface (E ~ z^s, s < 0) the skin carries radial and hoop stresses that grow like z^s toward the
 // surface, which no polynomial follows, and whose fit (not even square integrable from s = -1/2 on) would spread
 // that layer's error into the body. There the fitted fields are sigma / E(z), linear combinations of the strains,
