@@ -1,4 +1,5 @@
 #include "tools/fe_oracle.h"
+#include "model/fe_stress.h"
 
 #include <analytic/batch.h>
 #include <analytic/errors.h>
@@ -59,106 +60,6 @@ namespace gradcontact::cases
     }
   } // namespace
 
-  /// The largest stress measure below a contact and where it is (FeOracle's header).
-  struct Maximum
-  {
-    fem::Estimated value;       ///< of the measure at (r, z)
-    fem::Estimated r, z;        ///< r/a, z/a with the estimate of the header
-  };
-
-  namespace
-  {
-    fem::Estimated stress_measure(const std::array<fem::Estimated, 4> &c, const std::string &name);
-
-    /// The measure `name` of the components on ladder level l.
-    double on_level(const std::array<fem::Estimated, 4> &c, const std::string &name, const std::size_t l)
-    {
-      return stress_component(AxisymmetricStress{c[0].levels[l], c[1].levels[l], c[2].levels[l], c[3].levels[l]},
-                              name);
-    }
-
-    /// The grid of the first pass of the search (FeOracle's header): r/a in steps of 1/20 up to 2, z/a geometric
-    /// from 1e-3 to 2.
-    std::vector<fem::StressPoint> first_grid()
-    {
-      std::vector<fem::StressPoint> points;
-      for (unsigned int i = 0; i <= 40; ++i)
-        for (unsigned int j = 0; j < 30; ++j)
-          points.push_back({i / 20.0, 1e-3 * std::pow(2e3, j / 29.0)});
-      return points;
-    }
-
-    /// A 7 x 7 grid about (r, z) with steps dr, dz, inside r >= 0, z > 0: its points, and the index of the point
-    /// (r + i dr, z + j dz) at index[i + 3][j + 3] (-1 outside).
-    struct LocalGrid
-    {
-      std::vector<fem::StressPoint> points;
-      int                           index[7][7];
-      double                        dr = 0, dz = 0;
-    };
-    LocalGrid local_grid(const double r, const double z, const double dr, const double dz)
-    {
-      LocalGrid g;
-      g.dr = dr;
-      g.dz = dz;
-      for (int i = -3; i <= 3; ++i)
-        for (int j = -3; j <= 3; ++j)
-          {
-            g.index[i + 3][j + 3] = -1;
-            if (r + i * dr >= 0 && z + j * dz > 0)
-              {
-                g.index[i + 3][j + 3] = static_cast<int>(g.points.size());
-                g.points.push_back({r + i * dr, z + j * dz});
-              }
-          }
-      return g;
-    }
-
-    /// The vertex of the parabola through (-1, fm), (0, f0), (1, fp): its abscissa, within [-1, 1], and the rise of
-    /// its value over f0 (0 and 0 when the three values do not bend down).
-    std::pair<double, double> vertex(const double fm, const double f0, const double fp)
-    {
-      const double bend = fm - 2 * f0 + fp;
-      if (!(bend < 0))
-        return {0.0, 0.0};
-      const double x = std::clamp((fm - fp) / (2 * bend), -1.0, 1.0);
-      return {x, -bend * x * x / 2};
-    }
-
-    /// The largest measure on the grid of one ladder level, refined by a parabola through the grid point and its
-    /// neighbours at `step` grid steps in r and in z (the measure is even in r, so r = 0 is its own mirror).
-    struct Fit
-    {
-      double r = 0, z = 0, value = 0;
-    };
-    Fit fit(const LocalGrid &g, const std::function<double(int)> &measure, const int bi, const int bj, const int step)
-    {
-      const fem::StressPoint &b  = g.points[g.index[bi + 3][bj + 3]];
-      const auto              at = [&](const int i, const int j) {
-        if (i < -3 || i > 3 || j < -3 || j > 3 || g.index[i + 3][j + 3] < 0)
-          return std::numeric_limits<double>::quiet_NaN();
-        return measure(g.index[i + 3][j + 3]);
-      };
-      // On the axis the point at -step dr is the mirror of the one at +step dr.
-      const auto mirrored = [&](const int i, const int j) { return b.r == 0 && i < bi ? at(2 * bi - i, j) : at(i, j); };
-      const double            f0 = measure(g.index[bi + 3][bj + 3]);
-      Fit                     out{b.r, b.z, f0};
-      const double rm = mirrored(bi - step, bj), rp = at(bi + step, bj), zm = at(bi, bj - step), zp = at(bi, bj + step);
-      if (std::isfinite(rm) && std::isfinite(rp))
-        {
-          const auto [x, rise] = vertex(rm, f0, rp);
-          out.r += x * step * g.dr;
-          out.value += rise;
-        }
-      if (std::isfinite(zm) && std::isfinite(zp))
-        {
-          const auto [x, rise] = vertex(zm, f0, zp);
-          out.z += x * step * g.dz;
-          out.value += rise;
-        }
-      return out;
-    }
-  } // namespace
 
   struct FeOracle::UnitState
   {
@@ -175,7 +76,7 @@ namespace gradcontact::cases
     std::map<std::pair<double, double>, std::array<fem::Estimated, 4>> stresses;
     std::set<std::pair<double, double>>                              planned_stress;
     /// measure -> its largest value below the contact (largest())
-    std::map<std::string, Maximum> maxima;
+    std::map<std::string, FeStressMaximum> maxima;
 
     /// Refuses an answer that the contract did not deliver, naming what limits it and what the finest level gives. A
     /// quantity whose own estimate is within the tolerance is delivered though another one of the same run is not
@@ -253,86 +154,17 @@ namespace gradcontact::cases
       return stresses.at(key);
     }
 
-    /// The index of the largest measure `name` on ladder level l (the last one: -1) over a run's points.
-    static std::size_t argmax(const fem::ContractResult &r, const std::string &name, const std::size_t level)
-    {
-      std::size_t best = 0;
-      for (std::size_t i = 1; i < r.stress.size(); ++i)
-        if (on_level(r.stress[i], name, level) > on_level(r.stress[best], name, level))
-          best = i;
-      return best;
-    }
-
-    /// The largest measure `name` below the contact (FeOracle's header).
-    const Maximum &largest(const std::string &name)
+    /// The largest measure `name` below the contact (model/fe_stress.h), delivered when its estimate holds.
+    const FeStressMaximum &largest(const std::string &name)
     {
       if (const auto found = maxima.find(name); found != maxima.end())
         return found->second;
-      fem::OutputRequest outputs;
-      outputs.stress_points        = first_grid();
-      fem::ContractResult result   = solver->run(load, outputs);
-      fem::StressPoint    best     = outputs.stress_points.at(argmax(result, name, result.level_dofs.size() - 1));
-      LocalGrid           g;
-      g.dr = 1 / 20.0;
-      g.dz = best.z * (std::pow(2e3, 1 / 29.0) - 1);
-      for (unsigned int pass = 0; pass < 4; ++pass)
-        {
-          g                     = local_grid(best.r, best.z, g.dr / 3, g.dz / 3);
-          outputs.stress_points = g.points;
-          result                = solver->run(load, outputs);
-          best = outputs.stress_points.at(argmax(result, name, result.level_dofs.size() - 1));
-        }
-      return maxima[name] = located(result, g, name);
-    }
-
-    /// The maximum of the last grid (largest()): the parabolic fit about its best point on the finest level, with
-    /// the estimates of FeOracle's header.
-    Maximum located(const fem::ContractResult &result, const LocalGrid &g, const std::string &name) const
-    {
-      const std::size_t levels = result.level_dofs.size(), i = argmax(result, name, levels - 1);
-      int               bi = 0, bj = 0;
-      for (int x = 0; x < 7; ++x)
-        for (int y = 0; y < 7; ++y)
-          if (g.index[x][y] == static_cast<int>(i))
-            bi = x - 3, bj = y - 3;
-      const auto level = [&](const std::size_t l) {
-        return [&result, &name, l](const int k) { return on_level(result.stress[k], name, l); };
-      };
-      const Fit finest = fit(g, level(levels - 1), bi, bj, 1), coarse_grid = fit(g, level(levels - 1), bi, bj, 2);
-      const Fit below  = levels > 1 ? fit(g, level(levels - 2), bi, bj, 1) : finest;
-      Maximum   m;
-      m.value = stress_measure(result.stress[i], name);
-      check(result, m.value, "stress");
-      m.value.error += std::abs(finest.value - m.value.value) + std::abs(finest.value - coarse_grid.value);
-      m.value.value = finest.value;
-      m.r.value     = finest.r;
-      m.r.error     = std::max(std::abs(finest.r - coarse_grid.r), std::abs(finest.r - below.r));
-      m.r.scale     = 1;
-      m.z.value     = finest.z;
-      m.z.error     = std::max(std::abs(finest.z - coarse_grid.z), std::abs(finest.z - below.z));
-      m.z.scale     = finest.z;
-      return m;
+      FeStressMaximum m = largest_fe_stress(*solver, load, name);
+      check(m.run, m.at_point, "stress");
+      return maxima[name] = std::move(m);
     }
   };
 
-  namespace
-  {
-    /// The component `name` of the estimated stress and its error bound (the header's propagation to the measures).
-    fem::Estimated stress_measure(const std::array<fem::Estimated, 4> &c, const std::string &name)
-    {
-      const AxisymmetricStress s{c[0].value, c[1].value, c[2].value, c[3].value};
-      fem::Estimated           e;
-      e.value = stress_component(s, name);
-      e.scale = c[0].scale;
-      const std::map<std::string, std::size_t> own = {{"rr", 0}, {"zz", 1}, {"tt", 2}, {"rz", 3}};
-      if (const auto found = own.find(name); found != own.end())
-        return c[found->second];
-      const double F = std::sqrt(c[0].error * c[0].error + c[1].error * c[1].error + c[2].error * c[2].error +
-                                 2 * c[3].error * c[3].error);
-      e.error = name == "von_mises" ? std::sqrt(1.5) * F : F;
-      return e;
-    }
-  } // namespace
 
   FeOracle::FeOracle() = default;
   FeOracle::~FeOracle() = default;
@@ -570,7 +402,7 @@ namespace gradcontact::cases
       }
     else if (p.quantity == "max_stress_radius" || p.quantity == "max_stress_depth")
       {
-        const Maximum &m = state.largest(p.component);
+        const FeStressMaximum &m = state.largest(p.component);
         v                = p.quantity == "max_stress_radius" ? m.r : m.z;
         scale            = p.a;
       }

@@ -9,17 +9,9 @@
 // answer comes from the ladder of uniform refinements that first brings the Richardson estimate within the
 // tolerance, and carries that estimate, absolute ("error_estimate") and relative ("relative_error_estimate": to
 // |F|, |d|, |w(r)|, for a pressure to the largest |p| sampled with it, for a stress to the largest component
-// sampled with it). A stress measure (principal, von Mises, largest shear) carries the bound its components'
-// estimates give: a principal stress moves by at most the Frobenius norm F of the components' errors (Weyl's
-// inequality; F^2 = e_rr^2 + e_zz^2 + e_tt^2 + 2 e_rz^2), the largest shear by at most F, von Mises by at most
-// sqrt(3/2) F.
-//
-// The largest stress ("max_stress", "max_stress_radius", "max_stress_depth" with component von_mises or max_shear;
-// k >= 0 and the indenters only, as on the closed-form side, analytic/subsurface.h): the recovered field on the
-// grid r/a = 0, 1/20, ..., 2 by 30 depths geometric from 1e-3 a to 2 a, all in one ladder run, then four runs of a
-// 7 x 7 grid about the best point with a third of the steps each time. The value's estimate is the measure's at
-// that point; the location's is the larger of its change from the level below to the finest and half the last
-// step (relative to a for the radius, to the depth for the depth). A tolerance the ladder cannot reach is
+// sampled with it). A stress measure and the largest stress ("max_stress", "max_stress_radius", "max_stress_depth"
+// with component von_mises or max_shear; k >= 0 and the indenters only, as on the closed-form side,
+// analytic/subsurface.h) are those of model/fe_stress.h, with their estimates. A tolerance the ladder cannot reach is
 // a refusal that names the limit (the DoF budget, the far field, an unreliable solve), never a value.
 //
 // Reuse. Besides c0 the power-law half-space has no length of its own, and c0 enters only through
