@@ -7,6 +7,7 @@
 #include "runners/fe_map.h"
 #include "runners/fe_scene.h"
 #include "runners/fe_tangential.h"
+#include "runners/stress_map.h"
 
 #include <stdexcept>
 #include <string>
@@ -33,6 +34,8 @@ namespace gradcontact::cases
         case SceneKind::map:
           if (scene.map.parameter == MapParameters::Parameter::coulomb_3d)
             return run_coulomb_map(scene, folder, verbose);
+          if (scene.map.parameter == MapParameters::Parameter::largest_stress)
+            return run_stress_map(scene, folder, verbose);
           if (scene.map.parameter == MapParameters::Parameter::tabor_parameter)
             {
               MapShard all;

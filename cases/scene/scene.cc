@@ -122,7 +122,8 @@ namespace gradcontact::cases
                                                {MapParameter::indenter_modulus, "indenter modulus"},
                                                {MapParameter::friction_coefficient, "friction coefficient"},
                                                {MapParameter::tabor_parameter, "Tabor parameter"},
-                                               {MapParameter::coulomb_3d, "Coulomb 3D"}};
+                                               {MapParameter::coulomb_3d, "Coulomb 3D"},
+                                               {MapParameter::largest_stress, "largest stress"}};
     // Two-valued selections read as a flag.
     const Choices<bool> accuracies{{false, "levels"}, {true, "contract"}};
     const Choices<bool> on_off{{true, "on"}, {false, "off"}};
@@ -594,7 +595,9 @@ namespace gradcontact::cases
                "cases/runners/fe_cohesive.h, against the chapter's JKR pull-off; needs Adhesion/work of adhesion "
                "and a paraboloid or power law), or Coulomb 3D (values mu, empty: Friction/coefficient; the 3D "
                "model of a rigid sphere with Coulomb friction, cases/runners/fe_coulomb_3d.h: normal loading, "
-               "Tangential/amplitude and one cycle, for every k and nu of the map, against 9.80-9.86).");
+               "Tangential/amplitude and one cycle, for every k and nu of the map, against 9.80-9.86), or largest "
+               "stress (no values; the largest shear and von Mises stress below a paraboloid, with their depths, "
+               "for every k >= 0 and nu of the map, FE against the closed form, cases/runners/stress_map.h).");
     add(prm, "values", values, "", Patterns::List(Patterns::Double(0.), 0, 100),
         "The values of the variable Map/parameter names, > 0: a/z0, a/H, a/w, E1/E0, the friction "
         "coefficients mu or the Tabor parameters lambda. Formerly Map/ratios (a deprecated name).");
@@ -1068,9 +1071,29 @@ namespace gradcontact::cases
   namespace
   {
     /// Every map: the checks of its parameter.
+    /// Map/parameter = largest stress: a sphere on the power law, k >= 0 (on k < 0 no largest stress exists).
+    void check_stress_map(const Scene &s, const std::string &where)
+    {
+      if (s.load.type != LoadParameters::Type::paraboloid)
+        throw std::invalid_argument(where + "Map/parameter = largest stress needs Load/type = paraboloid");
+      if (s.material.modulus != MaterialParameters::Modulus::power_law)
+        throw std::invalid_argument(where + "Map/parameter = largest stress needs Material/modulus = power law");
+      for (const double k : s.map.exponents.empty() ? std::vector<double>{s.material.k} : s.map.exponents)
+        if (!(k >= 0))
+          throw std::invalid_argument(where + "Map/k values (or Material/k): " + format(k) +
+                                      " must be in [0, 1) for a largest stress: on k < 0 the skin's radial and hoop "
+                                      "stresses grow without bound toward the surface");
+      for (const double nu : s.map.poisson_ratios.empty() ? std::vector<double>{s.material.nu} : s.map.poisson_ratios)
+        if (!(nu < 0.5))
+          throw std::invalid_argument(where + "Map/nu values (or Material/nu): " + format(nu) +
+                                      " must be in [0, 0.5) (the closed-form field)");
+    }
+
     void check_map(const Scene &s, const std::string &where)
     {
-      if (s.map.parameter == MapParameters::Parameter::coulomb_3d)
+      if (s.map.parameter == MapParameters::Parameter::largest_stress)
+        check_stress_map(s, where);
+      else if (s.map.parameter == MapParameters::Parameter::coulomb_3d)
         check_coulomb_map(s, where);
       else if (s.map.parameter == MapParameters::Parameter::tabor_parameter)
         check_tabor_map(s, where);

@@ -307,7 +307,8 @@ namespace gradcontact::cases
       indenter_modulus,  ///< a homogeneous elastic indenter (Indenter/nu) against the rigid one; values E1/E0
       friction_coefficient, ///< Coulomb friction (Friction/load steps) against the frictionless indenter; values mu
       tabor_parameter,      ///< a Dugdale cohesive zone against JKR (cases/runners/fe_cohesive.h); values lambda
-      coulomb_3d            ///< the 3D Coulomb sphere over k and nu against 9.80-9.86 (cases/runners/fe_coulomb_3d.h); values mu
+      coulomb_3d,           ///< the 3D Coulomb sphere over k and nu against 9.80-9.86 (cases/runners/fe_coulomb_3d.h); values mu
+      largest_stress        ///< the largest stresses below a sphere over k and nu, FE against closed form (cases/runners/stress_map.h)
     };
     Parameter parameter = Parameter::none;
     std::vector<double> values;     ///< of the variable `parameter` names: a/z0, a/H, a/w, E1/E0, mu or lambda, > 0

@@ -1,0 +1,158 @@
+#include "runners/stress_map.h"
+#include "model/fe_stress.h"
+#include "model/scene_start.h"
+#include "report/table.h"
+
+#include <analytic/material.h>
+#include <analytic/normal.h>
+#include <analytic/subsurface.h>
+#include <fem/modulus/modulus.h>
+
+#include <chrono>
+#include <cmath>
+#include <iostream>
+#include <memory>
+#include <sstream>
+#include <vector>
+
+namespace gradcontact::cases
+{
+  namespace
+  {
+    /// One measure of one (k, nu): closed form and FE, the stress over p_m, the place over a.
+    struct MapRow
+    {
+      double         k = 0, nu = 0;
+      std::string    measure;
+      StressMaximum  closed_form;
+      FeStressMaximum fe;
+      std::string    refused; ///< the FE's limit when it could not vouch for the tolerance
+      double         seconds = 0;
+    };
+
+    /// The unit paraboloid (R = a = 1) on E = z^k: one ladder per (k, nu), which both measures ask.
+    struct UnitSphere
+    {
+      fem::LoadCase                        load;
+      std::unique_ptr<fem::ContractSolver> solver;
+      UnitSphere(const double k, const double nu, const double tolerance)
+      {
+        fem::Material material;
+        material.modulus = std::make_shared<fem::PowerLawModulus>(1.0, 1.0, k);
+        material.nu      = nu;
+        load.type        = fem::LoadType::indenter;
+        load.profile     = fem::Profile::paraboloid(1.0);
+        solver = std::make_unique<fem::ContractSolver>(material, fem::contract_settings(1.0, material, tolerance),
+                                                       tolerance);
+      }
+    };
+
+    MapRow row_of(const double k, const double nu, const std::string &measure, UnitSphere &sphere)
+    {
+      MapRow row;
+      row.k       = k;
+      row.nu      = nu;
+      row.measure = measure;
+      const Medium               medium = gradcontact::medium(GradedHalfSpace{1.0, 1.0, k, nu});
+      const AxisymmetricPressure load   = contact_pressure(medium, Paraboloid{1.0}, 1.0);
+      const double               p_m    = force(medium, Paraboloid{1.0}, 1.0) / M_PI;
+      row.closed_form = largest_stress(PointLoadField(k, nu), load,
+                                       measure == "von_mises" ? StressMeasure::von_mises : StressMeasure::max_shear);
+      row.closed_form.value /= p_m;
+      const auto start = std::chrono::steady_clock::now();
+      row.fe           = largest_fe_stress(*sphere.solver, sphere.load, measure);
+      row.seconds      = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+      const double tolerance = sphere.solver->tolerance();
+      if (!row.fe.run.met && !(row.fe.at_point.relative() <= tolerance && row.fe.at_point.levels.size() >= 3))
+        row.refused = row.fe.run.limit;
+      row.fe.value.value /= p_m;
+      row.fe.value.error /= p_m;
+      return row;
+    }
+
+    Table table_of(const std::vector<MapRow> &rows)
+    {
+      const auto fe = [](const MapRow &r, const fem::Estimated &e) { return r.refused.empty() ? Cell(e.value) : Cell(); };
+      const auto est = [](const MapRow &r, const fem::Estimated &e) { return r.refused.empty() ? Cell(e.error) : Cell(); };
+      const std::vector<Field<MapRow>> fields = {
+        {Column::both("k", "k"), [](const MapRow &r) { return Cell(r.k); }},
+        {Column::both("nu", "nu"), [](const MapRow &r) { return Cell(r.nu); }},
+        {Column::both("measure", "measure"), [](const MapRow &r) { return Cell(r.measure); }},
+        {Column::both("closed_form", "closed form / p_m").md_as({'g', 8}),
+         [](const MapRow &r) { return Cell(r.closed_form.value); }},
+        {Column::both("fe", "FE / p_m").md_as({'g', 8}), [&](const MapRow &r) { return fe(r, r.fe.value); }},
+        {Column::both("fe_estimate", "FE estimate").md_as({'e', 1}),
+         [&](const MapRow &r) { return est(r, r.fe.value); }},
+        {Column::both("depth_closed_form", "depth / a, closed form").md_as({'g', 6}),
+         [](const MapRow &r) { return Cell(r.closed_form.z); }},
+        {Column::both("depth_fe", "depth / a, FE").md_as({'g', 6}), [&](const MapRow &r) { return fe(r, r.fe.z); }},
+        {Column::both("depth_estimate", "its estimate").md_as({'e', 1}), [&](const MapRow &r) { return est(r, r.fe.z); }},
+        {Column::both("radius_closed_form", "radius / a, closed form").md_as({'g', 6}),
+         [](const MapRow &r) { return Cell(r.closed_form.r); }},
+        {Column::both("radius_fe", "radius / a, FE").md_as({'g', 6}), [&](const MapRow &r) { return fe(r, r.fe.r); }},
+        {Column::both("seconds", "FE s").md_as({'f', 1}), [](const MapRow &r) { return Cell(r.seconds); }},
+        {Column::both("refused", "FE refused").quoted(), [](const MapRow &r) { return Cell(r.refused); }}};
+      return tabulate(fields, rows);
+    }
+
+    /// The scene's errors rows: the FE's value and depth against the closed form, each within 3x its estimate.
+    void add_checks(const MapRow &r, SceneResult &result)
+    {
+      std::ostringstream where;
+      where << "k = " << r.k << ", nu = " << r.nu << ", ";
+      const std::string quantity = "largest " + r.measure;
+      if (!r.refused.empty())
+        {
+          result.rows.push_back(failed(quantity, "FE", "closed form", "refused: " + r.refused));
+          return;
+        }
+      const auto check = [&](const std::string &q, const double ref, const fem::Estimated &e) {
+        const double scale = std::abs(ref) > 0 ? std::abs(ref) : 1.0;
+        Row row = compare(q, where.str() + "relative, within 3x the FE estimate", "FE", "closed form", ref, e.value,
+                          scale, 3 * e.error / scale, r.fe.run.level_dofs.empty() ? 0 : r.fe.run.level_dofs.back(),
+                          r.seconds);
+        row.estimate = e.error / scale;
+        result.rows.push_back(row);
+      };
+      check(quantity, r.closed_form.value, r.fe.value);
+      check(quantity + " depth", r.closed_form.z, r.fe.z);
+    }
+  } // namespace
+
+  SceneResult run_stress_map(const Scene &s, const std::filesystem::path &folder, const bool verbose)
+  {
+    require_kind(s, SceneKind::map, "run_stress_map");
+    const auto  start  = std::chrono::steady_clock::now();
+    SceneResult result = started(s, folder);
+    const std::vector<double> exponents = s.map.exponents.empty() ? std::vector<double>{s.material.k} : s.map.exponents;
+    const std::vector<double> ratios =
+      s.map.poisson_ratios.empty() ? std::vector<double>{s.material.nu} : s.map.poisson_ratios;
+    std::vector<MapRow> rows;
+    for (const double nu : ratios)
+      for (const double k : exponents)
+        {
+          UnitSphere sphere(k, nu, s.discretization.force_tolerance);
+          for (const char *measure : {"max_shear", "von_mises"})
+          {
+            rows.push_back(row_of(k, nu, measure, sphere));
+            add_checks(rows.back(), result);
+            if (verbose)
+              std::cout << "  k = " << k << ", nu = " << nu << ", " << measure << ": closed form "
+                        << rows.back().closed_form.value << ", FE " << rows.back().fe.value.value << "\n";
+          }
+        }
+    const Table        table = table_of(rows);
+    std::ostringstream md;
+    md << "# " << s.info.name << ": the largest stresses below a sphere\n\n"
+       << "The paraboloid at contact radius a on E0 (z/c0)^k: the largest shear and von Mises stress over p_m = F / "
+       << "(pi a^2), with their depth and radius over a. Closed form: the graded Boussinesq field superposed over the "
+       << "contact pressure (analytic/subsurface.h); FE: the recovered stress field on the accuracy contract's ladder "
+       << "at an asked tolerance of " << format(s.discretization.force_tolerance) << ", with its estimates "
+       << "(cases/model/fe_stress.h). A row passes when the FE is within 3x its estimate of the closed form.\n\n"
+       << table.md();
+    write_text(folder / "map.md", md.str());
+    table.write_csv(folder / "map.csv");
+    result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    return result;
+  }
+} // namespace gradcontact::cases

@@ -1,0 +1,24 @@
+// gradcontact/cases: the map of the largest stresses below a sphere (Map/parameter = largest stress).
+//
+// For every k of Map/k values (>= 0; Material/k when empty) and nu of Map/nu values (Material/nu when empty), the
+// paraboloid pressed to a contact radius: the largest shear and the largest von Mises stress below it, over
+// p_m = F / (pi a^2), and their depths and radii over a, from the closed form (the graded Boussinesq field superposed
+// over the contact pressure, analytic/subsurface.h) and from the FE at the scene's Discretization/force tolerance (the
+// accuracy contract's ladder and the search of model/fe_stress.h). Both are scale free in E0, c0, a and R (the
+// normalised field depends on k and nu alone), so each side solves the unit problem. A row passes when the FE is
+// within 3x its own estimate of the closed form, the contract's promise of reliability; a refusal names its limit
+// and fails the row. Writes map.csv and map.md (one table) and the scene's errors table.
+#ifndef GRADCONTACT_CASES_STRESS_MAP_H
+#define GRADCONTACT_CASES_STRESS_MAP_H
+
+#include "report/report.h"
+#include "scene/scene.h"
+
+#include <filesystem>
+
+namespace gradcontact::cases
+{
+  SceneResult run_stress_map(const Scene &s, const std::filesystem::path &folder, bool verbose);
+} // namespace gradcontact::cases
+
+#endif
