@@ -20,7 +20,7 @@ namespace gradcontact::cases
                               name);
     }
 
-    /// The grid of the first pass of the search (FeOracle's header): r/a in steps of 1/20 up to 2, z/a geometric
+    /// The grid of the first pass of the search (the header): r/a in steps of 1/20 up to 2, z/a geometric
     /// from 1e-3 to 2.
     std::vector<fem::StressPoint> first_grid()
     {
@@ -146,13 +146,12 @@ namespace gradcontact::cases
   /// The component `name` of the estimated stress and its error bound (the header's propagation to the measures).
   fem::Estimated stress_measure(const std::array<fem::Estimated, 4> &c, const std::string &name)
   {
-    const AxisymmetricStress s{c[0].value, c[1].value, c[2].value, c[3].value};
-    fem::Estimated           e;
-    e.value = stress_component(s, name);
-    e.scale = c[0].scale;
     const std::map<std::string, std::size_t> own = {{"rr", 0}, {"zz", 1}, {"tt", 2}, {"rz", 3}};
     if (const auto found = own.find(name); found != own.end())
       return c[found->second];
+    fem::Estimated e;
+    e.value = stress_component(AxisymmetricStress{c[0].value, c[1].value, c[2].value, c[3].value}, name);
+    e.scale = c[0].scale;
     const double F = std::sqrt(c[0].error * c[0].error + c[1].error * c[1].error + c[2].error * c[2].error +
                                2 * c[3].error * c[3].error);
     e.error = name == "von_mises" ? std::sqrt(1.5) * F : F;
