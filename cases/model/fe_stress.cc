@@ -8,6 +8,7 @@
 #include <limits>
 #include <map>
 #include <utility>
+#include <vector>
 
 namespace gradcontact::cases
 {
@@ -160,24 +161,38 @@ namespace gradcontact::cases
 
 
 
-  FeStressMaximum largest_fe_stress(fem::ContractSolver &solver, const fem::LoadCase &load, const std::string &name)
+  std::vector<FeStressMaximum> largest_fe_stresses(fem::ContractSolver &solver, const fem::LoadCase &load,
+                                                   const std::vector<std::string> &names)
   {
     fem::OutputRequest outputs;
-    outputs.stress_points      = first_grid();
-    fem::ContractResult result = solver.run(load, outputs);
-    fem::StressPoint    best   = outputs.stress_points.at(argmax(result, name, result.level_dofs.size() - 1));
-    LocalGrid           g;
-    g.dr = 1 / 20.0;
-    g.dz = best.z * (std::pow(2e3, 1 / 29.0) - 1);
-    for (unsigned int pass = 0; pass < 4; ++pass)
+    outputs.stress_points            = first_grid();
+    const fem::ContractResult first  = solver.run(load, outputs);
+    std::vector<FeStressMaximum> out;
+    for (const std::string &name : names)
       {
-        g                     = local_grid(best.r, best.z, g.dr / 3, g.dz / 3);
-        outputs.stress_points = g.points;
-        result                = solver.run(load, outputs);
-        best = outputs.stress_points.at(argmax(result, name, result.level_dofs.size() - 1));
+        fem::StressPoint best = outputs.stress_points.at(argmax(first, name, first.level_dofs.size() - 1));
+        LocalGrid        g;
+        g.dr = 1 / 20.0;
+        g.dz = best.z * (std::pow(2e3, 1 / 29.0) - 1);
+        fem::OutputRequest  local;
+        fem::ContractResult result;
+        for (unsigned int pass = 0; pass < 4; ++pass)
+          {
+            g                   = local_grid(best.r, best.z, g.dr / 3, g.dz / 3);
+            local.stress_points = g.points;
+            result              = solver.run(load, local);
+            best = local.stress_points.at(argmax(result, name, result.level_dofs.size() - 1));
+          }
+        out.push_back(located(result, g, name));
+        out.back().run = std::move(result);
       }
-    FeStressMaximum m = located(result, g, name);
-    m.run             = std::move(result);
-    return m;
+    return out;
+  }
+
+
+
+  FeStressMaximum largest_fe_stress(fem::ContractSolver &solver, const fem::LoadCase &load, const std::string &name)
+  {
+    return largest_fe_stresses(solver, load, {name}).front();
   }
 } // namespace gradcontact::cases

@@ -20,6 +20,7 @@
 
 #include <array>
 #include <string>
+#include <vector>
 
 namespace gradcontact::cases
 {
@@ -40,6 +41,9 @@ namespace gradcontact::cases
   /// The search of the header for the measure `name` (von_mises or max_shear) below `load` on `solver`'s ladder (a
   /// body whose contact radius is 1).
   FeStressMaximum largest_fe_stress(fem::ContractSolver &solver, const fem::LoadCase &load, const std::string &name);
+  /// The same for several measures, which share the search's first grid (one ladder run for all).
+  std::vector<FeStressMaximum> largest_fe_stresses(fem::ContractSolver &solver, const fem::LoadCase &load,
+                                                   const std::vector<std::string> &names);
 } // namespace gradcontact::cases
 
 #endif

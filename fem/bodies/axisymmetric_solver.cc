@@ -702,9 +702,13 @@ namespace gradcontact::fem
       }
     std::unique_ptr<StressRecovery> stresses;
     if (!outputs.stress_points.empty() || !outputs.vtu_file.empty())
-      stresses = std::make_unique<StressRecovery>(
-        dof_handler, mapping, state.u, material,
-        SurfaceMap<2>(discretization.surface_map, *material.modulus, a, mesh_parameters.h_edge), a);
+      {
+        if (!stress_fit)
+          stress_fit = std::make_unique<StressFit>(
+            dof_handler, mapping, material,
+            SurfaceMap<2>(discretization.surface_map, *material.modulus, a, mesh_parameters.h_edge), a);
+        stresses = std::make_unique<StressRecovery>(*stress_fit, state.u);
+      }
     for (const StressPoint &x : outputs.stress_points)
       result.stress.push_back(stresses->at(x.r, x.z));
     if (!outputs.vtu_file.empty())

@@ -141,8 +141,9 @@ namespace gradcontact::fem
     SurfaceFlexibility surface_flexibility();
 
     unsigned int n_dofs() const { return dof_handler.n_dofs(); }
-    /// The memory its factorisations and matrices hold (DirectSystem::factor_bytes; 0 before the first run).
-    std::size_t factor_bytes() const { return system.factor_bytes(); }
+    /// The memory its factorisations and matrices hold (DirectSystem::factor_bytes and the stress fit's mass
+    /// matrix; 0 before the first run).
+    std::size_t factor_bytes() const { return system.factor_bytes() + (stress_fit ? stress_fit->bytes() : 0); }
     /// displacement or mixed (resolved from DiscretizationParameters::formulation and nu).
     Formulation formulation() const { return used_formulation; }
     const dealii::Triangulation<2> &get_triangulation() const { return triangulation; }
@@ -233,6 +234,8 @@ namespace gradcontact::fem
       dealii::Vector<double> u1, reaction1, u_f, reaction_f;
     };
     std::unique_ptr<IndenterBasis> indenter_basis;
+    /// The stress recovery's load-independent part, made on the first run that asks for stresses.
+    mutable std::unique_ptr<StressFit> stress_fit;
     Timings                                      setup_time;
   };
 } // namespace gradcontact::fem

@@ -44,6 +44,7 @@
 #include <deal.II/lac/vector.h>
 
 #include <array>
+#include <cstddef>
 #include <memory>
 #include <string>
 
@@ -55,41 +56,25 @@ namespace gradcontact::fem
     double rr = 0, zz = 0, tt = 0, rz = 0;
   };
 
-  /// The stress of an axisymmetric solution u (as solved: the mixed formulation's pressure in its solved units) and
-  /// its recovered fields (the header). Keeps references to the DoF handler and the mapping, which must outlive it.
-  class StressRecovery
+  /// The load-independent part of the recovery on one mesh: the scalar space Q_p, its r-weighted mass matrix
+  /// factorised, and the cache that locates points. A solver keeps it, so that each further solution's recovery
+  /// assembles and back-substitutes its right-hand sides only. Keeps references to the DoF handler and the mapping,
+  /// which must outlive it.
+  class StressFit
   {
   public:
     /// `map`: the surface map of the solve; `contact_radius`: the mesh's a (the mixed pressure's scale S = E(a)).
-    StressRecovery(const dealii::DoFHandler<2> &dof_handler, const dealii::Mapping<2> &mapping,
-                   const dealii::Vector<double> &u, const Material &material, const SurfaceMap<2> &map,
-                   double contact_radius);
-    ~StressRecovery();
+    StressFit(const dealii::DoFHandler<2> &dof_handler, const dealii::Mapping<2> &mapping, const Material &material,
+              const SurfaceMap<2> &map, double contact_radius);
+    ~StressFit();
 
-    /// The recovered stress at the physical point (r, z), r >= 0, z >= 0 (z > 0 on a stiff surface), inside the meshed
-    /// body. Throws std::invalid_argument naming the point when it is not.
-    StressValue at(double r, double z) const;
-
-    /// The fitted fields, component c in (rr, zz, tt, rz), on dofs() (for output): the stresses, or on a stiff
-    /// surface the stresses over E(z) (header).
-    const dealii::Vector<double> &field(unsigned int c) const { return fields[c]; }
-    const dealii::DoFHandler<2> &dofs() const { return scalar_dofs; }
-    /// The names of the fitted fields: "sigma_rr" and so on, "sigma_rr_over_E" on a stiff surface.
-    std::string name(unsigned int c) const;
+    /// The memory of the mass matrix and its sparsity (UMFPACK's factors, of the scalar space's size, not counted).
+    std::size_t bytes() const;
 
   private:
-    /// The stress at mesh point x of `cell` from the solution's values and gradients there.
-    StressValue from_gradients(const dealii::Point<2> &x, const std::array<double, 2> &u_value,
-                               const std::array<dealii::Tensor<1, 2>, 2> &grad, double q_hat) const;
-    void        project();
-    /// The cell (of the displacement's DoF handler) around the physical point and the point's reference
-    /// coordinates; `who` names the caller in the error.
-    std::pair<dealii::DoFHandler<2>::active_cell_iterator, dealii::Point<2>> locate(double r, double z,
-                                                                                   const std::string &who) const;
-
+    friend class StressRecovery;
     const dealii::DoFHandler<2> &dof_handler;
     const dealii::Mapping<2>    &mapping;
-    const dealii::Vector<double> u;
     const Material               material;
     const SurfaceMap<2>          map;
     const bool                   mixed;
@@ -101,8 +86,41 @@ namespace gradcontact::fem
     dealii::FE_Q<2>                   scalar_fe;
     dealii::DoFHandler<2>             scalar_dofs;
     dealii::AffineConstraints<double> scalar_constraints;
-    std::array<dealii::Vector<double>, 4> fields;
+    struct Factorised;
+    std::unique_ptr<Factorised>                  mass; ///< M of the header, factorised
     std::unique_ptr<dealii::GridTools::Cache<2>> cache;
+  };
+
+  /// The stress of an axisymmetric solution u (as solved: the mixed formulation's pressure in its solved units) and
+  /// its recovered fields (the header), on the fit of its mesh, which must outlive it.
+  class StressRecovery
+  {
+  public:
+    StressRecovery(const StressFit &fit, const dealii::Vector<double> &u);
+
+    /// The recovered stress at the physical point (r, z), r >= 0, z >= 0 (z > 0 on a stiff surface), inside the meshed
+    /// body. Throws std::invalid_argument naming the point when it is not.
+    StressValue at(double r, double z) const;
+
+    /// The fitted fields, component c in (rr, zz, tt, rz), on dofs() (for output): the stresses, or on a stiff
+    /// surface the stresses over E(z) (header).
+    const dealii::Vector<double> &field(unsigned int c) const { return fields[c]; }
+    const dealii::DoFHandler<2> &dofs() const { return fit.scalar_dofs; }
+    /// The names of the fitted fields: "sigma_rr" and so on, "sigma_rr_over_E" on a stiff surface.
+    std::string name(unsigned int c) const;
+
+  private:
+    /// The stress at mesh point x of `cell` from the solution's values and gradients there.
+    StressValue from_gradients(const dealii::Point<2> &x, const std::array<double, 2> &u_value,
+                               const std::array<dealii::Tensor<1, 2>, 2> &grad, double q_hat) const;
+    void        project(const dealii::Vector<double> &u);
+    /// The cell (of the displacement's DoF handler) around the physical point and the point's reference
+    /// coordinates; `who` names the caller in the error.
+    std::pair<dealii::DoFHandler<2>::active_cell_iterator, dealii::Point<2>> locate(double r, double z,
+                                                                                   const std::string &who) const;
+
+    const StressFit                      &fit;
+    std::array<dealii::Vector<double>, 4> fields;
   };
 } // namespace gradcontact::fem
 
