@@ -1,12 +1,15 @@
 #include "model/fe_stress.h"
 
 #include <analytic/subsurface.h>
+#include <fem/modulus/modulus.h>
 
 #include <algorithm>
 #include <cmath>
 #include <functional>
 #include <limits>
 #include <map>
+#include <stdexcept>
+#include <memory>
 #include <utility>
 #include <vector>
 
@@ -23,12 +26,16 @@ namespace gradcontact::cases
 
     /// The grid of the first pass of the search (the header): r/a in steps of 1/20 up to 2, z/a geometric
     /// from 1e-3 to 2.
-    std::vector<fem::StressPoint> first_grid()
+    std::vector<fem::StressPoint> first_grid(const bool surface)
     {
       std::vector<fem::StressPoint> points;
       for (unsigned int i = 0; i <= 40; ++i)
-        for (unsigned int j = 0; j < 30; ++j)
-          points.push_back({i / 20.0, 1e-3 * std::pow(2e3, j / 29.0)});
+        {
+          if (surface)
+            points.push_back({i / 20.0, 0.0});
+          for (unsigned int j = 0; j < 30; ++j)
+            points.push_back({i / 20.0, 1e-3 * std::pow(2e3, j / 29.0)});
+        }
       return points;
     }
 
@@ -40,7 +47,7 @@ namespace gradcontact::cases
       int                           index[7][7];
       double                        dr = 0, dz = 0;
     };
-    LocalGrid local_grid(const double r, const double z, const double dr, const double dz)
+    LocalGrid local_grid(const double r, const double z, const double dr, const double dz, const bool surface)
     {
       LocalGrid g;
       g.dr = dr;
@@ -49,10 +56,12 @@ namespace gradcontact::cases
         for (int j = -3; j <= 3; ++j)
           {
             g.index[i + 3][j + 3] = -1;
-            if (r + i * dr >= 0 && z + j * dz > 0)
+            // With the surface, its row z = 0 (the point at or just above it, rounded onto it).
+            const double depth = surface && std::abs(z + j * dz) <= 1e-9 * dz ? 0.0 : z + j * dz;
+            if (r + i * dr >= 0 && (depth > 0 || (surface && depth == 0)))
               {
                 g.index[i + 3][j + 3] = static_cast<int>(g.points.size());
-                g.points.push_back({r + i * dr, z + j * dz});
+                g.points.push_back({r + i * dr, depth});
               }
           }
       return g;
@@ -140,6 +149,12 @@ namespace gradcontact::cases
       m.z.value     = finest.z;
       m.z.error     = std::max(std::abs(finest.z - coarse_grid.z), std::abs(finest.z - below.z));
       m.z.scale     = finest.z;
+      if (finest.z == 0)
+        {
+          // On the surface, the search's boundary: the place is known to the last grid's step in depth.
+          m.z.error = std::max(m.z.error, g.dz);
+          m.z.scale = 1;
+        }
       return m;
     }
   } // namespace
@@ -162,10 +177,10 @@ namespace gradcontact::cases
 
 
   std::vector<FeStressMaximum> largest_fe_stresses(fem::ContractSolver &solver, const fem::LoadCase &load,
-                                                   const std::vector<std::string> &names)
+                                                   const std::vector<std::string> &names, const bool surface)
   {
     fem::OutputRequest outputs;
-    outputs.stress_points            = first_grid();
+    outputs.stress_points            = first_grid(surface);
     const fem::ContractResult first  = solver.run(load, outputs);
     std::vector<FeStressMaximum> out;
     for (const std::string &name : names)
@@ -173,12 +188,12 @@ namespace gradcontact::cases
         fem::StressPoint best = outputs.stress_points.at(argmax(first, name, first.level_dofs.size() - 1));
         LocalGrid        g;
         g.dr = 1 / 20.0;
-        g.dz = best.z * (std::pow(2e3, 1 / 29.0) - 1);
+        g.dz = std::max(best.z, 1e-3) * (std::pow(2e3, 1 / 29.0) - 1);
         fem::OutputRequest  local;
         fem::ContractResult result;
         for (unsigned int pass = 0; pass < 4; ++pass)
           {
-            g                   = local_grid(best.r, best.z, g.dr / 3, g.dz / 3);
+            g                   = local_grid(best.r, best.z, g.dr / 3, g.dz / 3, surface);
             local.stress_points = g.points;
             result              = solver.run(load, local);
             best = local.stress_points.at(argmax(result, name, result.level_dofs.size() - 1));
@@ -193,6 +208,66 @@ namespace gradcontact::cases
 
   FeStressMaximum largest_fe_stress(fem::ContractSolver &solver, const fem::LoadCase &load, const std::string &name)
   {
-    return largest_fe_stresses(solver, load, {name}).front();
+    return largest_fe_stresses(solver, load, {name}, false).front();
+  }
+
+
+
+  std::vector<FeStressMaximum> largest_fe_stresses(UnitSphere &sphere, const std::vector<std::string> &names)
+  {
+    return largest_fe_stresses(sphere.solver(), sphere.load(), names, sphere.finite_surface());
+  }
+
+
+
+  UnitSphere::UnitSphere(const MaterialParameters::Modulus modulus, const double k, const double nu,
+                         const double length, const double tolerance, const double largest_radius)
+  {
+    fem::Material material;
+    material.nu = nu;
+    switch (modulus)
+      {
+        case MaterialParameters::Modulus::power_law:
+          material.modulus = std::make_shared<fem::PowerLawModulus>(1.0, 1.0, k);
+          break;
+        case MaterialParameters::Modulus::shifted_power_law:
+          material.modulus = std::make_shared<fem::ShiftedPowerLawModulus>(1.0, 1.0, k, length);
+          break;
+        case MaterialParameters::Modulus::coating:
+          material.modulus = std::make_shared<fem::CoatingModulus>(1.0, 1.0, k, length);
+          break;
+        default:
+          throw std::invalid_argument("UnitSphere: Material/modulus must be power law, shifted power law or coating");
+      }
+    surface          = modulus == MaterialParameters::Modulus::shifted_power_law;
+    indenter.type    = fem::LoadType::indenter;
+    indenter.profile = fem::Profile::paraboloid(1.0);
+    contract = std::make_unique<fem::ContractSolver>(
+      material, fem::contract_settings(1.0, material, tolerance, largest_radius), tolerance);
+  }
+
+  UnitSphere::~UnitSphere() = default;
+
+
+
+  SurfaceRadialStress surface_radial_stress(UnitSphere &sphere, const std::vector<double> &radii)
+  {
+    fem::OutputRequest outputs;
+    for (const double r : radii)
+      outputs.stress_points.push_back({r, 0.0});
+    SurfaceRadialStress out;
+    out.run = sphere.solver().run(sphere.load(), outputs);
+    out.p_m = out.run.result.force / M_PI;
+    for (const auto &c : out.run.stress)
+      {
+        fem::Estimated e = c[0];
+        e.value /= out.p_m;
+        e.error /= out.p_m;
+        e.scale /= out.p_m;
+        for (double &v : e.levels)
+          v /= out.p_m;
+        out.sigma_rr.push_back(e);
+      }
+    return out;
   }
 } // namespace gradcontact::cases

@@ -16,9 +16,12 @@
 #ifndef GRADCONTACT_CASES_FE_STRESS_H
 #define GRADCONTACT_CASES_FE_STRESS_H
 
+#include "scene/scene.h"
+
 #include <fem/accuracy/accuracy.h>
 
 #include <array>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -41,9 +44,49 @@ namespace gradcontact::cases
   /// The search of the header for the measure `name` (von_mises or max_shear) below `load` on `solver`'s ladder (a
   /// body whose contact radius is 1).
   FeStressMaximum largest_fe_stress(fem::ContractSolver &solver, const fem::LoadCase &load, const std::string &name);
-  /// The same for several measures, which share the search's first grid (one ladder run for all).
+  /// The same for several measures, which share the search's first grid (one ladder run for all). `surface`: the
+  /// grids take the surface z = 0 too (a modulus finite there, whose largest stress may lie on it; the place's
+  /// estimate is then at least the last grid's step in depth).
   std::vector<FeStressMaximum> largest_fe_stresses(fem::ContractSolver &solver, const fem::LoadCase &load,
-                                                   const std::vector<std::string> &names);
+                                                   const std::vector<std::string> &names, bool surface);
+
+  /// The unit sphere, R = a = 1 on E0 = c0 = 1, on one of the scene's gradings: the power law (9.1), a finite surface
+  /// modulus ((z + z0)/c0)^k or a power-law coating of thickness H on its substrate (fem/modulus/modulus.h; `length`
+  /// is z0 or H over a). The normalised stresses depend on k, nu and that length alone, so the unit problem answers
+  /// every scale. One ladder, which every search and sample on it shares.
+  class UnitSphere
+  {
+  public:
+    /// `largest_radius`: the largest radius asked of the surface (fem::contract_settings; 0: the mesh's own).
+    UnitSphere(MaterialParameters::Modulus modulus, double k, double nu, double length, double tolerance,
+               double largest_radius = 0);
+    ~UnitSphere();
+
+    fem::ContractSolver &solver() { return *contract; }
+    const fem::LoadCase &load() const { return indenter; }
+    /// Whether the surface is part of the search: a finite surface modulus, whose largest stress may lie on it (on
+    /// the power law the surface stresses vanish, k > 0, are unbounded, k < 0, or are Hertz's, k = 0).
+    bool finite_surface() const { return surface; }
+
+  private:
+    bool                                 surface = false;
+    fem::LoadCase                        indenter;
+    std::unique_ptr<fem::ContractSolver> contract;
+  };
+
+  /// The search of largest_fe_stresses on `sphere`, the surface included where its modulus is finite there.
+  std::vector<FeStressMaximum> largest_fe_stresses(UnitSphere &sphere, const std::vector<std::string> &names);
+
+  /// The radial stress on the surface outside a sphere (cases/tools/ring_stress.h).
+  struct SurfaceRadialStress
+  {
+    std::vector<fem::Estimated> sigma_rr; ///< at the asked radii, over p_m
+    double                      p_m = 0;  ///< F / pi of the FE's force
+    fem::ContractResult         run;      ///< what the contract met or what limited it
+  };
+
+  /// The recovered sigma_rr(r, 0) at `radii` below `sphere` (made with a largest_radius that covers them).
+  SurfaceRadialStress surface_radial_stress(UnitSphere &sphere, const std::vector<double> &radii);
 } // namespace gradcontact::cases
 
 #endif

@@ -1076,13 +1076,19 @@ namespace gradcontact::cases
     {
       if (s.load.type != LoadParameters::Type::paraboloid)
         throw std::invalid_argument(where + "Map/parameter = largest stress needs Load/type = paraboloid");
-      if (s.material.modulus != MaterialParameters::Modulus::power_law)
-        throw std::invalid_argument(where + "Map/parameter = largest stress needs Material/modulus = power law");
+      using Modulus = MaterialParameters::Modulus;
+      const Modulus modulus = s.material.modulus;
+      if (modulus != Modulus::power_law && modulus != Modulus::shifted_power_law && modulus != Modulus::coating)
+        throw std::invalid_argument(where + "Map/parameter = largest stress needs Material/modulus = power law, "
+                                            "shifted power law or coating");
+      // A finite surface modulus bounds the skin's stresses for every k; the power law and a coating (the power law
+      // near the surface) have no largest stress on k < 0.
       for (const double k : s.map.exponents.empty() ? std::vector<double>{s.material.k} : s.map.exponents)
-        if (!(k >= 0))
+        if (!(k >= 0) && modulus != Modulus::shifted_power_law)
           throw std::invalid_argument(where + "Map/k values (or Material/k): " + format(k) +
-                                      " must be in [0, 1) for a largest stress: on k < 0 the skin's radial and hoop "
-                                      "stresses grow without bound toward the surface");
+                                      " must be in [0, 1) for a largest stress on this modulus: on k < 0 the skin's "
+                                      "radial and hoop stresses grow without bound toward the surface (a finite "
+                                      "surface modulus, Material/modulus = shifted power law, takes k < 0)");
       for (const double nu : s.map.poisson_ratios.empty() ? std::vector<double>{s.material.nu} : s.map.poisson_ratios)
         if (!(nu < 0.5))
           throw std::invalid_argument(where + "Map/nu values (or Material/nu): " + format(nu) +

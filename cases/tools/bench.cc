@@ -1,5 +1,6 @@
 #include "tools/bench.h"
 #include "tools/accuracy_bench.h"
+#include "tools/ring_stress.h"
 #include "tools/stress_bench.h"
 #include "tools/fe_bench.h"
 #include "tools/fe_oracle.h"
@@ -427,6 +428,9 @@ namespace gradcontact::cases
             StressBenchOptions stresses;
             stresses.quick = o.quick;
             broken += run_stress_bench(stresses, tmp, machine());
+            RingStressOptions ring;
+            ring.quick = o.quick;
+            broken += run_ring_stress(ring, tmp, machine());
           }
         if (o.part == "analytic" || o.part == "all")
           analytic_part(o, tmp);
@@ -457,7 +461,8 @@ namespace gradcontact::cases
     std::cout << "wrote " << folder.string() << "/ (part " << o.part << (o.quick ? ", quick" : "") << ")\n";
     if (broken > 0)
       std::cerr << "bench: the accuracy contract is broken in " << broken << " answers (" << (folder / "accuracy.md").string()
-                << ", " << (folder / "stresses.md").string() << ")\n";
+                << ", " << (folder / "stresses.md").string() << ", "
+                << (folder / "ring_stress.md").string() << ")\n";
     return broken > 0 ? 1 : 0;
   }
 } // namespace gradcontact::cases

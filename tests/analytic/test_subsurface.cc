@@ -233,3 +233,44 @@ TEST_CASE("eval shall find the largest shear below a paraboloid where Huber puts
   CHECK_THROWS_WITH(ask(0.5, "max_shear", "max_stress", "flat_punch"), Contains("edge exponent") && Contains("unbounded"));
   CHECK_THROWS_WITH(ask(0.5, "zz", "max_stress", "paraboloid"), Contains("von_mises or max_shear"));
 }
+
+TEST_CASE("Outside the contact the surface's radial strain shall be Boussinesq's at k = 0 for any pressure, and "
+          "unbounded at a flat punch's edge otherwise",
+          "[analytic][stress]")
+{
+  // k = 0: outside an axisymmetric load F the surface's radial stress is (1 - 2 nu) F / (2 pi r^2) (Boussinesq's
+  // surface field; Johnson, Contact Mechanics, 1985, ch. 3), whatever the pressure's shape. k != 0: sigma_rr / E(z)
+  // tends to a strain combination at the surface, which below a flat punch grows like (r - a)^(-(1 + k)/2) at the
+  // edge (the pressure's edge singularity (a - r)^((k - 1)/2) against the surface kernel ~ distance^-(2 + k)), while
+  // below a paraboloid (edge exponent (1 + k)/2) it stays bounded.
+  const double nu = 0.3;
+  SECTION("k = 0")
+  {
+    const Medium m = medium(GradedHalfSpace{E, c0, 0., nu});
+    const double d = 1e-6, R = 0.05;
+    const PointLoadField field(0., nu);
+    for (const auto &[load, F] : {std::pair{contact_pressure(m, FlatPunch{a}, d), force(m, FlatPunch{a}, d)},
+                                  std::pair{contact_pressure(m, Paraboloid{R}, a), force(m, Paraboloid{R}, a)}})
+      for (const double rho : {1.01, 1.1, 1.5, 3.})
+        {
+          const double exact = (1 - 2 * nu) * F / (2 * pi * rho * rho * a * a);
+          CAPTURE(rho);
+          CHECK_THAT(subsurface_stress(field, load, rho * a, 1e-10 * a).rr, WithinRel(exact, 1e-6));
+        }
+  }
+  SECTION("k = 0.5")
+  {
+    const double         k = 0.5;
+    const Medium         m = medium(GradedHalfSpace{E, c0, k, nu});
+    const PointLoadField field(k, nu);
+    const auto strain = [&](const AxisymmetricPressure &load, const double delta) {
+      const double z = 1e-7 * delta * a;
+      return subsurface_stress(field, load, (1 + delta) * a, z).rr / std::pow(z / c0, k);
+    };
+    const auto exponent = [&](const AxisymmetricPressure &load) {
+      return std::log(strain(load, 1e-5) / strain(load, 1e-4)) / std::log(0.1);
+    };
+    CHECK_THAT(exponent(contact_pressure(m, FlatPunch{a}, 1e-6)), WithinAbs(-(1 + k) / 2, 0.01));
+    CHECK_THAT(exponent(contact_pressure(m, Paraboloid{0.05}, a)), WithinAbs(0., 0.05));
+  }
+}
