@@ -76,7 +76,9 @@ namespace gradcontact::cases
     /// The point and component of a stress request, or the measure of a largest stress, into `p` (k: the grading,
     /// c: the case); refuses what has no FE answer.
     static void parse_stress(const batch::Request &q, double k, const std::string &c, Parsed &p);
-    UnitState &unit_state(const std::string &key, double k, double nu, double tolerance, const fem::LoadCase &load);
+    /// `min_degree`: the least degree of its ladder (0: the contract's own).
+    UnitState &unit_state(const std::string &key, double k, double nu, double tolerance, const fem::LoadCase &load,
+                          unsigned int min_degree);
 
     std::map<std::string, std::unique_ptr<UnitState>>          states;
     std::map<std::string, std::map<bool, std::set<double>>>    plans; ///< radii of states not built yet

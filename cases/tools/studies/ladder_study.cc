@@ -1,8 +1,9 @@
 // ladder_study: the contract ladder of one point, every level of it, against the closed form. Not a test.
 //
-//   ladder_study k=0 nu=0.3 load=punch|paraboloid tol=1e-6 p=3 levels=5 max_dofs=1.2e6 w=2 pr=0.5
+//   ladder_study k=0 nu=0.3 load=punch|paraboloid tol=1e-6 p=3 levels=5 max_dofs=1.2e6 w=2 pr=0.5 [sr=0 sz=0.1]
 // Prints, per level, the DoFs, the force (and the depth under a paraboloid), w(w a) and p(pr a), their true
 // relative errors, the level-to-level ratios, and the contract's estimate; p overrides the degree of the ladder.
+// With sz: the recovered stresses at (sr a, sz a) too, each relative to the largest of them.
 // mode=p p_min=2 p_max=6: the degree ladder on the level-0 mesh instead (no estimate).
 #include <fem/accuracy/accuracy.h>
 #include <fem/modulus/modulus.h>
@@ -27,7 +28,7 @@ namespace
   /// w(w a) and p(pr a).
   struct Point
   {
-    double k = 0, nu = 0.3, tol = 1e-8, w_r = 2, p_r = 0.5;
+    double k = 0, nu = 0.3, tol = 1e-8, w_r = 2, p_r = 0.5, s_r = 0, s_z = -1;
     bool   punch = true;
   };
 
@@ -40,6 +41,8 @@ namespace
     pt.w_r   = args.num("w", 2);
     pt.p_r   = args.num("pr", 0.5);
     pt.punch = args.text("load", "punch") == "punch";
+    pt.s_r   = args.num("sr", 0);
+    pt.s_z   = args.num("sz", -1);
     return pt;
   }
 
@@ -90,7 +93,7 @@ namespace
   }
 
   /// The closed form of `quantity` at the point (analytic/batch.h), at radius r (r < 0: none).
-  double exact(const Point &pt, const std::string &quantity, const double r)
+  double exact(const Point &pt, const std::string &quantity, const double r, const std::string &component = "")
   {
     nlohmann::json q = {{"case", pt.punch ? "flat_punch" : "paraboloid"}, {"quantity", quantity}, {"a", 1.0},
                         {"material", {{"E0", 1.0}, {"c0", 1.0}, {"k", pt.k}, {"nu", pt.nu}}}};
@@ -100,6 +103,8 @@ namespace
       q["geometry"] = {{"R", 1.0}};
     if (r >= 0)
       q["r"] = r;
+    if (!component.empty())
+      q["z"] = pt.s_z, q["component"] = component;
     return batch::evaluate(batch::parse(q));
   }
 
@@ -130,6 +135,13 @@ namespace
       show(c, "w", c.displacement[0], W, std::abs(W));
     if (!c.pressure.empty())
       show(c, "p", c.pressure[0], P, c.pressure[0].scale);
+    if (!c.stress.empty())
+      {
+        const char *names[4] = {"rr", "zz", "tt", "rz"};
+        for (unsigned i = 0; i < 4; ++i)
+          show(c, (std::string("sigma_") + names[i]).c_str(), c.stress[0][i], exact(pt, "stress", pt.s_r, names[i]),
+               c.stress[0][i].scale);
+      }
   }
 } // namespace
 
@@ -153,6 +165,8 @@ int main(int argc, char **argv)
       OutputRequest out;
       out.displacement_radii = {pt.w_r};
       out.pressure_radii     = {pt.p_r};
+      if (pt.s_z >= 0)
+        out.stress_points = {{pt.s_r, pt.s_z}};
       const ContractResult c =
         args.text("mode", "h") == "p" ? degree_ladder(args, material, s, load, out) : solver.run(load, out);
       tabulate(pt, c);
