@@ -9,7 +9,6 @@
 
 #include <analytic/adhesion.h>
 #include <analytic/maugis_dugdale.h>
-#include <fem/adhesion/cohesive_zone.h>
 #include <fem/base/errors.h>
 #include <fem/adhesion/smooth_cohesion.h>
 
@@ -155,13 +154,11 @@ namespace gradcontact::cases
 
     /// Solves one lambda of the map (`base`: its lambda, strength, range and rigid limit) under `controls`, then
     /// the states of the curve points `curve_points` (a / a_c,JKR).
-    LambdaSolution solve_lambda(const fem::Material &material, const fem::Profile &fe_profile,
-                                const fem::CohesiveContact::SettingsFunction &settings, const gradcontact::Medium &medium,
-                                const JkrProfile &profile, const double dgamma, const Point &base,
-                                const std::vector<bool> &controls, const std::vector<double> &curve_points)
+    LambdaSolution solve_lambda(DugdaleModel contact, const gradcontact::Medium &medium, const JkrProfile &profile,
+                                const double dgamma, const Point &base, const std::vector<bool> &controls,
+                                const std::vector<double> &curve_points)
     {
       LambdaSolution solution;
-      fem::CohesiveContact contact(material, fe_profile, fem::DugdaleLaw{base.strength, dgamma}, settings);
       for (const bool force_control : controls)
         {
           Point p            = base;
@@ -173,7 +170,7 @@ namespace gradcontact::cases
           p.depth_jkr        = jkr.depth;
           try
             {
-              const auto c = contact.critical_state(fe_control(control), jkr.radius);
+              const CohesiveCriticalPoint c = contact.critical_state(control, jkr.radius);
               p.force      = c.state.force;
               p.radius     = c.state.radius;
               p.depth      = c.state.depth;
@@ -216,12 +213,12 @@ namespace gradcontact::cases
     /// path, through snap-in and both pull-offs, on the model of its k (the surface flexibility shared by every
     /// lambda). Its depths are shifted by the law's equilibrium separation eps (d + eps: the approach beyond the
     /// touching of the surfaces, JKR's depth); a displacement-controlled pull-off without a jump is "none".
-    LambdaSolution solve_lambda_smooth(fem::SmoothCohesiveContact &contact, const gradcontact::Medium &medium,
+    LambdaSolution solve_lambda_smooth(LennardJonesModel &model, const gradcontact::Medium &medium,
                                        const JkrProfile &profile, const double dgamma, const Point &base,
                                        const std::vector<bool> &controls)
     {
       LambdaSolution          solution;
-      const LennardJonesTrace trace = trace_lennard_jones(contact, base.strength, dgamma);
+      const LennardJonesTrace trace = model.trace(base.strength, dgamma);
       for (const bool force_control : controls)
         {
           Point p            = base;
@@ -287,7 +284,6 @@ namespace gradcontact::cases
       double dgamma = 0;
       bool paraboloid = true, smooth = false;
       JkrProfile profile;
-      fem::Profile fe_profile;
       std::vector<double> ks, lambdas;
       std::vector<bool> controls;
       std::string profile_name, law_name;
@@ -301,7 +297,6 @@ namespace gradcontact::cases
       plan.paraboloid = s.load.type == Type::paraboloid;
       plan.profile = plan.paraboloid ? JkrProfile{gradcontact::Paraboloid{s.load.R}}
                                      : JkrProfile{gradcontact::PowerLaw{s.load.n, s.load.A}};
-      plan.fe_profile = *fe_indenter_profile(s.load); // the scene refuses a map of any other Load/type
       plan.ks = s.map.exponents.empty() ? std::vector<double>{s.material.k} : s.map.exponents;
       plan.lambdas = s.map.values;
       std::sort(plan.lambdas.begin(), plan.lambdas.end());
@@ -360,18 +355,17 @@ namespace gradcontact::cases
       return md.str();
     }
 
-    /// The FE models of one k: the material and medium, the Dugdale law's settings, and (Lennard-Jones) one model
-    /// per edge refinement (lennard_jones_edge_refinement), built when a point is solved here (its mesh graded
+    /// One k of the map: the scene at k and its medium, the refinement level of its meshes, and (Lennard-Jones) one
+    /// model per edge refinement (lennard_jones_edge_refinement), built when a point is solved here (its mesh graded
     /// toward the force-controlled JKR radius, refined 2^level times), its construction's seconds counted toward the
-    /// first lambda it serves.
+    /// first lambda it serves. A Dugdale lambda builds its own model (its law is the model's).
     struct CohesiveExponent
     {
       double k = 0;
-      fem::Material material;
+      Scene scene;
       gradcontact::Medium medium{};
       unsigned int level = 0;
-      fem::CohesiveContact::SettingsFunction settings;
-      std::map<double, std::unique_ptr<fem::SmoothCohesiveContact>> smooth_contact;
+      std::map<double, std::unique_ptr<LennardJonesModel>> smooth_contact;
       std::map<double, double> flexibility_seconds;
     };
 
@@ -379,32 +373,22 @@ namespace gradcontact::cases
     {
       CohesiveExponent e;
       e.k = k;
-      Scene sk = s;
-      sk.material.k = k;
-      e.material = fe_material(sk);
+      e.scene = s;
+      e.scene.material.k = k;
       e.medium = gradcontact::medium(gradcontact::GradedHalfSpace{s.material.E0, s.material.c0, k, s.material.nu});
       e.level = finest_refinement(s);
-      const fem::Material material = e.material;
-      const unsigned int level = e.level;
-      e.settings = [sk, material, level](const double a) { return fe_settings(sk, material, a, level); };
       return e;
     }
 
     /// The Lennard-Jones model of `e` at `edge_refinement`, built on first use.
-    fem::SmoothCohesiveContact &smooth_model(CohesiveExponent &e, const CohesivePlan &plan, const double edge_refinement)
+    LennardJonesModel &smooth_model(CohesiveExponent &e, const CohesivePlan &plan, const double edge_refinement)
     {
       auto &model = e.smooth_contact[edge_refinement];
       if (!model)
         {
           const auto   start_model = std::chrono::steady_clock::now();
           const double a_c = jkr_critical(e.medium, plan.profile, plan.dgamma, gradcontact::Control::force).radius;
-          fem::SmoothCohesionParameters parameters;
-          parameters.follow_edge = true;
-          parameters.edge_band   = parameters.edge_band / std::sqrt(edge_refinement);
-          parameters.max_steps   = 20000; // the path's length grows with lambda: thousands of steps at 10
-          model                  = std::make_unique<fem::SmoothCohesiveContact>(
-            e.material, plan.fe_profile,
-            fem::smooth_cohesion_settings(e.material, a_c, std::pow(2.0, e.level), edge_refinement), parameters);
+          model = std::make_unique<LennardJonesModel>(e.scene, a_c, e.level, edge_refinement);
           e.flexibility_seconds[edge_refinement] =
             std::chrono::duration<double>(std::chrono::steady_clock::now() - start_model).count();
         }
@@ -426,8 +410,7 @@ namespace gradcontact::cases
       if (plan.smooth)
         try
           {
-            base.force_rigid =
-              fem::rigid_pull_off(fem::LennardJonesLaw::with_max_stress(base.strength, plan.dgamma), plan.fe_profile).force;
+            base.force_rigid = rigid_lennard_jones_pull_off(s, base.strength);
           }
         catch (const std::exception &)
           {
@@ -467,8 +450,8 @@ namespace gradcontact::cases
           e.flexibility_seconds[edge_refinement] = 0;
         }
       else
-        solution = solve_lambda(e.material, plan.fe_profile, e.settings, e.medium, plan.profile, plan.dgamma, base,
-                                plan.controls, s.adhesion.curve_points);
+        solution = solve_lambda(DugdaleModel::on_plain_meshes(e.scene, base.strength, e.level), e.medium, plan.profile,
+                                plan.dgamma, base, plan.controls, s.adhesion.curve_points);
       ++shard.computed;
       cache.put(key, solution.to_json());
       return solution;
