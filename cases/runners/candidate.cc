@@ -259,7 +259,7 @@ namespace gradcontact::cases
           if (!(deviation <= worst))
             worst = deviation, worst_x = curve.x[i];
         }
-      table.write_csv(folder / (stem + ".csv"));
+      write_table_csv(folder, stem, table);
       if (plots)
         {
           Series mdr_series{"numerical MDR", curve.x, reference, false, true};

@@ -314,11 +314,12 @@ namespace gradcontact::cases
     /// The outputs of a Tabor-parameter map as its points fill them: map.csv, map.md's parts, the plots' curves.
     struct CohesiveTables
     {
-      explicit CohesiveTables(Table points)
+      CohesiveTables(Table points, const Scene &s)
         : csv(std::move(points))
+        , thresholds(threshold_table({"k", "control"}, s.map.thresholds, "when lambda"))
       {}
-      Table csv;
-      std::ostringstream md, thresholds_md;
+      Table csv, thresholds; ///< map.csv; map.md's threshold table, a row per k and control
+      std::ostringstream md;
       std::map<std::string, std::vector<Series>> plots;
     };
 
@@ -566,7 +567,7 @@ namespace gradcontact::cases
           curve.x.push_back(st.d / std::abs(jkr_force.depth));
           curve.y.push_back(st.F / std::abs(jkr_force.force));
         }
-      path.write_csv(folder / (path_name + ".csv"));
+      write_table_csv(folder, path_name, path);
       t.plots["path k = " + format(k)].push_back(curve);
     }
 
@@ -633,10 +634,10 @@ namespace gradcontact::cases
           }
       t.plots["pull-off force"].push_back(curve);
       t.plots["deviation"].push_back(deviation);
-      t.thresholds_md << "| " << format(k) << " | " << control_name(force_control) << " |";
+      std::vector<Cell> row{format(k), control_name(force_control)};
       for (const double threshold : s.map.thresholds)
-        t.thresholds_md << " " << (r.empty() ? std::string("no point") : threshold_cell(r, d, threshold, true)) << " |";
-      t.thresholds_md << '\n';
+        row.push_back(r.empty() ? std::string("no point") : threshold_cell(r, d, threshold, true));
+      t.thresholds.add(std::move(row));
       trend_rows(plan, k, force_control, points, r, d, dd, result);
     }
 
@@ -747,25 +748,24 @@ namespace gradcontact::cases
     /// One (k, control) row of the MDR threshold table, its lines of mdr_thresholds.csv and its points of the
     /// threshold curves.
     void mdr_threshold_row(const Scene &s, const CohesivePlan &plan, const double k, const bool force_control,
-                           std::ostream &mdr_md, Table &mdr_csv, std::map<std::string, Series> &curves)
+                           Table &mdr_md, Table &mdr_csv, std::map<std::string, Series> &curves)
     {
       const gradcontact::Medium medium =
         gradcontact::medium(gradcontact::GradedHalfSpace{s.material.E0, s.material.c0, k, s.material.nu});
-      mdr_md << "| " << format(k) << (std::find(plan.ks.begin(), plan.ks.end(), k) != plan.ks.end() ? " *" : "")
-             << " | " << control_name(force_control) << " |";
+      std::vector<Cell> row{format(k) + (std::find(plan.ks.begin(), plan.ks.end(), k) != plan.ks.end() ? " *" : ""),
+                            control_name(force_control)};
       for (const double t : s.map.thresholds)
         {
           std::optional<double> at;
           try
             {
               at = graded_maugis_dugdale_threshold(medium, plan.profile, plan.dgamma, force_control, t);
-              mdr_md << " " << (!at ? "not within it up to 1000" : *at <= 1e-2 ? "at every lambda from 0.01"
-                                                                                : ">= " + format(*at))
-                     << " |";
+              row.push_back(!at ? "not within it up to 1000" : *at <= 1e-2 ? "at every lambda from 0.01"
+                                                                           : ">= " + format(*at));
             }
           catch (const std::exception &e)
             {
-              mdr_md << " - (" << e.what() << ") |"; // e.g. no JKR pull-off for this tip at this k
+              row.push_back("- (" + std::string(e.what()) + ")"); // e.g. no JKR pull-off for this tip at this k
             }
           mdr_csv.add({k, control_name(force_control), t, at ? *at : std::numeric_limits<double>::quiet_NaN()});
           const std::string name  = control_name(force_control) + ", within " + percent(t);
@@ -778,7 +778,7 @@ namespace gradcontact::cases
               curve.y.push_back(*at);
             }
         }
-      mdr_md << '\n';
+      mdr_md.add(std::move(row));
     }
 
     /// The thresholds of the Maugis-Dugdale solution of the graded medium (MDR) for every k from -0.9 to 0.9: the
@@ -786,22 +786,22 @@ namespace gradcontact::cases
     /// mdr_thresholds.csv and its plot; returns the section of map.md.
     std::string mdr_thresholds(const Scene &s, const fs::path &folder, const CohesivePlan &plan)
     {
-      std::ostringstream mdr_md;
+      std::ostringstream intro;
+      Table mdr_md = threshold_table({"k", "control"}, s.map.thresholds, "when lambda");
       Table mdr_csv({Column::csv_only("k"), Column::csv_only("control"), Column::csv_only("threshold"),
                      Column::csv_only("lambda")},
                     Number{'g', 10});
-      mdr_md << "\n## Where the Maugis-Dugdale solution of the graded medium (MDR) holds JKR, every k\n\n"
+      intro << "\n## Where the Maugis-Dugdale solution of the graded medium (MDR) holds JKR, every k\n\n"
              << "The same Dugdale law solved by the MDR (analytic/maugis_dugdale.h; Maugis' closed form at k = 0), "
                 "which the FE pull-offs above are checked against (errors.csv): the smallest lambda from which its "
                 "pull-off stays within the threshold of the chapter's JKR pull-off up to lambda = 1000 (4 lambdas per "
                 "decade from 0.01, then the crossing by TOMS 748; no jump under displacement control counts as 100 %). "
-                "k of the FE map marked *.\n\n"
-             << threshold_table_head({"k", "control"}, s.map.thresholds, "when lambda");
+                "k of the FE map marked *.\n\n";
       std::map<std::string, Series> curves;
       for (const double k : dense_exponents(plan.ks))
         for (const bool force_control : plan.controls)
           mdr_threshold_row(s, plan, k, force_control, mdr_md, mdr_csv, curves);
-      mdr_csv.write_csv(folder / "mdr_thresholds.csv");
+      write_table_csv(folder, "mdr_thresholds", mdr_csv);
       if (s.outputs.plots)
         {
           std::vector<Series> series;
@@ -811,17 +811,16 @@ namespace gradcontact::cases
                      s.info.name + ": Maugis-Dugdale (MDR) within the threshold of JKR from lambda", "k",
                      "Tabor parameter lambda", series, false, true);
         }
-      return mdr_md.str();
+      return intro.str() + mdr_md.md();
     }
 
-    /// Writes map.md whole or not at all.
-    void write_cohesive_md(const fs::path &folder, const CohesiveTables &t, const std::string &mdr_md)
+    /// map.md: the panels, the thresholds of the FE map and how they are read, and the MDR's thresholds.
+    std::string cohesive_md(const CohesiveTables &t, const std::string &mdr_md)
     {
-      write_text_atomically(folder / "map.md",
-                            t.md.str() + t.thresholds_md.str() +
-                              "\nThe thresholds interpolate log-log between the last lambda outside and the next one "
-                              "toward large lambda (the JKR limit); every lambda of the map beyond it is within.\n" +
-                              mdr_md);
+      return t.md.str() + "## Where the chapter's JKR pull-off force holds\n\n" + t.thresholds.md() +
+             "\nThe thresholds interpolate log-log between the last lambda outside and the next one toward large lambda "
+             "(the JKR limit); every lambda of the map beyond it is within.\n" +
+             mdr_md;
     }
 
     /// The plots of the map: F_c / F_c,JKR, the path F(d) of every k, and |deviation| with the thresholds as lines.
@@ -852,10 +851,8 @@ namespace gradcontact::cases
     const auto  start  = std::chrono::steady_clock::now();
     SceneResult result = started(s, folder);
     const CohesivePlan plan = plan_cohesive_map(s);
-    CohesiveTables t{pull_off_table()};
+    CohesiveTables t(pull_off_table(), s);
     t.md << cohesive_intro(s, plan);
-    t.thresholds_md << "## Where the chapter's JKR pull-off force holds\n\n"
-                    << threshold_table_head({"k", "control"}, s.map.thresholds, "when lambda");
     for (const double k : plan.ks)
       run_exponent(s, folder, plan, k, cache, shard, index, t, result, verbose);
     // A shard's report is partial and discarded: its points are in the cache, no map or plot is drawn for it.
@@ -866,8 +863,7 @@ namespace gradcontact::cases
       }
     add_maugis_dugdale_curves(s, plan, t.plots["pull-off force"]);
     const std::string mdr_md = plan.smooth ? std::string() : mdr_thresholds(s, folder, plan);
-    t.csv.write_csv(folder / "map.csv");
-    write_cohesive_md(folder, t, mdr_md);
+    write_table_files(folder, "map", t.csv, cohesive_md(t, mdr_md));
     if (s.outputs.plots)
       plot_cohesive_map(s, folder, plan, t.plots);
     result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

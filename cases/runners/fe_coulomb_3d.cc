@@ -364,38 +364,38 @@ namespace gradcontact::cases
     /// The table of the coupling's effect, one row per panel, and the note on the stick zone's spread.
     std::string coupling_table(const std::vector<CoulombPanel> &panels)
     {
-      std::ostringstream md;
-      md << "## The coupling's effect |FE / FE decoupled - 1|\n\n| k | nu | mu |";
+      std::vector<Column> columns{Column::md_only("k"), Column::md_only("nu"), Column::md_only("mu")};
       for (const MapQuantity &q : map_quantities())
-        md << " " << q.name << " |";
-      md << " FE floor: F_x (9.80), loop area (9.86) | slip direction's effect: F_x, loop area | stick zone "
-            "spread / a | slip direction sum|Q_y|/sum|Q| | DoFs | s | memory MiB |\n|---|---|---|";
-      for (std::size_t i = 0; i < map_quantities().size() + 7; ++i)
-        md << "---|";
-      md << '\n';
+        columns.push_back(Column::md_only(q.name));
+      for (const char *head : {"FE floor: F_x (9.80), loop area (9.86)", "slip direction's effect: F_x, loop area",
+                               "stick zone spread / a", "slip direction sum|Q_y|/sum|Q|", "DoFs", "s", "memory MiB"})
+        columns.push_back(Column::md_only(head));
+      Table table(columns);
       for (const CoulombPanel &p : panels)
         {
           const CoulombSphereResult &r = p.result;
-          md << "| " << format(p.k) << " | " << (p.holl ? "1/(2 + k) = " : "") << format(p.nu) << " | " << format(p.mu)
-             << " |";
+          std::vector<Cell> row{format(p.k), (p.holl ? "1/(2 + k) = " : "") + format(p.nu), format(p.mu)};
           if (!p.error.empty())
             {
-              md << " failed: " << p.error << " |";
-              for (std::size_t i = 1; i < map_quantities().size() + 4; ++i)
-                md << " - |";
+              row.push_back("failed: " + p.error);
+              row.resize(row.size() + map_quantities().size() + 3); // missing: "-"
             }
           else
             {
               for (const MapQuantity &q : map_quantities())
-                md << " " << format(std::abs(q.coupling(r))) << " |";
-              md << " " << format(std::abs(r.decoupled.loading_deviation)) << ", "
-                 << format(std::abs(energy_deviation(r.decoupled, r))) << " | " << format(r.direction_loading) << ", "
-                 << format(std::abs(r.direction_energy)) << " | " << format(r.fe.out_of_round) << " ("
-                 << format(r.decoupled.out_of_round) << " decoupled) | " << format(r.fe.slip_force_y) << " ("
-                 << format(r.decoupled.slip_force_y) << " decoupled) |";
+                row.push_back(format(std::abs(q.coupling(r))));
+              row.push_back(format(std::abs(r.decoupled.loading_deviation)) + ", " +
+                            format(std::abs(energy_deviation(r.decoupled, r))));
+              row.push_back(format(r.direction_loading) + ", " + format(std::abs(r.direction_energy)));
+              row.push_back(format(r.fe.out_of_round) + " (" + format(r.decoupled.out_of_round) + " decoupled)");
+              row.push_back(format(r.fe.slip_force_y) + " (" + format(r.decoupled.slip_force_y) + " decoupled)");
             }
-          md << " " << r.dofs << " | " << format(r.seconds) << " | " << format(r.memory_mb) << " |\n";
+          for (const Cell &last : {Cell(r.dofs), Cell(format(r.seconds)), Cell(format(r.memory_mb))})
+            row.push_back(last);
+          table.add(std::move(row));
         }
+      std::ostringstream md;
+      md << "## The coupling's effect |FE / FE decoupled - 1|\n\n" << table.md();
       md << "\nA stick-zone spread is the largest difference of the stick radius between the rays +x, -x and +y "
             "(a disc: 0, up to the node spacing there, "
          << "the bracket half-width of the stick radius reaching "
@@ -417,23 +417,21 @@ namespace gradcontact::cases
       std::ostringstream md;
       md << "## Where the chapter's tangential theory holds\n\nThe " << plan.tuple << " of the map where the coupling's "
             "effect on a quantity is within each threshold (the chapter's decoupled theory holds there up to the FE "
-            "floor).\n\n"
-         << threshold_table_head({"quantity", "chapter"}, s.map.thresholds, "at");
+            "floor).\n\n";
+      Table table = threshold_table({"quantity", "chapter"}, s.map.thresholds, "at");
       for (const MapQuantity &q : map_quantities())
         {
-          md << "| " << q.name << " | " << q.chapter << " |";
+          std::vector<Cell> row{q.name, q.chapter};
           for (const double t : s.map.thresholds)
-            {
-              if (resolution.count(q.name) == 0)
-                md << " FE resolution not measured (no Holl's-ratio panel) |";
-              else if (!(resolution.at(q.name) <= t / 3))
-                md << " below the FE resolution (" << format(resolution.at(q.name)) << ") |";
-              else
-                md << " " << threshold_cell(panels, t, q.coupling, false, plan.multiple_mu, plan.tuple) << " |";
-            }
-          md << '\n';
+            if (resolution.count(q.name) == 0)
+              row.push_back("FE resolution not measured (no Holl's-ratio panel)");
+            else if (!(resolution.at(q.name) <= t / 3))
+              row.push_back("below the FE resolution (" + format(resolution.at(q.name)) + ")");
+            else
+              row.push_back(threshold_cell(panels, t, q.coupling, false, plan.multiple_mu, plan.tuple));
+          table.add(std::move(row));
         }
-      md << "\nThe resolution of each quantity is its coupling at Holl's ratio (";
+      md << table.md() << "\nThe resolution of each quantity is its coupling at Holl's ratio (";
       bool first = true;
       for (const auto &[name, value] : resolution)
         {
@@ -453,17 +451,17 @@ namespace gradcontact::cases
             "in the annulus. The decoupled model against the same model with every tangential force along x "
             "(fem::along_load) is that assumption's effect (a difference on one mesh, in which its FE error largely "
             "cancels; its mesh convergence: fem/doc/distributed-and-3d.md, \"3D model\"). The "
-         << plan.tuple << " of the map (Holl's ratio included) where it is within each threshold:\n\n"
-         << threshold_table_head({"quantity", "chapter"}, s.map.thresholds, "at");
+         << plan.tuple << " of the map (Holl's ratio included) where it is within each threshold:\n\n";
+      Table table = threshold_table({"quantity", "chapter"}, s.map.thresholds, "at");
       for (const MapQuantity &q : map_quantities())
         if (q.direction)
           {
-            md << "| " << q.name << " | " << q.chapter << " |";
+            std::vector<Cell> row{q.name, q.chapter};
             for (const double t : s.map.thresholds)
-              md << " " << threshold_cell(panels, t, q.direction, true, plan.multiple_mu, plan.tuple) << " |";
-            md << '\n';
+              row.push_back(threshold_cell(panels, t, q.direction, true, plan.multiple_mu, plan.tuple));
+            table.add(std::move(row));
           }
-      return md.str();
+      return md.str() + table.md();
     }
 
     /// The plots over nu: the coupling's effect on every quantity, and the slip direction's (Holl's ratio included).
@@ -486,10 +484,9 @@ namespace gradcontact::cases
     void write_coulomb_map(const Scene &s, const std::filesystem::path &folder, const CoulombMapPlan &plan,
                            const std::vector<CoulombPanel> &panels, const std::map<std::string, double> &resolution)
     {
-      tabulate(coulomb_fields(s), panels, Number{'g', 10}).write_csv(folder / "map.csv");
-      write_text(folder / "map.md", coulomb_intro(s, plan) + coupling_table(panels) +
-                                      coupling_thresholds(s, plan, panels, resolution) +
-                                      direction_thresholds(s, plan, panels));
+      write_table_files(folder, "map", tabulate(coulomb_fields(s), panels, Number{'g', 10}),
+                        coulomb_intro(s, plan) + coupling_table(panels) + coupling_thresholds(s, plan, panels, resolution) +
+                        direction_thresholds(s, plan, panels));
       if (s.outputs.plots)
         plot_coulomb_map(s, folder, plan, panels);
     }
