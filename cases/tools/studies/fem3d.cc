@@ -32,7 +32,7 @@
 #include <fem/modulus/modulus.h>
 #include <fem/contact/unilateral_contact.h>
 
-#include "study_arguments.h"
+#include "study.h"
 
 #include <cases/model/coulomb_sphere.h>
 
@@ -716,22 +716,10 @@ namespace
 
 int main(int argc, char **argv)
 {
-  dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
-  const MPI_Comm world = MPI_COMM_WORLD;
-  const bool     root  = dealii::Utilities::MPI::this_mpi_process(world) == 0;
-  try
-    {
-      const StudyArguments args(argc, argv, "fem3d");
-      const Setup          setup = parse_setup(args);
+  return gradcontact::studies::distributed_main(
+    argc, argv, "fem3d", [](const StudyArguments &args, const MPI_Comm world, const bool root) {
+      const Setup setup = parse_setup(args);
       return args.text("load", "all") == "sphere" ? run_sphere(args, world, root, setup) :
                                                     run_punches(args, world, root, setup);
-    }
-  catch (const std::exception &e)
-    {
-      std::cerr << "fem3d (process " << dealii::Utilities::MPI::this_mpi_process(world) << "): " << e.what() << '\n';
-      // An exception on some processes only would leave the others waiting in a collective: end them all.
-      if (dealii::Utilities::MPI::n_mpi_processes(world) > 1)
-        MPI_Abort(world, 1);
-      return 1;
-    }
+    });
 }
