@@ -151,16 +151,8 @@ namespace gradcontact::cases
     /// The quantity's name in the plots' file names.
     std::string name(const Quantity q)
     {
-      switch (q)
-        {
-          case Quantity::force:
-            return "force";
-          case Quantity::contact_radius:
-            return "contact radius";
-          case Quantity::pressure:
-            break;
-        }
-      return "pressure";
+      static const char *const names[] = {"contact radius", "force", "pressure"}; // in the order of Quantity
+      return names[static_cast<int>(q)];
     }
 
     double deviation_of(const MapPoint &p, const Quantity q)
@@ -293,7 +285,6 @@ namespace gradcontact::cases
         {
           const UnilateralPanel panel = unilateral_panel(s, k, s.material.nu);
           const Scene &g = panel.scene;
-          const FeModel &model = panel.model;
           const AnalyticReference &rigid = *panel.reference;
           fem::UnilateralLoad load = panel.load;
           // The contact grows toward the homogeneous pairing's radius at this depth as E1 / E0 falls.
@@ -324,9 +315,7 @@ namespace gradcontact::cases
           // The map's solver: a homogeneous indenter E0, nu_i; the rigid limit first.
           std::unique_ptr<fem::UnilateralContactSolver> solver;
           const double setup = seconds_of([&] {
-            solver = std::make_unique<fem::UnilateralContactSolver>(
-              model.material, model.settings.mesh, model.settings.discretization, 1.25 * widest, fem::SurfaceRefinement{},
-              fem::Material{std::make_shared<fem::PowerLawModulus>(g.material.E0, g.material.c0, 0.), s.indenter.nu});
+            solver = elastic_indenter_solver(s, panel, 1.25 * widest);
           });
           fem::UnilateralResult r;
           solver->set_indenter_modulus_factor(std::numeric_limits<double>::infinity());
