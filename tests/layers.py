@@ -26,7 +26,7 @@ FEM_ORDER = ['base', 'modulus', 'grid', 'io', 'elasticity', 'linear_algebra', 'b
              'adhesion', 'tangential']
 MAX_LEVELS = 6
 STUDIES = os.path.join('cases', 'tools', 'studies')
-# fem3d runs the Coulomb sphere's path of the scene library (runners/fe_coulomb_3d.h), shared with the Coulomb map.
+# fem3d runs the Coulomb sphere's path of the scene library (model/coulomb_sphere.h), shared with the Coulomb map.
 STUDIES_WITH_CASES = {os.path.join(STUDIES, 'fem3d.cc')}
 INCLUDE = re.compile(r'^\s*#\s*include\s*[<"]([^>"]+)[>"]', re.M)
 OFSTREAM = re.compile(r'\bofstream\b')

@@ -290,10 +290,10 @@ namespace gradcontact::cases
 
     int finish(const std::vector<SceneResult> &results, const Options &o)
     {
-      const std::string name = o.shards == 1 ? "summary.md"
+      const std::string stem = o.shards == 1 ? "summary"
                                               : "summary.shard-" + std::to_string(o.shard) + "-of-" +
-                                                  std::to_string(o.shards) + ".md";
-      const fs::path summary = o.reports / name;
+                                                  std::to_string(o.shards);
+      const fs::path summary = o.reports / (stem + ".md");
       Table table({Column::md_only("scene"), Column::md_only("comparisons"), Column::md_only("worst error"),
                    Column::md_only("failed"), Column::md_only("seconds"), Column::md_only("report")});
       for (const SceneResult &s : results)
@@ -307,7 +307,7 @@ namespace gradcontact::cases
             "[figures/index.md](figures/index.md) (written by `gradcontact figures`).\n"
           : "\nThe chapter's figures, each FE point checked against the closed form, are drawn by `gradcontact "
             "figures cases/figures` (not drawn into this folder yet).\n";
-      write_text_atomically(summary, "# gradcontact summary\n\n" + table.md() + figures);
+      write_document(o.reports, stem, "# gradcontact summary\n\n" + table.md() + figures);
       const bool all_pass = std::all_of(results.begin(), results.end(), [](const SceneResult &s) { return s.pass(); });
       if (!o.quiet)
         std::cout << "summary: " << summary.string() << (all_pass ? " (all pass)" : " (FAILURES)") << "\n";

@@ -136,14 +136,23 @@ namespace gradcontact::cases
     return surface_of(contact->profiles_at_delta(a, delta, pressure_radii, displacement_radii));
   }
 
+  namespace
+  {
+    /// The scene's indenter (Load/type); an error naming the scene when it is no curved profile, which `model` needs.
+    fem::Profile curved_indenter(const Scene &s, const std::string &model)
+    {
+      const std::optional<fem::Profile> profile = fe_indenter_profile(s.load);
+      if (!profile)
+        throw std::invalid_argument("scene " + s.file + ": " + model + " needs a curved indenter (Load/type)");
+      return *profile;
+    }
+  } // namespace
+
   DugdaleModel::DugdaleModel(const Scene &s, const double sigma0, const unsigned int level,
                              const bool on_contract_ladder)
   {
     const fem::Material material = fe_material(s);
-    const std::optional<fem::Profile> profile = fe_indenter_profile(s.load);
-    if (!profile)
-      throw std::invalid_argument("scene " + s.file + ": a cohesive zone needs a curved indenter (Load/type)");
-    contact = std::make_unique<fem::CohesiveContact>(material, *profile,
+    contact = std::make_unique<fem::CohesiveContact>(material, curved_indenter(s, "a cohesive zone"),
                                                      fem::DugdaleLaw{sigma0, s.adhesion.work_of_adhesion},
                                                      adhesive_settings(s, material, level, on_contract_ladder));
   }
@@ -156,16 +165,48 @@ namespace gradcontact::cases
       scene_settings(s, material, finest_refinement(s)));
   }
 
-  DugdaleModel::~DugdaleModel() = default;
+  DugdaleModel::DugdaleModel(std::unique_ptr<fem::CohesiveContact> contact)
+    : contact(std::move(contact))
+  {}
 
-  const fem::CohesiveState &DugdaleModel::state(const double a)
+  DugdaleModel DugdaleModel::on_plain_meshes(const Scene &s, const double sigma0, const unsigned int level)
   {
-    return contact->state(a);
+    const fem::Material material = fe_material(s);
+    return DugdaleModel(std::make_unique<fem::CohesiveContact>(
+      material, curved_indenter(s, "a cohesive zone"), fem::DugdaleLaw{sigma0, s.adhesion.work_of_adhesion},
+      [s, material, level](const double a) { return fe_settings(s, material, a, level); }));
   }
 
-  fem::CohesiveCriticalState DugdaleModel::critical_state(const Control control, const double a0)
+  DugdaleModel::DugdaleModel(DugdaleModel &&) noexcept = default;
+  DugdaleModel::~DugdaleModel() = default;
+
+  namespace
   {
-    return contact->critical_state(fe_control(control), a0);
+    CohesivePoint cohesive_point(const fem::CohesiveState &st)
+    {
+      return CohesivePoint{st.radius, st.zone_radius, st.depth,      st.force,
+                           st.n_dofs, st.seconds,     st.consistent, st.message};
+    }
+  } // namespace
+
+  CohesivePoint DugdaleModel::state(const double a)
+  {
+    return cohesive_point(contact->state(a));
+  }
+
+  CohesiveCriticalPoint DugdaleModel::critical_state(const Control control, const double a0)
+  {
+    const fem::CohesiveCriticalState c = contact->critical_state(fe_control(control), a0);
+    return CohesiveCriticalPoint{cohesive_point(c.state), c.at_vanishing_contact, c.states_solved, c.max_dofs,
+                                 c.seconds};
+  }
+
+  std::vector<std::pair<double, CohesivePoint>> DugdaleModel::states() const
+  {
+    std::vector<std::pair<double, CohesivePoint>> out;
+    for (const auto &[a, st] : contact->states())
+      out.emplace_back(a, cohesive_point(st));
+    return out;
   }
 
   LennardJonesTrace trace_lennard_jones(const Scene &s, const fem::Profile &indenter, const double critical_radius,
@@ -238,14 +279,36 @@ namespace gradcontact::cases
     return points;
   }
 
-  LennardJonesTrace trace_lennard_jones(fem::SmoothCohesiveContact &contact, const double strength, const double dgamma)
+  LennardJonesModel::LennardJonesModel(const Scene &s, const double critical_radius, const unsigned int level,
+                                       const double edge_refinement)
+  {
+    const fem::Material material = fe_material(s);
+    fem::SmoothCohesionParameters parameters;
+    parameters.follow_edge = true;
+    parameters.edge_band   = parameters.edge_band / std::sqrt(edge_refinement);
+    parameters.max_steps   = 20000; // the path's length grows with lambda: thousands of steps at 10
+    contact                = std::make_unique<fem::SmoothCohesiveContact>(
+      material, curved_indenter(s, "a Lennard-Jones path"),
+      fem::smooth_cohesion_settings(material, critical_radius, std::pow(2.0, level), edge_refinement), parameters);
+  }
+
+  LennardJonesModel::~LennardJonesModel() = default;
+
+  double rigid_lennard_jones_pull_off(const Scene &s, const double strength)
+  {
+    return fem::rigid_pull_off(fem::LennardJonesLaw::with_max_stress(strength, s.adhesion.work_of_adhesion),
+                               curved_indenter(s, "a rigid pull-off"))
+      .force;
+  }
+
+  LennardJonesTrace LennardJonesModel::trace(const double strength, const double dgamma)
   {
     const fem::LennardJonesLaw law = fem::LennardJonesLaw::with_max_stress(strength, dgamma);
     LennardJonesTrace          trace;
     trace.separation = law.separation;
     try
       {
-        trace.path = contact.trace(law);
+        trace.path = contact->trace(law);
       }
     catch (const std::exception &e)
       {

@@ -6,8 +6,9 @@
 //     contract's ladder. Its answers are the model's own small types: an adhesive state (a, d, F), a critical
 //     state with what its search cost, the surface p(r), w(r) of a state.
 //   - DugdaleModel: the cohesive-zone model of fem/adhesion/cohesive_zone.h (Dugdale's law sigma_0, dgamma) on the
-//     same meshes.
-//   - trace_lennard_jones: the smooth Lennard-Jones model of fem/adhesion/smooth_cohesion.h along its path.
+//     same meshes, or on the plain meshes of a Tabor-parameter map; its answers are cohesive states of its own type.
+//   - trace_lennard_jones: the smooth Lennard-Jones model of fem/adhesion/smooth_cohesion.h along its path;
+//     LennardJonesModel, that model built once for the paths of several laws (a Tabor-parameter map's lambdas).
 //   - optimal_profile_surface: the surface under the tension p = -sigma_th on r <= a (9.69-9.74).
 #ifndef GRADCONTACT_CASES_FE_ADHESIVE_H
 #define GRADCONTACT_CASES_FE_ADHESIVE_H
@@ -23,6 +24,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace gradcontact::cases
@@ -95,6 +97,28 @@ namespace gradcontact::cases
     std::unique_ptr<fem::AdhesiveContact> contact;
   };
 
+  /// A state of a cohesive zone: contact radius a, the zone's outer end c, depth d and force F (tensile negative), the
+  /// DoFs of its last mesh and its seconds; `consistent` false when a check of fem/adhesion/cohesive_zone.h fails,
+  /// `message` saying which.
+  struct CohesivePoint
+  {
+    double       radius = 0, zone_radius = 0, depth = 0, force = 0;
+    unsigned int n_dofs  = 0;
+    double       seconds = 0;
+    bool         consistent = true;
+    std::string  message;
+  };
+
+  /// A pull-off of a cohesive zone and what its search cost; `at_vanishing_contact`: the walk reached the smallest
+  /// radius without a minimum, `state` the smallest-radius state solved before it.
+  struct CohesiveCriticalPoint
+  {
+    CohesivePoint state;
+    bool          at_vanishing_contact = false;
+    unsigned int  states_solved = 0, max_dofs = 0;
+    double        seconds = 0;
+  };
+
   /// The cohesive-zone FE of an adhesive paraboloid or power-law scene under Dugdale's law of strength sigma_0 and
   /// Adhesion/work of adhesion, on the meshes of adhesive_settings(s, ..., level, on_contract_ladder).
   class DugdaleModel
@@ -104,15 +128,23 @@ namespace gradcontact::cases
     /// A custom rigid indenter (a candidate's profile) under Adhesion/cohesive strength, on the scene's meshes at its
     /// finest level.
     DugdaleModel(const Scene &s, const fem::Profile &indenter);
+    /// The scene's indenter under sigma_0 on the meshes of fe_settings at the uniform refinement `level` as they are
+    /// (no condensed far field): a body of a Tabor-parameter map, one model per lambda.
+    static DugdaleModel on_plain_meshes(const Scene &s, double sigma0, unsigned int level);
+    DugdaleModel(DugdaleModel &&) noexcept;
     ~DugdaleModel();
 
     /// The state of contact radius a (solved on first use, cached).
-    const fem::CohesiveState &state(double a);
+    CohesivePoint state(double a);
 
     /// Pull-off under `control`, the walk started at the radius a0.
-    fem::CohesiveCriticalState critical_state(Control control, double a0);
+    CohesiveCriticalPoint critical_state(Control control, double a0);
+
+    /// Every state solved so far, ascending in the contact radius asked for (the first of each pair).
+    std::vector<std::pair<double, CohesivePoint>> states() const;
 
   private:
+    explicit DugdaleModel(std::unique_ptr<fem::CohesiveContact> contact);
     std::unique_ptr<fem::CohesiveContact> contact;
   };
 
@@ -145,9 +177,27 @@ namespace gradcontact::cases
   };
   LennardJonesTrace trace_lennard_jones(const Scene &s, const fem::Profile &indenter, double critical_radius,
                                         double stop_force);
-  /// The path of a built Lennard-Jones model under the law of largest attraction `strength` and work `dgamma`; a
-  /// trace that throws is a path that did not converge, its message the error's (`failure` stays empty).
-  LennardJonesTrace trace_lennard_jones(fem::SmoothCohesiveContact &contact, double strength, double dgamma);
+
+  /// The smooth Lennard-Jones FE of the scene's indenter (Load/type) built once for the paths of several laws: its
+  /// mesh graded toward `critical_radius` and refined 2^level times, the edge's cells `edge_refinement` times finer
+  /// (fem::smooth_cohesion_settings), the path following the contact edge.
+  class LennardJonesModel
+  {
+  public:
+    LennardJonesModel(const Scene &s, double critical_radius, unsigned int level, double edge_refinement);
+    ~LennardJonesModel();
+
+    /// The path under the law of largest attraction `strength` and work `dgamma`; a trace that throws is a path that
+    /// did not converge, its message the error's (`failure` stays empty).
+    LennardJonesTrace trace(double strength, double dgamma);
+
+  private:
+    std::unique_ptr<fem::SmoothCohesiveContact> contact;
+  };
+
+  /// The pull-off of the scene's rigid indenter under the Lennard-Jones law of largest attraction `strength` and
+  /// Adhesion/work of adhesion (Derjaguin's integral of the law over the tip, minimised in the depth).
+  double rigid_lennard_jones_pull_off(const Scene &s, double strength);
 
   /// The surface under p = -sigma_th (Adhesion/tensile strength) on r <= Load/a at Outputs/displacement radii, the
   /// optimal profile's FE (9.69-9.74): f_opt(r) = w_c - w(r).

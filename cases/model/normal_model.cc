@@ -117,6 +117,16 @@ namespace gradcontact::cases
     return f;
   }
 
+  std::unique_ptr<fem::UnilateralContactSolver> elastic_indenter_solver(const Scene &s, const UnilateralPanel &panel,
+                                                                        const double near_field)
+  {
+    const Scene &g = panel.scene;
+    return std::make_unique<fem::UnilateralContactSolver>(
+      panel.model.material, panel.model.settings.mesh, panel.model.settings.discretization, near_field,
+      fem::SurfaceRefinement{},
+      fem::Material{std::make_shared<fem::PowerLawModulus>(g.material.E0, g.material.c0, 0.), s.indenter.nu});
+  }
+
   fem::ContractResult solve_normal_contract(const Scene &s, const FeModel &model)
   {
     double w_max = 0;

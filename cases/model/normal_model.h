@@ -67,6 +67,12 @@ namespace gradcontact::cases
   };
   FrictionSolver friction_solver(const Scene &s, const UnilateralPanel &panel,
                                  const std::vector<double> &pressure_radii);
+
+  /// The elastic-indenter map's one solver of a panel: a homogeneous indenter of the half-space's E0 and Indenter/nu,
+  /// whose compliance each ratio E1/E0 rescales (set_indenter_modulus_factor; linear elasticity makes that exact), on
+  /// the panel's mesh with the near field `near_field` (m).
+  std::unique_ptr<fem::UnilateralContactSolver> elastic_indenter_solver(const Scene &s, const UnilateralPanel &panel,
+                                                                        double near_field);
 } // namespace gradcontact::cases
 
 #endif

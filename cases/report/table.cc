@@ -194,6 +194,22 @@ namespace gradcontact::cases
   void Table::write_csv(const fs::path &file) const { write_text(file, csv()); }
 
   // --- files -------------------------------------------------------------------------------------------------
+  void write_table_files(const fs::path &folder, const std::string &stem, const Table &table, const std::string &md)
+  {
+    write_table_csv(folder, stem, table);
+    write_text_atomically(folder / (stem + ".md"), md);
+  }
+
+  void write_table_csv(const fs::path &folder, const std::string &stem, const Table &table)
+  {
+    write_text_atomically(folder / (stem + ".csv"), table.csv());
+  }
+
+  void write_document(const fs::path &folder, const std::string &stem, const std::string &md)
+  {
+    write_text_atomically(folder / (stem + ".md"), md);
+  }
+
   void write_text(const fs::path &file, const std::string &text)
   {
     std::ofstream out(file);

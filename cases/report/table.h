@@ -156,6 +156,17 @@ namespace gradcontact::cases
     return table;
   }
 
+  /// The files of one table of a report in `folder`: <stem>.csv from `table` (every digit, for a program) and <stem>.md,
+  /// the document that shows it to a person (`md`: its title, its text and tables' md()), each whole or not at all. The
+  /// runners hand their tables and documents here; which files a report has and how they are written is decided in
+  /// report/.
+  void write_table_files(const std::filesystem::path &folder, const std::string &stem, const Table &table,
+                         const std::string &md);
+  /// <stem>.csv alone, from `table` (a table that a plot or a program reads, with no document of its own).
+  void write_table_csv(const std::filesystem::path &folder, const std::string &stem, const Table &table);
+  /// <stem>.md alone: a document whose tables have no CSV of their own (an index, a summary of other reports).
+  void write_document(const std::filesystem::path &folder, const std::string &stem, const std::string &md);
+
   /// Writes `text` into `file`, replacing it; throws std::runtime_error naming the file when it cannot be written.
   /// For a file in a folder that is itself put in place when complete (atomic_folder).
   void write_text(const std::filesystem::path &file, const std::string &text);

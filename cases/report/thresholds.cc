@@ -64,15 +64,15 @@ namespace gradcontact::cases
     return o.str();
   }
 
-  std::string threshold_table_head(const std::vector<std::string> &columns, const std::vector<double> &thresholds,
-                                   const std::string &when)
+  Table threshold_table(const std::vector<std::string> &columns, const std::vector<double> &thresholds,
+                        const std::string &when)
   {
-    std::string head = "|", rule = "|";
+    std::vector<Column> spec;
     for (const std::string &c : columns)
-      head += " " + c + " |", rule += "---|";
+      spec.push_back(Column::md_only(c));
     for (const double t : thresholds)
-      head += " within " + percent(t) + " " + when + " |", rule += "---|";
-    return head + "\n" + rule + "\n";
+      spec.push_back(Column::md_only("within " + percent(t) + " " + when));
+    return Table(spec);
   }
 
 

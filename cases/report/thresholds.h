@@ -3,6 +3,8 @@
 #ifndef GRADCONTACT_CASES_THRESHOLDS_H
 #define GRADCONTACT_CASES_THRESHOLDS_H
 
+#include "report/table.h"
+
 #include <optional>
 #include <string>
 #include <vector>
@@ -28,9 +30,11 @@ namespace gradcontact::cases
   /// A threshold as map.md writes it: 0.01 -> "1 %".
   std::string percent(double t);
 
-  /// The head of a threshold table of map.md: "| c1 | c2 | within 1 % <when> | ... |" and its rule line.
-  std::string threshold_table_head(const std::vector<std::string> &columns, const std::vector<double> &thresholds,
-                                   const std::string &when);
+  /// A threshold table of map.md, empty: the columns `columns` (what a row is about: k, a control, a quantity),
+  /// then one "within <t> <when>" per threshold, whose cells are threshold_cell's texts. Markdown only (map.csv
+  /// holds the points the thresholds are read from).
+  Table threshold_table(const std::vector<std::string> &columns, const std::vector<double> &thresholds,
+                        const std::string &when);
 } // namespace gradcontact::cases
 
 #endif

@@ -259,7 +259,7 @@ namespace gradcontact::cases
           if (!(deviation <= worst))
             worst = deviation, worst_x = curve.x[i];
         }
-      table.write_csv(folder / (stem + ".csv"));
+      write_table_csv(folder, stem, table);
       if (plots)
         {
           Series mdr_series{"numerical MDR", curve.x, reference, false, true};
@@ -480,11 +480,11 @@ namespace gradcontact::cases
     {
       DugdaleModel model(s, candidate_indenter(profile));
       const auto   state = [&](const double a) {
-        const fem::CohesiveState &st = model.state(a);
+        const CohesivePoint st = model.state(a);
         return FeAdhesiveState{st.radius, st.depth, st.force, st.n_dofs, st.seconds};
       };
       const auto critical = [&](const bool force_control) {
-        const fem::CohesiveCriticalState c = model.critical_state(control_of(force_control), s.load.a);
+        const CohesiveCriticalPoint c = model.critical_state(control_of(force_control), s.load.a);
         return FeAdhesiveState{c.state.radius, c.state.depth, c.state.force, c.max_dofs, c.seconds};
       };
       adhesive_model_rows(s, "FE (Dugdale)", " (JKR idealisation)", state, critical, radii, constants, rows, nullptr);

@@ -400,10 +400,10 @@ namespace gradcontact::cases
             const std::string name  = control_name(control) + ", Dugdale sigma_0 = " + format(sigma0) + " Pa";
             try
               {
-                const fem::CohesiveCriticalState c = model.critical_state(control, start);
-                start                              = c.state.radius;
-                const double t                     = seconds_since(level_start);
-                lr.dofs                            = std::max(lr.dofs, c.max_dofs);
+                const CohesiveCriticalPoint c = model.critical_state(control, start);
+                start                         = c.state.radius;
+                const double t                = seconds_since(level_start);
+                lr.dofs                       = std::max(lr.dofs, c.max_dofs);
                 if (verbose)
                   std::cerr << "  " << name << ": a_c = " << c.state.radius << ", c/a = " << c.state.zone_radius / c.state.radius
                             << ", F_c = " << c.state.force << " (" << c.states_solved << " FE states, " << format(c.seconds)

@@ -9,7 +9,6 @@
 
 #include <analytic/adhesion.h>
 #include <analytic/maugis_dugdale.h>
-#include <fem/adhesion/cohesive_zone.h>
 #include <fem/base/errors.h>
 #include <fem/adhesion/smooth_cohesion.h>
 
@@ -155,13 +154,11 @@ namespace gradcontact::cases
 
     /// Solves one lambda of the map (`base`: its lambda, strength, range and rigid limit) under `controls`, then
     /// the states of the curve points `curve_points` (a / a_c,JKR).
-    LambdaSolution solve_lambda(const fem::Material &material, const fem::Profile &fe_profile,
-                                const fem::CohesiveContact::SettingsFunction &settings, const gradcontact::Medium &medium,
-                                const JkrProfile &profile, const double dgamma, const Point &base,
-                                const std::vector<bool> &controls, const std::vector<double> &curve_points)
+    LambdaSolution solve_lambda(DugdaleModel contact, const gradcontact::Medium &medium, const JkrProfile &profile,
+                                const double dgamma, const Point &base, const std::vector<bool> &controls,
+                                const std::vector<double> &curve_points)
     {
       LambdaSolution solution;
-      fem::CohesiveContact contact(material, fe_profile, fem::DugdaleLaw{base.strength, dgamma}, settings);
       for (const bool force_control : controls)
         {
           Point p            = base;
@@ -173,7 +170,7 @@ namespace gradcontact::cases
           p.depth_jkr        = jkr.depth;
           try
             {
-              const auto c = contact.critical_state(fe_control(control), jkr.radius);
+              const CohesiveCriticalPoint c = contact.critical_state(control, jkr.radius);
               p.force      = c.state.force;
               p.radius     = c.state.radius;
               p.depth      = c.state.depth;
@@ -216,12 +213,12 @@ namespace gradcontact::cases
     /// path, through snap-in and both pull-offs, on the model of its k (the surface flexibility shared by every
     /// lambda). Its depths are shifted by the law's equilibrium separation eps (d + eps: the approach beyond the
     /// touching of the surfaces, JKR's depth); a displacement-controlled pull-off without a jump is "none".
-    LambdaSolution solve_lambda_smooth(fem::SmoothCohesiveContact &contact, const gradcontact::Medium &medium,
+    LambdaSolution solve_lambda_smooth(LennardJonesModel &model, const gradcontact::Medium &medium,
                                        const JkrProfile &profile, const double dgamma, const Point &base,
                                        const std::vector<bool> &controls)
     {
       LambdaSolution          solution;
-      const LennardJonesTrace trace = trace_lennard_jones(contact, base.strength, dgamma);
+      const LennardJonesTrace trace = model.trace(base.strength, dgamma);
       for (const bool force_control : controls)
         {
           Point p            = base;
@@ -287,7 +284,6 @@ namespace gradcontact::cases
       double dgamma = 0;
       bool paraboloid = true, smooth = false;
       JkrProfile profile;
-      fem::Profile fe_profile;
       std::vector<double> ks, lambdas;
       std::vector<bool> controls;
       std::string profile_name, law_name;
@@ -301,7 +297,6 @@ namespace gradcontact::cases
       plan.paraboloid = s.load.type == Type::paraboloid;
       plan.profile = plan.paraboloid ? JkrProfile{gradcontact::Paraboloid{s.load.R}}
                                      : JkrProfile{gradcontact::PowerLaw{s.load.n, s.load.A}};
-      plan.fe_profile = *fe_indenter_profile(s.load); // the scene refuses a map of any other Load/type
       plan.ks = s.map.exponents.empty() ? std::vector<double>{s.material.k} : s.map.exponents;
       plan.lambdas = s.map.values;
       std::sort(plan.lambdas.begin(), plan.lambdas.end());
@@ -319,11 +314,12 @@ namespace gradcontact::cases
     /// The outputs of a Tabor-parameter map as its points fill them: map.csv, map.md's parts, the plots' curves.
     struct CohesiveTables
     {
-      explicit CohesiveTables(Table points)
+      CohesiveTables(Table points, const Scene &s)
         : csv(std::move(points))
+        , thresholds(threshold_table({"k", "control"}, s.map.thresholds, "when lambda"))
       {}
-      Table csv;
-      std::ostringstream md, thresholds_md;
+      Table csv, thresholds; ///< map.csv; map.md's threshold table, a row per k and control
+      std::ostringstream md;
       std::map<std::string, std::vector<Series>> plots;
     };
 
@@ -360,18 +356,17 @@ namespace gradcontact::cases
       return md.str();
     }
 
-    /// The FE models of one k: the material and medium, the Dugdale law's settings, and (Lennard-Jones) one model
-    /// per edge refinement (lennard_jones_edge_refinement), built when a point is solved here (its mesh graded
+    /// One k of the map: the scene at k and its medium, the refinement level of its meshes, and (Lennard-Jones) one
+    /// model per edge refinement (lennard_jones_edge_refinement), built when a point is solved here (its mesh graded
     /// toward the force-controlled JKR radius, refined 2^level times), its construction's seconds counted toward the
-    /// first lambda it serves.
+    /// first lambda it serves. A Dugdale lambda builds its own model (its law is the model's).
     struct CohesiveExponent
     {
       double k = 0;
-      fem::Material material;
+      Scene scene;
       gradcontact::Medium medium{};
       unsigned int level = 0;
-      fem::CohesiveContact::SettingsFunction settings;
-      std::map<double, std::unique_ptr<fem::SmoothCohesiveContact>> smooth_contact;
+      std::map<double, std::unique_ptr<LennardJonesModel>> smooth_contact;
       std::map<double, double> flexibility_seconds;
     };
 
@@ -379,32 +374,22 @@ namespace gradcontact::cases
     {
       CohesiveExponent e;
       e.k = k;
-      Scene sk = s;
-      sk.material.k = k;
-      e.material = fe_material(sk);
+      e.scene = s;
+      e.scene.material.k = k;
       e.medium = gradcontact::medium(gradcontact::GradedHalfSpace{s.material.E0, s.material.c0, k, s.material.nu});
       e.level = finest_refinement(s);
-      const fem::Material material = e.material;
-      const unsigned int level = e.level;
-      e.settings = [sk, material, level](const double a) { return fe_settings(sk, material, a, level); };
       return e;
     }
 
     /// The Lennard-Jones model of `e` at `edge_refinement`, built on first use.
-    fem::SmoothCohesiveContact &smooth_model(CohesiveExponent &e, const CohesivePlan &plan, const double edge_refinement)
+    LennardJonesModel &smooth_model(CohesiveExponent &e, const CohesivePlan &plan, const double edge_refinement)
     {
       auto &model = e.smooth_contact[edge_refinement];
       if (!model)
         {
           const auto   start_model = std::chrono::steady_clock::now();
           const double a_c = jkr_critical(e.medium, plan.profile, plan.dgamma, gradcontact::Control::force).radius;
-          fem::SmoothCohesionParameters parameters;
-          parameters.follow_edge = true;
-          parameters.edge_band   = parameters.edge_band / std::sqrt(edge_refinement);
-          parameters.max_steps   = 20000; // the path's length grows with lambda: thousands of steps at 10
-          model                  = std::make_unique<fem::SmoothCohesiveContact>(
-            e.material, plan.fe_profile,
-            fem::smooth_cohesion_settings(e.material, a_c, std::pow(2.0, e.level), edge_refinement), parameters);
+          model = std::make_unique<LennardJonesModel>(e.scene, a_c, e.level, edge_refinement);
           e.flexibility_seconds[edge_refinement] =
             std::chrono::duration<double>(std::chrono::steady_clock::now() - start_model).count();
         }
@@ -426,8 +411,7 @@ namespace gradcontact::cases
       if (plan.smooth)
         try
           {
-            base.force_rigid =
-              fem::rigid_pull_off(fem::LennardJonesLaw::with_max_stress(base.strength, plan.dgamma), plan.fe_profile).force;
+            base.force_rigid = rigid_lennard_jones_pull_off(s, base.strength);
           }
         catch (const std::exception &)
           {
@@ -467,8 +451,8 @@ namespace gradcontact::cases
           e.flexibility_seconds[edge_refinement] = 0;
         }
       else
-        solution = solve_lambda(e.material, plan.fe_profile, e.settings, e.medium, plan.profile, plan.dgamma, base,
-                                plan.controls, s.adhesion.curve_points);
+        solution = solve_lambda(DugdaleModel::on_plain_meshes(e.scene, base.strength, e.level), e.medium, plan.profile,
+                                plan.dgamma, base, plan.controls, s.adhesion.curve_points);
       ++shard.computed;
       cache.put(key, solution.to_json());
       return solution;
@@ -583,7 +567,7 @@ namespace gradcontact::cases
           curve.x.push_back(st.d / std::abs(jkr_force.depth));
           curve.y.push_back(st.F / std::abs(jkr_force.force));
         }
-      path.write_csv(folder / (path_name + ".csv"));
+      write_table_csv(folder, path_name, path);
       t.plots["path k = " + format(k)].push_back(curve);
     }
 
@@ -650,10 +634,10 @@ namespace gradcontact::cases
           }
       t.plots["pull-off force"].push_back(curve);
       t.plots["deviation"].push_back(deviation);
-      t.thresholds_md << "| " << format(k) << " | " << control_name(force_control) << " |";
+      std::vector<Cell> row{format(k), control_name(force_control)};
       for (const double threshold : s.map.thresholds)
-        t.thresholds_md << " " << (r.empty() ? std::string("no point") : threshold_cell(r, d, threshold, true)) << " |";
-      t.thresholds_md << '\n';
+        row.push_back(r.empty() ? std::string("no point") : threshold_cell(r, d, threshold, true));
+      t.thresholds.add(std::move(row));
       trend_rows(plan, k, force_control, points, r, d, dd, result);
     }
 
@@ -764,25 +748,24 @@ namespace gradcontact::cases
     /// One (k, control) row of the MDR threshold table, its lines of mdr_thresholds.csv and its points of the
     /// threshold curves.
     void mdr_threshold_row(const Scene &s, const CohesivePlan &plan, const double k, const bool force_control,
-                           std::ostream &mdr_md, Table &mdr_csv, std::map<std::string, Series> &curves)
+                           Table &mdr_md, Table &mdr_csv, std::map<std::string, Series> &curves)
     {
       const gradcontact::Medium medium =
         gradcontact::medium(gradcontact::GradedHalfSpace{s.material.E0, s.material.c0, k, s.material.nu});
-      mdr_md << "| " << format(k) << (std::find(plan.ks.begin(), plan.ks.end(), k) != plan.ks.end() ? " *" : "")
-             << " | " << control_name(force_control) << " |";
+      std::vector<Cell> row{format(k) + (std::find(plan.ks.begin(), plan.ks.end(), k) != plan.ks.end() ? " *" : ""),
+                            control_name(force_control)};
       for (const double t : s.map.thresholds)
         {
           std::optional<double> at;
           try
             {
               at = graded_maugis_dugdale_threshold(medium, plan.profile, plan.dgamma, force_control, t);
-              mdr_md << " " << (!at ? "not within it up to 1000" : *at <= 1e-2 ? "at every lambda from 0.01"
-                                                                                : ">= " + format(*at))
-                     << " |";
+              row.push_back(!at ? "not within it up to 1000" : *at <= 1e-2 ? "at every lambda from 0.01"
+                                                                           : ">= " + format(*at));
             }
           catch (const std::exception &e)
             {
-              mdr_md << " - (" << e.what() << ") |"; // e.g. no JKR pull-off for this tip at this k
+              row.push_back("- (" + std::string(e.what()) + ")"); // e.g. no JKR pull-off for this tip at this k
             }
           mdr_csv.add({k, control_name(force_control), t, at ? *at : std::numeric_limits<double>::quiet_NaN()});
           const std::string name  = control_name(force_control) + ", within " + percent(t);
@@ -795,7 +778,7 @@ namespace gradcontact::cases
               curve.y.push_back(*at);
             }
         }
-      mdr_md << '\n';
+      mdr_md.add(std::move(row));
     }
 
     /// The thresholds of the Maugis-Dugdale solution of the graded medium (MDR) for every k from -0.9 to 0.9: the
@@ -803,22 +786,22 @@ namespace gradcontact::cases
     /// mdr_thresholds.csv and its plot; returns the section of map.md.
     std::string mdr_thresholds(const Scene &s, const fs::path &folder, const CohesivePlan &plan)
     {
-      std::ostringstream mdr_md;
+      std::ostringstream intro;
+      Table mdr_md = threshold_table({"k", "control"}, s.map.thresholds, "when lambda");
       Table mdr_csv({Column::csv_only("k"), Column::csv_only("control"), Column::csv_only("threshold"),
                      Column::csv_only("lambda")},
                     Number{'g', 10});
-      mdr_md << "\n## Where the Maugis-Dugdale solution of the graded medium (MDR) holds JKR, every k\n\n"
+      intro << "\n## Where the Maugis-Dugdale solution of the graded medium (MDR) holds JKR, every k\n\n"
              << "The same Dugdale law solved by the MDR (analytic/maugis_dugdale.h; Maugis' closed form at k = 0), "
                 "which the FE pull-offs above are checked against (errors.csv): the smallest lambda from which its "
                 "pull-off stays within the threshold of the chapter's JKR pull-off up to lambda = 1000 (4 lambdas per "
                 "decade from 0.01, then the crossing by TOMS 748; no jump under displacement control counts as 100 %). "
-                "k of the FE map marked *.\n\n"
-             << threshold_table_head({"k", "control"}, s.map.thresholds, "when lambda");
+                "k of the FE map marked *.\n\n";
       std::map<std::string, Series> curves;
       for (const double k : dense_exponents(plan.ks))
         for (const bool force_control : plan.controls)
           mdr_threshold_row(s, plan, k, force_control, mdr_md, mdr_csv, curves);
-      mdr_csv.write_csv(folder / "mdr_thresholds.csv");
+      write_table_csv(folder, "mdr_thresholds", mdr_csv);
       if (s.outputs.plots)
         {
           std::vector<Series> series;
@@ -828,17 +811,16 @@ namespace gradcontact::cases
                      s.info.name + ": Maugis-Dugdale (MDR) within the threshold of JKR from lambda", "k",
                      "Tabor parameter lambda", series, false, true);
         }
-      return mdr_md.str();
+      return intro.str() + mdr_md.md();
     }
 
-    /// Writes map.md whole or not at all.
-    void write_cohesive_md(const fs::path &folder, const CohesiveTables &t, const std::string &mdr_md)
+    /// map.md: the panels, the thresholds of the FE map and how they are read, and the MDR's thresholds.
+    std::string cohesive_md(const CohesiveTables &t, const std::string &mdr_md)
     {
-      write_text_atomically(folder / "map.md",
-                            t.md.str() + t.thresholds_md.str() +
-                              "\nThe thresholds interpolate log-log between the last lambda outside and the next one "
-                              "toward large lambda (the JKR limit); every lambda of the map beyond it is within.\n" +
-                              mdr_md);
+      return t.md.str() + "## Where the chapter's JKR pull-off force holds\n\n" + t.thresholds.md() +
+             "\nThe thresholds interpolate log-log between the last lambda outside and the next one toward large lambda "
+             "(the JKR limit); every lambda of the map beyond it is within.\n" +
+             mdr_md;
     }
 
     /// The plots of the map: F_c / F_c,JKR, the path F(d) of every k, and |deviation| with the thresholds as lines.
@@ -869,10 +851,8 @@ namespace gradcontact::cases
     const auto  start  = std::chrono::steady_clock::now();
     SceneResult result = started(s, folder);
     const CohesivePlan plan = plan_cohesive_map(s);
-    CohesiveTables t{pull_off_table()};
+    CohesiveTables t(pull_off_table(), s);
     t.md << cohesive_intro(s, plan);
-    t.thresholds_md << "## Where the chapter's JKR pull-off force holds\n\n"
-                    << threshold_table_head({"k", "control"}, s.map.thresholds, "when lambda");
     for (const double k : plan.ks)
       run_exponent(s, folder, plan, k, cache, shard, index, t, result, verbose);
     // A shard's report is partial and discarded: its points are in the cache, no map or plot is drawn for it.
@@ -883,8 +863,7 @@ namespace gradcontact::cases
       }
     add_maugis_dugdale_curves(s, plan, t.plots["pull-off force"]);
     const std::string mdr_md = plan.smooth ? std::string() : mdr_thresholds(s, folder, plan);
-    t.csv.write_csv(folder / "map.csv");
-    write_cohesive_md(folder, t, mdr_md);
+    write_table_files(folder, "map", t.csv, cohesive_md(t, mdr_md));
     if (s.outputs.plots)
       plot_cohesive_map(s, folder, plan, t.plots);
     result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

@@ -130,9 +130,43 @@ namespace gradcontact::cases
         }
     }
 
-    double deviation_of(const MapPoint &p, const std::string &q)
+    /// What a map compares at every point. Declared in the order in which map.md lists a panel's resolutions.
+    enum class Quantity
     {
-      return q == "force" ? p.force : (q == "contact radius" ? p.radius : p.pressure);
+      contact_radius,
+      force,
+      pressure
+    };
+
+    /// The quantities of a map of `s`, in the order of its tables: the contact radius of an indenter only.
+    std::vector<Quantity> map_quantities(const Scene &s)
+    {
+      return is_indenter(s) ? std::vector<Quantity>{Quantity::force, Quantity::contact_radius, Quantity::pressure}
+                            : std::vector<Quantity>{Quantity::force, Quantity::pressure};
+    }
+
+    /// Every quantity (an elastic indenter's and a friction map's panels measure all three).
+    const std::vector<Quantity> all_quantities{Quantity::force, Quantity::contact_radius, Quantity::pressure};
+
+    /// The quantity's name in the plots' file names.
+    std::string name(const Quantity q)
+    {
+      static const char *const names[] = {"contact radius", "force", "pressure"}; // in the order of Quantity
+      return names[static_cast<int>(q)];
+    }
+
+    double deviation_of(const MapPoint &p, const Quantity q)
+    {
+      switch (q)
+        {
+          case Quantity::force:
+            return p.force;
+          case Quantity::contact_radius:
+            return p.radius;
+          case Quantity::pressure:
+            break;
+        }
+      return p.pressure;
     }
 
     /// The radii (/ a) of a friction map's pressure: its deviation is the change of p(r) over them in the
@@ -142,18 +176,19 @@ namespace gradcontact::cases
     const std::vector<double> friction_pressure_radii{0.02, 0.05, 0.1, 0.15, 0.2, 0.25, 0.3, 0.35, 0.4, 0.45,
                                                       0.5,  0.55, 0.6, 0.65, 0.7, 0.75, 0.8, 0.85, 0.9};
 
-    std::string quantity_label(const std::string &q, const bool of_friction = false)
+    /// The quantity as map.md and the plots name it: a friction map's pressure is the change of p(r) in L2.
+    std::string quantity_label(const Quantity q, const bool of_friction = false)
     {
-      if (q == "pressure" && of_friction)
-        return "p(r), L2 change";
-      return q == "pressure" ? "p(" + format(axis_sample) + " a)" : q;
+      if (q != Quantity::pressure)
+        return name(q);
+      return of_friction ? "p(r), L2 change" : "p(" + format(axis_sample) + " a)";
     }
 
     /// The points of one k, with what bounds their FE error.
     struct ExponentMap
     {
       std::vector<MapPoint> points;
-      std::map<std::string, double> resolution; ///< per quantity; missing: not measured
+      std::map<Quantity, double> resolution; ///< per quantity; missing: not measured
       std::string resolution_text;              ///< for map.md
     };
 
@@ -182,8 +217,7 @@ namespace gradcontact::cases
     {
       const std::string x = ratio_name(s).md;
       const bool toward_large = s.map.parameter != MapParameters::Parameter::coating_thickness;
-      const std::vector<std::string> quantities = is_indenter(s) ? std::vector<std::string>{"force", "contact radius", "pressure"}
-                                                                 : std::vector<std::string>{"force", "pressure"};
+      const std::vector<Quantity> quantities = map_quantities(s);
       ExponentMap out;
       // The sharp check: the same FE model with the power law itself, where the closed forms are exact.
       const MapPoint exact = solve(graded(s, k, 0.), 0.);
@@ -203,7 +237,7 @@ namespace gradcontact::cases
       const double nearest = at == out.points.end() ? ratios.front() : at->ratio;
       const MapPoint finer = at == out.points.end() ? MapPoint{} : solve(graded(s, k, nearest), nearest, 1);
       if (at != out.points.end() && finer.error.empty())
-        for (const std::string &q : quantities)
+        for (const Quantity q : quantities)
           out.resolution[q] = std::abs(deviation_of(finer, q) - deviation_of(*at, q));
       std::ostringstream md;
       md << "FE resolution at " << x << " = " << format(nearest) << " (the change with one uniform refinement more, "
@@ -251,7 +285,6 @@ namespace gradcontact::cases
         {
           const UnilateralPanel panel = unilateral_panel(s, k, s.material.nu);
           const Scene &g = panel.scene;
-          const FeModel &model = panel.model;
           const AnalyticReference &rigid = *panel.reference;
           fem::UnilateralLoad load = panel.load;
           // The contact grows toward the homogeneous pairing's radius at this depth as E1 / E0 falls.
@@ -282,9 +315,7 @@ namespace gradcontact::cases
           // The map's solver: a homogeneous indenter E0, nu_i; the rigid limit first.
           std::unique_ptr<fem::UnilateralContactSolver> solver;
           const double setup = seconds_of([&] {
-            solver = std::make_unique<fem::UnilateralContactSolver>(
-              model.material, model.settings.mesh, model.settings.discretization, 1.25 * widest, fem::SurfaceRefinement{},
-              fem::Material{std::make_shared<fem::PowerLawModulus>(g.material.E0, g.material.c0, 0.), s.indenter.nu});
+            solver = elastic_indenter_solver(s, panel, 1.25 * widest);
           });
           fem::UnilateralResult r;
           solver->set_indenter_modulus_factor(std::numeric_limits<double>::infinity());
@@ -334,7 +365,7 @@ namespace gradcontact::cases
           // The FE resolution: the error of the FE's ratio (two bodies over the rigid indenter) where 9.4 knows it.
           const MapPoint pair_ratio = relative(pair_check);
           if (pair_ratio.error.empty())
-            for (const std::string q : {"force", "contact radius", "pressure"})
+            for (const Quantity q : all_quantities)
               out.resolution[q] = std::abs(deviation_of(pair_ratio, q)); // (FE / closed form of 9.4) / (the same, rigid) - 1
           std::ostringstream md;
           md << "FE resolution (the error of the FE's ratio two bodies / rigid indenter where 9.4 gives it, "
@@ -526,7 +557,7 @@ namespace gradcontact::cases
           const MapPoint coarser = extrapolated(friction_at_steps(f, smooth, largest->ratio, steps / 2),
                                                 friction_at_steps(f, smooth, largest->ratio, steps));
           if (coarser.error.empty())
-            for (const std::string q : {"force", "contact radius", "pressure"})
+            for (const Quantity q : all_quantities)
               out.resolution[q] = std::abs(deviation_of(*largest, q) - deviation_of(coarser, q));
           md << "Every point is extrapolated from " << steps << " and " << 2 * steps
              << " load steps (the path's error is first order). FE resolution (the change of that extrapolation from "
@@ -615,7 +646,7 @@ namespace gradcontact::cases
         c.push_back(Column::both("force_deviation", "force"));
         c.push_back(radius ? Column::both("contact_radius_deviation", "contact radius")
                            : Column::csv_only("contact_radius_deviation"));
-        c.push_back(Column::both("pressure_deviation", quantity_label("pressure", friction)));
+        c.push_back(Column::both("pressure_deviation", quantity_label(Quantity::pressure, friction)));
         if (friction)
           c.push_back(Column::both("stick_radius_over_a", "c/a").csv_as(Number{}));
         for (const Column &last : {Column::both("dofs", "DoFs"), Column::both("seconds", "s"),
@@ -659,7 +690,7 @@ namespace gradcontact::cases
       /// The chapter's idealisation is the limit a/z0 -> inf of a finite surface modulus (a/w -> inf of the error
       /// function), a/H -> 0 of a coating, E1/E0 -> inf of the indenter and mu -> 0 of friction.
       bool toward_large = true;
-      std::vector<std::string> quantities;
+      std::vector<Quantity> quantities;
       std::string reference_name;
       std::vector<Panel> panels;
     };
@@ -672,8 +703,7 @@ namespace gradcontact::cases
       plan.ratios = s.map.values;
       std::sort(plan.ratios.begin(), plan.ratios.end());
       plan.indenter = is_indenter(s);
-      plan.quantities = plan.indenter ? std::vector<std::string>{"force", "contact radius", "pressure"}
-                                      : std::vector<std::string>{"force", "pressure"};
+      plan.quantities = map_quantities(s);
       plan.of_indenter = s.map.parameter == MapParameters::Parameter::indenter_modulus;
       plan.of_friction = s.map.parameter == MapParameters::Parameter::friction_coefficient;
       plan.columns = MapColumns{ratio_name(s), plan.indenter, plan.of_friction};
@@ -753,39 +783,53 @@ namespace gradcontact::cases
       return md.str();
     }
 
-    /// The heads of map.md's threshold table and (friction) of its table of the largest effects.
-    std::string thresholds_head(const Scene &s, const MapPlan &plan)
+    /// The title of map.md's threshold table.
+    std::string thresholds_title(const MapPlan &plan)
     {
-      std::ostringstream md;
-      md << "## Where " << (plan.of_indenter   ? "the rigid indenter's closed forms hold"
-                            : plan.of_friction ? "the frictionless closed forms hold"
-                                               : "the power law holds")
-         << "\n\n"
-         << threshold_table_head(plan.of_friction ? std::vector<std::string>{"k", "nu", "quantity"}
-                                                  : std::vector<std::string>{"k", "quantity"},
-                                 s.map.thresholds, "when " + plan.x());
-      return md.str();
+      return std::string("## Where ") +
+             (plan.of_indenter   ? "the rigid indenter's closed forms hold"
+              : plan.of_friction ? "the frictionless closed forms hold"
+                                 : "the power law holds") +
+             "\n\n";
     }
 
-    std::string largest_head(const Scene &s)
+    /// map.md's threshold table, empty: a row per panel and quantity.
+    Table thresholds_table(const Scene &s, const MapPlan &plan)
     {
-      std::ostringstream md;
-      md << "## The largest effect of friction\n\nOver the map's mu" << (s.map.full_stick ? " and full stick" : "")
-         << ": the largest |FE(mu) / FE(frictionless) - 1| and the stick radius c/a at the largest finite mu.\n\n"
-            "| k | nu | force | contact radius | "
-         << quantity_label("pressure", true) << " | c/a at the largest finite mu |\n|---|---|---|---|---|---|\n";
-      return md.str();
+      return threshold_table(plan.of_friction ? std::vector<std::string>{"k", "nu", "quantity"}
+                                              : std::vector<std::string>{"k", "quantity"},
+                             s.map.thresholds, "when " + plan.x());
+    }
+
+    /// The title and text of a friction map's table of the largest effects.
+    std::string largest_title(const Scene &s)
+    {
+      return std::string("## The largest effect of friction\n\nOver the map's mu") + (s.map.full_stick ? " and full stick" : "") +
+             ": the largest |FE(mu) / FE(frictionless) - 1| and the stick radius c/a at the largest finite mu.\n\n";
+    }
+
+    /// A friction map's table of the largest effects, empty: a row per panel, a column per quantity.
+    Table largest_table(const MapPlan &plan)
+    {
+      std::vector<Column> columns{Column::md_only("k"), Column::md_only("nu")};
+      for (const Quantity q : plan.quantities)
+        columns.push_back(Column::md_only(quantity_label(q, true)));
+      columns.push_back(Column::md_only("c/a at the largest finite mu"));
+      return Table(columns);
     }
 
     /// The outputs of a map scene as its panels fill them: map.csv, map.md's parts, and the plots' curves.
     struct MapTables
     {
-      explicit MapTables(Table points)
-        : csv(std::move(points))
+      MapTables(const Scene &s, const MapPlan &plan)
+        : csv(plan.columns.table())
+        , thresholds(thresholds_table(s, plan))
+        , largest(largest_table(plan))
       {}
-      Table csv;
-      std::ostringstream md, thresholds_md, largest_md;
-      std::map<std::string, std::vector<Series>> plots;
+      Table csv, thresholds, largest;
+      std::ostringstream md;
+      std::map<Quantity, std::vector<Series>> plots; ///< |deviation| over the ratio, a curve per panel
+      std::vector<Series> stick;                     ///< friction: c/a over mu, a curve per panel
     };
 
     /// The points of one panel: rows of map.csv and of the panel's table in map.md, and a failed row for each
@@ -814,45 +858,43 @@ namespace gradcontact::cases
 
     /// A friction panel's row of the largest effects: the largest |deviation| of each quantity, and c/a at the
     /// largest finite mu.
-    void tabulate_largest(const MapPlan &plan, const Panel &panel, const std::vector<MapPoint> &points,
-                          std::ostringstream &largest_md)
+    void tabulate_largest(const MapPlan &plan, const Panel &panel, const std::vector<MapPoint> &points, Table &largest)
     {
-      largest_md << "| " << format(panel.k) << " | " << format(panel.nu) << " |";
-      for (const std::string &q : plan.quantities)
+      std::vector<Cell> row{format(panel.k), format(panel.nu)};
+      for (const Quantity q : plan.quantities)
         {
-          double largest = -1;
+          double worst = -1;
           for (const MapPoint &p : points)
             if (p.error.empty())
-              largest = std::max(largest, std::abs(deviation_of(p, q)));
-          largest_md << " " << (largest < 0 ? std::string("no point") : format(largest)) << " |";
+              worst = std::max(worst, std::abs(deviation_of(p, q)));
+          row.push_back(worst < 0 ? std::string("no point") : format(worst));
         }
       const auto last = std::find_if(points.rbegin(), points.rend(),
                                      [](const MapPoint &p) { return p.error.empty() && std::isfinite(p.ratio); });
-      largest_md << " " << (last == points.rend() ? std::string("-") : format(last->stick)) << " |\n";
+      row.push_back(last == points.rend() ? Cell() : Cell(format(last->stick)));
+      largest.add(std::move(row));
     }
 
     /// One threshold cell: where |deviation| stays within t toward the idealisation, unless the FE resolution
     /// cannot place it (a deviation that changes by more than t/3 with the resolution's step).
     std::string threshold_entry(const MapPlan &plan, const std::vector<double> &r, const std::vector<double> &d,
-                                const std::optional<double> full_stick, const std::map<std::string, double> &resolution,
-                                const std::string &q, const double t)
+                                const std::optional<double> full_stick, const std::map<Quantity, double> &resolution,
+                                const Quantity q, const double t)
     {
       if (r.empty() && !full_stick)
-        return " no point |";
+        return "no point";
       if (resolution.count(q) == 0)
-        return " FE resolution not measured |";
+        return "FE resolution not measured";
       if (!(resolution.at(q) <= t / 3))
-        return " below the FE resolution (" + format(resolution.at(q)) + ") |";
-      return " " +
-             (plan.of_friction ? friction_threshold_cell(r, d, full_stick, t) : threshold_cell(r, d, t, plan.toward_large)) +
-             " |";
+        return "below the FE resolution (" + format(resolution.at(q)) + ")";
+      return plan.of_friction ? friction_threshold_cell(r, d, full_stick, t) : threshold_cell(r, d, t, plan.toward_large);
     }
 
     /// A panel's rows of the threshold table, one per quantity, and its curves of |deviation| for the plots.
     void tabulate_thresholds(const Scene &s, const MapPlan &plan, const Panel &panel, const ExponentMap &map,
                              MapTables &t)
     {
-      for (const std::string &q : plan.quantities)
+      for (const Quantity q : plan.quantities)
         {
           std::vector<double> r, d;
           std::optional<double> full_stick;
@@ -868,11 +910,13 @@ namespace gradcontact::cases
                 curve.y.push_back(std::max(std::abs(deviation_of(p, q)), 1e-16));
               }
           t.plots[q].push_back(curve);
-          t.thresholds_md << "| " << format(panel.k) << " |" << (plan.of_friction ? " " + format(panel.nu) + " |" : "")
-                          << " " << quantity_label(q, plan.of_friction) << " |";
+          std::vector<Cell> row{format(panel.k)};
+          if (plan.of_friction)
+            row.push_back(format(panel.nu));
+          row.push_back(quantity_label(q, plan.of_friction));
           for (const double threshold : s.map.thresholds)
-            t.thresholds_md << threshold_entry(plan, r, d, full_stick, map.resolution, q, threshold);
-          t.thresholds_md << '\n';
+            row.push_back(threshold_entry(plan, r, d, full_stick, map.resolution, q, threshold));
+          t.thresholds.add(std::move(row));
         }
     }
 
@@ -919,48 +963,47 @@ namespace gradcontact::cases
       tabulate_points(plan, panel, map.points, t, result, verbose);
       t.md << map.resolution_text << "\n\n";
       if (plan.of_friction)
-        tabulate_largest(plan, panel, map.points, t.largest_md);
+        tabulate_largest(plan, panel, map.points, t.largest);
       tabulate_thresholds(s, plan, panel, map, t);
       if (plan.of_friction)
-        t.plots["stick radius"].push_back(stick_curve(plan, panel, map.points));
+        t.stick.push_back(stick_curve(plan, panel, map.points));
       if (s.map.parameter == MapParameters::Parameter::erf_width)
         t.md << erf_published(s, map.points);
     }
 
-    /// Writes map.md: the panels, the largest effects (friction), the thresholds and how they are read.
-    void write_map_md(const fs::path &folder, const MapPlan &plan, const MapTables &t)
+    /// map.md: the panels, the largest effects (friction), the thresholds and how they are read.
+    std::string map_md(const Scene &s, const MapPlan &plan, const MapTables &t)
     {
       const bool of_friction = plan.of_friction;
-      write_text(folder / "map.md",
-                 t.md.str() + t.largest_md.str() + (of_friction ? "\n" : "") + t.thresholds_md.str() +
-                   "\nThe thresholds interpolate log-log between the last ratio outside and the next one toward the "
-                   "chapter's idealisation; every ratio of the map beyond it is within." +
-                   (of_friction ? " Full stick (mu = inf) is read on its own: \"full stick included\" when it is "
-                                  "within too."
-                                : "") +
-                   "\n");
+      return t.md.str() + (of_friction ? largest_title(s) + t.largest.md() + "\n" : "") + thresholds_title(plan) +
+             t.thresholds.md() +
+             "\nThe thresholds interpolate log-log between the last ratio outside and the next one toward the "
+             "chapter's idealisation; every ratio of the map beyond it is within." +
+             (of_friction ? " Full stick (mu = inf) is read on its own: \"full stick included\" when it is "
+                            "within too."
+                          : "") +
+             "\n";
     }
 
     /// The plots of |deviation| against the ratio with the thresholds as lines, and of friction's stick radius.
-    void plot_map(const Scene &s, const fs::path &folder, const MapPlan &plan,
-                  std::map<std::string, std::vector<Series>> &plots)
+    void plot_map(const Scene &s, const fs::path &folder, const MapPlan &plan, MapTables &t)
     {
-      for (auto &[q, series] : plots)
+      for (auto &[q, series] : t.plots)
         {
-          const bool stick = q == "stick radius";
-          if (!stick)
-            for (const double t : s.map.thresholds)
-              series.push_back(Series{percent(t), {plan.ratios.front(), plan.ratios.back()}, {t, t}, false, false});
-          std::string stem = "map-" + q;
+          for (const double threshold : s.map.thresholds)
+            series.push_back(Series{percent(threshold), {plan.ratios.front(), plan.ratios.back()}, {threshold, threshold},
+                                    false, false});
+          std::string stem = "map-" + name(q);
           std::replace(stem.begin(), stem.end(), ' ', '_');
           write_plot(folder, stem,
-                     stick ? s.info.name + ": stick radius c/a"
-                           : s.info.name + ": |" + quantity_label(q, plan.of_friction) +
-                               (plan.of_indenter   ? " / rigid indenter - 1|"
-                                : plan.of_friction ? " / frictionless - 1|"
-                                                   : " / power law - 1|"),
-                     plan.x(), stick ? "c/a" : "|deviation|", series, true, !stick);
+                     s.info.name + ": |" + quantity_label(q, plan.of_friction) +
+                       (plan.of_indenter   ? " / rigid indenter - 1|"
+                        : plan.of_friction ? " / frictionless - 1|"
+                                           : " / power law - 1|"),
+                     plan.x(), "|deviation|", series, true, true);
         }
+      if (plan.of_friction)
+        write_plot(folder, "map-stick_radius", s.info.name + ": stick radius c/a", plan.x(), "c/a", t.stick, true, false);
     }
   } // namespace
 
@@ -974,17 +1017,13 @@ namespace gradcontact::cases
     const auto start = std::chrono::steady_clock::now();
     SceneResult result = started(s, folder);
     const MapPlan plan = plan_map(s);
-    MapTables t{plan.columns.table()};
+    MapTables t(s, plan);
     t.md << map_intro(s, plan);
-    t.thresholds_md << thresholds_head(s, plan);
-    if (plan.of_friction)
-      t.largest_md << largest_head(s);
     for (const Panel &panel : plan.panels)
       run_panel(s, plan, panel, t, result, verbose);
-    t.csv.write_csv(folder / "map.csv");
-    write_map_md(folder, plan, t);
+    write_table_files(folder, "map", t.csv, map_md(s, plan, t));
     if (s.outputs.plots)
-      plot_map(s, folder, plan, t.plots);
+      plot_map(s, folder, plan, t);
     result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     return result;
   }

@@ -93,8 +93,7 @@ namespace gradcontact::cases
          << " slip inward (q > 0) and " << u.slip_outward_nodes << " outward (q < 0); " << u.iterations
          << " active-set solves in all.\n\n"
          << table.md();
-      table.write_csv(folder / (stem + ".csv"));
-      write_text(folder / (stem + ".md"), md.str());
+      write_table_files(folder, stem, table, md.str());
     }
 
     fem::Result run_unilateral(const Scene &s, const FeModel &model, const fem::OutputRequest &out,

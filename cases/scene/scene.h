@@ -258,7 +258,7 @@ namespace gradcontact::cases
     /// Of every row against the FE, relative; 0: the Tolerances section's entry of the row's quantity (parse_scene
     /// writes a positive value into that section, the only one a candidate scene's FE rows read).
     double fe_tolerance = 0.;
-    /// Tangential family: also one loading path of the 3D Coulomb model (cases/runners/fe_coulomb_3d.h) with the candidate's
+    /// Tangential family: also one loading path of the 3D Coulomb model (cases/model/coulomb_sphere.h) with the candidate's
     /// profile, whose rows say how far Coulomb's law is from the candidate.
     bool coulomb_3d = false;
     /// Declares the section's entries, each bound to its member (set as the file and the overrides are read).

@@ -359,7 +359,6 @@ namespace gradcontact::cases
     std::vector<Row> rows;
     run_grid(options.quick, rows);
     run_random(options.quick, rows);
-    answers_table(rows).write_csv(folder / "accuracy.csv");
 
     int n_broken = 0, refusals = 0, answers = 0;
     for (const Row &r : rows)
@@ -380,7 +379,7 @@ namespace gradcontact::cases
     write_contract_table(rows, "p", md);
     write_estimate_table(rows, md);
     write_cost_table(rows, md);
-    write_text(folder / "accuracy.md", md.str());
+    write_table_files(folder, "accuracy", answers_table(rows), md.str());
     std::cerr << "accuracy: " << answers << " answers, " << refusals << " refused, " << n_broken
               << " broken promises\n";
     return n_broken;

@@ -285,8 +285,7 @@ namespace gradcontact::cases
                      has_numeric ? Cell(numeric.min * 1e3) : Cell(), has_numeric ? Cell(numeric.median * 1e3) : Cell(),
                      has_numeric ? Cell(fmt(numeric.worst_error, "%.1e") + refused) : Cell()});
         }
-      csv.write_csv(tmp / "analytic.csv");
-      write_text(tmp / "analytic.md", md.str() + table.md());
+      write_table_files(tmp, "analytic", csv, md.str() + table.md());
     }
 
     /// oracle.{csv,md} into `tmp`: batches of random paraboloid requests answered by the FE oracle
@@ -398,8 +397,7 @@ namespace gradcontact::cases
       md << table.md();
       if (!refusals.str().empty())
         md << "\nThe first refusal of each batch that had one (the limit the accuracy contract names):\n\n" << refusals.str();
-      table.write_csv(tmp / "oracle.csv");
-      write_text(tmp / "oracle.md", md.str());
+      write_table_files(tmp, "oracle", table, md.str());
     }
   } // namespace
 

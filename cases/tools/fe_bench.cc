@@ -665,10 +665,9 @@ namespace gradcontact::cases
              "repetitions is the least disturbed.\n\n";
     }
 
-    /// Writes fe_work_precision.md: the run, what is measured, every row (`table`), and the plots.
-    void write_bench_md(const FeBenchOptions &o, const fs::path &folder, const std::string &machine,
-                        const BenchPlan &plan, const double total, const Table &table,
-                        const std::vector<std::string> &plots)
+    /// fe_work_precision.md: the run, what is measured, every row (`table`), and the plots.
+    std::string bench_md(const FeBenchOptions &o, const std::string &machine, const BenchPlan &plan, const double total,
+                         const Table &table, const std::vector<std::string> &plots)
     {
       std::ostringstream md;
       md << "# FE work-precision benchmarks (`gradcontact bench --part fe`)\n\n"
@@ -682,7 +681,7 @@ namespace gradcontact::cases
       for (const auto &p : plots)
         md << "- `" << p << "_error_vs_time.png` / `" << p << "_error_vs_dofs.png` (SVG, data and gnuplot script "
            << "beside)\n";
-      write_text(folder / "fe_work_precision.md", md.str());
+      return md.str();
     }
 
     /// The table of the peer's runs.
@@ -791,7 +790,7 @@ namespace gradcontact::cases
                 pm << headline_row(load, k, rows);
           pm << "\nThe plots `fe_<scene>_k<k>_error_vs_time.png` carry both models.\n\n" << peer_limits_text();
         }
-      write_text(folder / "peer.md", pm.str());
+      write_document(folder, "peer", pm.str());
     }
   } // namespace
 
@@ -811,9 +810,8 @@ namespace gradcontact::cases
     const double total = seconds_since(start);
     fs::remove_all(plan.mesh_cache);
     const Table table = work_precision_table(rows);
-    table.write_csv(folder / "fe_work_precision.csv");
     const std::vector<std::string> plots = plot_bench(folder, plan.ks, rows);
-    write_bench_md(o, folder, machine, plan, total, table, plots);
+    write_table_files(folder, "fe_work_precision", table, bench_md(o, machine, plan, total, table, plots));
     if (o.with_peer)
       write_peer_md(o, folder, machine, plan, rows);
     return rows;

@@ -837,8 +837,7 @@ namespace gradcontact::cases
           summary.drawn = ok;
           summary.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
           const Table points = points_table(checked);
-          write_text_atomically(tmp / (name + ".csv"), points.csv());
-          write_text_atomically(tmp / (name + ".md"), tables_md(title, name, points, why));
+          write_table_files(tmp, name, points, tables_md(title, name, points, why));
           write_text_atomically(tmp / (name + ".summary.json"), summary.to_json().dump(1) + "\n");
           for (const auto &e : fs::directory_iterator(tmp))
             fs::rename(e.path(), folder / e.path().filename());
@@ -961,7 +960,7 @@ namespace gradcontact::cases
     std::vector<FigureSummary> drawn;
     for (const fs::path &f : files)
       drawn.push_back(draw(f, reports, cache));
-    write_text_atomically(reports / "figures" / "index.md", index_md(reports / "figures"));
+    write_document(reports / "figures", "index", index_md(reports / "figures"));
     std::size_t failed = 0;
     for (const FigureSummary &f : drawn)
       failed += f.failed;

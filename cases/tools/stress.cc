@@ -445,12 +445,12 @@ namespace gradcontact::cases
       return md.str();
     }
 
-    /// The rows of every (method, region) into stability.md and stability.csv, and the refusals' examples; true
-    /// when every cell is within its allowance.
-    bool tabulate_stress(const StressTable &table, std::ostream &md, std::ostream &csv)
+    /// The rows of every (method, region), the table of stability.md and stability.csv, into `cells`, and the
+    /// refusals' examples into `md`; true when every cell is within its allowance.
+    bool tabulate_stress(const StressTable &table, std::ostream &md, Table &cells)
     {
       bool ok = true;
-      Table cells({Column::both("method", "method"), Column::both("region", "region").quoted(),
+      cells = Table({Column::both("method", "method"), Column::both("region", "region").quoted(),
                    Column::both("rows", "rows"), Column::both("refused", "refused"), Column::both("nonfinite", "NaN/inf"),
                    Column::both("worst_relative_error", "worst rel. error"),
                    Column::both("worst_error_over_allowance", "worst error/allowance (its allowance)"),
@@ -465,7 +465,6 @@ namespace gradcontact::cases
                      t.worst_allowance, t.worst_row, t.refusal_example, pass ? "yes" : "**NO**"});
         }
       md << cells.md();
-      csv << cells.csv();
       md << "\nRefusals, one example per region:\n\n";
       for (const auto &[key, t] : table)
         if (!t.refusal_example.empty())
@@ -474,13 +473,12 @@ namespace gradcontact::cases
     }
 
     /// Writes stability.md and stability.csv, each under a temporary name renamed when complete.
-    fs::path write_stability(const Options &o, const std::string &md, const std::string &csv)
+    fs::path write_stability(const Options &o, const std::string &md, const Table &cells)
     {
       const fs::path folder = o.reports / "benchmarks";
       fs::create_directories(folder);
       remove_stale_temporaries(folder); // what a killed run left
-      write_text_atomically(folder / "stability.md", md);
-      write_text_atomically(folder / "stability.csv", csv);
+      write_table_files(folder, "stability", cells, md);
       return folder;
     }
   } // namespace
@@ -496,12 +494,13 @@ namespace gradcontact::cases
     for (const batch::ReferenceRow &row : batch::read_reference_rows(o.references.string()))
       tally_reference_row(o, row, ++line_no, table, evaluated);
     tally_near_one(table, evaluated);
-    std::ostringstream md, csv;
+    std::ostringstream md;
     md << stability_head(o, line_no);
-    const bool ok = tabulate_stress(table, md, csv);
+    Table cells(std::vector<Column>{});
+    const bool ok = tabulate_stress(table, md, cells);
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     md << "\n" << evaluated << " evaluations in " << format(seconds) << " s.\n";
-    const fs::path folder = write_stability(o, md.str(), csv.str());
+    const fs::path folder = write_stability(o, md.str(), cells);
     std::cout << "wrote " << (folder / "stability.md").string() << " (" << table.size() << " method x region cells, "
               << evaluated << " evaluations, " << format(seconds) << " s)" << (ok ? "" : ": a region FAILS its bound")
               << "\n";

@@ -7,7 +7,7 @@
 // all (the three), or sphere: Coulomb frictional contact of a rigid sphere (fem/tangential/coulomb_contact_3d.h; keys mu,
 // mu_normal, depth, delta, normal_steps, tangential_steps, cycle, candidates; compare=1: F_z at the end of the
 // normal loading against the frictionless axisymmetric model, expect=X; theory_depth=1: the chapter's depth of
-// contact radius a; theory=1: the path against the chapter's closed forms for the half-space (cases/runners/fe_coulomb_3d.h:
+// contact radius a; theory=1: the path against the chapter's closed forms for the half-space (cases/model/coulomb_sphere.h:
 // 9.24, 9.80, 9.81, 9.84, 9.86; a decoupled pairing at a large L), expect_theory=X (F_z and loading F_x),
 // expect_branch=X (/ F_A), expect_energy=X (loop area and friction work), expect_stick_zone=X (/ a, beyond the node
 // bracket), expect_round=X (the rays' spread beyond their brackets); decoupled=1: the same path without the
@@ -32,9 +32,9 @@
 #include <fem/modulus/modulus.h>
 #include <fem/contact/unilateral_contact.h>
 
-#include "study_arguments.h"
+#include "study.h"
 
-#include <cases/runners/fe_coulomb_3d.h>
+#include <cases/model/coulomb_sphere.h>
 
 #include <deal.II/base/mpi.h>
 
@@ -281,7 +281,7 @@ namespace
     verdict.expect("expect_friction", difference, "F_z with friction against the axisymmetric frictional model");
   }
 
-  /// theory=1: the path against the chapter's closed forms for the half-space (cases/runners/fe_coulomb_3d.h;
+  /// theory=1: the path against the chapter's closed forms for the half-space (cases/model/coulomb_sphere.h;
   /// meaningful at a large L and for a decoupled pairing): F_z and loading F_x (expect_theory), the branches / F_A
   /// (expect_branch), the loop area and friction work (expect_energy), the stick zone beyond its brackets
   /// (expect_round, expect_stick_zone).
@@ -716,22 +716,10 @@ namespace
 
 int main(int argc, char **argv)
 {
-  dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
-  const MPI_Comm world = MPI_COMM_WORLD;
-  const bool     root  = dealii::Utilities::MPI::this_mpi_process(world) == 0;
-  try
-    {
-      const StudyArguments args(argc, argv, "fem3d");
-      const Setup          setup = parse_setup(args);
+  return gradcontact::studies::distributed_main(
+    argc, argv, "fem3d", [](const StudyArguments &args, const MPI_Comm world, const bool root) {
+      const Setup setup = parse_setup(args);
       return args.text("load", "all") == "sphere" ? run_sphere(args, world, root, setup) :
                                                     run_punches(args, world, root, setup);
-    }
-  catch (const std::exception &e)
-    {
-      std::cerr << "fem3d (process " << dealii::Utilities::MPI::this_mpi_process(world) << "): " << e.what() << '\n';
-      // An exception on some processes only would leave the others waiting in a collective: end them all.
-      if (dealii::Utilities::MPI::n_mpi_processes(world) > 1)
-        MPI_Abort(world, 1);
-      return 1;
-    }
+    });
 }

@@ -15,7 +15,7 @@
 #include <fem/bodies/distributed_solver.h>
 #include <fem/modulus/modulus.h>
 
-#include "study_arguments.h"
+#include "study.h"
 #include "written_out.h"
 
 #include <deal.II/base/mpi.h>
@@ -30,18 +30,14 @@
 #include <string>
 
 using namespace gradcontact::fem;
+using gradcontact::studies::AxisymmetricRun;
 using gradcontact::studies::StudyArguments;
 
 namespace
 {
-  /// The material and loads of fem_study: E0 = 2 GPa, c0 = 0.3 mm, a = 0.1 mm; the mesh, discretisation and linear
-  /// solver of the run, and its load.
-  struct Run
+  /// The material and loads of fem_study (AxisymmetricRun), the linear solver of the run, and its load.
+  struct Run : AxisymmetricRun
   {
-    double                      E0 = 2e9, c0 = 3e-4, a = 1e-4, nu = 0.3, k = 0;
-    std::string                 load_name;
-    MeshParameters              mesh;
-    DiscretizationParameters    disc;
     DistributedSolverParameters parameters;
     LoadCase                    load;
     std::string                 control; ///< radius, depth or force
@@ -76,14 +72,9 @@ namespace
   Run parse_run(const StudyArguments &args)
   {
     Run run;
-    run.nu        = args.num("nu", 0.3);
-    run.k         = args.num("k", 0.0);
-    run.load_name = args.text("load", "punch");
-    run.mesh      = recommended_mesh_parameters(run.a, run.k, args.num("truncation", 1e-8));
     // The surface layer defaults to a (p4est cannot make the z-only surface halvings).
-    run.mesh.surface_layer_thickness = 1.0;
-    args.apply(run.mesh);
-    args.apply(run.disc);
+    static_cast<AxisymmetricRun &>(run) =
+      gradcontact::studies::axisymmetric_run(args, [](MeshParameters &mesh) { mesh.surface_layer_thickness = 1.0; });
     args.apply(run.parameters);
     run.load = plan_load(run.load_name, run.a);
     return run;
@@ -205,42 +196,31 @@ namespace
       }
     return true;
   }
+
+  /// The run of the arguments, checked as they ask; its exit code.
+  int study(const StudyArguments &args, const MPI_Comm world, const bool root)
+  {
+    Run            run = parse_run(args);
+    const Material material{std::make_shared<PowerLawModulus>(run.E0, run.c0, run.k), run.nu};
+    plan_control(args, run);
+    const auto              start = std::chrono::steady_clock::now();
+    const DistributedResult r     = solve(args, world, material, run);
+    const double total = dealii::Utilities::MPI::max(
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), world);
+    const Errors e = errors_of(run, r);
+    print_run(world, root, run, r, e, total);
+
+    int failed = r.reliable && r.consistent_contact ? 0 : 1;
+    if (args.has("expect_tol") && !meets_expected(args, root, run, e))
+      failed = 1;
+    if (args.has("compare") && args.num("compare", 0) != 0)
+      {
+        if (!equals_serial(args, root, material, run, r))
+          failed = 1;
+        failed = dealii::Utilities::MPI::max(failed, world);
+      }
+    return failed;
+  }
 } // namespace
 
-int main(int argc, char **argv)
-{
-  // One thread per process: the machine's cores go to the MPI processes.
-  dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
-  const MPI_Comm     world = MPI_COMM_WORLD;
-  const bool         root  = dealii::Utilities::MPI::this_mpi_process(world) == 0;
-  try
-    {
-      const StudyArguments args(argc, argv, "fem_mpi");
-      Run                  run = parse_run(args);
-      const Material       material{std::make_shared<PowerLawModulus>(run.E0, run.c0, run.k), run.nu};
-      plan_control(args, run);
-      const auto              start = std::chrono::steady_clock::now();
-      const DistributedResult r     = solve(args, world, material, run);
-      const double total = dealii::Utilities::MPI::max(
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), world);
-      const Errors e = errors_of(run, r);
-      print_run(world, root, run, r, e, total);
-
-      int failed = r.reliable && r.consistent_contact ? 0 : 1;
-      if (args.has("expect_tol") && !meets_expected(args, root, run, e))
-        failed = 1;
-      if (args.has("compare") && args.num("compare", 0) != 0)
-        {
-          if (!equals_serial(args, root, material, run, r))
-            failed = 1;
-          failed = dealii::Utilities::MPI::max(failed, world);
-        }
-      return failed;
-    }
-  catch (const std::exception &e)
-    {
-      std::cerr << "fem_mpi (process " << dealii::Utilities::MPI::this_mpi_process(world) << "): " << e.what()
-                << '\n';
-      return 1;
-    }
-}
+int main(int argc, char **argv) { return gradcontact::studies::distributed_main(argc, argv, "fem_mpi", study); }

@@ -16,7 +16,7 @@
 #include <fem/bodies/axisymmetric_solver.h>
 #include <fem/modulus/modulus.h>
 
-#include "study_arguments.h"
+#include "study.h"
 
 #include <analytic/material.h>
 #include <analytic/normal.h>
@@ -31,30 +31,22 @@
 #include <string>
 
 using namespace gradcontact::fem;
+using gradcontact::studies::AxisymmetricRun;
 using gradcontact::studies::StudyArguments;
 
 namespace
 {
-  /// The material (E0 = 2 GPa, c0 = 3 a, a = 0.1 mm), the load's name and the mesh and discretisation of one run.
-  struct Run
+  /// The material, the load's name and the mesh and discretisation of one run (AxisymmetricRun).
+  struct Run : AxisymmetricRun
   {
-    double                   E0 = 2e9, c0 = 3e-4, a = 1e-4, nu = 0.3, k = 0;
-    std::string              load_name;
-    MeshParameters           mesh;
-    DiscretizationParameters disc;
-    bool                     gibson = false; ///< k = 1: the Gibson medium, whose reference is the Winkler law
+    bool gibson = false; ///< k = 1: the Gibson medium, whose reference is the Winkler law
   };
 
   Run parse_run(const StudyArguments &args)
   {
     Run run;
-    run.nu        = args.num("nu", 0.3);
-    run.k         = args.num("k", 0.0);
-    run.load_name = args.text("load", "punch");
-    run.mesh      = recommended_mesh_parameters(run.a, run.k, args.num("truncation", 1e-8));
-    run.mesh.axis_refinements = 0;
-    args.apply(run.mesh);
-    args.apply(run.disc);
+    static_cast<AxisymmetricRun &>(run) =
+      gradcontact::studies::axisymmetric_run(args, [](MeshParameters &mesh) { mesh.axis_refinements = 0; });
     run.gibson = (run.k == 1.0);
     return run;
   }
