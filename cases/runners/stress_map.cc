@@ -189,8 +189,7 @@ namespace gradcontact::cases
        << "own, and the last columns give its deviation from the power law's closed form (none on k < 0, where the "
        << "power law has no largest stress).\n\n"
        << table.md();
-    write_text(folder / "map.md", md.str());
-    table.write_csv(folder / "map.csv");
+    write_table_files(folder, "map", table, md.str());
     result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     return result;
   }

@@ -267,9 +267,8 @@ namespace gradcontact::cases
        << "at k = 0 (a homogeneous body) against the exact (1 - 2 nu)/2 (a/r)^2. Its deviation is what the thin "
        << "skin of the real grading adds to the power law's prediction.\n\n"
        << fe_rows.md() << "\nFailed checks: " << failed << ".\n";
-    write_text(folder / "ring_stress.md", md.str());
-    closed_table.write_csv(folder / "ring_stress.csv");
-    fe_rows.write_csv(folder / "ring_stress_fe.csv");
+    write_table_files(folder, "ring_stress", closed_table, md.str());
+    write_table_csv(folder, "ring_stress_fe", fe_rows);
     return failed;
   }
 } // namespace gradcontact::cases

@@ -224,8 +224,7 @@ namespace gradcontact::cases
        << "and the FE at that point. Answers further from the closed form than 3x their estimate: " << broken
        << ".\n\n"
        << table.md();
-    write_text(folder / "stresses.md", md.str());
-    table.write_csv(folder / "stresses.csv");
+    write_table_files(folder, "stresses", table, md.str());
     return broken;
   }
 } // namespace gradcontact::cases
