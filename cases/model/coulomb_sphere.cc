@@ -32,7 +32,7 @@ namespace gradcontact::cases
 
   namespace
   {
-    /// into = max(into, v), a NaN `into` (nothing measured yet) taking v.
+    /// into = max(into, v), a NaN `into` (nothing recorded yet) taking v.
     void worse(double &into, const double v) { into = std::isnan(into) ? v : std::max(into, v); }
 
     /// Simpson's rule over equally spaced samples (an even number of intervals).
@@ -113,7 +113,7 @@ namespace gradcontact::cases
       CoulombPath                     path;
       double worst_c = 0, worst_half = 0, worst_round = 0;
       double cycle_work = 0; // the friction work of the unloading and reloading steps
-      bool   stick_measured = false;
+      bool   stick_found = false;
     };
 
     /// A tangential step `s` against the chapter: F_x on loading (9.80), on the branches (9.84, / F_A), and the
@@ -145,7 +145,7 @@ namespace gradcontact::cases
             run.worst_half     = std::max(run.worst_half, ray.half_width() / a);
             lo                 = std::min(lo, ray.radius());
             hi                 = std::max(hi, ray.radius());
-            run.stick_measured = true;
+            run.stick_found = true;
           }
       if (hi >= lo)
         run.worst_round = std::max(run.worst_round, (hi - lo) / a);
@@ -247,7 +247,7 @@ namespace gradcontact::cases
             ok = coulomb_step(run, "loading", c.depth, c.delta * j / m, Branch::loading);
           if (ok && c.cycle)
             run_cycle(run);
-          if (run.stick_measured)
+          if (run.stick_found)
             {
               path.stick_deviation  = run.worst_c;
               path.stick_resolution = run.worst_half;

@@ -2,7 +2,7 @@
 // against the chapter's tangential theory, one loading path: normal loading to the depth d with friction mu_normal,
 // then friction mu and a tangential displacement to delta_A, and optionally one cycle to -delta_A and back (9.80-9.86).
 //
-// At every step the FE state is measured against the closed forms for the half-space (analytic/tangential.h):
+// At every step the FE state is compared with the closed forms for the half-space (analytic/tangential.h):
 //  - the end of the normal loading: F_z against F_N(a), a the contact radius of d (9.24 family);
 //  - loading: F_x(delta) against Cattaneo-Mindlin for the graded sphere (9.80), relative to F_x;
 //  - unloading and reloading: F_x(delta) against the hysteresis loop (9.84, u_A from 9.85), relative to F_A;
@@ -57,7 +57,7 @@ namespace gradcontact::cases
     double theory_stick   = std::numeric_limits<double>::quiet_NaN(); ///< c (9.80) or b (9.81) at delta
   };
 
-  /// One loading path of the FE model and its measures against the chapter (NaN where not measured).
+  /// One loading path of the FE model and its comparisons with the chapter (NaN where not compared).
   struct CoulombPath
   {
     static constexpr double nan = std::numeric_limits<double>::quiet_NaN();
@@ -92,7 +92,7 @@ namespace gradcontact::cases
     double energy_rule   = nan; ///< Simpson's rule on the closed-form loop at the FE's points / 9.86 - 1
     CoulombPath fe;             ///< the FE model
     /// With decoupled_reference: the same path with fem::without_coupling(C), and the FE model against it:
-    /// the coupling's effect on the same discrete body (NaN where not measured).
+    /// the coupling's effect on the same discrete body (NaN where not compared).
     CoulombPath decoupled;
     double coupling_force_z = nan; ///< F_z / F_z(decoupled) - 1 after the normal loading
     double coupling_loading = nan; ///< max |F_x / F_x(decoupled) - 1| over the loading steps

@@ -19,7 +19,7 @@ namespace gradcontact::cases
   namespace
   {
     constexpr double nan      = std::numeric_limits<double>::quiet_NaN();
-    constexpr double z_limit  = 1e-9;  ///< the depths of the z -> 0 limit, over a (strain_ratio)
+    constexpr double z_limit  = 1e-9;  ///< the depths of the z -> 0 limit, over a (SurfaceStrain)
     constexpr double z0_ratio = 1e-2; ///< the FE's surface modulus length z0 / a
 
     /// The closed-form request of `profile` (paraboloid of radius 1, or flat punch) at contact radius 1 on E = z^k.
@@ -41,25 +41,41 @@ namespace gradcontact::cases
       return batch::evaluate(batch::parse(q));
     }
 
-    /// sigma_rr(r, z) / E(z) * E(a) / p_m (E(a) = 1).
-    double ratio_at(const std::string &profile, const double k, const double nu, const double r, const double z)
+    /// T(r) of the header below `profile` on E = z^k: p_m evaluated once, then per radius the ratio
+    /// sigma_rr(r, z) / E(z) * E(a) / p_m (E(a) = 1) at z and 10 z, z = z_limit (r - a), whose approach to the surface
+    /// is linear in z (the traction-free surface's Frobenius exponents 0 and 1, analytic/point_load.h), extrapolated
+    /// to z = 0.
+    class SurfaceStrain
     {
-      json force        = contact(profile, k, nu);
-      force["quantity"] = "force";
-      json q            = contact(profile, k, nu);
-      q.update({{"quantity", "stress"}, {"component", "rr"}, {"r", r}, {"z", z}});
-      return evaluate(q) / std::pow(z, k) / (evaluate(force) / M_PI);
-    }
+    public:
+      SurfaceStrain(const std::string &profile, const double exponent, const double nu)
+        : body(contact(profile, exponent, nu))
+        , k(exponent)
+      {
+        json force        = body;
+        force["quantity"] = "force";
+        p_m               = evaluate(force) / M_PI;
+      }
 
-    /// T(r) of the header and the size of its extrapolation (relative): the ratio at z and 10 z, z = z_limit (r - a),
-    /// whose approach to the surface is linear in z (the traction-free surface's Frobenius exponents 0 and 1,
-    /// analytic/point_load.h), extrapolated to z = 0.
-    std::pair<double, double> strain_ratio(const std::string &profile, const double k, const double nu, const double r)
-    {
-      const double z = z_limit * (r - 1), near = ratio_at(profile, k, nu, r, z), far = ratio_at(profile, k, nu, r, 10 * z);
-      const double T = near + (near - far) / 9;
-      return {T, std::abs(near - far) / (9 * std::abs(T))};
-    }
+      /// T(r) and the size of its extrapolation (relative).
+      std::pair<double, double> at(const double r) const
+      {
+        const double z = z_limit * (r - 1), near = ratio(r, z), far = ratio(r, 10 * z);
+        const double T = near + (near - far) / 9;
+        return {T, std::abs(near - far) / (9 * std::abs(T))};
+      }
+
+    private:
+      double ratio(const double r, const double z) const
+      {
+        json q = body;
+        q.update({{"quantity", "stress"}, {"component", "rr"}, {"r", r}, {"z", z}});
+        return evaluate(q) / std::pow(z, k) / p_m;
+      }
+
+      json   body;
+      double k, p_m = 0;
+    };
 
     /// The closed-form row of one profile and k.
     struct ClosedFormRow
@@ -68,7 +84,7 @@ namespace gradcontact::cases
       std::string         profile;
       std::vector<double> T;              ///< at radii()
       double              largest = nan, at = nan; ///< the largest tensile T on the grid and where (r/a)
-      double              limit_change = 0;        ///< the largest extrapolation to z = 0 (strain_ratio) over the radii
+      double              limit_change = 0;        ///< the largest extrapolation to z = 0 (SurfaceStrain) over the radii
       double              edge_exponent = nan;     ///< d ln|T| / d ln(r/a - 1) between r/a - 1 = 1e-4 and 1e-3
       double              exact_error = nan;       ///< k = 0: the largest |T - (1 - 2 nu)/2 (a/r)^2| over the radii
     };
@@ -81,13 +97,14 @@ namespace gradcontact::cases
 
     ClosedFormRow closed_form_row(const std::string &profile, const double k, const double nu)
     {
-      ClosedFormRow row;
+      const SurfaceStrain strain(profile, k, nu);
+      ClosedFormRow       row;
       row.k       = k;
       row.nu      = nu;
       row.profile = profile;
       for (const double r : radii())
         {
-          const auto [t, extrapolation] = strain_ratio(profile, k, nu, r);
+          const auto [t, extrapolation] = strain.at(r);
           row.T.push_back(t);
           row.limit_change = std::max(row.limit_change, extrapolation);
           if (k == 0)
@@ -97,11 +114,11 @@ namespace gradcontact::cases
       // The largest tension on a fine grid of r/a - 1 geometric from 1e-3 to 2.
       for (unsigned int i = 0; i <= 60; ++i)
         {
-          const double r = 1 + 1e-3 * std::pow(2e3, i / 60.0), t = strain_ratio(profile, k, nu, r).first;
+          const double r = 1 + 1e-3 * std::pow(2e3, i / 60.0), t = strain.at(r).first;
           if (t > 0 && !(t <= row.largest))
             row.largest = t, row.at = r;
         }
-      const double near = strain_ratio(profile, k, nu, 1 + 1e-4).first, far = strain_ratio(profile, k, nu, 1 + 1e-3).first;
+      const double near = strain.at(1 + 1e-4).first, far = strain.at(1 + 1e-3).first;
       row.edge_exponent = std::log(std::abs(near / far)) / std::log(0.1);
       return row;
     }
@@ -136,13 +153,14 @@ namespace gradcontact::cases
         }
       row.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
       row.dofs    = result.run.level_dofs.empty() ? 0 : result.run.level_dofs.back();
-      const double surface_modulus = std::pow(z0_ratio, k); // E_s / E(a), E(a) = 1
+      const double        surface_modulus = std::pow(z0_ratio, k); // E_s / E(a), E(a) = 1
+      const SurfaceStrain strain("paraboloid", k, nu);
       for (std::size_t i = 0; i < radii().size(); ++i)
         {
           row.fe.push_back(result.sigma_rr[i].value);
           row.estimate.push_back(result.sigma_rr[i].error);
           row.predicted.push_back(k == 0 ? (1 - 2 * nu) / (2 * radii()[i] * radii()[i]) :
-                                           strain_ratio("paraboloid", k, nu, radii()[i]).first * surface_modulus);
+                                           strain.at(radii()[i]).first * surface_modulus);
         }
       return row;
     }

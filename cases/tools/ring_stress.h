@@ -16,7 +16,7 @@
 // the edge, whose coefficient vanishes at k = 0 only.
 //
 // Closed form: sigma_rr / E(z) of the graded Boussinesq field superposed over the contact pressure
-// (analytic/subsurface.h) near the surface, extrapolated to z = 0 (ring_stress.cc, strain_ratio), for the paraboloid and
+// (analytic/subsurface.h) near the surface, extrapolated to z = 0 (ring_stress.cc, SurfaceStrain), for the paraboloid and
 // the flat punch at equal force and contact radius, over k and r. FE: a real grading, the finite surface modulus
 // E0 ((z + z0)/c0)^k (fem/modulus/modulus.h), under the paraboloid, its recovered sigma_rr on the surface
 // (fem/elasticity/stress_recovery.h) on the accuracy contract's ladder, against T p_m E_s / E(a) of the power law with
