@@ -143,9 +143,11 @@ namespace gradcontact::fem
     // range of k (the surface map for k > 0, the condensed far field for k <= 0); degrees 3 and 4 reach further on
     // fewer levels. Below a stiff surface (s < 0) the recovered pressure of degree 2 changes sign from level to level
     // near the contact edge, so that its ladder reads oscillation and never shows convergence; from degree 3 its
-    // changes keep their sign and fall (ladder_study k=-0.5 load=punch pr=0.9 p=2, then p=3).
+    // changes keep their sign and fall (ladder_study k=-0.5 load=punch pr=0.9 p=2, then p=3). Closer to k = -1
+    // (below stiff_degree_limit) the thin stiff surface cells limit both degrees alike, and degree 3 only costs
+    // more: the force's levels at k = -0.95 stop converging at degree 3 where degree 2's do.
     const unsigned int degree = tolerance >= 1e-4 ? 2 : tolerance >= 1e-7 ? 3 : 4;
-    return surface_exponent < 0 ? std::max(degree, 3u) : degree;
+    return surface_exponent < 0 && surface_exponent >= stiff_degree_limit ? std::max(degree, 3u) : degree;
   }
 
 

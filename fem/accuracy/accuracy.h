@@ -124,8 +124,11 @@ namespace gradcontact::fem
                              double largest_displacement_radius = 0);
 
   /// The degree of the uniform ladder for a relative tolerance (see contract_settings), on a modulus with surface
-  /// exponent s (E ~ z^s): at least 3 on a stiff surface (s < 0), where degree 2 does not converge a pressure sample.
+  /// exponent s (E ~ z^s): at least 3 on a stiff surface (stiff_degree_limit <= s < 0), where degree 2 does not
+  /// converge a pressure sample.
   unsigned int contract_degree(double tolerance, double surface_exponent = 0);
+  /// Below this surface exponent the uniform ladder keeps the tolerance's degree (contract_degree).
+  inline constexpr double stiff_degree_limit = -0.8;
 
   /// The estimate of the error of values.back(), values[l] the quantity on level l (the file's header).
   /// `assumed_ratio`: the ratio with two levels and the floor of the observed one; scale: see Estimated.

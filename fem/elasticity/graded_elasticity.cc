@@ -74,12 +74,16 @@ namespace gradcontact::fem
         z_min = std::min(z_min, cell->vertex(v)[dim - 1]);
         z_max = std::max(z_max, cell->vertex(v)[dim - 1]);
       }
-    choice.straddles =
+    const bool straddles =
       std::any_of(jumps.begin(), jumps.end(), [&](const double z) { return z > z_min && z < z_max; });
+    // A surface corner: z = 0 at a vertex of the cell, no face on the surface (Choice::subdivide).
+    const bool corner = s != 0.0 && choice.surface_face == numbers::invalid_unsigned_int &&
+                        z_min <= 1e-12 * (z_max - z_min);
+    choice.subdivide = straddles || corner;
 
     // A jump inside the cell wins over the surface rule (QIterated resolves the jump; E is bounded
     // away from the surface there).
-    if (choice.straddles)
+    if (choice.subdivide)
       choice.values = subdivided.get();
     else if (choice.surface_face != numbers::invalid_unsigned_int && s != 0.0 && !map_rules)
       {
@@ -94,9 +98,9 @@ namespace gradcontact::fem
 
   template <int dim>
   FEValues<dim> &GradedCellRules<dim>::plain(const typename DoFHandler<dim>::active_cell_iterator &cell,
-                                             const bool straddles)
+                                             const bool subdivide)
   {
-    FEValues<dim> &values = straddles ? *subdivided : *regular;
+    FEValues<dim> &values = subdivide ? *subdivided : *regular;
     values.reinit(cell);
     return values;
   }
@@ -164,9 +168,9 @@ namespace gradcontact::fem
     cell_matrix                                        = 0;
     if (map.active())
       {
-        // Under the map no jump straddles a cell, so choice.values is the Gauss rule, reinit'ed on `cell`; a
-        // surface cell adds its three parts with their own rules (fem/modulus/surface_map.h), the zeta^gamma rule
-        // serving the mixed blocks too.
+        // Under the map no jump straddles a cell, so choice.values is the Gauss rule (the subdivided one in a
+        // surface corner cell), reinit'ed on `cell`; a surface cell adds its three parts with their own rules
+        // (fem/modulus/surface_map.h), the zeta^gamma rule serving the mixed blocks too.
         FEValues<dim>             *gamma_rule = nullptr;
         const std::vector<double> *xi_gamma   = nullptr;
         if (choice.surface_face != numbers::invalid_unsigned_int)
@@ -367,12 +371,12 @@ namespace gradcontact::fem
     // Surface cells with E ~ z^s, s != 0: K_qq needs its own rule (Gauss-Jacobi, exponent -s), unless the
     // unknown is q / E, whose blocks both carry E and take K_uu's rule (header).
     const bool singular_qq =
-      !weighted_pressure && choice.surface_face != numbers::invalid_unsigned_int && s != 0.0 && !choice.straddles;
+      !weighted_pressure && choice.surface_face != numbers::invalid_unsigned_int && s != 0.0 && !choice.subdivide;
     const bool qq_here = inverse_lambda_factor != 0.0 && !singular_qq;
 
     // K_uq = \int tr B_i psi_j r and, where 1/E is regular, K_qq = -\int psi_i psi_j / lambda r; weighted, both
     // times E(z) (q = E q_hat) with the cell's rule for E, whose weights contain xi^s where `xi` is set.
-    FEValues<dim>             &plain = weighted_pressure ? *choice.values : rules.plain(cell, choice.straddles);
+    FEValues<dim>             &plain = weighted_pressure ? *choice.values : rules.plain(cell, choice.subdivide);
     const std::vector<double> *xi_e  = weighted_pressure ? choice.xi : nullptr;
     for (const unsigned int q : plain.quadrature_point_indices())
       {

@@ -145,13 +145,17 @@ namespace gradcontact::fem
     {
       dealii::FEValues<dim>       *values;       ///< the rule for integrands carrying E
       const std::vector<double> *xi;           ///< Gauss-Jacobi: reference distance of each point, else null
-      bool                       straddles;    ///< a jump of E crosses the cell
+      /// The cell takes the subdivided rule (QIterated): a jump of E crosses it, or it touches the surface z = 0
+      /// at a vertex (an edge in 3D) but has no face there. E ~ z^s is singular at that point (s < 0) or not
+      /// smooth (s > 0), which neither the Gauss rule nor a face's Gauss-Jacobi rule sees; an unstructured near
+      /// field has such cells where three cells meet at a surface node.
+      bool                       subdivide;
       unsigned int               surface_face; ///< face on z = 0, or numbers::invalid_unsigned_int
     };
     Choice select(const typename dealii::DoFHandler<dim>::active_cell_iterator &cell);
 
     /// Bulk or QIterated rule (polynomial integrands), reinit'ed on `cell`.
-    dealii::FEValues<dim> &plain(const typename dealii::DoFHandler<dim>::active_cell_iterator &cell, bool straddles);
+    dealii::FEValues<dim> &plain(const typename dealii::DoFHandler<dim>::active_cell_iterator &cell, bool subdivide);
     /// Gauss-Jacobi of exponent -s across `face` (integrands carrying 1/E), reinit'ed; xi in `xi`.
     dealii::FEValues<dim> &inverse(const typename dealii::DoFHandler<dim>::active_cell_iterator &cell, unsigned int face,
                                  const std::vector<double> *&xi);
