@@ -36,7 +36,7 @@ STRING_COMPARE = re.compile(r'[=!]=\s*"|"\s*[=!]=')
 # The issue that asked for the model part counted 278 fem:: lines in the runners: more than half fewer is below 139.
 # The other limits are what the runners hold now (outside report/: the scene's parameters.prm and a figure's
 # summary.json, neither a table); a change may lower them, not raise them.
-LIMITS = {'fem': 138, 'file writes': 0, 'table markup': 0, 'string compares': 11, 'outside report': 2}
+LIMITS = {'fem': 138, 'file writes': 0, 'table markup': 0, 'string compares': 1, 'outside report': 2}
 
 
 def lines(folder):

@@ -3,7 +3,6 @@
 
 #include "scene/expression.h"
 
-#include "runners/fe_cohesive.h"
 #include "report/report.h"
 #include "report/table.h"
 #include "scene/scene.h"
@@ -334,7 +333,7 @@ namespace gradcontact::cases
             fs::create_directories(tmp);
             try
               {
-                run_cohesive_map(scene, tmp, o.verbose, shard);
+                run_map_scene(scene, tmp, o.verbose, shard);
               }
             catch (...)
               {

@@ -287,13 +287,13 @@ namespace gradcontact::cases
         report_state("periphery (9.65-9.66)", model.periphery_state(l.a), input::mechanism(Mechanism::periphery), false, lr);
         {
           const AdhesiveCriticalPoint pc = model.periphery_state(l.a);
-          critical_pressure(model, "periphery", pc.state.delta, input::mechanism(Mechanism::periphery), lr);
+          critical_pressure(model, "periphery", pc.state.delta, Mechanism::periphery, lr);
         }
         if (ad.tensile_strength > 0.)
           {
             const AdhesiveCriticalPoint cc = model.centre_state(l.a);
             report_state("centre (9.67-9.68)", cc, input::mechanism(Mechanism::centre), false, lr);
-            critical_pressure(model, "centre", cc.state.delta, input::mechanism(Mechanism::centre), lr);
+            critical_pressure(model, "centre", cc.state.delta, Mechanism::centre, lr);
             try
               {
                 const double h_star = model.transition_h0(l.a);
@@ -310,7 +310,7 @@ namespace gradcontact::cases
 
       /// p(r) in a critical state of the concave punch (9.66, 9.68) against the closed form, relative to max |p|.
       void critical_pressure(AdhesiveModel &model, const std::string &name, const double delta,
-                             const Inputs &mechanism, const LevelResult &lr)
+                             const Mechanism mechanism, const LevelResult &lr)
       {
         if (s.outputs.pressure_radii.empty())
           return;
@@ -322,9 +322,9 @@ namespace gradcontact::cases
         for (const fem::Sample &p : prof.pressure)
           {
             // The centre state is defined by p(0) = -sigma_th: that row would hold by construction.
-            if (name == "centre" && p.r == 0.)
+            if (mechanism == Mechanism::centre && p.r == 0.)
               continue;
-            const Inputs extra = input::both(mechanism, input::r(p.r));
+            const Inputs extra = input::both(input::mechanism(mechanism), input::r(p.r));
             check("critical pressure p(r)", name + ", r/a = " + format(p.r / l.a) + ", relative to max |p|" + level_tag,
                   p.value, "pressure", extra, s.tolerances.pressure, lr.dofs, seconds_since(level_start), scale);
           }

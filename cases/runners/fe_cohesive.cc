@@ -1,11 +1,11 @@
 #include "runners/fe_cohesive.h"
+#include "report/map_pipeline.h"
 #include "model/maugis_dugdale_rows.h"
 
 #include "report/table.h"
 #include "report/thresholds.h"
 #include "model/fe_adhesive.h"
 #include "model/scene_start.h"
-#include "report/result_cache.h"
 
 #include <analytic/adhesion.h>
 #include <analytic/maugis_dugdale.h>
@@ -420,44 +420,6 @@ namespace gradcontact::cases
       return base;
     }
 
-    /// The pull-offs of every control and the states of the path of one lambda: from the point cache (a
-    /// --map-shard job's or an earlier run's) or solved here; none when the point is another shard's.
-    std::optional<LambdaSolution> lambda_solution(const Scene &s, const CohesivePlan &plan, CohesiveExponent &e,
-                                                  const Point &base, const bool mine, const ResultCache &cache,
-                                                  MapShard &shard)
-    {
-      const double lambda = base.lambda;
-      const std::string key = "cohesive map point\n" + s.resolved + "\nk = " + exact(e.k) + ", lambda = " + exact(lambda) +
-                              (plan.smooth ? ", Lennard-Jones" : "");
-      LambdaSolution solution;
-      if (const auto cached = cache.get(key))
-        {
-          solution = LambdaSolution::from_json(*cached);
-          ++shard.cached;
-          return solution;
-        }
-      if (!mine)
-        {
-          ++shard.skipped;
-          return std::nullopt;
-        }
-      if (plan.smooth)
-        {
-          const double edge_refinement = lennard_jones_edge_refinement(lambda);
-          solution = solve_lambda_smooth(smooth_model(e, plan, edge_refinement), e.medium, plan.profile, plan.dgamma,
-                                         base, plan.controls);
-          for (Point &p : solution.points)
-            p.seconds += e.flexibility_seconds[edge_refinement];
-          e.flexibility_seconds[edge_refinement] = 0;
-        }
-      else
-        solution = solve_lambda(DugdaleModel::on_plain_meshes(e.scene, base.strength, e.level), e.medium, plan.profile,
-                                plan.dgamma, base, plan.controls, s.adhesion.curve_points);
-      ++shard.computed;
-      cache.put(key, solution.to_json());
-      return solution;
-    }
-
     /// The column spec of a Tabor-parameter map: map.csv (every pull-off: the FE's values and the chapter's) and each
     /// k's table in map.md (their ratios).
     Table pull_off_table()
@@ -641,37 +603,6 @@ namespace gradcontact::cases
       trend_rows(plan, k, force_control, points, r, d, dd, result);
     }
 
-    /// One k of the map: every lambda (cached, solved, or left to another shard; `index` counts the points of the
-    /// map in its order), its table in map.md, and per control its thresholds and trend checks.
-    void run_exponent(const Scene &s, const fs::path &folder, const CohesivePlan &plan, const double k,
-                      const ResultCache &cache, MapShard &shard, std::size_t &index, CohesiveTables &t,
-                      SceneResult &result, const bool verbose)
-    {
-      CohesiveExponent e = cohesive_exponent(s, k);
-      Table table = pull_off_table();
-      std::map<bool, std::vector<Point>> by_control;
-      for (const double lambda : plan.lambdas)
-        {
-          const std::size_t here = index++;
-          const Point base = lambda_base(s, plan, e.medium, lambda);
-          const std::optional<LambdaSolution> solution =
-            lambda_solution(s, plan, e, base, here % shard.count == shard.index, cache, shard);
-          if (!solution)
-            continue; // another shard's
-          for (const Point &p : solution->points)
-            {
-              by_control[p.force_control].push_back(p);
-              tabulate_pull_off(plan, k, p, table, verbose);
-              check_pull_off(s, plan, e, p, result);
-            }
-          write_path(folder, plan, e, lambda, *solution, t, result);
-        }
-      for (const bool force_control : plan.controls)
-        tabulate_control(s, plan, k, force_control, by_control[force_control], t, result);
-      t.md << "## k = " << format(k) << "\n\n" << table.md() << '\n';
-      t.csv.append(table);
-    }
-
     /// Maugis-Dugdale as dense curves on the force plot: the MDR solution at every k of a Dugdale map; Maugis' at
     /// k = 0 beside a Lennard-Jones map of the paraboloid.
     void add_maugis_dugdale_curves(const Scene &s, const CohesivePlan &plan, std::vector<Series> &force_plot)
@@ -839,34 +770,114 @@ namespace gradcontact::cases
       write_plot(folder, "map-deviation", s.info.name + ": |F_c / F_c,JKR - 1|", "Tabor parameter lambda",
                  "|deviation|", dev, true, true);
     }
+
+    /// The Tabor-parameter map as a strategy of the map pipeline: a panel per k, a point per lambda (both controls
+    /// and the path's states, cached), per k its table in map.md and per control its thresholds and trend checks;
+    /// after the panels the MDR's thresholds and the plots.
+    class CohesiveMap final : public MapStrategy
+    {
+    public:
+      explicit CohesiveMap(const Scene &scene)
+        : s(scene)
+        , plan(plan_cohesive_map(scene))
+        , t(pull_off_table(), scene)
+        , table(pull_off_table())
+      {
+        t.md << cohesive_intro(s, plan);
+      }
+
+      std::size_t panels() const override { return plan.ks.size(); }
+      std::size_t points(std::size_t) const override { return plan.lambdas.size(); }
+
+      void open_panel(const std::size_t panel, SceneResult &, bool) override
+      {
+        e = cohesive_exponent(s, plan.ks.at(panel));
+        table = pull_off_table();
+        solutions.assign(plan.lambdas.size(), std::nullopt);
+      }
+
+      std::optional<MapPointKey> point_key(const std::size_t panel, const std::size_t point) const override
+      {
+        return MapPointKey{"cohesive map point", "k = " + exact(plan.ks.at(panel)) + ", lambda = " +
+                                                   exact(plan.lambdas.at(point)) + (plan.smooth ? ", Lennard-Jones" : "")};
+      }
+
+      /// The pull-offs of every control and the states of the path of one lambda.
+      void solve(std::size_t, const std::size_t point, SceneResult &, bool) override
+      {
+        const double lambda = plan.lambdas.at(point);
+        const Point  base   = lambda_base(s, plan, e.medium, lambda);
+        if (plan.smooth)
+          {
+            const double edge_refinement = lennard_jones_edge_refinement(lambda);
+            LambdaSolution solution = solve_lambda_smooth(smooth_model(e, plan, edge_refinement), e.medium, plan.profile,
+                                                          plan.dgamma, base, plan.controls);
+            for (Point &p : solution.points)
+              p.seconds += e.flexibility_seconds[edge_refinement];
+            e.flexibility_seconds[edge_refinement] = 0;
+            solutions.at(point) = std::move(solution);
+          }
+        else
+          solutions.at(point) = solve_lambda(DugdaleModel::on_plain_meshes(e.scene, base.strength, e.level), e.medium,
+                                             plan.profile, plan.dgamma, base, plan.controls, s.adhesion.curve_points);
+      }
+
+      json stored(std::size_t, const std::size_t point) const override { return solutions.at(point)->to_json(); }
+
+      void restore(std::size_t, const std::size_t point, const json &value) override
+      {
+        solutions.at(point) = LambdaSolution::from_json(value);
+      }
+
+      /// Every lambda solved or read (one left to another shard is left out): its rows, its path; then per control
+      /// the thresholds and trend checks, and the k's table.
+      void close_panel(std::size_t, const fs::path &folder, SceneResult &result, const bool verbose) override
+      {
+        std::map<bool, std::vector<Point>> by_control;
+        for (std::size_t i = 0; i < plan.lambdas.size(); ++i)
+          if (const std::optional<LambdaSolution> &solution = solutions[i])
+            {
+              for (const Point &p : solution->points)
+                {
+                  by_control[p.force_control].push_back(p);
+                  tabulate_pull_off(plan, e.k, p, table, verbose);
+                  check_pull_off(s, plan, e, p, result);
+                }
+              write_path(folder, plan, e, plan.lambdas[i], *solution, t, result);
+            }
+        for (const bool force_control : plan.controls)
+          tabulate_control(s, plan, e.k, force_control, by_control[force_control], t, result);
+        t.md << "## k = " << format(e.k) << "\n\n" << table.md() << '\n';
+        t.csv.append(table);
+      }
+
+      MapReport report(const fs::path &folder, bool) override
+      {
+        const std::string mdr_md = plan.smooth ? std::string() : mdr_thresholds(s, folder, plan);
+        return {t.csv, cohesive_md(t, mdr_md)};
+      }
+
+      void plot(const fs::path &folder) override
+      {
+        add_maugis_dugdale_curves(s, plan, t.plots["pull-off force"]);
+        plot_cohesive_map(s, folder, plan, t.plots);
+      }
+
+    private:
+      const Scene                                &s;
+      const CohesivePlan                          plan;
+      CohesiveTables                              t;
+      CohesiveExponent                            e;         ///< the open panel's k
+      Table                                       table;     ///< the open panel's pull-offs
+      std::vector<std::optional<LambdaSolution>> solutions; ///< the open panel's, per lambda
+    };
   } // namespace
 
-  SceneResult run_cohesive_map(const Scene &s, const fs::path &folder, const bool verbose, MapShard &shard)
+  std::unique_ptr<MapStrategy> cohesive_map_strategy(const Scene &s)
   {
-    if (shard.count == 0 || shard.index >= shard.count)
-      throw std::invalid_argument("run_cohesive_map: shard " + std::to_string(shard.index) + "/" +
-                                  std::to_string(shard.count) + " is not i/N with 0 <= i < N");
-    const ResultCache cache(folder.parent_path() / ".map-points");
-    std::size_t index = 0; // of (k, lambda) in the order of the map
-    const auto  start  = std::chrono::steady_clock::now();
-    SceneResult result = started(s, folder);
-    const CohesivePlan plan = plan_cohesive_map(s);
-    CohesiveTables t(pull_off_table(), s);
-    t.md << cohesive_intro(s, plan);
-    for (const double k : plan.ks)
-      run_exponent(s, folder, plan, k, cache, shard, index, t, result, verbose);
-    // A shard's report is partial and discarded: its points are in the cache, no map or plot is drawn for it.
-    if (shard.count > 1)
-      {
-        result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-        return result;
-      }
-    add_maugis_dugdale_curves(s, plan, t.plots["pull-off force"]);
-    const std::string mdr_md = plan.smooth ? std::string() : mdr_thresholds(s, folder, plan);
-    write_table_files(folder, "map", t.csv, cohesive_md(t, mdr_md));
-    if (s.outputs.plots)
-      plot_cohesive_map(s, folder, plan, t.plots);
-    result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    return result;
+    require_kind(s, SceneKind::map, "cohesive_map_strategy");
+    if (s.map.parameter != MapParameters::Parameter::tabor_parameter)
+      throw std::invalid_argument("cohesive_map_strategy: scene " + s.file + " is not a Tabor-parameter map");
+    return std::make_unique<CohesiveMap>(s);
   }
 } // namespace gradcontact::cases

@@ -16,6 +16,7 @@
 #define GRADCONTACT_CASES_FE_COHESIVE_H
 
 #include "model/maugis_dugdale_rows.h"
+#include "report/map_pipeline.h"
 #include "report/report.h"
 #include "scene/scene.h"
 
@@ -23,6 +24,7 @@
 #include <analytic/normal.h>
 
 #include <filesystem>
+#include <memory>
 #include <optional>
 #include <string>
 #include <variant>
@@ -41,20 +43,12 @@ namespace gradcontact::cases
   /// The largest lambda whose edge refinement smooth_cohesion_settings accepts (fem::max_edge_refinement).
   double lennard_jones_largest_lambda();
 
-  /// The (k, lambda) points of a map that one job computes: those at positions j (k-major, lambdas ascending) with
-  /// j % count == index; the counts of the run.
-  struct MapShard
-  {
-    unsigned int index = 0, count = 1;
-    unsigned int computed = 0, cached = 0, skipped = 0; ///< solved here, read from the point cache, left to others
-  };
-
-  /// The Tabor-parameter map into `folder`. Every (k, lambda) point (both controls, the path's states) goes to a
-  /// point cache beside the report (<reports>/.map-points/, keyed by the scene's resolved parameters, the point and
-  /// the program's build) and is read from it when there: jobs of `gradcontact run --map-shard i/N` fill it in
-  /// parallel, and a run without it writes the report from their points. With `shard` of count > 1 the points of
-  /// other shards that are not cached are left out and the report is partial (the runner discards it).
-  SceneResult run_cohesive_map(const Scene &scene, const std::filesystem::path &folder, bool verbose, MapShard &shard);
+  /// The strategy (report/map_pipeline.h) of the Tabor-parameter map: a panel per k, a point per lambda (both
+  /// controls, the path's states), each point keyed for the point cache beside the report (<reports>/.map-points/,
+  /// by the scene's resolved parameters, the point and the program's build), so that jobs of `gradcontact run
+  /// --map-shard i/N` (k-major, lambdas ascending) fill it in parallel and a run without it writes the report from
+  /// their points. Throws std::invalid_argument for another scene.
+  std::unique_ptr<MapStrategy> cohesive_map_strategy(const Scene &scene);
 } // namespace gradcontact::cases
 
 #endif

@@ -1,4 +1,5 @@
 #include "runners/fe_coulomb_3d.h"
+#include "report/map_pipeline.h"
 
 #include "report/table.h"
 #include "report/thresholds.h"
@@ -180,54 +181,6 @@ namespace gradcontact::cases
       return plan;
     }
 
-
-    /// The panels of one body (k, nu), one per mu, on one surface compliance; a body that cannot be built fails
-    /// every mu.
-    void solve_body(const Scene &s, const MPI_Comm world, const CoulombMapPlan &plan, const double k, const double nu,
-                    std::vector<CoulombPanel> &panels, const bool verbose, const bool root)
-    {
-      const double a = s.load.a, amplitude = s.tangential.amplitude;
-      CoulombSphereCase c = coulomb_case(s, k, nu);
-      std::optional<CoulombSphereSurface> surface;
-      std::string                         body_error;
-      for (const double mu : plan.mus)
-        {
-          CoulombPanel panel{k, nu, std::abs(nu - 1. / (2. + k)) <= 1e-12, mu, plan.multiple_mu, {}, body_error};
-          c.mu = c.mu_normal = mu;
-          if (body_error.empty())
-            try
-              {
-                // The chapter's depth of contact radius a and its delta_A of F_A = amplitude mu F_N(a) (9.80).
-                const Medium medium = gradcontact::medium(GradedHalfSpace{c.E0, c.c0, c.k, c.nu});
-                c.depth             = gradcontact::depth(medium, Paraboloid{c.R}, a);
-                c.delta             = tangential::tangential_displacement_at_force(
-                  medium, tangential::SphereSlip{c.R, mu}, a,
-                  amplitude * mu * gradcontact::force(medium, Paraboloid{c.R}, a));
-                if (!surface)
-                  surface = prepare_coulomb_sphere(world, c);
-                panel.result = run_coulomb_sphere(world, c, *surface);
-                const CoulombSphereResult &r = panel.result;
-                if (!r.fe.converged)
-                  panel.error = r.fe.message;
-                else if (!r.decoupled.converged)
-                  panel.error = "decoupled path: " + r.decoupled.message;
-                else if (!r.idealised.converged)
-                  panel.error = "idealised path: " + r.idealised.message;
-              }
-            catch (const std::exception &e)
-              {
-                panel.error = concise(e);
-                if (!surface)
-                  body_error = panel.error; // the body could not be built: no mu can run on it
-              }
-          if (verbose && root)
-            std::cerr << "  " << panel_name(panel) << ": " << (panel.error.empty() ? "" : panel.error + "; ")
-                      << "F_x coupling " << panel.result.coupling_loading << ", floor "
-                      << panel.result.decoupled.loading_deviation << ", " << panel.result.dofs << " DoFs, "
-                      << panel.result.seconds << " s\n";
-          panels.push_back(std::move(panel));
-        }
-    }
 
     /// F_x at the last step of `phase` (0 when none).
     double last_force(const CoulombPath &path, const std::string &phase)
@@ -480,41 +433,120 @@ namespace gradcontact::cases
         }
     }
 
-    /// Writes map.csv, map.md and the plots (the root process only).
-    void write_coulomb_map(const Scene &s, const std::filesystem::path &folder, const CoulombMapPlan &plan,
-                           const std::vector<CoulombPanel> &panels, const std::map<std::string, double> &resolution)
+    /// The Coulomb 3D map as a strategy of the map pipeline: a panel per body (k, nu), a point per mu on the body's
+    /// one surface compliance (a body that cannot be built fails every mu); the rows of errors.csv per body, and
+    /// map.csv, map.md and the plots from every panel, written by the root process only.
+    class CoulombMap final : public MapStrategy
     {
-      write_table_files(folder, "map", tabulate(coulomb_fields(s), panels, Number{'g', 10}),
-                        coulomb_intro(s, plan) + coupling_table(panels) + coupling_thresholds(s, plan, panels, resolution) +
-                        direction_thresholds(s, plan, panels));
-      if (s.outputs.plots)
-        plot_coulomb_map(s, folder, plan, panels);
-    }
+    public:
+      explicit CoulombMap(const Scene &scene)
+        : s(scene)
+        , world(mpi_world()) // MPI's start (when this is the first distributed scene) not timed
+        , root(dealii::Utilities::MPI::this_mpi_process(world) == 0)
+        , plan(plan_coulomb_map(scene))
+      {}
+
+      std::size_t panels() const override { return plan.bodies.size(); }
+      std::size_t points(std::size_t) const override { return plan.mus.size(); }
+      bool        writes_report() const override { return root; }
+
+      void open_panel(const std::size_t body, SceneResult &, bool) override
+      {
+        const auto &[k, nu] = plan.bodies.at(body);
+        c.emplace(coulomb_case(s, k, nu));
+        surface.reset();
+        body_error.clear();
+        first = panel_list.size();
+      }
+
+      /// One mu on the body: the chapter's depth of contact radius a and its delta_A of F_A = amplitude mu F_N(a)
+      /// (9.80), the paths on the body's surface compliance (prepared by its first mu).
+      void solve(const std::size_t body, const std::size_t point, SceneResult &, const bool verbose) override
+      {
+        const auto &[k, nu] = plan.bodies.at(body);
+        const double mu = plan.mus.at(point), a = s.load.a;
+        CoulombPanel panel{k, nu, std::abs(nu - 1. / (2. + k)) <= 1e-12, mu, plan.multiple_mu, {}, body_error};
+        c->mu = c->mu_normal = mu;
+        if (body_error.empty())
+          try
+            {
+              const Medium medium = gradcontact::medium(GradedHalfSpace{c->E0, c->c0, c->k, c->nu});
+              c->depth            = gradcontact::depth(medium, Paraboloid{c->R}, a);
+              c->delta            = tangential::tangential_displacement_at_force(
+                medium, tangential::SphereSlip{c->R, mu}, a,
+                s.tangential.amplitude * mu * gradcontact::force(medium, Paraboloid{c->R}, a));
+              if (!surface)
+                surface = prepare_coulomb_sphere(world, *c);
+              panel.result = run_coulomb_sphere(world, *c, *surface);
+              panel.error  = path_error(panel.result);
+            }
+          catch (const std::exception &e)
+            {
+              panel.error = concise(e);
+              if (!surface)
+                body_error = panel.error; // the body could not be built: no mu can run on it
+            }
+        if (verbose && root)
+          std::cerr << "  " << panel_name(panel) << ": " << (panel.error.empty() ? "" : panel.error + "; ")
+                    << "F_x coupling " << panel.result.coupling_loading << ", floor "
+                    << panel.result.decoupled.loading_deviation << ", " << panel.result.dofs << " DoFs, "
+                    << panel.result.seconds << " s\n";
+        panel_list.push_back(std::move(panel));
+      }
+
+      /// errors.csv: the sharp checks of the decoupled pairing, and every path that failed.
+      void close_panel(std::size_t, const std::filesystem::path &, SceneResult &result, bool) override
+      {
+        for (std::size_t i = first; i < panel_list.size(); ++i)
+          {
+            const CoulombPanel &p = panel_list[i];
+            if (!p.error.empty())
+              result.rows.push_back(failed("Coulomb 3D path", "FE", "closed form", panel_name(p) + ": " + p.error));
+            else if (p.holl)
+              holl_rows(p, s.tolerances.force, result);
+          }
+      }
+
+      MapReport report(const std::filesystem::path &, bool) override
+      {
+        return {tabulate(coulomb_fields(s), panel_list, Number{'g', 10}),
+                coulomb_intro(s, plan) + coupling_table(panel_list) +
+                  coupling_thresholds(s, plan, panel_list, coupling_resolution(panel_list)) +
+                  direction_thresholds(s, plan, panel_list)};
+      }
+
+      void plot(const std::filesystem::path &folder) override { plot_coulomb_map(s, folder, plan, panel_list); }
+
+    private:
+      /// Why a path did not converge; empty when every path did.
+      static std::string path_error(const CoulombSphereResult &r)
+      {
+        if (!r.fe.converged)
+          return r.fe.message;
+        if (!r.decoupled.converged)
+          return "decoupled path: " + r.decoupled.message;
+        if (!r.idealised.converged)
+          return "idealised path: " + r.idealised.message;
+        return {};
+      }
+
+      const Scene                        &s;
+      const MPI_Comm                      world;
+      const bool                          root;
+      const CoulombMapPlan                plan;
+      std::vector<CoulombPanel>           panel_list;
+      std::optional<CoulombSphereCase>    c;          ///< the open body
+      std::optional<CoulombSphereSurface> surface;    ///< its surface compliance, from its first mu
+      std::string                         body_error; ///< why the open body could not be built
+      std::size_t                         first = 0;  ///< its first panel in panel_list
+    };
   } // namespace
 
-  SceneResult run_coulomb_map(const Scene &s, const std::filesystem::path &folder, const bool verbose)
+  std::unique_ptr<MapStrategy> coulomb_map_strategy(const Scene &s)
   {
-    require_kind(s, SceneKind::map, "run_coulomb_map");
+    require_kind(s, SceneKind::map, "coulomb_map_strategy");
     if (s.map.parameter != MapParameters::Parameter::coulomb_3d)
-      throw std::invalid_argument("run_coulomb_map: scene " + s.file + " is not a Coulomb 3D map");
-    const MPI_Comm    world  = mpi_world(); // MPI's start (when this is the first distributed scene) not timed
-    const bool        root   = dealii::Utilities::MPI::this_mpi_process(world) == 0;
-    const auto        start  = std::chrono::steady_clock::now();
-    SceneResult       result = started(s, folder);
-    const CoulombMapPlan plan = plan_coulomb_map(s);
-    std::vector<CoulombPanel> panels;
-    for (const auto &[k, nu] : plan.bodies)
-      solve_body(s, world, plan, k, nu, panels, verbose, root);
-    // errors.csv: the sharp checks of the decoupled pairing, and every path that failed.
-    for (const CoulombPanel &p : panels)
-      if (!p.error.empty())
-        result.rows.push_back(failed("Coulomb 3D path", "FE", "closed form", panel_name(p) + ": " + p.error));
-      else if (p.holl)
-        holl_rows(p, s.tolerances.force, result);
-    if (root)
-      write_coulomb_map(s, folder, plan, panels, coupling_resolution(panels));
-    result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    return result;
+      throw std::invalid_argument("coulomb_map_strategy: scene " + s.file + " is not a Coulomb 3D map");
+    return std::make_unique<CoulombMap>(s);
   }
-
 } // namespace gradcontact::cases

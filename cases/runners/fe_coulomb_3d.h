@@ -3,14 +3,14 @@
 #ifndef GRADCONTACT_CASES_FE_COULOMB_3D_H
 #define GRADCONTACT_CASES_FE_COULOMB_3D_H
 
-#include "report/report.h"
+#include "report/map_pipeline.h"
 #include "scene/scene.h"
 
-#include <filesystem>
+#include <memory>
 
 namespace gradcontact::cases
 {
-  /// The map of Map/parameter = Coulomb 3D into `folder`: for every k of Map/k values and nu of Map/nu values (and
+  /// The strategy (report/map_pipeline.h) of the map of Map/parameter = Coulomb 3D: for every k of Map/k values and nu of Map/nu values (and
   /// Holl's ratio nu = 1/(2 + k) for k >= 0 with Map/Holl ratio) and every mu of Map/values (Friction/coefficient
   /// when empty; the mu of one body share its surface compliance), the case above with the sphere of Load/R, the mesh
   /// graded toward Load/a (4 sectors, h_edge = a/100, rings of at most a/40 inside the contact, candidate nodes
@@ -23,7 +23,8 @@ namespace gradcontact::cases
   /// errors.csv: the sharp checks at Holl's ratio (decoupled: the coupling vanishes, and the FE and its idealised
   /// path meet 9.24, 9.80, 9.84, 9.86 within Tolerances/force), and a failed row for every path that did not
   /// converge. Holl's ratio at k = 0 is nu = 1/2, run with the mixed formulation.
-  SceneResult run_coulomb_map(const Scene &scene, const std::filesystem::path &folder, bool verbose);
+  /// The report is written by the root process only. Throws std::invalid_argument for another scene.
+  std::unique_ptr<MapStrategy> coulomb_map_strategy(const Scene &scene);
 } // namespace gradcontact::cases
 
 #endif

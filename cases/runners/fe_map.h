@@ -16,19 +16,18 @@
 #ifndef GRADCONTACT_CASES_FE_MAP_H
 #define GRADCONTACT_CASES_FE_MAP_H
 
-#include "report/report.h"
+#include "report/map_pipeline.h"
 #include "scene/scene.h"
 
-#include <filesystem>
-#include <optional>
-#include <string>
-#include <vector>
+#include <memory>
 
 namespace gradcontact::cases
 {
-  /// The maps of a real grading, an elastic indenter and friction; the Coulomb 3D map is run_coulomb_map's
-  /// (fe_coulomb_3d.h), the Tabor-parameter map run_cohesive_map's (fe_cohesive.h).
-  SceneResult run_map_scene(const Scene &scene, const std::filesystem::path &folder, bool verbose);
+  /// The strategy (report/map_pipeline.h) of a map of a real grading (Map/parameter = surface depth, coating
+  /// thickness, erf width), an elastic indenter (indenter modulus) or friction (friction coefficient); throws
+  /// std::invalid_argument for another map (Coulomb 3D: fe_coulomb_3d.h; Tabor parameter: fe_cohesive.h; largest
+  /// stress: stress_map.h).
+  std::unique_ptr<MapStrategy> fe_map_strategy(const Scene &scene);
 } // namespace gradcontact::cases
 
 #endif

@@ -120,13 +120,15 @@ namespace gradcontact::cases
               {}, disc.factor_bytes};
     }
 
-    // The scalar quantities a scene compares, with the FE value and the reference quantity name.
+    // The scalar quantities a scene compares, with the FE value, the reference quantity name and, under the
+    // accuracy contract, the FE's estimate of it.
     struct Scalar
     {
       std::string name;      ///< row quantity
       std::string reference; ///< eval quantity
       double fe;
       double tolerance;
+      const fem::Estimated fem::ContractResult::*estimate;
     };
 
     std::vector<Scalar> scalars(const Scene &s, const fem::Result &r)
@@ -134,35 +136,53 @@ namespace gradcontact::cases
       std::vector<Scalar> out;
       const OutputParameters &o = s.outputs;
       const LoadParameters &l = s.load;
+      using Contract = fem::ContractResult;
       if (o.force && l.type != Type::constant_pressure)
-        out.push_back({"force", "force", r.force, s.tolerances.force});
+        out.push_back({"force", "force", r.force, s.tolerances.force, &Contract::force});
       if (o.depth && (curved(l) && l.control != Control::depth))
-        out.push_back({"depth", "depth", r.depth, s.tolerances.depth});
+        out.push_back({"depth", "depth", r.depth, s.tolerances.depth, &Contract::depth});
       if (o.depth && l.type == Type::constant_pressure)
-        out.push_back({"centre displacement", "depth", r.depth, s.tolerances.depth});
+        out.push_back({"centre displacement", "depth", r.depth, s.tolerances.depth, &Contract::depth});
       if (o.contact_radius && curved(l) && l.control != Control::contact_radius)
-        out.push_back({"contact radius", "", r.contact_radius, s.tolerances.contact_radius});
+        out.push_back({"contact radius", "", r.contact_radius, s.tolerances.contact_radius, &Contract::contact_radius});
       return out;
     }
   } // namespace
 
-  FeProfile fe_profile(const Scene &scene, const std::string &quantity, const std::vector<double> &radii_over_a,
+  std::string to_string(const Profile p) { return p == Profile::pressure ? "pressure" : "displacement"; }
+
+  std::optional<Profile> profile_of(const std::string &name)
+  {
+    for (const Profile p : {Profile::pressure, Profile::displacement})
+      if (name == to_string(p))
+        return p;
+    return std::nullopt;
+  }
+
+  Profile profile_named(const std::string &name, const std::string &where)
+  {
+    if (const std::optional<Profile> p = profile_of(name))
+      return *p;
+    throw std::invalid_argument(where + ": quantity = '" + name + "' must be 'pressure' or 'displacement'");
+  }
+
+  FeProfile fe_profile(const Scene &scene, const Profile quantity, const std::vector<double> &radii_over_a,
                        const std::string &normaliser, const double normaliser_r_over_a, const bool per_area)
   {
-    if (quantity != "pressure" && quantity != "displacement")
-      throw std::invalid_argument("fe_profile: quantity = '" + quantity + "' must be 'pressure' or 'displacement'");
+    const bool pressure = quantity == Profile::pressure;
     Scene s = scene;
-    (quantity == "pressure" ? s.outputs.pressure_radii : s.outputs.displacement_radii) = radii_over_a;
-    (quantity == "pressure" ? s.outputs.displacement_radii : s.outputs.pressure_radii).clear();
+    (pressure ? s.outputs.pressure_radii : s.outputs.displacement_radii) = radii_over_a;
+    (pressure ? s.outputs.displacement_radii : s.outputs.pressure_radii).clear();
     s.outputs.vtu = false;
     const FeRun run = run_fe(s, finest_refinement(s), fs::temp_directory_path());
     const AnalyticReference closed = normal_reference(s, batch::Method::closed_form);
     const double a = closed.radius();
-    const bool needs_r = normaliser == "pressure" || normaliser == "displacement";
+    // A profile's normaliser is taken at a radius, a scalar's is not.
+    const bool needs_r = profile_of(normaliser).has_value();
     const double norm = needs_r ? closed.at(normaliser, normaliser_r_over_a * a) : closed.get(normaliser);
     const double area = per_area ? 3.14159265358979323846 * a * a : 1.;
     FeProfile out;
-    for (const fem::Sample &p : quantity == "pressure" ? run.result.pressure : run.result.displacement)
+    for (const fem::Sample &p : pressure ? run.result.pressure : run.result.displacement)
       {
         out.x.push_back(p.r / s.load.a);
         out.y.push_back(p.value * area / norm);
@@ -360,12 +380,6 @@ namespace gradcontact::cases
       row.contract = run.contract->met ? "held" : "refused: " + run.contract->limit;
     }
 
-    /// The estimate of the scalar quantity `name` (scalars()) under the contract.
-    const fem::Estimated &contract_estimate(const fem::ContractResult &c, const std::string &name)
-    {
-      return name == "force" ? c.force : name == "contact radius" ? c.contact_radius : c.depth;
-    }
-
     /// The rows of one FE run against one reference: the scalars, p(r) relative to the largest |p|, w(r).
     void add_fe_rows(const Scene &s, const FeRun &run, const AnalyticReference &ref, SceneResult &result)
     {
@@ -380,7 +394,7 @@ namespace gradcontact::cases
             Row row = compare(q.name, "relative", checked, ref.label(), value, q.fe, value, q.tolerance, fe.n_dofs,
                               run.seconds);
             if (run.contract)
-              add_contract(row, run, contract_estimate(*run.contract, q.name));
+              add_contract(row, run, (*run.contract).*q.estimate);
             result.rows.push_back(row);
           }
         catch (const std::exception &e)
@@ -465,16 +479,17 @@ namespace gradcontact::cases
                               const SceneResult &result, const fs::path &folder)
     {
       const double a = closed.radius();
-      const auto profile_plot = [&](const std::string &quantity, const std::vector<fem::Sample> &samples,
+      const auto profile_plot = [&](const Profile profile, const std::vector<fem::Sample> &samples,
                                     const double x_max, const std::string &ylabel) {
         if (samples.empty())
           return;
+        const std::string quantity = to_string(profile);
         Series curve{"closed form", {}, {}, false}, points{"FE", {}, {}, true};
         constexpr int n = 200;
         for (int i = 0; i <= n; ++i)
           {
             // for the pressure stay inside the contact; for w also skip r = a exactly
-            const double x = x_max * (quantity == "pressure" ? 0.999 * i / n : static_cast<double>(i) / n);
+            const double x = x_max * (profile == Profile::pressure ? 0.999 * i / n : static_cast<double>(i) / n);
             try
               {
                 curve.y.push_back(closed.at(quantity, x * a));
@@ -499,8 +514,8 @@ namespace gradcontact::cases
       double w_max = 1.;
       for (const double x : s.outputs.displacement_radii)
         w_max = std::max(w_max, x);
-      profile_plot("pressure", fe.pressure, 1., "p [Pa]");
-      profile_plot("displacement", fe.displacement, w_max, "w [m]");
+      profile_plot(Profile::pressure, fe.pressure, 1., "p [Pa]");
+      profile_plot(Profile::displacement, fe.displacement, w_max, "w [m]");
     }
   } // namespace
 

@@ -9,17 +9,33 @@
 #include "scene/scene.h"
 
 #include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
 
 namespace gradcontact::cases
 {
-  /// FE samples of a profile (quantity "pressure" or "displacement") at radii r/a, for figures: x = r/a,
-  /// y = the FE value divided by the closed form's `normaliser` (an eval quantity of the same scene,
-  /// at r = normaliser_r_over_a a when it needs r) and multiplied by pi a^2 when `per_area`.
+  /// A profile of the normal FE model over r: the contact pressure p(r) or the surface displacement w(r).
+  enum class Profile
+  {
+    pressure,
+    displacement
+  };
+  /// The profile's eval quantity: "pressure", "displacement".
+  std::string to_string(Profile p);
+  /// The profile whose eval quantity is `name`; none for another quantity.
+  std::optional<Profile> profile_of(const std::string &name);
+  /// The same for a name read from a request (a figure's JSON): another name is an error naming `where` and it.
+  Profile profile_named(const std::string &name, const std::string &where);
+
+  /// FE samples of a profile at radii r/a, for figures: x = r/a, y = the FE value divided by the closed form's
+  /// `normaliser` (an eval quantity of the same scene, at r = normaliser_r_over_a a when it is a profile) and
+  /// multiplied by pi a^2 when `per_area`.
   struct FeProfile
   {
     std::vector<double> x, y;
   };
-  FeProfile fe_profile(const Scene &scene, const std::string &quantity, const std::vector<double> &radii_over_a,
+  FeProfile fe_profile(const Scene &scene, Profile quantity, const std::vector<double> &radii_over_a,
                        const std::string &normaliser, double normaliser_r_over_a, bool per_area);
 
   /// Each runs a scene of its kind (decide_kind) and writes its plots and tables into `folder` (which the

@@ -31,6 +31,21 @@ namespace gradcontact::cases
 
   namespace
   {
+    /// The quantities of the rows whose worst error a plot's title quotes: one name where the row is made and where
+    /// it is read.
+    const char *const stick_mean_u0 = "stick-zone mean u_x (u0)";
+    const char *const unloading_u0  = "unloading u0 (9.83)";
+
+    /// The largest relative error of the rows of `quantity` that did not fail (0 when none).
+    double worst_error(const std::vector<Row> &rows, const std::string &quantity)
+    {
+      double worst = 0.;
+      for (const Row &row : rows)
+        if (row.quantity == quantity && row.error.empty())
+          worst = std::max(worst, row.rel_error);
+      return worst;
+    }
+
     /// The inputs of a tangential_sphere request at the stick radius c, and of an oscillating_sphere request
     /// at the force Fx on a branch of the oscillation of amplitude FA.
     Inputs stick(const double c)
@@ -341,7 +356,7 @@ namespace gradcontact::cases
           check("F_x of the imposed traction (input check)", metric + ", relative", r.force, "closed form 9.80",
                 [&] { return reference.get("tangential_sphere", "tangential_force", stick(c)); }, s.tolerances.force,
                 r.n_dofs, seconds);
-          const double u0 = check("stick-zone mean u_x (u0)", metric + ", relative", r.stick.mean_ux, "closed form 9.80",
+          const double u0 = check(stick_mean_u0, metric + ", relative", r.stick.mean_ux, "closed form 9.80",
                                   [&] { return reference.get("tangential_sphere", "tangential_displacement", stick(c)); },
                                   s.tolerances.displacement, r.n_dofs, seconds);
           assumption_rows(r, metric, seconds);
@@ -364,10 +379,7 @@ namespace gradcontact::cases
         }
       if (!s.outputs.plots)
         return;
-      double worst = 0.;
-      for (const Row &row : result.rows)
-        if (row.quantity == "stick-zone mean u_x (u0)" && row.error.empty())
-          worst = std::max(worst, row.rel_error);
+      const double worst = worst_error(result.rows, stick_mean_u0);
       write_plot(folder, "force_displacement",
                  s.info.name + ": F_x(u0) during loading (fig. 9.32), worst FE u0 error " + format(worst),
                  "u0 / u0(c = 0)", "F_x / (mu F_N)", {curve, points});
@@ -434,7 +446,7 @@ namespace gradcontact::cases
                                         "F_x", F, r.force, o.FA, s.tolerances.force, r.n_dofs, seconds));
           if (std::find(forces.begin(), forces.end(), f) != forces.end())
             {
-              check("unloading u0 (9.83)", metric + ", relative to u_A", r.stick.mean_ux, "closed form 9.83",
+              check(unloading_u0, metric + ", relative to u_A", r.stick.mean_ux, "closed form 9.83",
                     [&] { return branch_u(o, Branch::unloading, F); }, s.tolerances.displacement, r.n_dofs, seconds, uA);
               plots.fe_un.x.push_back(r.stick.mean_ux / uA);
               plots.fe_un.y.push_back(f);
@@ -525,10 +537,7 @@ namespace gradcontact::cases
           re.x.push_back(branch_u(o, Branch::reloading, f * o.FA) / uA);
           re.y.push_back(f);
         }
-      double worst = 0.;
-      for (const Row &row : result.rows)
-        if (row.quantity == "unloading u0 (9.83)" && row.error.empty())
-          worst = std::max(worst, row.rel_error);
+      const double worst = worst_error(result.rows, unloading_u0);
       write_plot(folder, "hysteresis",
                  s.info.name + ": hysteresis loop (fig. 9.36), F_A = " + format(s.tangential.amplitude) + " mu F_N, worst FE u0 error " +
                    format(worst),

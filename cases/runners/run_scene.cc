@@ -9,12 +9,54 @@
 #include "runners/fe_tangential.h"
 #include "runners/stress_map.h"
 
+#include "model/scene_start.h"
+
+#include <chrono>
+#include <memory>
 #include <stdexcept>
 #include <string>
 
 namespace gradcontact::cases
 {
   namespace fs = std::filesystem;
+
+  namespace
+  {
+    /// The strategy of a map scene's kind: the one place a map's Map/parameter chooses what runs.
+    std::unique_ptr<MapStrategy> map_strategy(const Scene &scene)
+    {
+      using Parameter = MapParameters::Parameter;
+      switch (scene.map.parameter)
+        {
+          case Parameter::coulomb_3d:
+            return coulomb_map_strategy(scene);
+          case Parameter::largest_stress:
+            return stress_map_strategy(scene);
+          case Parameter::tabor_parameter:
+            return cohesive_map_strategy(scene);
+          case Parameter::surface_depth:
+          case Parameter::coating_thickness:
+          case Parameter::erf_width:
+          case Parameter::indenter_modulus:
+          case Parameter::friction_coefficient:
+            return fe_map_strategy(scene);
+          case Parameter::none:
+            break;
+        }
+      throw std::invalid_argument("run_map_scene: scene " + scene.file + " has no Map/parameter");
+    }
+  } // namespace
+
+  SceneResult run_map_scene(const Scene &scene, const fs::path &folder, const bool verbose, MapShard &shard)
+  {
+    require_kind(scene, SceneKind::map, "run_map_scene");
+    const std::unique_ptr<MapStrategy> map = map_strategy(scene);
+    const auto  start  = std::chrono::steady_clock::now();
+    SceneResult result = started(scene, folder);
+    run_map(*map, MapRun{folder, scene.resolved, scene.outputs.plots, verbose}, shard, result);
+    result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    return result;
+  }
 
   /// Runs a .prm (or .json) scene by its kind (scene.h).
   SceneResult run_scene(const Scene &scene, const fs::path &folder, const bool verbose)
@@ -32,16 +74,10 @@ namespace gradcontact::cases
         case SceneKind::tangential:
           return run_tangential_scene(scene, folder, verbose);
         case SceneKind::map:
-          if (scene.map.parameter == MapParameters::Parameter::coulomb_3d)
-            return run_coulomb_map(scene, folder, verbose);
-          if (scene.map.parameter == MapParameters::Parameter::largest_stress)
-            return run_stress_map(scene, folder, verbose);
-          if (scene.map.parameter == MapParameters::Parameter::tabor_parameter)
-            {
-              MapShard all;
-              return run_cohesive_map(scene, folder, verbose, all);
-            }
-          return run_map_scene(scene, folder, verbose);
+          {
+            MapShard all;
+            return run_map_scene(scene, folder, verbose, all);
+          }
       }
     throw std::logic_error("run_scene: scene " + scene.file + " has no kind");
   }

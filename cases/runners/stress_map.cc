@@ -1,4 +1,5 @@
 #include "runners/stress_map.h"
+#include "report/map_pipeline.h"
 #include "model/fe_stress.h"
 #include "model/scene_start.h"
 #include "report/table.h"
@@ -12,6 +13,7 @@
 #include <cmath>
 #include <iostream>
 #include <limits>
+#include <memory>
 #include <sstream>
 #include <vector>
 
@@ -151,46 +153,73 @@ namespace gradcontact::cases
       check(quantity, r.closed_form.value, r.fe.value);
       check(quantity + " depth", r.closed_form.z, r.fe.z);
     }
+
+    /// The map as a strategy of the map pipeline: a panel per (nu, k), one point each (both measures of one FE
+    /// search), map.csv and map.md one table.
+    class StressMap final : public MapStrategy
+    {
+    public:
+      explicit StressMap(const Scene &scene)
+        : s(scene)
+      {
+        const std::vector<double> exponents = s.map.exponents.empty() ? std::vector<double>{s.material.k} : s.map.exponents;
+        const std::vector<double> ratios =
+          s.map.poisson_ratios.empty() ? std::vector<double>{s.material.nu} : s.map.poisson_ratios;
+        for (const double nu : ratios)
+          for (const double k : exponents)
+            bodies.emplace_back(k, nu);
+      }
+
+      std::size_t panels() const override { return bodies.size(); }
+      std::size_t points(std::size_t) const override { return 1; }
+
+      void solve(const std::size_t panel, std::size_t, SceneResult &result, const bool verbose) override
+      {
+        const auto [k, nu]   = bodies.at(panel);
+        const bool power_law = s.material.modulus == MaterialParameters::Modulus::power_law;
+        UnitSphere sphere(s.material.modulus, k, nu, grading_length(s), s.discretization.force_tolerance);
+        for (MapRow &row : rows_of(k, nu, power_law, sphere))
+          {
+            add_checks(row, result);
+            if (verbose)
+              std::cout << "  k = " << k << ", nu = " << nu << ", " << row.measure << ": closed form "
+                        << row.closed_form.value << ", FE " << row.fe.value.value << "\n";
+            rows.push_back(std::move(row));
+          }
+      }
+
+      void close_panel(std::size_t, const std::filesystem::path &, SceneResult &, bool) override {}
+
+      MapReport report(const std::filesystem::path &, bool) override
+      {
+        const Table        table = table_of(rows);
+        std::ostringstream md;
+        md << "# " << s.info.name << ": the largest stresses below a sphere\n\n"
+           << "The paraboloid at contact radius a on " << grading_text(s) << ": the largest shear and von Mises stress "
+           << "over p_m = F / (pi a^2), with their depth and radius over a. Closed form: the graded Boussinesq field of "
+           << "the power law E0 (z/c0)^k superposed over its contact pressure (analytic/subsurface.h); FE: the recovered "
+           << "stress field on the accuracy contract's ladder at an asked tolerance of "
+           << format(s.discretization.force_tolerance) << ", with its estimates (cases/model/fe_stress.h). A row passes "
+           << "when the FE is within 3x its estimate of the closed form, where that is exact (the power law; a real "
+           << "grading at k = 0, a homogeneous body); elsewhere on a real grading the FE is the reference, its p_m its "
+           << "own, and the last columns give its deviation from the power law's closed form (none on k < 0, where the "
+           << "power law has no largest stress).\n\n"
+           << table.md();
+        return {table, md.str()};
+      }
+
+      void plot(const std::filesystem::path &) override {} // the map is a table
+
+    private:
+      const Scene                           &s;
+      std::vector<std::pair<double, double>> bodies; ///< (k, nu), nu-major
+      std::vector<MapRow>                    rows;
+    };
   } // namespace
 
-  SceneResult run_stress_map(const Scene &s, const std::filesystem::path &folder, const bool verbose)
+  std::unique_ptr<MapStrategy> stress_map_strategy(const Scene &s)
   {
-    require_kind(s, SceneKind::map, "run_stress_map");
-    const auto  start  = std::chrono::steady_clock::now();
-    SceneResult result = started(s, folder);
-    const std::vector<double> exponents = s.map.exponents.empty() ? std::vector<double>{s.material.k} : s.map.exponents;
-    const std::vector<double> ratios =
-      s.map.poisson_ratios.empty() ? std::vector<double>{s.material.nu} : s.map.poisson_ratios;
-    std::vector<MapRow> rows;
-    for (const double nu : ratios)
-      for (const double k : exponents)
-        {
-          const bool power_law = s.material.modulus == MaterialParameters::Modulus::power_law;
-          UnitSphere sphere(s.material.modulus, k, nu, grading_length(s), s.discretization.force_tolerance);
-          for (MapRow &row : rows_of(k, nu, power_law, sphere))
-            {
-              add_checks(row, result);
-              if (verbose)
-                std::cout << "  k = " << k << ", nu = " << nu << ", " << row.measure << ": closed form "
-                          << row.closed_form.value << ", FE " << row.fe.value.value << "\n";
-              rows.push_back(std::move(row));
-            }
-        }
-    const Table        table = table_of(rows);
-    std::ostringstream md;
-    md << "# " << s.info.name << ": the largest stresses below a sphere\n\n"
-       << "The paraboloid at contact radius a on " << grading_text(s) << ": the largest shear and von Mises stress "
-       << "over p_m = F / (pi a^2), with their depth and radius over a. Closed form: the graded Boussinesq field of "
-       << "the power law E0 (z/c0)^k superposed over its contact pressure (analytic/subsurface.h); FE: the recovered "
-       << "stress field on the accuracy contract's ladder at an asked tolerance of "
-       << format(s.discretization.force_tolerance) << ", with its estimates (cases/model/fe_stress.h). A row passes "
-       << "when the FE is within 3x its estimate of the closed form, where that is exact (the power law; a real "
-       << "grading at k = 0, a homogeneous body); elsewhere on a real grading the FE is the reference, its p_m its "
-       << "own, and the last columns give its deviation from the power law's closed form (none on k < 0, where the "
-       << "power law has no largest stress).\n\n"
-       << table.md();
-    write_table_files(folder, "map", table, md.str());
-    result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    return result;
+    require_kind(s, SceneKind::map, "stress_map_strategy");
+    return std::make_unique<StressMap>(s);
   }
 } // namespace gradcontact::cases

@@ -17,14 +17,15 @@
 #ifndef GRADCONTACT_CASES_STRESS_MAP_H
 #define GRADCONTACT_CASES_STRESS_MAP_H
 
-#include "report/report.h"
+#include "report/map_pipeline.h"
 #include "scene/scene.h"
 
-#include <filesystem>
+#include <memory>
 
 namespace gradcontact::cases
 {
-  SceneResult run_stress_map(const Scene &s, const std::filesystem::path &folder, bool verbose);
+  /// The strategy (report/map_pipeline.h) of the map of Map/parameter = largest stress.
+  std::unique_ptr<MapStrategy> stress_map_strategy(const Scene &s);
 } // namespace gradcontact::cases
 
 #endif

@@ -307,7 +307,9 @@ namespace gradcontact::cases
           request.erase("scene");
           request.erase("set");
           return cache.get("fe\n" + request.dump() + "\n" + scene.resolved, [&] {
-            const FeProfile p = fe_profile(scene, fe.at("quantity"), fe.at("radii").get<std::vector<double>>(),
+            const Profile   quantity = profile_named(fe.at("quantity").get<std::string>(),
+                                                     "figures: fe point set '" + title + "'");
+            const FeProfile p = fe_profile(scene, quantity, fe.at("radii").get<std::vector<double>>(),
                                            fe.at("normaliser"), fe.value("normaliser_r", 0.), fe.value("per_area", false));
             return Series{title, p.x, p.y, true};
           });

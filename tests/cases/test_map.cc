@@ -3,6 +3,7 @@
 
 #include <cases/runners/fe_cohesive.h>
 #include <cases/runners/fe_map.h>
+#include <cases/report/map_pipeline.h>
 #include <cases/report/thresholds.h>
 #include <cases/model/map_published.h>
 #include <cases/app/runner.h>
@@ -15,6 +16,7 @@
 #include <cmath>
 #include <fstream>
 #include <iterator>
+#include <map>
 #include <string>
 
 using namespace gradcontact::cases;
@@ -90,6 +92,112 @@ TEST_CASE("A map scene shall check the power law itself and write the map, its t
   const auto force_deviation = [](const std::vector<std::string> &row) { return std::stod(row.at(2)); };
   const auto &thick = csv[1], &thin = csv[2];
   CHECK(std::abs(force_deviation(thick)) < std::abs(force_deviation(thin)));
+}
+
+namespace
+{
+  /// A map of 2 panels of 3 points whose point (panel p, point j) solves to 10 p + j: it logs the driver's calls and
+  /// checks every value it has in a row.
+  class CountingMap final : public MapStrategy
+  {
+  public:
+    explicit CountingMap(const bool keyed)
+      : keyed(keyed)
+    {}
+    std::size_t panels() const override { return 2; }
+    std::size_t points(std::size_t) const override { return 3; }
+    void open_panel(const std::size_t panel, SceneResult &, bool) override { log.push_back("open " + std::to_string(panel)); }
+    std::optional<MapPointKey> point_key(const std::size_t panel, const std::size_t point) const override
+    {
+      if (!keyed)
+        return std::nullopt;
+      return MapPointKey{"counting map point", std::to_string(panel) + ", " + std::to_string(point)};
+    }
+    void solve(const std::size_t panel, const std::size_t point, SceneResult &, bool) override
+    {
+      log.push_back("solve " + std::to_string(panel) + " " + std::to_string(point));
+      values[{panel, point}] = 10. * panel + point;
+    }
+    nlohmann::json stored(const std::size_t panel, const std::size_t point) const override
+    {
+      return values.at({panel, point});
+    }
+    void restore(const std::size_t panel, const std::size_t point, const nlohmann::json &value) override
+    {
+      log.push_back("read " + std::to_string(panel) + " " + std::to_string(point));
+      values[{panel, point}] = value.get<double>();
+    }
+    void close_panel(const std::size_t panel, const fs::path &, SceneResult &result, bool) override
+    {
+      log.push_back("close " + std::to_string(panel));
+      for (const auto &[at, value] : values)
+        if (at.first == panel)
+          result.rows.push_back(compare("value", std::to_string(at.second), "solve", "exact", 10. * panel + at.second,
+                                        value, 1., 1e-12, 0, 0.));
+    }
+    MapReport report(const fs::path &, bool) override
+    {
+      Table table({Column::both("value", "value")});
+      for (const auto &[at, value] : values)
+        table.add({value});
+      return {table, "# counting map\n\n" + table.md()};
+    }
+    void plot(const fs::path &) override { log.push_back("plot"); }
+
+    std::vector<std::string> log;
+    std::map<std::pair<std::size_t, std::size_t>, double> values;
+
+  private:
+    bool keyed;
+  };
+} // namespace
+
+TEST_CASE("The map pipeline shall run a map's panels and points in order, cache its keyed points and share them "
+          "among shards", "[cases][quick]")
+{
+  const TemporaryFolder folder("gradcontact-map-pipeline");
+  const fs::path report = folder.path() / "reports" / "counting";
+  fs::create_directories(report);
+  const MapRun run{report, "the resolved parameters", true, false};
+
+  // Points without a key: each solved, panel by panel, then the report and the plots.
+  CountingMap plain(false);
+  SceneResult solved;
+  run_map(plain, run, solved);
+  CHECK(plain.log == std::vector<std::string>{"open 0", "solve 0 0", "solve 0 1", "solve 0 2", "close 0", "open 1",
+                                              "solve 1 0", "solve 1 1", "solve 1 2", "close 1", "plot"});
+  CHECK(solved.rows.size() == 6);
+  CHECK(testing::read_csv(report / "map.csv").size() == 7);
+  CHECK(testing::read_text(report / "map.md").find("# counting map") == 0);
+  MapShard halves{0, 2};
+  CHECK_THROWS_WITH(run_map(plain, run, halves, solved), Catch::Contains("not cached"));
+  fs::remove(report / "map.csv");
+
+  // Keyed points: shard 0 of 2 solves the points j % 2 == 0 and writes no report; shard 1 reads those and solves
+  // its own; a run without shards reads all six and writes the report.
+  CountingMap first(true), second(true), whole(true);
+  MapShard    first_half{0, 2}, second_half{1, 2}, all;
+  SceneResult r0, r1, r;
+  run_map(first, run, first_half, r0);
+  CHECK(first_half.computed == 3);
+  CHECK(first_half.skipped == 3);
+  CHECK(first_half.cached == 0);
+  CHECK(r0.rows.size() == 3);
+  CHECK_FALSE(fs::exists(report / "map.csv"));
+  CHECK(std::find(first.log.begin(), first.log.end(), "plot") == first.log.end());
+  run_map(second, run, second_half, r1);
+  CHECK(second_half.computed == 3);
+  CHECK(second_half.cached == 3);
+  CHECK(second_half.skipped == 0);
+  run_map(whole, run, all, r);
+  CHECK(all.cached == 6);
+  CHECK(all.computed == 0);
+  REQUIRE(r.rows.size() == 6);
+  for (const Row &row : r.rows)
+    CHECK(row.pass);
+  CHECK(testing::read_csv(report / "map.csv").size() == 7);
+  MapShard beyond{2, 2};
+  CHECK_THROWS_WITH(run_map(whole, run, beyond, r), Catch::Contains("shard 2/2"));
 }
 
 TEST_CASE("A map scene with a load it cannot map shall be an error naming the entries", "[cases][quick]")
