@@ -10,6 +10,7 @@
 //                 space is recovered exactly from its own nodal forces
 //   dense solve   the prescribed solve equals a dense LU solve of the reduced system
 //   mesh cache    a damaged cached near field gives the same mesh as a fresh gmsh run
+//   corner cell   \int E r dA of E = z^s over a rhombus with one vertex on z = 0, in closed form
 #include <fem/base/boundary_ids.h>
 #include <fem/linear_algebra/direct_system.h>
 #include <fem/elasticity/graded_elasticity.h>
@@ -23,6 +24,7 @@
 #include <deal.II/fe/mapping_q1.h>
 #include <deal.II/grid/grid_generator.h>
 #include <deal.II/grid/tria.h>
+#include <deal.II/grid/tria_description.h>
 #include <deal.II/lac/full_matrix.h>
 #include <deal.II/lac/vector.h>
 #include <deal.II/numerics/matrix_tools.h>
@@ -132,6 +134,70 @@ TEST_CASE("The graded cell integrand shall give no energy to rigid modes and pos
         CHECK(K.matrix_norm_square(not_rigid) > 0);
       }
   }
+}
+
+
+
+TEST_CASE("A cell that touches the surface at a vertex only shall integrate E ~ z^s with the subdivided rule",
+          "[fem][quick]")
+{
+  // Three cells meet at the surface node (0.5, 0): two have a face on z = 0, the middle one, the rhombus
+  // (0.5, 0), (0.65, 0.3), (0.5, 0.6), (0.35, 0.3), only that vertex. E = (z/c0)^s is singular there (s < 0),
+  // which the face rules do not see. Reference: \int E r dA over the rhombus in closed form (its width at depth z
+  // is z below 0.3 and 0.6 - z above, centred on r = 0.5, so \int r dr = 0.5 width):
+  //   0.5 [\int_0^0.3 z^(1+s) dz + \int_0.3^0.6 (0.6 - z) z^s dz].
+  const double s = GENERATE(-0.5, -0.9);
+  CAPTURE(s);
+  const std::vector<dealii::Point<2>> vertices = {{0.0, 0.0}, {0.5, 0.0}, {1.0, 0.0},  {0.0, 0.5},
+                                                  {0.35, 0.3}, {0.65, 0.3}, {1.0, 0.5}, {0.5, 0.6}};
+  std::vector<dealii::CellData<2>> cells(3);
+  cells[0].vertices = {0, 1, 3, 4}; // face (0, 0) - (0.5, 0) on the surface
+  cells[1].vertices = {1, 2, 5, 6}; // face (0.5, 0) - (1, 0) on the surface
+  cells[2].vertices = {1, 5, 4, 7}; // the rhombus: the vertex (0.5, 0) only
+  dealii::Triangulation<2> tria;
+  tria.create_triangulation(vertices, cells, dealii::SubCellData());
+  for (const auto &cell : tria.active_cell_iterators())
+    for (const unsigned int f : cell->face_indices())
+      if (cell->face(f)->at_boundary() && std::abs(cell->face(f)->center()[1]) < 1e-12)
+        cell->face(f)->set_boundary_id(boundary_id::contact);
+  const Material           material{std::make_shared<PowerLawModulus>(1.0, 1.0, s), 0.3};
+  DiscretizationParameters discretization;
+  discretization.degree = 2;
+  const dealii::FESystem<2>  fe(dealii::FE_Q<2>(2), 2);
+  const dealii::MappingQ1<2> mapping;
+  dealii::DoFHandler<2>      dofs(tria);
+  dofs.distribute_dofs(fe);
+  GradedCellRules<2> rules(material, fe, mapping, discretization, false);
+
+  const auto integral = [&](dealii::FEValues<2> &values, const std::vector<double> *xi) {
+    double sum = 0;
+    for (const unsigned int q : values.quadrature_point_indices())
+      {
+        const dealii::Point<2> &x = values.quadrature_point(q);
+        sum += material.modulus->value(x[1]) / (xi ? std::pow((*xi)[q], s) : 1.0) * x[0] * values.JxW(q);
+      }
+    return sum;
+  };
+  const double exact = 0.5 * (std::pow(0.3, 2 + s) / (2 + s) + 0.6 * (std::pow(0.6, 1 + s) - std::pow(0.3, 1 + s)) / (1 + s) -
+                              (std::pow(0.6, 2 + s) - std::pow(0.3, 2 + s)) / (2 + s));
+  unsigned int corners = 0;
+  for (const auto &cell : dofs.active_cell_iterators())
+    {
+      const auto choice = rules.select(cell);
+      const bool corner = cell->index() == 2;
+      CHECK(choice.subdivide == corner);
+      CHECK((choice.surface_face != dealii::numbers::invalid_unsigned_int) == !corner);
+      if (!corner)
+        continue;
+      ++corners;
+      const double chosen = integral(*choice.values, choice.xi);
+      const double plain  = integral(rules.plain(cell, false), nullptr);
+      CAPTURE(exact, chosen, plain);
+      // The subdivided rule (8 copies) leaves the singular corner's share at 8^-(2 + s) of the plain rule's error.
+      CHECK(std::abs(chosen / exact - 1) < 0.25 * std::abs(plain / exact - 1));
+      CHECK(std::abs(chosen / exact - 1) < 1e-2);
+    }
+  CHECK(corners == 1);
 }
 
 
