@@ -74,7 +74,7 @@ namespace gradcontact::fem
             }
         equilibrate();
         umfpack_dl_defaults(control);
-        control[UMFPACK_STRATEGY] = UMFPACK_STRATEGY_UNSYMMETRIC;
+        control[UMFPACK_STRATEGY] = UMFPACK_STRATEGY_SYMMETRIC;
         control[UMFPACK_SCALE]    = UMFPACK_SCALE_NONE; // equilibrated above
         control[UMFPACK_IRSTEP]   = 0;
         double info[UMFPACK_INFO];

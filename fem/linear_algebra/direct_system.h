@@ -10,8 +10,11 @@
 // The factorisation. The displacement formulation's matrices are symmetric positive definite: a supernodal
 // Cholesky factorisation (CHOLMOD, SuiteSparse; Chen, Davis, Hager and Rajamanickam, ACM TOMS 35 (2008) 22). A matrix
 // that is not positive definite (the mixed formulation's saddle point) is factorised by UMFPACK's LU instead (Davis,
-// ACM TOMS 30 (2004) 196) with the unsymmetric strategy: threshold partial pivoting over whole columns, not the
-// symmetric strategy's preference for the diagonal, which the saddle point's pressure block lacks.
+// ACM TOMS 30 (2004) 196) with the symmetric strategy: an ordering of A + A^T (the matrix is symmetric) and a
+// preference for diagonal pivots, taking an off-diagonal one where the diagonal is too small (the saddle point's
+// pressure block, zero at nu = 1/2). Its factors fill far less than the unsymmetric strategy's column ordering,
+// which keeps the finer levels of the mixed formulation within the contract's memory budget; the refinement below
+// makes up for pivots the diagonal preference chooses less stably.
 //
 // Every solve is refined against the true residual (DirectSystem::refine): u += A^{-1}(b - A u), the residual summed
 // as accurately as in twice the working precision, until the correction is at the rounding of u or stops halving. So
