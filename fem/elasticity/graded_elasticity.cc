@@ -82,7 +82,8 @@ namespace gradcontact::fem
     choice.subdivide = straddles || corner;
 
     // A jump inside the cell wins over the surface rule (QIterated resolves the jump; E is bounded
-    // away from the surface there).
+    // away from the surface there); a surface corner has no face rule, and QIterated shrinks the share of
+    // the error that comes from the singular vertex.
     if (choice.subdivide)
       choice.values = subdivided.get();
     else if (choice.surface_face != numbers::invalid_unsigned_int && s != 0.0 && !map_rules)
