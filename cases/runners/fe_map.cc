@@ -207,7 +207,7 @@ namespace gradcontact::cases
     struct ExponentMap
     {
       std::vector<MapPoint> points;
-      std::map<Quantity, double> resolution; ///< per quantity; missing: not measured
+      std::map<Quantity, double> resolution; ///< per quantity; missing: not computed (the finer solve failed or was not run)
       std::string resolution_text;              ///< for map.md
     };
 
@@ -519,7 +519,7 @@ namespace gradcontact::cases
       }
 
       /// Runs a step of the open panel unless an earlier step of it failed; a step that throws fails the panel: a
-      /// row named `what`, and the panel's FE resolution not measured (its points solved so far stay).
+      /// row named `what`, and the panel's FE resolution left uncomputed (its points solved so far stay).
       template <typename Step>
       void guarded(const std::size_t panel, const std::string &what, SceneResult &result, const Step &step)
       {
