@@ -207,7 +207,7 @@ namespace gradcontact::cases
     struct ExponentMap
     {
       std::vector<MapPoint> points;
-      std::map<Quantity, double> resolution; ///< per quantity; missing: not computed (the finer solve failed or was not run)
+      std::map<Quantity, double> resolution; ///< per quantity; missing: not computed
       std::string resolution_text;              ///< for map.md
     };
 
