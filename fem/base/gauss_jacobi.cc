@@ -4,6 +4,7 @@
 #include <deal.II/base/quadrature_lib.h>
 #include <deal.II/base/utilities.h>
 
+#include <cmath>
 #include <sstream>
 #include <stdexcept>
 
@@ -75,4 +76,31 @@ namespace gradcontact::fem
 
   template Quadrature<2> surface_cell_quadrature<2>(unsigned int, double, unsigned int, std::vector<double> &);
   template Quadrature<3> surface_cell_quadrature<3>(unsigned int, double, unsigned int, std::vector<double> &);
+
+
+
+  Quadrature<2> surface_corner_quadrature(const unsigned int n_points, const double s,
+                                          const unsigned int singular_vertex)
+  {
+    if (singular_vertex > 3)
+      throw std::invalid_argument("surface_corner_quadrature: singular_vertex = " + std::to_string(singular_vertex) +
+                                  " outside [0, 3]");
+    // Exponent 1 + s of the ray coordinate u (Duffy's Jacobian u times u^s) must exceed -1; gauss_jacobi checks it.
+    const Quadrature<1> ray = gauss_jacobi(2 * n_points, 1 + s);
+    const QGauss<1>     across(2 * n_points);
+    // Vertex v of the reference square sits at (v % 2, v / 2); a and b are the distances from it along the axes.
+    const bool              flip_x = singular_vertex % 2 == 1, flip_y = singular_vertex / 2 == 1;
+    std::vector<Point<2>>   points;
+    std::vector<double>     weights;
+    for (unsigned int triangle = 0; triangle < 2; ++triangle) // b <= a, then a <= b
+      for (unsigned int i = 0; i < ray.size(); ++i)
+        for (unsigned int j = 0; j < across.size(); ++j)
+          {
+            const double u = ray.point(i)[0], t = across.point(j)[0];
+            const double a = triangle == 0 ? u : u * t, b = triangle == 0 ? u * t : u;
+            points.emplace_back(flip_x ? 1 - a : a, flip_y ? 1 - b : b);
+            weights.push_back(ray.weight(i) * across.weight(j) * std::pow(u, -s));
+          }
+    return Quadrature<2>(points, weights);
+  }
 } // namespace gradcontact::fem

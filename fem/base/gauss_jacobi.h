@@ -27,6 +27,17 @@ namespace gradcontact::fem
   template <int dim>
   dealii::Quadrature<dim> surface_cell_quadrature(unsigned int n_points, double s, unsigned int singular_face,
                                                   std::vector<double> &distance);
+
+  /// The rule for a 2D cell that touches the surface z = 0 at its vertex `singular_vertex` (deal.II numbering) only,
+  /// for integrands z^s g with g smooth. Near that vertex z vanishes linearly along every reference ray, so the
+  /// square is split along its diagonal through the vertex and each triangle is collapsed onto it (Duffy, SIAM J.
+  /// Numer. Anal. 19 (1982) 1260): with u the distance along the axis from the vertex and t u across it,
+  /// dA = u du dt and z^s = u^s (z/u)^s, (z/u)^s smooth, so Gauss-Jacobi of exponent 1 + s in u times
+  /// Gauss-Legendre in t converges like the rules of smooth integrands. The weights are those of plain
+  /// integration (the u^(1+s) of the Gauss-Jacobi weight divided out again except for the Duffy Jacobian u):
+  /// the integrand is evaluated with its z^s. 2 n_points points in u and in t, per triangle.
+  /// Throws std::invalid_argument for n_points = 0, s <= -2 or singular_vertex > 3.
+  dealii::Quadrature<2> surface_corner_quadrature(unsigned int n_points, double s, unsigned int singular_vertex);
 } // namespace gradcontact::fem
 
 #endif

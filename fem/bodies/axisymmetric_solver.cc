@@ -150,6 +150,13 @@ namespace gradcontact::fem
                                 mesh_parameters.h_edge);
     // P: the contact z-DoFs of every rigid-contact load
     system.assemble(dof_handler, cell_stiffness, contact_dofs);
+    // u_z = 1 is rigid: the reactions of the surface rows are summed from displacement differences (DirectSystem).
+    Vector<double>    translation(dof_handler.n_dofs());
+    std::vector<bool> u_z(fe.n_components(), false);
+    u_z[1] = true;
+    for (const auto d : DoFTools::extract_dofs(dof_handler, ComponentMask(u_z)))
+      translation[d] = 1.0;
+    system.set_translation(translation);
     setup_time.assemble = seconds_since(start);
   }
 

@@ -41,6 +41,10 @@ namespace gradcontact::fem
     regular    = std::make_unique<FEValues<dim>>(mapping, fe, QGauss<dim>(n_q), cell_flags);
     subdivided = std::make_unique<FEValues<dim>>(
       mapping, fe, QIterated<dim>(QGauss<1>(n_q), discretization.discontinuity_subdivisions), cell_flags);
+    if constexpr (dim == 2)
+      if (s != 0.0)
+        for (unsigned int v = 0; v < 4; ++v)
+          corner[v] = std::make_unique<FEValues<dim>>(mapping, fe, surface_corner_quadrature(n_q, s, v), cell_flags);
     for (unsigned int f = 0; f < 2 * dim; ++f)
       surface[f] = std::make_unique<FEValues<dim>>(
         mapping, fe, surface_cell_quadrature<dim>(n_q, s, f, distance[f]), cell_flags);
@@ -68,23 +72,29 @@ namespace gradcontact::fem
     for (const unsigned int f : cell->face_indices())
       if (cell->face(f)->at_boundary() && boundary_id::is_surface(cell->face(f)->boundary_id()))
         choice.surface_face = f;
-    double z_min = std::numeric_limits<double>::max(), z_max = -z_min;
+    double       z_min = std::numeric_limits<double>::max(), z_max = -z_min;
+    unsigned int lowest = 0;
     for (const unsigned int v : cell->vertex_indices())
       {
+        if (cell->vertex(v)[dim - 1] < z_min)
+          lowest = v;
         z_min = std::min(z_min, cell->vertex(v)[dim - 1]);
         z_max = std::max(z_max, cell->vertex(v)[dim - 1]);
       }
     const bool straddles =
       std::any_of(jumps.begin(), jumps.end(), [&](const double z) { return z > z_min && z < z_max; });
     // A surface corner: z = 0 at a vertex of the cell, no face on the surface (Choice::subdivide).
-    const bool corner = s != 0.0 && choice.surface_face == numbers::invalid_unsigned_int &&
+    const bool at_corner = s != 0.0 && choice.surface_face == numbers::invalid_unsigned_int &&
                         z_min <= 1e-12 * (z_max - z_min);
-    choice.subdivide = straddles || corner;
+    choice.subdivide = straddles || at_corner;
 
     // A jump inside the cell wins over the surface rule (QIterated resolves the jump; E is bounded
-    // away from the surface there); a surface corner has no face rule, and QIterated shrinks the share of
-    // the error that comes from the singular vertex.
-    if (choice.subdivide)
+    // away from the surface there); a surface corner has no face rule, and takes the rule collapsed onto its
+    // vertex in 2D, QIterated in 3D (its edge on z = 0 would need the collapse along a line) and under the
+    // surface map (whose integrands carry powers of the mapped depth, not z^s).
+    if (at_corner && !straddles && corner[0] && !map_rules)
+      choice.values = corner[lowest].get();
+    else if (choice.subdivide)
       choice.values = subdivided.get();
     else if (choice.surface_face != numbers::invalid_unsigned_int && s != 0.0 && !map_rules)
       {

@@ -145,10 +145,13 @@ namespace gradcontact::fem
     {
       dealii::FEValues<dim>       *values;       ///< the rule for integrands carrying E
       const std::vector<double> *xi;           ///< Gauss-Jacobi: reference distance of each point, else null
-      /// The cell takes the subdivided rule (QIterated): a jump of E crosses it, or it touches the surface z = 0
-      /// at a vertex (an edge in 3D) but has no face there. E ~ z^s is singular at that point (s < 0) or not
-      /// smooth (s > 0), which neither the Gauss rule nor a face's Gauss-Jacobi rule sees; an unstructured near
-      /// field has such cells where three cells meet at a surface node.
+      /// A jump of E crosses the cell, or it touches the surface z = 0 at a vertex (an edge in 3D) but has no
+      /// face there. E ~ z^s is singular at that point (s < 0) or not smooth (s > 0), which neither the Gauss
+      /// rule nor a face's Gauss-Jacobi rule sees; an unstructured near field has such cells where three cells
+      /// meet at a surface node. `values` is then the subdivided rule (QIterated), except at a 2D surface
+      /// corner: there the collapsed Gauss-Jacobi rule of that vertex (surface_corner_quadrature), whose error
+      /// falls with the number of points where QIterated's stays at the singular sub-cell's share, a share
+      /// that grows as s -> -1. Integrands without E take the subdivided rule (plain()).
       bool                       subdivide;
       unsigned int               surface_face; ///< face on z = 0, or numbers::invalid_unsigned_int
     };
@@ -171,6 +174,8 @@ namespace gradcontact::fem
     const double                                       s;
     const std::vector<double>                          jumps;
     std::unique_ptr<dealii::FEValues<dim>>               regular, subdivided;
+    /// 2D, s != 0: the corner rule of each reference vertex (Choice::subdivide).
+    std::array<std::unique_ptr<dealii::FEValues<dim>>, 4> corner;
     std::array<std::unique_ptr<dealii::FEValues<dim>>, 2 * dim> surface, surface_inverse;
     std::array<std::vector<double>, 2 * dim>                 distance, distance_inverse;
     const bool                                             map_rules;

@@ -465,6 +465,35 @@ namespace gradcontact::fem
         }
     }
 
+    /// A row annihilates the translation when its entries sum to at most this times their magnitudes over it: the
+    /// rounding of the entries (a few eps each), far below the sum of a row that the far field or a clamped
+    /// neighbour grounds.
+    constexpr double translation_free_rows = 1e-11;
+
+    /// r = b - A u as accurate_residual, except in the rows with an anchor a_i (DirectSystem::set_translation), whose
+    /// products take u_j - u_(a_i) t_j in place of u_j: the residual of A with those rows' sums over t made exactly 0.
+    void anchored_residual(const SparseMatrix<double> &A, const Vector<double> &t,
+                           const std::vector<types::global_dof_index> &anchor, const Vector<double> &u,
+                           const Vector<double> &b, Vector<double> &r)
+    {
+      for (unsigned int i = 0; i < A.m(); ++i)
+        {
+          const double shift = anchor[i] == numbers::invalid_dof_index ? 0.0 : u[anchor[i]];
+          double       sum = b[i], compensation = 0;
+          for (auto entry = A.begin(i); entry != A.end(i); ++entry)
+            {
+              const double value   = u[entry->column()] - shift * t[entry->column()];
+              const double p       = -entry->value() * value;
+              const double p_error = std::fma(-entry->value(), value, -p);
+              double       s, e;
+              two_sum(sum, p, s, e);
+              sum = s;
+              compensation += e + p_error;
+            }
+          r[i] = sum + compensation;
+        }
+    }
+
     /// Refinement stops when a correction is below this times |u| (the solution rounded to working precision).
     constexpr double refinement_target = 4 * std::numeric_limits<double>::epsilon();
     /// At most this many refinement steps; a step whose correction is not at most half the one before ends it.
@@ -506,27 +535,125 @@ namespace gradcontact::fem
     const Factorization &direct = factorization(prescribe, factorize_seconds);
     const unsigned int   n      = stiffness.m();
 
-    // rhs = b - A g_ext off P, A_ii g_i on P.
-    Vector<double> u(n), rhs(b);
+    // With a translation (header) the unknown is v = u - c t, c the prescribed value of the stiffest prescribed row,
+    // under the load b - c A t (A t: non-zero only in the rows that do not annihilate t).
+    double c = 0;
+    if (prescribe && !anchor.empty() && !prescribed.empty())
+      {
+        unsigned int stiffest = 0;
+        for (unsigned int i = 1; i < prescribed.size(); ++i)
+          if (std::abs(stiffness.diag_element(prescribed[i])) > std::abs(stiffness.diag_element(prescribed[stiffest])))
+            stiffest = i;
+        c = g[stiffest];
+      }
+    Vector<double> load(b);
+    if (c != 0)
+      load.add(-c, grounded);
+
+    // rhs = load - A g_ext off P, A_ii g_i on P (g - c).
+    Vector<double> v(n), rhs(load);
     if (prescribe)
       {
         Vector<double> g_ext(n);
         for (unsigned int i = 0; i < prescribed.size(); ++i)
-          g_ext[prescribed[i]] = g[i];
-        accurate_residual(stiffness, g_ext, b, rhs);
+          g_ext[prescribed[i]] = g[i] - c;
+        accurate_residual(stiffness, g_ext, load, rhs);
         for (unsigned int i = 0; i < prescribed.size(); ++i)
-          rhs[prescribed[i]] = eliminated.diag_element(prescribed[i]) * g[i];
+          rhs[prescribed[i]] = eliminated.diag_element(prescribed[i]) * (g[i] - c);
       }
-    u = rhs;
-    direct.solve(u);
-    refine(direct, prescribe ? eliminated : stiffness, rhs, u);
-    constraints->distribute(u);
+    v = rhs;
+    direct.solve(v);
+    if (anchor.empty())
+      refine(direct, prescribe ? eliminated : stiffness, rhs, v);
+    else
+      {
+        if (prescribe)
+          for (unsigned int i = 0; i < prescribed.size(); ++i)
+            v[prescribed[i]] = g[i] - c;
+        refine_anchored(direct, prescribe, load, v);
+      }
+    constraints->distribute(v);
 
-    // R = A u - b, accurately: on a stiff surface its rows cancel large terms.
+    // R = A u - b = A v - load, accurately: on a stiff surface its rows cancel large terms (header).
     reaction.reinit(n);
-    accurate_residual(stiffness, u, b, reaction);
+    if (anchor.empty())
+      accurate_residual(stiffness, v, load, reaction);
+    else
+      anchored_residual(stiffness, translation, anchor, v, load, reaction);
     reaction *= -1;
+    if (c == 0)
+      return v;
+    Vector<double> u(v);
+    u.add(c, translation);
+    constraints->distribute(u);
     return u;
+  }
+
+
+
+  void DirectSystem::set_translation(const Vector<double> &t)
+  {
+    if (t.size() != stiffness.m())
+      throw std::invalid_argument("DirectSystem::set_translation: " + std::to_string(t.size()) +
+                                  " entries, the system has " + std::to_string(stiffness.m()) + " DoFs");
+    translation = t;
+    // The unconstrained DoFs only (distribute() sets the others). A row's anchor: its largest entry over t, where
+    // the row annihilates t within rounding (elsewhere the far field or a clamped neighbour grounds it).
+    constraints->set_zero(translation);
+    anchor.assign(stiffness.m(), numbers::invalid_dof_index);
+    for (unsigned int i = 0; i < stiffness.m(); ++i)
+      {
+        double                  sum = 0, magnitude = 0, largest = 0;
+        types::global_dof_index best = numbers::invalid_dof_index;
+        for (auto entry = stiffness.begin(i); entry != stiffness.end(i); ++entry)
+          if (translation[entry->column()] != 0.0)
+            {
+              sum += entry->value();
+              magnitude += std::abs(entry->value());
+              if (std::abs(entry->value()) > largest)
+                largest = std::abs(entry->value()), best = entry->column();
+            }
+        if (magnitude > 0 && std::abs(sum) <= translation_free_rows * magnitude)
+          anchor[i] = best;
+      }
+    // A t in the other rows, summed accurately.
+    grounded.reinit(stiffness.m());
+    const Vector<double> none(stiffness.m());
+    accurate_residual(stiffness, translation, none, grounded);
+    grounded *= -1;
+    for (unsigned int i = 0; i < stiffness.m(); ++i)
+      if (anchor[i] != numbers::invalid_dof_index)
+        grounded[i] = 0;
+  }
+
+
+
+  void DirectSystem::refine_anchored(const Factorization &direct, const bool prescribe, const Vector<double> &b,
+                                     Vector<double> &u) const
+  {
+    // As refine(), against A with the anchored rows' sums over t exactly 0 (header), in the full unknowns: the rows
+    // of P keep u_P = g and take no correction.
+    Vector<double> r(u.size()), correction(u.size());
+    double         previous = std::numeric_limits<double>::infinity();
+    for (unsigned int step = 0; step < max_refinement_steps; ++step)
+      {
+        anchored_residual(stiffness, translation, anchor, u, b, r);
+        if (prescribe)
+          for (const auto p : prescribed)
+            r[p] = 0;
+        correction = r;
+        direct.solve(correction);
+        if (prescribe)
+          for (const auto p : prescribed)
+            correction[p] = 0;
+        const double size = correction.linfty_norm();
+        if (!(size < previous))
+          return; // diverging or stalled: keep u
+        u += correction;
+        if (size <= refinement_target * u.linfty_norm() || size > 0.5 * previous)
+          return;
+        previous = size;
+      }
   }
 
 

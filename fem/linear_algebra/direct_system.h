@@ -23,6 +23,21 @@
 // precision (the stiff surface of k near -1 and the saddle point near nu = 1/2 make that large). The reactions
 // R = A u - b are summed the same way: on a stiff surface their rows cancel large terms.
 //
+// That summation is exact to rounding, but A's entries are not: each is rounded, so a row's entries no longer sum to
+// zero over a rigid translation t (A t = 0 in exact arithmetic in every row whose cells are all elastic), and row i
+// of a solve carries a spurious load delta_i u_i, |delta_i| ~ eps sum_j |A_ij|. Under the stiff surface of E ~ z^s,
+// s < 0, the rows at the contact edge hold entries of order E(h) p^4 over cells of size h, far above the force they
+// transmit, and a punch's force changed by parts in 1e5 when nu moved by 1e-10. With a translation given
+// (set_translation), two things remove that:
+// - every row that annihilates t within rounding gets an anchor a_i (its largest entry over t), and the residuals of
+//   the refinement and the reactions take r_i = b_i - sum_j A_ij (u_j - u_(a_i) t_j): the residual of A with
+//   delta_i removed, so the refinement converges to the solution of that exactly translation-invariant matrix (A's
+//   factorisation serves as the preconditioner);
+// - a prescribed solve takes the unknown v = u - c t, c the prescribed value of the stiffest prescribed row, under
+//   the load b - c A t (A t non-zero only in the rows without an anchor, which the far field or a clamped boundary
+//   grounds): v is stored to the rounding of its own size, small where the entries are large (zero on a flat punch),
+//   so the reactions, products of those entries with v, keep their digits.
+//
 // The energy check of fem/grid/discretization.h compares u.Au, over the unconstrained DoFs, with the work
 // of the loads.
 #ifndef GRADCONTACT_FEM_DIRECT_SYSTEM_H
@@ -100,6 +115,11 @@ namespace gradcontact::fem
     /// back substitutions.
     dealii::FullMatrix<double> inverse_block(const std::vector<dealii::types::global_dof_index> &rows);
 
+    /// A rigid translation of the model: t_j = 1 on the DoFs of the translated component, 0 elsewhere (header: the
+    /// residuals of the rows it annihilates are summed from displacement differences). After assemble, before solve;
+    /// kept.
+    void set_translation(const dealii::Vector<double> &t);
+
     /// u.Au over the unconstrained DoFs (the constrained rows of A hold dummy diagonal entries).
     double energy(const dealii::Vector<double> &u) const;
     /// |u|.|A||u| over the unconstrained DoFs: the scale of the rounding of energy(u) and of the work of the
@@ -121,6 +141,9 @@ namespace gradcontact::fem
     /// Iterative refinement of u against A u = rhs with the factorisation of A.
     void refine(const Factorization &direct, const dealii::SparseMatrix<double> &A, const dealii::Vector<double> &rhs,
                 dealii::Vector<double> &u) const;
+    /// The same against A with the anchored rows (header), in the full unknowns (u_P = g kept when `prescribe`).
+    void refine_anchored(const Factorization &direct, bool prescribe, const dealii::Vector<double> &b,
+                         dealii::Vector<double> &u) const;
 
     const dealii::AffineConstraints<double>     *constraints = nullptr;
     dealii::SparsityPattern                      sparsity_pattern;
@@ -129,6 +152,8 @@ namespace gradcontact::fem
     std::vector<dealii::types::global_dof_index> prescribed;
     std::unique_ptr<FarFieldRings>               far_field;
     Exterior                                     exterior;
+    dealii::Vector<double>                       translation, grounded; ///< t, and A t where no anchor (header)
+    std::vector<dealii::types::global_dof_index> anchor;      ///< per row; invalid where the row does not annihilate t
   };
 } // namespace gradcontact::fem
 

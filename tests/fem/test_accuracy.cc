@@ -207,3 +207,36 @@ TEST_CASE("The hp ladder shall deliver 1e-7 at k = 0 against Hertz and Boussines
   CHECK(force_error <= 3 * h.force.relative());
   CHECK(depth_error <= 3 * h.depth.relative());
 }
+
+
+
+TEST_CASE("On a stiff surface (k = -0.75) the punch's force shall fall with the degree on one mesh and not move with a "
+          "rounding-size change of nu",
+          "[fem]")
+{
+  // Two checks that need no reference. The degrees of one mesh span nested spaces, and under a prescribed depth the
+  // force is the strain energy's 2 U / d, which the Galerkin solution over-estimates by less in a larger space: the
+  // force falls with the degree. And nu moved by 1e-10 moves the force by about 1e-10 (F ~ E / (1 - nu^2) near k = 0).
+  // Both failed while the reactions of the stiff rows at the contact edge carried the rounding of A's entries times
+  // u (DirectSystem): the force rose from degree 5 to 6 and moved by parts in 1e6 with nu.
+  const auto force = [](const double nu, const unsigned int degree) {
+    const Material material{std::make_shared<PowerLawModulus>(1.0, 1.0, -0.75), nu};
+    Settings       s = contract_settings(1.0, material, 1e-6);
+    s.mesh.surface_layer_thickness = 1e-2; // cells of 1e-2 a on the surface: no thinner layer
+    s.discretization.degree        = degree;
+    LoadCase punch;
+    punch.type  = LoadType::flat_punch;
+    punch.depth = 1.0;
+    AxisymmetricSolver solver(material, s.mesh, s.discretization);
+    const Result       r = solver.run(punch, OutputRequest{});
+    REQUIRE(r.reliable);
+    return r.force;
+  };
+  const double f4 = force(0.3, 4), f5 = force(0.3, 5), f6 = force(0.3, 6);
+  CAPTURE(f4, f5, f6);
+  CHECK(f5 < f4);
+  CHECK(f6 < f5);
+  const double moved = force(0.3 + 1e-10, 6);
+  CAPTURE(moved);
+  CHECK(std::abs(moved / f6 - 1) < 2e-8);
+}
