@@ -10,8 +10,9 @@
 //   (1988) 837; Schwab, p- and hp-Finite Element Methods, 1998, ch. 4): the error falls exponentially, by a ratio
 //   of a tenth or less per level, where uniform refinement at a fixed degree stalls at the edge singularity's
 //   algebraic rate (the flat punch's force error ~ h^(1+k)).
-// - uniform, on a stiff surface (s < 0: there the hp levels stop converging from degree 5 or so, the same under every
-//   BLAS kernel, so a discretisation effect at the stiff contact edge rather than round-off) and on moduli with
+// - uniform, on a stiff surface (s < 0: there the hp levels stopped converging from degree 5 or so, the same under
+//   every BLAS kernel: the rounding of the stiff rows' entries, which DirectSystem now keeps out of a punch's
+//   reactions but not yet out of an indenter's profile solve at the highest degrees) and on moduli with
 //   jumps: level l is the mesh of contract_settings refined uniformly l times (every cell halved), at one degree.
 // Either way the change of a quantity from level to level, d_l = q_l - q_{l-1}, falls like rho^l once the levels
 // resolve the solution. Then the error of q_n is the geometric tail (Richardson extrapolation with the observed

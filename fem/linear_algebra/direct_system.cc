@@ -378,58 +378,6 @@ namespace gradcontact::fem
 
 
 
-  FullMatrix<double> DirectSystem::inverse_block(const std::vector<types::global_dof_index> &rows)
-  {
-    const unsigned int n = stiffness.m(), m = rows.size();
-    FullMatrix<double> result(m, m);
-    {
-      std::vector<types::global_dof_index> sorted(rows);
-      std::sort(sorted.begin(), sorted.end());
-      if (std::adjacent_find(sorted.begin(), sorted.end()) != sorted.end())
-        throw std::invalid_argument("DirectSystem::inverse_block: a row is listed twice");
-      if (!sorted.empty() && sorted.back() >= n)
-        throw std::invalid_argument("DirectSystem::inverse_block: row " + std::to_string(sorted.back()) +
-                                    " outside the matrix of " + std::to_string(n) + " rows");
-    }
-    if (m == 0)
-      return result;
-
-    double               unused = 0;
-    const Factorization &direct = factorization(false, unused);
-    if (!direct.cholesky())
-      {
-        // Not positive definite: one refined solve of the LU factorisation per row.
-        Vector<double> u(n), unit(n);
-        for (unsigned int j = 0; j < m; ++j)
-          {
-            unit          = 0;
-            unit[rows[j]] = 1;
-            u             = unit;
-            direct.solve(u);
-            // the unconstrained rows read below need no distribution of the constraints
-            refine(direct, stiffness, unit, u);
-            for (unsigned int i = 0; i < m; ++i)
-              result(i, j) = u[rows[i]];
-          }
-        return result;
-      }
-    std::vector<double> block;
-    for (unsigned int first = 0; first < m; first += inverse_block_columns)
-      {
-        const unsigned int columns = std::min(inverse_block_columns, m - first);
-        block.assign(static_cast<std::size_t>(n) * columns, 0.0);
-        for (unsigned int j = 0; j < columns; ++j)
-          block[static_cast<std::size_t>(j) * n + rows[first + j]] = 1;
-        direct.solve_columns(block, n, columns);
-        for (unsigned int j = 0; j < columns; ++j)
-          for (unsigned int i = 0; i < m; ++i)
-            result(i, first + j) = block[static_cast<std::size_t>(j) * n + rows[i]];
-      }
-    return result;
-  }
-
-
-
   namespace
   {
     /// s + t = a + b exactly (Knuth's TwoSum).
@@ -502,21 +450,78 @@ namespace gradcontact::fem
 
 
 
-  void DirectSystem::refine(const Factorization &direct, const SparseMatrix<double> &A, const Vector<double> &rhs,
-                            Vector<double> &u) const
+  FullMatrix<double> DirectSystem::inverse_block(const std::vector<types::global_dof_index> &rows)
+  {
+    const unsigned int n = stiffness.m(), m = rows.size();
+    FullMatrix<double> result(m, m);
+    {
+      std::vector<types::global_dof_index> sorted(rows);
+      std::sort(sorted.begin(), sorted.end());
+      if (std::adjacent_find(sorted.begin(), sorted.end()) != sorted.end())
+        throw std::invalid_argument("DirectSystem::inverse_block: a row is listed twice");
+      if (!sorted.empty() && sorted.back() >= n)
+        throw std::invalid_argument("DirectSystem::inverse_block: row " + std::to_string(sorted.back()) +
+                                    " outside the matrix of " + std::to_string(n) + " rows");
+    }
+    if (m == 0)
+      return result;
+
+    double               unused = 0;
+    const Factorization &direct = factorization(false, unused);
+    if (!direct.cholesky())
+      {
+        // Not positive definite: one refined solve of the LU factorisation per row.
+        Vector<double> u(n), unit(n);
+        for (unsigned int j = 0; j < m; ++j)
+          {
+            unit          = 0;
+            unit[rows[j]] = 1;
+            u             = unit;
+            direct.solve(u);
+            // the unconstrained rows read below need no distribution of the constraints
+            refine(direct, [&](const Vector<double> &x, Vector<double> &r) { accurate_residual(stiffness, x, unit, r); },
+                   {}, u);
+            for (unsigned int i = 0; i < m; ++i)
+              result(i, j) = u[rows[i]];
+          }
+        return result;
+      }
+    std::vector<double> block;
+    for (unsigned int first = 0; first < m; first += inverse_block_columns)
+      {
+        const unsigned int columns = std::min(inverse_block_columns, m - first);
+        block.assign(static_cast<std::size_t>(n) * columns, 0.0);
+        for (unsigned int j = 0; j < columns; ++j)
+          block[static_cast<std::size_t>(j) * n + rows[first + j]] = 1;
+        direct.solve_columns(block, n, columns);
+        for (unsigned int j = 0; j < columns; ++j)
+          for (unsigned int i = 0; i < m; ++i)
+            result(i, first + j) = block[static_cast<std::size_t>(j) * n + rows[i]];
+      }
+    return result;
+  }
+
+
+
+  void DirectSystem::refine(const Factorization &direct, const Residual &residual,
+                            const std::vector<types::global_dof_index> &fixed, Vector<double> &u) const
   {
     // Iterative refinement with an accurate residual (Higham, ch. 12; Moler, J. ACM 14 (1967) 316):
     // u += A^{-1} (rhs - A u) until the correction is at the rounding of u. It makes the solve backward stable where
     // the factorisation's pivots are not (an ill-conditioned saddle point whose LU depends on the rounding of the BLAS
     // kernel), and its forward error that of the rounding of the solution rather than the condition number times
-    // the working precision. Each step costs one back substitution.
+    // the working precision. Each step costs one back substitution. The rows `fixed` keep their values.
     Vector<double> r(u.size()), correction(u.size());
     double         previous = std::numeric_limits<double>::infinity();
     for (unsigned int step = 0; step < max_refinement_steps; ++step)
       {
-        accurate_residual(A, u, rhs, r);
+        residual(u, r);
+        for (const auto i : fixed)
+          r[i] = 0;
         correction = r;
         direct.solve(correction);
+        for (const auto i : fixed)
+          correction[i] = 0;
         const double size = correction.linfty_norm();
         if (!(size < previous))
           return; // diverging or stalled: keep u
@@ -564,13 +569,20 @@ namespace gradcontact::fem
     v = rhs;
     direct.solve(v);
     if (anchor.empty())
-      refine(direct, prescribe ? eliminated : stiffness, rhs, v);
+      {
+        const SparseMatrix<double> &A = prescribe ? eliminated : stiffness;
+        refine(direct, [&](const Vector<double> &x, Vector<double> &r) { accurate_residual(A, x, rhs, r); }, {}, v);
+      }
     else
       {
+        // Against A with the anchored rows (header), in the full unknowns: the rows of P keep v_P = g - c.
         if (prescribe)
           for (unsigned int i = 0; i < prescribed.size(); ++i)
             v[prescribed[i]] = g[i] - c;
-        refine_anchored(direct, prescribe, load, v);
+        const auto residual = [&](const Vector<double> &x, Vector<double> &r) {
+          anchored_residual(stiffness, translation, anchor, x, load, r);
+        };
+        refine(direct, residual, prescribe ? prescribed : std::vector<types::global_dof_index>(), v);
       }
     constraints->distribute(v);
 
@@ -624,36 +636,6 @@ namespace gradcontact::fem
     for (unsigned int i = 0; i < stiffness.m(); ++i)
       if (anchor[i] != numbers::invalid_dof_index)
         grounded[i] = 0;
-  }
-
-
-
-  void DirectSystem::refine_anchored(const Factorization &direct, const bool prescribe, const Vector<double> &b,
-                                     Vector<double> &u) const
-  {
-    // As refine(), against A with the anchored rows' sums over t exactly 0 (header), in the full unknowns: the rows
-    // of P keep u_P = g and take no correction.
-    Vector<double> r(u.size()), correction(u.size());
-    double         previous = std::numeric_limits<double>::infinity();
-    for (unsigned int step = 0; step < max_refinement_steps; ++step)
-      {
-        anchored_residual(stiffness, translation, anchor, u, b, r);
-        if (prescribe)
-          for (const auto p : prescribed)
-            r[p] = 0;
-        correction = r;
-        direct.solve(correction);
-        if (prescribe)
-          for (const auto p : prescribed)
-            correction[p] = 0;
-        const double size = correction.linfty_norm();
-        if (!(size < previous))
-          return; // diverging or stalled: keep u
-        u += correction;
-        if (size <= refinement_target * u.linfty_norm() || size > 0.5 * previous)
-          return;
-        previous = size;
-      }
   }
 
 

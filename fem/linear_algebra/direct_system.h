@@ -53,6 +53,7 @@
 #include <deal.II/lac/sparsity_pattern.h>
 #include <deal.II/lac/vector.h>
 
+#include <functional>
 #include <memory>
 #include <vector>
 
@@ -138,12 +139,11 @@ namespace gradcontact::fem
     /// The factorisation of one matrix: Cholesky, or LU when it is not positive definite (header).
     class Factorization;
     const Factorization &factorization(bool prescribe, double &seconds);
-    /// Iterative refinement of u against A u = rhs with the factorisation of A.
-    void refine(const Factorization &direct, const dealii::SparseMatrix<double> &A, const dealii::Vector<double> &rhs,
-                dealii::Vector<double> &u) const;
-    /// The same against A with the anchored rows (header), in the full unknowns (u_P = g kept when `prescribe`).
-    void refine_anchored(const Factorization &direct, bool prescribe, const dealii::Vector<double> &b,
-                         dealii::Vector<double> &u) const;
+    /// residual(u, r): r = rhs - A u of the system refined.
+    using Residual = std::function<void(const dealii::Vector<double> &, dealii::Vector<double> &)>;
+    /// Iterative refinement of u with the factorisation of A, the rows `fixed` kept.
+    void refine(const Factorization &direct, const Residual &residual,
+                const std::vector<dealii::types::global_dof_index> &fixed, dealii::Vector<double> &u) const;
 
     const dealii::AffineConstraints<double>     *constraints = nullptr;
     dealii::SparsityPattern                      sparsity_pattern;
