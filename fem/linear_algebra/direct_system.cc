@@ -44,10 +44,10 @@ namespace gradcontact::fem
     };
 
     /// UMFPACK's sparse LU (Davis, ACM TOMS 30 (2004) 196) of a square matrix that is not positive definite (the mixed
-    /// formulation's saddle point), with its controls set here: the unsymmetric strategy (a column ordering and threshold
-    /// partial pivoting over the whole column, where the symmetric strategy prefers the diagonal, which the saddle
-    /// point's pressure block lacks), rows scaled by their largest entry, and no refinement of its own: the caller
-    /// refines against its own residual until the backward error stops falling (DirectSystem::refine).
+    /// formulation's saddle point), with its controls set here: the symmetric strategy (an ordering of A + A^T and a
+    /// preference for diagonal pivots, off-diagonal ones where the saddle point's pressure block needs them; header),
+    /// rows scaled by their largest entry, and no refinement of its own: the caller refines against its own residual
+    /// until the backward error stops falling (DirectSystem::refine).
     class UmfpackLU
     {
     public:
