@@ -479,8 +479,10 @@ namespace gradcontact::fem
             u             = unit;
             direct.solve(u);
             // the unconstrained rows read below need no distribution of the constraints
-            refine(direct, [&](const Vector<double> &x, Vector<double> &r) { accurate_residual(stiffness, x, unit, r); },
-                   {}, u);
+            const auto residual = [&](const Vector<double> &x, Vector<double> &r) {
+              accurate_residual(stiffness, x, unit, r);
+            };
+            refine(direct, residual, {}, u);
             for (unsigned int i = 0; i < m; ++i)
               result(i, j) = u[rows[i]];
           }

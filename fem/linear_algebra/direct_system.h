@@ -27,8 +27,8 @@
 // zero over a rigid translation t (A t = 0 in exact arithmetic in every row whose cells are all elastic), and row i
 // of a solve carries a spurious load delta_i u_i, |delta_i| ~ eps sum_j |A_ij|. Under the stiff surface of E ~ z^s,
 // s < 0, the rows at the contact edge hold entries of order E(h) p^4 over cells of size h, far above the force they
-// transmit, and a punch's force changed by parts in 1e5 when nu moved by 1e-10. With a translation given
-// (set_translation), two things remove that:
+// transmit, and a punch's force moved far more than physically when nu moved in its last digits. With a translation
+// given (set_translation), two things remove that:
 // - every row that annihilates t within rounding gets an anchor a_i (its largest entry over t), and the residuals of
 //   the refinement and the reactions take r_i = b_i - sum_j A_ij (u_j - u_(a_i) t_j): the residual of A with
 //   delta_i removed, so the refinement converges to the solution of that exactly translation-invariant matrix (A's
