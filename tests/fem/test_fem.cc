@@ -98,6 +98,36 @@ TEST_CASE("The Gauss-Jacobi rule shall integrate x^s times polynomials of degree
     }
 }
 
+
+
+TEST_CASE("The corner rule shall integrate (distance from its vertex)^s over the square, at every vertex",
+          "[fem][quick]")
+{
+  // With x, y the distances from vertex v along the axes, in closed form (integrating in x first):
+  //   \int_0^1 \int_0^1 (x + y)^s dx dy   = (2^(s+2) - 2) / ((s + 1)(s + 2)),
+  //   \int_0^1 \int_0^1 x (x + y)^s dx dy = (2^(s+2) - 1) / ((s + 1)(s + 2)) - (2^(s+3) - 2) / ((s + 1)(s + 2)(s + 3))
+  // (both checked against mpmath's quadrature to 30 digits). The factor x, which vanishes on one edge through the
+  // vertex, tells the mirrored axes apart.
+  const double       s = GENERATE(-0.5, -0.9, 0.5);
+  const unsigned int v = GENERATE(0u, 1u, 2u, 3u);
+  const auto         q = surface_corner_quadrature(4, s, v);
+  double             plain = 0, weighted = 0;
+  for (unsigned int i = 0; i < q.size(); ++i)
+    {
+      const double x = v % 2 == 1 ? 1 - q.point(i)[0] : q.point(i)[0];
+      const double y = v / 2 == 1 ? 1 - q.point(i)[1] : q.point(i)[1];
+      plain += q.weight(i) * std::pow(x + y, s);
+      weighted += q.weight(i) * x * std::pow(x + y, s);
+    }
+  const double exact_plain = (std::pow(2.0, s + 2) - 2) / ((s + 1) * (s + 2));
+  const double exact_weighted =
+    (std::pow(2.0, s + 2) - 1) / ((s + 1) * (s + 2)) - (std::pow(2.0, s + 3) - 2) / ((s + 1) * (s + 2) * (s + 3));
+  CAPTURE(s, v, plain, exact_plain, weighted, exact_weighted);
+  CHECK_THAT(plain, WithinRel(exact_plain, 1e-12));
+  CHECK_THAT(weighted, WithinRel(exact_weighted, 1e-12));
+  CHECK_THROWS_WITH(surface_corner_quadrature(4, s, 4), Catch::Matchers::Contains("singular_vertex = 4"));
+}
+
 TEST_CASE("The layered modulus shall hold the exact layer averages of the power law", "[fem][quick]")
 {
   const double k    = GENERATE(-0.5, 0.5);
