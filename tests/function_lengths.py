@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """No function longer than about 120 lines (STYLE.md: a function reads as one step).
 
-Scans the C++ sources of analytic/, fem/, cases/ and numerics/ and measures every function body: from the line of its opening
+Scans the C++ sources of analytic/, fem/, cases/ and numerics/ and counts the lines of every function body: from the line of its opening
 brace to the line of its closing one. A body is a brace whose statement so far (since the last ';', '{' or '}')
 holds a parameter list and is not a control statement, a namespace, a class, an enum or a lambda inside another
 body; lambdas and local classes count toward the function that holds them. Comments and string literals are
@@ -10,7 +10,7 @@ blanked first, so a brace in them does not count.
 Prints the longest bodies and every one above the limit as file:line: name (lines); exits 1 when one is above.
 
     function_lengths.py [ROOT] [--limit N] [--top N]
-    function_lengths.py --self-test   (the measure on a made-up source whose lengths are known)
+    function_lengths.py --self-test   (the count on a made-up source whose lengths are known)
 """
 import argparse
 import os
@@ -84,7 +84,7 @@ def bodies(path):
 
 
 def self_test():
-    """The measure on a made-up source: a long function with a lambda, a class with an inline member, a string and
+    """The count on a made-up source: a long function with a lambda, a class with an inline member, a string and
     a comment holding braces, control blocks; returns 0 when every length is what it must be."""
     import tempfile
     long_body = ''.join(f'  x += {i};\n' for i in range(118))

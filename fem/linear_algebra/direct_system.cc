@@ -420,10 +420,16 @@ namespace gradcontact::fem
 
     /// r = b - A u as accurate_residual, except in the rows with an anchor a_i (DirectSystem::set_translation), whose
     /// products take u_j - u_(a_i) t_j in place of u_j: the residual of A with those rows' sums over t made exactly 0.
+    /// No anchors (an empty `anchor`, no translation): accurate_residual.
     void anchored_residual(const SparseMatrix<double> &A, const Vector<double> &t,
                            const std::vector<types::global_dof_index> &anchor, const Vector<double> &u,
                            const Vector<double> &b, Vector<double> &r)
     {
+      if (anchor.empty())
+        {
+          accurate_residual(A, u, b, r);
+          return;
+        }
       for (unsigned int i = 0; i < A.m(); ++i)
         {
           const double shift = anchor[i] == numbers::invalid_dof_index ? 0.0 : u[anchor[i]];
@@ -590,10 +596,7 @@ namespace gradcontact::fem
 
     // R = A u - b = A v - load, accurately: on a stiff surface its rows cancel large terms (header).
     reaction.reinit(n);
-    if (anchor.empty())
-      accurate_residual(stiffness, v, load, reaction);
-    else
-      anchored_residual(stiffness, translation, anchor, v, load, reaction);
+    anchored_residual(stiffness, translation, anchor, v, load, reaction);
     reaction *= -1;
     if (c == 0)
       return v;
