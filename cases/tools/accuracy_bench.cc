@@ -15,6 +15,7 @@
 #include <map>
 #include <random>
 #include <sstream>
+#include <stdexcept>
 #include <vector>
 
 namespace gradcontact::cases
@@ -162,10 +163,11 @@ namespace gradcontact::cases
     }
 
     /// The grid: every (k, nu, tolerance) one ladder, solved for each profile on the same levels.
-    void run_grid(const bool quick, std::vector<Row> &rows)
+    void run_grid(const bool quick, const std::vector<double> &asked_ks, std::vector<Row> &rows)
     {
-      const std::vector<double> ks = quick ? std::vector<double>{-0.9, 0., 0.9} :
-                                             std::vector<double>{-0.95, -0.9, -0.5, 0., 0.5, 0.9, 0.95};
+      const std::vector<double> ks = !asked_ks.empty() ? asked_ks :
+                                     quick             ? std::vector<double>{-0.9, 0., 0.9} :
+                                                         std::vector<double>{-0.95, -0.9, -0.5, 0., 0.5, 0.9, 0.95};
       const std::vector<double> nus = quick ? std::vector<double>{0.3} : std::vector<double>{0.3, 0.5};
       const std::vector<double> tolerances =
         quick ? std::vector<double>{1e-3} : std::vector<double>{1e-2, 1e-4, 1e-6, 1e-8};
@@ -356,9 +358,13 @@ namespace gradcontact::cases
 
   int run_accuracy_bench(const AccuracyBenchOptions &options, const fs::path &folder, const std::string &machine)
   {
+    for (const double k : options.ks)
+      if (!(k > -1 && k < 1))
+        throw std::invalid_argument("bench: --k = " + fmt(k) + " is outside (-1, 1)");
     std::vector<Row> rows;
-    run_grid(options.quick, rows);
-    run_random(options.quick, rows);
+    run_grid(options.quick, options.ks, rows);
+    if (options.ks.empty())
+      run_random(options.quick, rows);
 
     int n_broken = 0, refusals = 0, answers = 0;
     for (const Row &r : rows)

@@ -15,6 +15,7 @@
 
 #include <filesystem>
 #include <string>
+#include <vector>
 
 namespace gradcontact::cases
 {
@@ -22,6 +23,9 @@ namespace gradcontact::cases
   {
     /// The small grid of the ctest (the paraboloid at k = -0.9, 0, 0.9, nu = 0.3, asked 1e-3; two random requests).
     bool quick = false;
+    /// The grid's k (each in (-1, 1)); empty: the default grid's. When given, the random held-out requests are not
+    /// run: a sweep of a few gradings (`gradcontact bench --part accuracy --k -0.5,0.9`).
+    std::vector<double> ks;
   };
 
   /// Runs the grid and writes accuracy.{md,csv} into `folder`; returns the number of broken promises.

@@ -44,6 +44,7 @@ namespace gradcontact::cases
       int fe_repeat = 3;
       fs::path peer_scripts = fs::path(GRADCONTACT_SOURCE_DIR) / "cases/peers/freefem";
       std::vector<std::string> scenes; // --scene a,b: FE scenes to run (empty: all)
+      std::vector<double> ks;          // --k a,b: the accuracy grid's k (empty: all)
     };
 
     /// One family: case/quantity, with its rows (requests without method) and references.
@@ -111,6 +112,27 @@ namespace gradcontact::cases
               std::istringstream list(value("--scene"));
               for (std::string name; std::getline(list, name, ',');)
                 o.scenes.push_back(name);
+            }
+          else if (args[i] == "--k")
+            {
+              // comma-separated numbers; the range is checked by run_accuracy_bench
+              std::istringstream list(value("--k"));
+              for (std::string text; std::getline(list, text, ',');)
+                {
+                  std::size_t used = 0;
+                  double      k    = 0;
+                  try
+                    {
+                      k = std::stod(text, &used);
+                    }
+                  catch (const std::logic_error &)
+                    {
+                      used = 0;
+                    }
+                  if (used == 0 || used != text.size())
+                    throw std::invalid_argument("bench: --k = '" + text + "' is not a number in (-1, 1)");
+                  o.ks.push_back(k);
+                }
             }
           else if (args[i] == "--peer-scripts")
             o.peer_scripts = value("--peer-scripts");
@@ -419,6 +441,7 @@ namespace gradcontact::cases
           {
             AccuracyBenchOptions accuracy;
             accuracy.quick = o.quick;
+            accuracy.ks    = o.ks;
             broken = run_accuracy_bench(accuracy, tmp, machine());
           }
         if (o.part == "stresses" || o.part == "all")

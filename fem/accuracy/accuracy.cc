@@ -1,5 +1,6 @@
 #include <fem/accuracy/accuracy.h>
 #include <fem/base/errors.h>
+#include <fem/modulus/modulus.h>
 
 #include <algorithm>
 #include <chrono>
@@ -39,7 +40,7 @@ namespace gradcontact::fem
     {
       std::vector<LadderValue> q;
       if (load.type != LoadType::constant_pressure)
-        q.push_back({"force", r.force, std::abs(r.force), false});
+        q.push_back({"force", r.force, std::abs(r.force), false, 1, true});
       if (load.type == LoadType::indenter || load.type == LoadType::indenter_force ||
           load.type == LoadType::constant_pressure)
         q.push_back({"depth", r.depth, std::abs(r.depth), false});
@@ -51,7 +52,7 @@ namespace gradcontact::fem
       // A pressure sample: its recovery from the reactions (the L2 projection on the surface trace) spreads the edge
       // singularity's error into the contact, where two levels can agree far below it; its estimate needs three.
       for (const Sample &s : r.pressure)
-        q.push_back({"p(" + format(s.r) + ")", s.value, p_max, true});
+        q.push_back({"p(" + format(s.r) + ")", s.value, p_max, true, 1, true});
       for (const Sample &s : r.displacement)
         q.push_back({"w(" + format(s.r) + ")", s.value, std::abs(s.value), false, s.r / contact_radius});
       // A stress sample: relative to the largest stress component sampled (a component that crosses zero would
@@ -65,7 +66,7 @@ namespace gradcontact::fem
           const std::string  where = "(" + format(points[i].r) + ", " + format(points[i].z) + ")";
           for (const auto &[name, value] : {std::pair{"sigma_rr", s.rr}, std::pair{"sigma_zz", s.zz},
                                             std::pair{"sigma_tt", s.tt}, std::pair{"sigma_rz", s.rz}})
-            q.push_back({name + where, value, s_max, true});
+            q.push_back({name + where, value, s_max, true, 1, true});
         }
       return q;
     }
@@ -89,8 +90,17 @@ namespace gradcontact::fem
   {
     if (!material.modulus)
       throw std::invalid_argument("contract_ladder: the material has no modulus field");
-    return material.modulus->surface_exponent() >= 0 && material.modulus->discontinuities().empty() ? Ladder::hp :
+    return material.modulus->surface_exponent() >= -2 && material.modulus->discontinuities().empty() ? Ladder::hp :
                                                                                                        Ladder::uniform;
+  }
+
+
+
+  bool probes_rounding(const Material &material)
+  {
+    if (!material.modulus)
+      throw std::invalid_argument("probes_rounding: the material has no modulus field");
+    return material.modulus->surface_exponent() < 0;
   }
 
 
@@ -298,6 +308,8 @@ namespace gradcontact::fem
     if (ladder == Ladder::uniform && history[i].size() == 2)
       e.error *= two_level_safety;
     e.error += truncation * std::pow(std::max(1.0, last[i].reach), 1 + deep_exponent) * e.scale;
+    if (!rounding.empty())
+      e.error += rounding_safety * rounding[i];
     return e;
   }
 
@@ -333,7 +345,8 @@ namespace gradcontact::fem
 
   void LadderRecord::fail(const std::string &why)
   {
-    stop = why;
+    is_met = false; // a failed rounding probe unmakes a met ladder
+    stop   = why;
   }
 
 
@@ -396,6 +409,29 @@ namespace gradcontact::fem
 
 
 
+  void LadderRecord::add_rounding(const std::vector<LadderValue> &probe, const double factor)
+  {
+    if (probe.size() != last.size())
+      throw std::logic_error("LadderRecord::add_rounding: the probe has " + std::to_string(probe.size()) +
+                             " quantities, the last level " + std::to_string(last.size()));
+    rounding.assign(last.size(), 0.);
+    for (std::size_t i = 0; i < last.size(); ++i)
+      rounding[i] = std::abs(probe[i].value / (last[i].scales ? factor : 1.) - last[i].value);
+    if (!is_met)
+      return;
+    for (std::size_t i = 0; i < last.size(); ++i)
+      if (estimate(i).relative() > asked)
+        {
+          is_met = false;
+          stop   = "rounding: the matrix's rounding moves " + last[i].name + " by about " +
+                 format(rounding[i] / std::max(last[i].scale, std::numeric_limits<double>::min())) +
+                 " (the stiff surface's entries, rounded anew with every modulus times " + format(factor) + ")";
+          return;
+        }
+  }
+
+
+
   std::string LadderRecord::limit() const
   {
     if (is_met)
@@ -446,7 +482,7 @@ namespace gradcontact::fem
     if (l >= 2)
       {
         // The factorisations kept, and the next one's predicted from the growth over the last level.
-        double kept = 0;
+        double kept = probe ? double(probe->factor_bytes()) : 0.;
         for (const auto &solver : solvers)
           kept += double(solver->factor_bytes());
         const double last = double(solvers[l - 1]->factor_bytes()), before = double(solvers[l - 2]->factor_bytes());
@@ -469,6 +505,44 @@ namespace gradcontact::fem
         return nullptr;
       }
     return solvers.back().get();
+  }
+
+
+
+  void ContractSolver::probe_rounding(const LoadCase &load, const OutputRequest &outputs, LadderRecord &record)
+  {
+    const unsigned int l = record.levels() - 1;
+    if (!probe || probe_level != l)
+      {
+        probe.reset(); // before the next is made: the memory of one probe at a time
+        Material scaled = material;
+        scaled.modulus  = std::make_shared<ScaledModulus>(material.modulus, rounding_probe_factor);
+        const Settings s = ladder_settings(base, ladder, l);
+        probe            = std::make_unique<AxisymmetricSolver>(scaled, s.mesh, s.discretization);
+        probe_level      = l;
+      }
+    // The loads that are forces or stresses scale with the modulus; depths and profiles do not.
+    LoadCase scaled_load = load;
+    scaled_load.force *= rounding_probe_factor;
+    scaled_load.pressure *= rounding_probe_factor;
+    scaled_load.cohesion.stress *= rounding_probe_factor;
+    Result r;
+    try
+      {
+        r = probe->run(scaled_load, outputs);
+      }
+    catch (const std::runtime_error &e)
+      {
+        record.fail("failed solve of the rounding probe on level " + std::to_string(l) + ": " + e.what());
+        return;
+      }
+    if (!r.reliable)
+      {
+        record.fail("unreliable solve of the rounding probe on level " + std::to_string(l) + ": " + r.message);
+        return;
+      }
+    record.add_rounding(quantities(scaled_load, r, base.mesh.contact_radius, outputs.stress_points),
+                        rounding_probe_factor);
   }
 
 
@@ -512,6 +586,9 @@ namespace gradcontact::fem
         if (stop)
           break;
       }
+
+    if (record.met() && probes_rounding(material))
+      probe_rounding(load, outputs, record);
 
     // The estimates of the finest level solved.
     out.met        = record.met();

@@ -152,6 +152,20 @@ namespace gradcontact::fem
   /// singularity's error into the contact, and a sample's changes fall less regularly than an integral's.
   inline constexpr double hp_local_floor = 0.5;
 
+  /// The rounding probe. The stored matrix is rounded entry by entry, and on a stiff surface (s < 0) the small stiff
+  /// cells at the contact edge have entries of order E(h) p^4, so that the rounding of the entries reaches an
+  /// indenter's force and depth at the 1e-9 to 1e-7 level (DirectSystem::set_translation keeps the rounding of the
+  /// row sums out, not that of the entries). The ladder cannot see it: from level to level it stays about the same,
+  /// and the levels then look converged. So a met ladder on a stiff surface solves its last level once more with
+  /// every modulus times this factor and the loads with it (ScaledModulus): in exact arithmetic the displacements
+  /// are the same and forces, pressures and stresses scale by the factor, while every entry is rounded anew. The
+  /// change that remains, with the factor divided out, is a sample of the rounding's effect (the difference of two
+  /// roundings); rounding_safety times it joins every estimate.
+  inline constexpr double rounding_probe_factor = 1.3;
+  inline constexpr double rounding_safety = 2;
+  /// Whether ContractSolver probes the rounding of a met ladder for this modulus (a stiff surface, s < 0).
+  bool probes_rounding(const Material &material);
+
   /// The factor on an estimate of the uniform ladder from two levels (ratio assumed, not observed; Roache, Verification
   /// and Validation in Computational Science and Engineering, 1998, ch. 5: the grid convergence index's safety factor).
   inline constexpr double two_level_safety = 2;
@@ -177,6 +191,7 @@ namespace gradcontact::fem
     double      scale = 0;     ///< what its relative error divides by (Estimated::scale)
     bool        local = false; ///< a recovered pressure sample: its estimate takes three levels on either ladder
     double      reach = 1;     ///< r / a of a displacement sample (its share of a clamped far field's truncation)
+    bool        scales = false; ///< a force, pressure or stress: times the factor of the rounding probe
   };
 
   /// The contract's record of quantities solved level by level on a ladder (ladder_settings of a level-0 `base`):
@@ -191,6 +206,11 @@ namespace gradcontact::fem
     /// Records level levels(): the same quantities in the same order as on the levels before, and the level's
     /// largest DoF count. Returns true when the ladder stops here (met(), or limit() names why not).
     bool add(const std::vector<LadderValue> &values, dealii::types::global_dof_index dofs);
+    /// Records the rounding probe of the last level: the same quantities solved with every modulus and load times
+    /// `factor` (rounding_probe_factor). A quantity's rounding is its change with the factor divided out (where it
+    /// scales), and its estimate adds rounding_safety times that; met() is judged again, and when it no longer holds,
+    /// limit() names the rounding.
+    void add_rounding(const std::vector<LadderValue> &probe, double factor);
     /// Records that level levels() could not be solved (an unreliable solve, a failed search): the ladder stops.
     void fail(const std::string &why);
     /// Before solving level levels(): whether it may be solved (the ladder's last level, AccuracyBudget::max_levels,
@@ -219,6 +239,7 @@ namespace gradcontact::fem
     AccuracyBudget                   budget;
     std::vector<std::vector<double>> history; ///< history[i][l]: quantity i on level l
     std::vector<LadderValue>         last;
+    std::vector<double>              rounding; ///< per quantity, of the last level, when probed (absolute)
     std::vector<dealii::types::global_dof_index> dofs;
     bool                             is_met = false;
     std::string                      stop;
@@ -242,6 +263,9 @@ namespace gradcontact::fem
   private:
     /// The solver of level l, made on first use; null when its size exceeds the budget (`limit` says so).
     AxisymmetricSolver *level(unsigned int l, std::string &limit);
+    /// The rounding probe of the record's last level (the header of rounding_probe_factor): solves `load` on the
+    /// level's mesh with the modulus and the load scaled, and gives the record its quantities.
+    void probe_rounding(const LoadCase &load, const OutputRequest &outputs, LadderRecord &record);
 
     Material                                         material;
     Settings                                         base;
@@ -249,6 +273,8 @@ namespace gradcontact::fem
     double                                           asked;
     AccuracyBudget                                   budget;
     std::vector<std::unique_ptr<AxisymmetricSolver>> solvers;
+    std::unique_ptr<AxisymmetricSolver>              probe; ///< the rounding probe's solver, of level probe_level
+    unsigned int                                     probe_level = 0;
   };
 } // namespace gradcontact::fem
 

@@ -12,6 +12,7 @@
 #include <fstream>
 #include <sstream>
 #include <stdexcept>
+#include <utility>
 
 namespace gradcontact::fem
 {
@@ -150,6 +151,26 @@ namespace gradcontact::fem
     if (!(z0 > 0.0) || !std::isfinite(z0))
       fail("ShiftedPowerLawModulus", "z0", z0, "(0, inf) (z0 = 0 is PowerLawModulus)");
   }
+
+  ScaledModulus::ScaledModulus(std::shared_ptr<const ModulusField> base_field, const double scale)
+    : base(std::move(base_field))
+    , factor(scale)
+  {
+    if (!base)
+      throw std::invalid_argument("ScaledModulus: the base modulus field is null");
+    if (!(std::isfinite(scale) && scale > 0))
+      fail("ScaledModulus", "factor", scale, "(0, inf)");
+  }
+
+  std::string ScaledModulus::description() const
+  {
+    std::ostringstream s;
+    s.precision(17);
+    s << factor << " times " << base->description();
+    return s.str();
+  }
+
+
 
   double ShiftedPowerLawModulus::value(const double z) const
   {

@@ -75,6 +75,24 @@ namespace gradcontact::fem
     const double E0, c0, k;
   };
 
+  /// factor E(z) of `base` (factor > 0, finite): the same grading, every modulus times the factor. The accuracy
+  /// contract's rounding probe (fem/accuracy/accuracy.h) solves the same problem on it: in exact arithmetic its
+  /// displacements are the base's under loads times the factor, while every matrix entry is rounded anew.
+  class ScaledModulus : public ModulusField
+  {
+  public:
+    ScaledModulus(std::shared_ptr<const ModulusField> base, double factor);
+    double value(double z) const override { return factor * base->value(z); }
+    double surface_exponent() const override { return base->surface_exponent(); }
+    double deep_exponent() const override { return base->deep_exponent(); }
+    std::vector<double> discontinuities() const override { return base->discontinuities(); }
+    double average(double z1, double z2) const override { return factor * base->average(z1, z2); }
+    std::string description() const override;
+
+    const std::shared_ptr<const ModulusField> base;
+    const double factor;
+  };
+
   /// N layers with the exact averages of `base` between consecutive interfaces
   /// 0 = z_0 < z_1 < ... < z_N, and `base` itself for z > z_N.
   class LayeredModulus : public ModulusField

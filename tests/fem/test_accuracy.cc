@@ -63,15 +63,18 @@ TEST_CASE("A change between two levels that is near zero by accident shall not p
   CHECK_THAT(hp.error, WithinRel(hp_accident * 0.1 * oscillation_ratio / (1 - oscillation_ratio), 1e-6));
 }
 
-TEST_CASE("The ladder shall be hp where the surface is not stiff and uniform where it is or the modulus jumps; an hp "
-          "level shall raise the degree and refine the edge, the axis and the surface map's floor with it",
+TEST_CASE("The ladder shall be hp where the modulus has no jumps and uniform where it has; an hp level shall raise "
+          "the degree and refine the edge, the axis and the surface map's floor with it",
           "[fem][quick]")
 {
   const auto power = [](const double k) { return Material{std::make_shared<PowerLawModulus>(1.0, 1.0, k), 0.3}; };
+  const auto coating = [](const double k) { return Material{std::make_shared<CoatingModulus>(1.0, 1.0, k, 0.2), 0.3}; };
   CHECK(contract_ladder(power(0.0)) == Ladder::hp);
   CHECK(contract_ladder(power(0.5)) == Ladder::hp);
-  CHECK(contract_ladder(power(-0.5)) == Ladder::uniform);
-  CHECK(contract_ladder(Material{std::make_shared<CoatingModulus>(1.0, 1.0, 0.5, 0.2), 0.3}) == Ladder::uniform);
+  CHECK(contract_ladder(power(-0.5)) == Ladder::hp);
+  CHECK(contract_ladder(power(-0.95)) == Ladder::hp);
+  CHECK(contract_ladder(coating(0.5)) == Ladder::uniform);
+  CHECK(contract_ladder(coating(-0.5)) == Ladder::uniform);
 
   const Settings base = contract_settings(1.0, power(0.5), 1e-6);
   CHECK(base.discretization.degree == hp_first_degree);
@@ -88,10 +91,52 @@ TEST_CASE("The ladder shall be hp where the surface is not stiff and uniform whe
              WithinRel(base.mesh.h_edge * std::pow(0.5, two.mesh.edge_refinements), 1e-12));
   CHECK_THROWS_WITH(ladder_settings(base, Ladder::hp, max_contract_degree), Contains("level") && Contains("degree"));
 
-  const Settings stiff = contract_settings(1.0, power(-0.5), 1e-6);
+  const Settings stiff = contract_settings(1.0, coating(-0.5), 1e-6);
   const Settings one   = ladder_settings(stiff, Ladder::uniform, 1);
   CHECK(one.mesh.global_refinements == stiff.mesh.global_refinements + 1);
   CHECK(one.discretization.degree == stiff.discretization.degree);
+}
+
+TEST_CASE("The rounding probe shall add twice its change, the factor divided out where a quantity scales, and unmake "
+          "a met ladder that it moves beyond the tolerance",
+          "[fem][quick]")
+{
+  const Material material{std::make_shared<PowerLawModulus>(1.0, 1.0, -0.5), 0.3};
+  const Settings base = contract_settings(1.0, material, 1e-3);
+  // Three hp levels converging by a hundredth per level: met at 1e-3 before the probe.
+  const auto levels = [&](LadderRecord &record) {
+    for (const double d : {1e-3, 1e-5, 1e-7})
+      record.add({{"force", 1 + d, 1, false, 1, true}, {"w(2)", 2 + 2 * d, 2, false, 2, false}}, 1000);
+  };
+  const double factor = rounding_probe_factor;
+  LadderRecord small(material, base, 1e-3);
+  levels(small);
+  REQUIRE(small.met());
+  const double force_tail = small.estimate(0).error, w_tail = small.estimate(1).error;
+  // The force scales with the modulus, w(2) does not: changes of 1e-4 and 3e-4 once the factor is divided out.
+  small.add_rounding({{"force", factor * (1 + 1e-7 + 1e-4), 1, false, 1, true},
+                      {"w(2)", 2 + 2e-7 - 3e-4, 2, false, 2, false}},
+                     factor);
+  CHECK_THAT(small.estimate(0).error, WithinRel(force_tail + rounding_safety * 1e-4, 1e-6));
+  CHECK_THAT(small.estimate(1).error, WithinRel(w_tail + rounding_safety * 3e-4, 1e-6));
+  CHECK(small.met());
+
+  LadderRecord large(material, base, 1e-3);
+  levels(large);
+  large.add_rounding({{"force", factor * (1 + 1e-7), 1, false, 1, true}, {"w(2)", 2 + 2e-7 + 2e-3, 2, false, 2, false}},
+                     factor);
+  CHECK_FALSE(large.met());
+  CHECK_THAT(large.limit(), Contains("rounding") && Contains("w(2)"));
+  CHECK_THROWS_WITH(large.add_rounding({{"force", 1, 1, false, 1, true}}, factor), Contains("quantities"));
+
+  // Only a stiff surface is probed; the probe's modulus is the base's times the factor.
+  CHECK(probes_rounding(material));
+  CHECK_FALSE(probes_rounding(Material{std::make_shared<PowerLawModulus>(1.0, 1.0, 0.5), 0.3}));
+  const ScaledModulus scaled(material.modulus, factor);
+  CHECK_THAT(scaled.value(0.37), WithinRel(factor * material.modulus->value(0.37), 1e-15));
+  CHECK_THAT(scaled.average(0.1, 0.4), WithinRel(factor * material.modulus->average(0.1, 0.4), 1e-15));
+  CHECK(scaled.surface_exponent() == -0.5);
+  CHECK_THROWS_WITH(ScaledModulus(material.modulus, 0.0), Contains("factor") && Contains("(0, inf)"));
 }
 
 TEST_CASE("The contract shall deliver the asked tolerance at k = 0 against Hertz and Boussinesq, with an estimate "

@@ -1,6 +1,6 @@
 // ladder_study: the contract ladder of one point, every level of it, against the closed form. Not a test.
 //
-//   ladder_study k=0 nu=0.3 load=punch|paraboloid tol=1e-6 p=3 levels=5 max_dofs=1.2e6 w=2 pr=0.5 [sr=0 sz=0.1]
+//   ladder_study k=0 nu=0.3 e0=1 load=punch|paraboloid tol=1e-6 p=3 levels=5 max_dofs=1.2e6 w=2 pr=0.5 [sr=0 sz=0.1]
 // Prints, per level, the DoFs, the force (and the depth under a paraboloid), w(w a) and p(pr a), their true
 // relative errors, the level-to-level ratios, and the contract's estimate; p overrides the degree of the ladder.
 // With sz: the recovered stresses at (sr a, sz a) too, each relative to the largest of them.
@@ -28,7 +28,7 @@ namespace
   /// w(w a) and p(pr a).
   struct Point
   {
-    double k = 0, nu = 0.3, tol = 1e-8, w_r = 2, p_r = 0.5, s_r = 0, s_z = -1;
+    double k = 0, nu = 0.3, e0 = 1, tol = 1e-8, w_r = 2, p_r = 0.5, s_r = 0, s_z = -1;
     bool   punch = true;
   };
 
@@ -37,6 +37,7 @@ namespace
     Point pt;
     pt.k     = args.num("k", 0);
     pt.nu    = args.num("nu", 0.3);
+    pt.e0    = args.num("e0", 1);
     pt.tol   = args.num("tol", 1e-8);
     pt.w_r   = args.num("w", 2);
     pt.p_r   = args.num("pr", 0.5);
@@ -96,7 +97,7 @@ namespace
   double exact(const Point &pt, const std::string &quantity, const double r, const std::string &component = "")
   {
     nlohmann::json q = {{"case", pt.punch ? "flat_punch" : "paraboloid"}, {"quantity", quantity}, {"a", 1.0},
-                        {"material", {{"E0", 1.0}, {"c0", 1.0}, {"k", pt.k}, {"nu", pt.nu}}}};
+                        {"material", {{"E0", pt.e0}, {"c0", 1.0}, {"k", pt.k}, {"nu", pt.nu}}}};
     if (pt.punch)
       q["d"] = 1.0;
     else
@@ -151,7 +152,7 @@ int main(int argc, char **argv)
     {
       const StudyArguments args(argc, argv, "ladder_study");
       const Point          pt = parse_point(args);
-      Material             material{std::make_shared<PowerLawModulus>(1., 1., pt.k), pt.nu};
+      Material             material{std::make_shared<PowerLawModulus>(pt.e0, 1., pt.k), pt.nu};
       const Settings       s = ladder_settings_of(args, material, pt);
       AccuracyBudget       budget;
       budget.max_levels = static_cast<unsigned>(args.num("levels", 5));
