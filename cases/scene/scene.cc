@@ -294,7 +294,7 @@ namespace gradcontact::cases
     add_choice(prm, "accuracy", contract, accuracies, "levels",
                "levels: one FE solve per entry of refinements (a convergence study against the references); "
                "contract (normal, JKR adhesion and tangential scenes with a rigid indenter on a disc): the "
-               "ladder of fem/accuracy/accuracy.h (hp for k >= 0, uniform refinements for k < 0) until the Richardson "
+               "ladder of fem/accuracy/accuracy.h (hp; uniform refinements where E jumps) until the Richardson "
                "estimate of every FE quantity (force, depth, contact radius, p(r) relative to the largest |p|, "
                "w(r); the critical states of adhesion; K_T and the tangential curves) is within force tolerance, "
                "or a refusal naming the limit; every FE row shows the asked tolerance, the estimate and the "

@@ -374,9 +374,9 @@ namespace gradcontact::cases
         ++answers, refusals += !r.met;
     std::ostringstream md;
     md << "# The accuracy contract: asked tolerance, true error, estimate and cost\n\nMachine: " << machine
-       << ".  \nThe FE ladder of fem/accuracy/accuracy.h (hp for k >= 0: one degree more and a finer geometric mesh at the "
-          "contact edge per level; uniform refinements of one degree for k < 0) until the Richardson estimate "
-          "of every quantity is within the asked tolerance, or a refusal naming the limit, against the chapter's "
+       << ".  \nThe FE ladder of fem/accuracy/accuracy.h (hp: one degree more and a finer geometric mesh at the "
+          "contact edge per level) until the Richardson estimate of every quantity is within the asked tolerance "
+          "(on k < 0 with the rounding probe's change added), or a refusal naming the limit, against the chapter's "
           "closed forms, unit problem a = E0 = c0 = 1"
        << (options.quick ? " (quick grid)" : "") << ". " << answers << " answers, " << refusals << " refused, "
        << n_broken << " broken promises (an answer off by more than its tolerance, or a refusal that does not name its "

@@ -90,8 +90,7 @@ namespace gradcontact::fem
   {
     if (!material.modulus)
       throw std::invalid_argument("contract_ladder: the material has no modulus field");
-    return material.modulus->surface_exponent() >= -2 && material.modulus->discontinuities().empty() ? Ladder::hp :
-                                                                                                       Ladder::uniform;
+    return material.modulus->discontinuities().empty() ? Ladder::hp : Ladder::uniform;
   }
 
 
@@ -309,7 +308,10 @@ namespace gradcontact::fem
       e.error *= two_level_safety;
     e.error += truncation * std::pow(std::max(1.0, last[i].reach), 1 + deep_exponent) * e.scale;
     if (!rounding.empty())
-      e.error += rounding_safety * rounding[i];
+      {
+        e.rounding = rounding[i];
+        e.error += rounding_safety * rounding[i];
+      }
     return e;
   }
 
@@ -475,36 +477,63 @@ namespace gradcontact::fem
 
 
 
+  double ContractSolver::held_bytes()
+  {
+    double held = probe ? double(probe->factor_bytes()) : 0.;
+    for (std::size_t i = 0; i < solvers.size(); ++i)
+      if (solvers[i])
+        {
+          const double bytes = double(solvers[i]->factor_bytes());
+          if (bytes > 0)
+            level_bytes[i] = bytes;
+          held += bytes;
+        }
+    return held;
+  }
+
+
+
+  bool ContractSolver::make_room(const double bytes, const unsigned int keep)
+  {
+    if (held_bytes() + bytes <= budget.max_factor_bytes)
+      return true;
+    // The other levels' factorisations only save later loads their set-up: they give way, and are made again when a
+    // later load's ladder needs them.
+    probe.reset();
+    for (std::size_t i = 0; i < solvers.size(); ++i)
+      if (i != keep)
+        solvers[i].reset();
+    return held_bytes() + bytes <= budget.max_factor_bytes;
+  }
+
+
+
   AxisymmetricSolver *ContractSolver::level(const unsigned int l, std::string &limit)
   {
-    if (l < solvers.size())
+    if (l < solvers.size() && solvers[l])
       return solvers[l].get();
-    if (l >= 2)
+    held_bytes(); // records the sizes of the levels held
+    if (l >= solvers.size())
+      solvers.resize(l + 1), level_bytes.resize(l + 1, 0.);
+    // The level's factorisation: known when it was made before, else predicted from the growth over the last level.
+    const double last = l >= 1 ? level_bytes[l - 1] : 0, before = l >= 2 ? level_bytes[l - 2] : 0;
+    const double next = level_bytes[l] > 0 ? level_bytes[l] : before > 0 ? last * last / before : 0;
+    if (!make_room(next, l))
       {
-        // The factorisations kept, and the next one's predicted from the growth over the last level.
-        double kept = probe ? double(probe->factor_bytes()) : 0.;
-        for (const auto &solver : solvers)
-          kept += double(solver->factor_bytes());
-        const double last = double(solvers[l - 1]->factor_bytes()), before = double(solvers[l - 2]->factor_bytes());
-        const double next = before > 0 ? last * last / before : 0;
-        if (kept + next > budget.max_factor_bytes)
-          {
-            limit = "memory budget: the factorisations and matrices of levels 0-" + std::to_string(l - 1) + " hold " +
-                    format(kept) + " bytes and level " + std::to_string(l) + "'s would add about " + format(next) +
-                    ", above AccuracyBudget::max_factor_bytes = " + format(budget.max_factor_bytes);
-            return nullptr;
-          }
-      }
-    const Settings s = ladder_settings(base, ladder, l);
-    solvers.push_back(std::make_unique<AxisymmetricSolver>(material, s.mesh, s.discretization));
-    if (solvers.back()->n_dofs() > budget.max_dofs)
-      {
-        limit = "DoF budget: level " + std::to_string(l) + " has " + std::to_string(solvers.back()->n_dofs()) +
-                " DoFs, above AccuracyBudget::max_dofs = " + std::to_string(budget.max_dofs);
-        solvers.pop_back();
+        limit = "memory budget: level " + std::to_string(l) + "'s factorisation and matrices would hold about " +
+                format(next) + " bytes, above AccuracyBudget::max_factor_bytes = " + format(budget.max_factor_bytes);
         return nullptr;
       }
-    return solvers.back().get();
+    const Settings s = ladder_settings(base, ladder, l);
+    auto solver = std::make_unique<AxisymmetricSolver>(material, s.mesh, s.discretization);
+    if (solver->n_dofs() > budget.max_dofs)
+      {
+        limit = "DoF budget: level " + std::to_string(l) + " has " + std::to_string(solver->n_dofs()) +
+                " DoFs, above AccuracyBudget::max_dofs = " + std::to_string(budget.max_dofs);
+        return nullptr;
+      }
+    solvers[l] = std::move(solver);
+    return solvers[l].get();
   }
 
 
@@ -515,6 +544,16 @@ namespace gradcontact::fem
     if (!probe || probe_level != l)
       {
         probe.reset(); // before the next is made: the memory of one probe at a time
+        const double bytes = double(solvers.at(l)->factor_bytes());
+        if (!make_room(bytes, l))
+          {
+            // A refusal keeps its estimates without the rounding; a met ladder cannot be confirmed.
+            if (record.met())
+              record.fail("memory budget: the rounding probe of level " + std::to_string(l) + " would hold about " +
+                          format(bytes) + " bytes next to the level's own, above AccuracyBudget::max_factor_bytes = " +
+                          format(budget.max_factor_bytes));
+            return;
+          }
         Material scaled = material;
         scaled.modulus  = std::make_shared<ScaledModulus>(material.modulus, rounding_probe_factor);
         const Settings s = ladder_settings(base, ladder, l);
@@ -587,7 +626,8 @@ namespace gradcontact::fem
           break;
       }
 
-    if (record.met() && probes_rounding(material))
+    // A refused ladder is probed too, so that the estimates it prints include the rounding.
+    if (record.levels() >= 2 && probes_rounding(material))
       probe_rounding(load, outputs, record);
 
     // The estimates of the finest level solved.

@@ -3,17 +3,16 @@
 //
 // The ladder: a sequence of discretisations whose answers converge to the exact one, solved from the cheapest up.
 // Two kinds (contract_ladder picks one by the modulus):
-// - hp, where the surface is not stiff (E ~ z^s, s >= 0, no jumps): level l raises the degree by one (2, 3, ...,
+// - hp, where the modulus has no jumps (E ~ z^s at the surface, any s): level l raises the degree by one (2, 3, ...,
 //   max_contract_degree) and adds hp_edge_step geometric refinements at the contact edge (hp_axis_step at the axis
 //   where a cone's tip is graded), and the surface map's floor follows the edge cell. Every length the solution is
 //   singular over shrinks with the degree, the geometric mesh of hp-FEM (Babuska & Guo, SIAM J. Numer. Anal. 25
 //   (1988) 837; Schwab, p- and hp-Finite Element Methods, 1998, ch. 4): the error falls exponentially, by a ratio
 //   of a tenth or less per level, where uniform refinement at a fixed degree stalls at the edge singularity's
-//   algebraic rate (the flat punch's force error ~ h^(1+k)).
-// - uniform, on a stiff surface (s < 0: there the hp levels stopped converging from degree 5 or so, the same under
-//   every BLAS kernel: the rounding of the stiff rows' entries, which DirectSystem now keeps out of a punch's
-//   reactions but not yet out of an indenter's profile solve at the highest degrees) and on moduli with
-//   jumps: level l is the mesh of contract_settings refined uniformly l times (every cell halved), at one degree.
+//   algebraic rate (the flat punch's force error ~ h^(1+k)). On a stiff surface (s < 0) the highest levels carry
+//   the rounding of the stiff cells' entries, which the levels cannot show: the rounding probe below measures it.
+// - uniform, on moduli with jumps (whose interfaces the geometric mesh does not follow): level l is the mesh of
+//   contract_settings refined uniformly l times (every cell halved), at one degree.
 // Either way the change of a quantity from level to level, d_l = q_l - q_{l-1}, falls like rho^l once the levels
 // resolve the solution. Then the error of q_n is the geometric tail (Richardson extrapolation with the observed
 // ratio; Richardson, Phil. Trans. R. Soc. A 226 (1927) 299; Roache, Verification and Validation in Computational
@@ -27,7 +26,9 @@
 // (its first two are cheap). The ladder stops at the first level whose estimates are
 // all within the tolerance, or refuses when the next level would exceed the DoF budget, or when the quantities stop
 // converging (observed ratio at ratio_limit or above), or when the levels the observed ratios still need would exceed
-// the budget (so that a refusal does not cost the largest solves), or when a level's solve is unreliable.
+// the budget (so that a refusal does not cost the largest solves), or when a level's solve is unreliable. On a
+// stiff surface the last level is probed for rounding (rounding_probe_factor): its change joins every estimate, and a
+// met ladder is judged once more and refused ("rounding") when it no longer holds.
 //
 // What is estimated: the force, the depth (under contact-radius control) or the contact radius (under depth or
 // force control), p(r) at the asked radii relative to the largest |p| sampled (on three levels at least), w(r)
@@ -58,7 +59,8 @@ namespace gradcontact::fem
     unsigned int max_levels = 4;
     /// The memory the factorisations and matrices of the levels a ContractSolver keeps may hold together (bytes). A
     /// level's is predicted from the growth over the level before (high degrees fill the factor faster than the DoFs
-    /// grow).
+    /// grow); the levels below give way to it (they only save later loads their set-up), so that only a level that
+    /// does not fit alone is refused.
     double max_factor_bytes = 8e9;
 
     /// Throws std::invalid_argument naming the member, its value and the valid range.
@@ -72,6 +74,7 @@ namespace gradcontact::fem
     double error = std::numeric_limits<double>::infinity(); ///< estimated |value - exact| (absolute)
     double scale = 0;    ///< what the relative error divides by: |value|, or max |p| for a pressure
     double ratio = 0;    ///< the convergence ratio used (assumed or observed)
+    double rounding = 0; ///< the rounding probe's change, whose rounding_safety multiple `error` includes (absolute)
     std::vector<double> levels; ///< the value on every level solved (the last is `value`)
 
     double relative() const { return scale > 0 ? error / scale : error; }
@@ -103,7 +106,7 @@ namespace gradcontact::fem
     hp
   };
 
-  /// hp where the modulus is not stiff at the surface (surface exponent >= 0) and has no jumps, else uniform.
+  /// hp where the modulus has no jumps, else uniform.
   Ladder contract_ladder(const Material &material);
 
   /// The hp ladder: its first degree (at least 3 in the mixed formulation), its last, and what every level adds.
@@ -154,16 +157,18 @@ namespace gradcontact::fem
 
   /// The rounding probe. The stored matrix is rounded entry by entry, and on a stiff surface (s < 0) the small stiff
   /// cells at the contact edge have entries of order E(h) p^4, so that the rounding of the entries reaches an
-  /// indenter's force and depth at the 1e-9 to 1e-7 level (DirectSystem::set_translation keeps the rounding of the
-  /// row sums out, not that of the entries). The ladder cannot see it: from level to level it stays about the same,
-  /// and the levels then look converged. So a met ladder on a stiff surface solves its last level once more with
+  /// indenter's force and depth, and the pressures, far above the machine epsilon (DirectSystem::set_translation
+  /// keeps the rounding of the row sums out, not that of the entries). The ladder cannot see it: from level to level it stays about the same,
+  /// and the levels then look converged. So a ladder on a stiff surface solves its last level once more with
   /// every modulus times this factor and the loads with it (ScaledModulus): in exact arithmetic the displacements
   /// are the same and forces, pressures and stresses scale by the factor, while every entry is rounded anew. The
   /// change that remains, with the factor divided out, is a sample of the rounding's effect (the difference of two
-  /// roundings); rounding_safety times it joins every estimate.
+  /// roundings); rounding_safety times it joins every estimate, of a refused ladder too (unless the probe's
+  /// factorisation would exceed AccuracyBudget::max_factor_bytes: then a met ladder is refused, a refused one keeps
+  /// its estimates without it).
   inline constexpr double rounding_probe_factor = 1.3;
   inline constexpr double rounding_safety = 2;
-  /// Whether ContractSolver probes the rounding of a met ladder for this modulus (a stiff surface, s < 0).
+  /// Whether ContractSolver probes the rounding of the last level for this modulus (a stiff surface, s < 0).
   bool probes_rounding(const Material &material);
 
   /// The factor on an estimate of the uniform ladder from two levels (ratio assumed, not observed; Roache, Verification
@@ -208,8 +213,8 @@ namespace gradcontact::fem
     bool add(const std::vector<LadderValue> &values, dealii::types::global_dof_index dofs);
     /// Records the rounding probe of the last level: the same quantities solved with every modulus and load times
     /// `factor` (rounding_probe_factor). A quantity's rounding is its change with the factor divided out (where it
-    /// scales), and its estimate adds rounding_safety times that; met() is judged again, and when it no longer holds,
-    /// limit() names the rounding.
+    /// scales), and its estimate adds rounding_safety times that; a met() ladder is judged again, and when it no
+    /// longer holds, limit() names the rounding.
     void add_rounding(const std::vector<LadderValue> &probe, double factor);
     /// Records that level levels() could not be solved (an unreliable solve, a failed search): the ladder stops.
     void fail(const std::string &why);
@@ -261,8 +266,14 @@ namespace gradcontact::fem
     double tolerance() const { return asked; }
 
   private:
-    /// The solver of level l, made on first use; null when its size exceeds the budget (`limit` says so).
+    /// The solver of level l, made on first use (again after make_room dropped it); null when its size exceeds the
+    /// budget (`limit` says so).
     AxisymmetricSolver *level(unsigned int l, std::string &limit);
+    /// The bytes the solvers and the probe hold (DirectSystem::factor_bytes); records every level's in level_bytes.
+    double held_bytes();
+    /// Whether `bytes` more fit into AccuracyBudget::max_factor_bytes, after dropping the probe and every level's
+    /// solver but level `keep`'s when they do not fit beside them.
+    bool make_room(double bytes, unsigned int keep);
     /// The rounding probe of the record's last level (the header of rounding_probe_factor): solves `load` on the
     /// level's mesh with the modulus and the load scaled, and gives the record its quantities.
     void probe_rounding(const LoadCase &load, const OutputRequest &outputs, LadderRecord &record);
@@ -272,7 +283,8 @@ namespace gradcontact::fem
     Ladder                                           ladder;
     double                                           asked;
     AccuracyBudget                                   budget;
-    std::vector<std::unique_ptr<AxisymmetricSolver>> solvers;
+    std::vector<std::unique_ptr<AxisymmetricSolver>> solvers; ///< per level; null where dropped (make_room)
+    std::vector<double>                              level_bytes; ///< per level, once known (held_bytes)
     std::unique_ptr<AxisymmetricSolver>              probe; ///< the rounding probe's solver, of level probe_level
     unsigned int                                     probe_level = 0;
   };

@@ -1,8 +1,11 @@
 // The accuracy contract of fem/accuracy/accuracy.h: the Richardson estimate on known sequences, the choice of ladder and its
 // levels, the ladders against the classical (k = 0) closed forms of Hertz and Boussinesq (independent of the graded
-// chapter and of the MDR), their refusals and input checks.
+// chapter and of the MDR) and, on a stiff surface, against the chapter's paraboloid as typed from the text
+// (written_out.h), the rounding probe, their refusals and input checks.
 #include <fem/accuracy/accuracy.h>
 #include <fem/modulus/modulus.h>
+
+#include "written_out.h"
 
 #include <catch2/catch.hpp>
 
@@ -188,14 +191,14 @@ TEST_CASE("A tolerance beyond the DoF budget shall be refused, naming the budget
   CHECK_THAT(r.limit, Contains("DoF budget") && Contains("max_dofs = 60000"));
 
   CHECK_THROWS_WITH(contract_settings(1.0, material, 0.0), Contains("tolerance") && Contains("[1e-9, 0.1]"));
-  // The factorisations kept: level 2's, predicted from the growth of levels 0 and 1, does not fit into the budget
-  // (max_factor_bytes below).
+  // Level 2's factorisation, predicted from the growth of levels 0 and 1, does not fit into the budget even alone
+  // (max_factor_bytes below; the levels below give way to it first).
   AccuracyBudget memory;
   memory.max_factor_bytes = 1e6;
   ContractSolver small(material, contract_settings(1.0, material, 1e-8), 1e-8, memory);
   const ContractResult m = small.run(punch);
   CHECK_FALSE(m.met);
-  CHECK_THAT(m.limit, Contains("memory budget") && Contains("max_factor_bytes"));
+  CHECK_THAT(m.limit, Contains("memory budget") && Contains("level 2's factorisation") && Contains("max_factor_bytes"));
   AccuracyBudget no_memory;
   no_memory.max_factor_bytes = 0;
   CHECK_THROWS_WITH(ContractSolver(material, contract_settings(1.0, material, 1e-3), 1e-3, no_memory),
@@ -284,4 +287,31 @@ TEST_CASE("On a stiff surface (k = -0.75) the punch's force shall fall with the 
   const double moved = force(0.3 + 1e-10, 6);
   CAPTURE(moved);
   CHECK(std::abs(moved / f6 - 1) < 2e-8);
+}
+
+TEST_CASE("On a stiff surface (k = -0.9) the contract's paraboloid shall meet 1e-6 against (9.26), with estimates "
+          "that include the rounding probe and bound the true errors",
+          "[fem]")
+{
+  // The hp ladder on k < 0 reaches degrees whose answers carry the rounding of the stiff cells' entries; the probe
+  // (the last level again with the modulus and the loads scaled) measures it and adds it to the estimates.
+  const double k = -0.9, nu = 0.3, tolerance = 1e-6;
+  const Material material{std::make_shared<PowerLawModulus>(1.0, 1.0, k), nu};
+  ContractSolver solver(material, contract_settings(1.0, material, tolerance), tolerance);
+  LoadCase       sphere;
+  sphere.type    = LoadType::indenter;
+  sphere.profile = Profile::paraboloid(1.0);
+  const ContractResult r = solver.run(sphere);
+  CAPTURE(r.limit, r.level_dofs.size(), r.force.value, r.depth.value, r.force.rounding, r.depth.rounding);
+  CHECK(r.met);
+  CHECK(r.force.rounding > 0);
+  CHECK(r.force.error >= rounding_safety * r.force.rounding);
+  // (9.26) at a = R = E0 = c0 = 1: F = 4 h_N / ((1 - nu^2)(1 + k)^2 (k + 3)), d = 1 / (1 + k).
+  const double force_error = std::abs(r.force.value / testing::paraboloid_force(k, nu, 1, 1, 1, 1) - 1);
+  const double depth_error = std::abs(r.depth.value * (1 + k) - 1);
+  CAPTURE(force_error, depth_error, r.force.relative(), r.depth.relative());
+  CHECK(force_error <= tolerance);
+  CHECK(force_error <= r.force.relative());
+  CHECK(depth_error <= tolerance);
+  CHECK(depth_error <= r.depth.relative());
 }
