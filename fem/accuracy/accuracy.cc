@@ -353,6 +353,22 @@ namespace gradcontact::fem
 
 
 
+  bool LadderRecord::stalled_before(const std::size_t i) const
+  {
+    // The hp ladder's changes can pause for one level before its degree takes over again (the soft layer of k near
+    // 1 shows it outside the contact): a verdict of no convergence there waits for a second change that does not
+    // fall. Its levels are few, and the DoF budget still stops it.
+    if (ladder == Ladder::uniform)
+      return true;
+    const std::vector<double> &h = history[i];
+    if (h.size() < 4)
+      return false;
+    const std::vector<double> before(h.begin(), h.end() - 1);
+    return estimate(before, last[i].scale, last[i].local).ratio >= ratio_limit;
+  }
+
+
+
   bool LadderRecord::add(const std::vector<LadderValue> &values, const dealii::types::global_dof_index level_dofs)
   {
     if (!history.empty() && values.size() != history.size())
@@ -387,7 +403,7 @@ namespace gradcontact::fem
         // A recovered sample's first change can be an accident of two levels close to each other on the way to the
         // limit, so its verdict of no convergence waits for a fourth level (the budget check below still applies).
         const bool judged = last[i].local ? history[i].size() >= 4 : three;
-        if (judged && e.ratio >= ratio_limit && e.relative() * e.ratio > asked)
+        if (judged && e.ratio >= ratio_limit && e.relative() * e.ratio > asked && stalled_before(i))
           {
             stop = "no convergence";
             return true;
@@ -451,7 +467,7 @@ namespace gradcontact::fem
     text += "; " + last[worst].name + " still estimated " + format(e.relative()) + " off";
     if (history[worst].size() >= 3 && e.ratio >= ratio_limit)
       text += " and not converging (change ratio " + format(e.ratio) + " per level" +
-              (surface_exponent < 0 ? ": the stiff surface of k < 0, whose conditioning grows with every level)" :
+              (surface_exponent < 0 ? ": the stiff surface of k < 0, whose entries' rounding grows with every level)" :
                surface_exponent > 0 ? ": the soft surface layer of k > 0)" :
                                       ")");
     return text;

@@ -25,7 +25,7 @@
 // opposite sides of the limit) does not pass for convergence. The hp ladder's estimates always take three levels
 // (its first two are cheap). The ladder stops at the first level whose estimates are
 // all within the tolerance, or refuses when the next level would exceed the DoF budget, or when the quantities stop
-// converging (observed ratio at ratio_limit or above), or when the levels the observed ratios still need would exceed
+// converging (observed ratio at ratio_limit or above; on the hp ladder on two levels in a row), or when the levels the observed ratios still need would exceed
 // the budget (so that a refusal does not cost the largest solves), or when a level's solve is unreliable. On a
 // stiff surface the last level is probed for rounding (rounding_probe_factor): its change joins every estimate, and a
 // met ladder is judged once more and refused ("rounding") when it no longer holds.
@@ -245,6 +245,10 @@ namespace gradcontact::fem
     std::vector<std::vector<double>> history; ///< history[i][l]: quantity i on level l
     std::vector<LadderValue>         last;
     std::vector<double>              rounding; ///< per quantity, of the last level, when probed (absolute)
+
+    /// Whether quantity i's change stopped falling on the level before the last too (always true on the uniform
+    /// ladder, whose one stalled change is its verdict).
+    bool stalled_before(std::size_t i) const;
     std::vector<dealii::types::global_dof_index> dofs;
     bool                             is_met = false;
     std::string                      stop;

@@ -12,6 +12,7 @@
 #include <cmath>
 #include <memory>
 #include <stdexcept>
+#include <utility>
 #include <vector>
 
 using namespace gradcontact::fem;
@@ -98,6 +99,34 @@ TEST_CASE("The ladder shall be hp where the modulus has no jumps and uniform whe
   const Settings one   = ladder_settings(stiff, Ladder::uniform, 1);
   CHECK(one.mesh.global_refinements == stiff.mesh.global_refinements + 1);
   CHECK(one.discretization.degree == stiff.discretization.degree);
+}
+
+TEST_CASE("The hp ladder shall refuse for no convergence only after two changes in a row that do not fall, the uniform "
+          "ladder after one",
+          "[fem][quick]")
+{
+  const double tolerance = 1e-6;
+  // Changes 1e-1, 1e-2, 9e-3 (ratio 0.9), then 8.5e-3 (ratio 0.94).
+  const std::vector<double> values = {1.0, 1.1, 1.11, 1.119, 1.1275};
+  const auto run = [&](const Material &material, std::size_t n) {
+    LadderRecord record(material, contract_settings(1.0, material, tolerance), tolerance);
+    bool stopped = false;
+    for (std::size_t l = 0; l < n && !stopped; ++l)
+      stopped = record.add({{"force", values[l], 1, false, 1, true}}, 1000); // no growth: no DoF budget verdict
+    return std::pair{stopped, record.limit()};
+  };
+  const Material smooth{std::make_shared<PowerLawModulus>(1.0, 1.0, 0.5), 0.3};
+  REQUIRE(contract_ladder(smooth) == Ladder::hp);
+  CHECK_FALSE(run(smooth, 4).first); // one change that does not fall: the next level decides
+  const auto [stopped, limit] = run(smooth, 5);
+  CHECK(stopped);
+  CHECK_THAT(limit, Contains("no convergence") && Contains("force"));
+
+  const Material coating{std::make_shared<CoatingModulus>(1.0, 1.0, 0.5, 0.2), 0.3};
+  REQUIRE(contract_ladder(coating) == Ladder::uniform);
+  const auto [uniform_stopped, uniform_limit] = run(coating, 4);
+  CHECK(uniform_stopped);
+  CHECK_THAT(uniform_limit, Contains("no convergence"));
 }
 
 TEST_CASE("The rounding probe shall add twice its change, the factor divided out where a quantity scales, and unmake "
