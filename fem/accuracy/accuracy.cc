@@ -557,17 +557,23 @@ namespace gradcontact::fem
   void ContractSolver::probe_rounding(const LoadCase &load, const OutputRequest &outputs, LadderRecord &record)
   {
     const unsigned int l = record.levels() - 1;
+    // A probe that cannot run leaves a refusal's estimates without the rounding and its limit as it was; a met ladder
+    // cannot be confirmed without it.
+    const auto give_up = [&record](const std::string &why) {
+      if (record.met())
+        record.fail(why);
+    };
+    if (l >= solvers.size() || !solvers[l])
+      return; // dropped for a level above it, which was refused: the ladder is not met
     if (!probe || probe_level != l)
       {
         probe.reset(); // before the next is made: the memory of one probe at a time
-        const double bytes = double(solvers.at(l)->factor_bytes());
+        const double bytes = double(solvers[l]->factor_bytes());
         if (!make_room(bytes, l))
           {
-            // A refusal keeps its estimates without the rounding; a met ladder cannot be confirmed.
-            if (record.met())
-              record.fail("memory budget: the rounding probe of level " + std::to_string(l) + " would hold about " +
-                          format(bytes) + " bytes next to the level's own, above AccuracyBudget::max_factor_bytes = " +
-                          format(budget.max_factor_bytes));
+            give_up("memory budget: the rounding probe of level " + std::to_string(l) + " would hold about " +
+                    format(bytes) + " bytes next to the level's own, above AccuracyBudget::max_factor_bytes = " +
+                    format(budget.max_factor_bytes));
             return;
           }
         Material scaled = material;
@@ -588,12 +594,12 @@ namespace gradcontact::fem
       }
     catch (const std::runtime_error &e)
       {
-        record.fail("failed solve of the rounding probe on level " + std::to_string(l) + ": " + e.what());
+        give_up("failed solve of the rounding probe on level " + std::to_string(l) + ": " + e.what());
         return;
       }
     if (!r.reliable)
       {
-        record.fail("unreliable solve of the rounding probe on level " + std::to_string(l) + ": " + r.message);
+        give_up("unreliable solve of the rounding probe on level " + std::to_string(l) + ": " + r.message);
         return;
       }
     record.add_rounding(quantities(scaled_load, r, base.mesh.contact_radius, outputs.stress_points),
