@@ -22,6 +22,7 @@
 #include <map>
 #include <random>
 #include <sstream>
+#include <type_traits>
 #include <stdexcept>
 #include <sys/utsname.h>
 #include <thread>
@@ -63,6 +64,25 @@ namespace gradcontact::cases
       std::string first_refusal; // the message of the first row the method refused to parse
     };
 
+    /// `text` read whole as a T (int or double); false when it is not a number or has anything after it.
+    template <typename T>
+    bool read_whole(const std::string &text, T &x)
+    {
+      std::size_t used = 0;
+      try
+        {
+          if constexpr (std::is_same_v<T, int>)
+            x = std::stoi(text, &used);
+          else
+            x = std::stod(text, &used);
+        }
+      catch (const std::logic_error &)
+        {
+          return false;
+        }
+      return used > 0 && used == text.size();
+    }
+
     Options parse(const std::vector<std::string> &args)
     {
       Options o;
@@ -81,17 +101,8 @@ namespace gradcontact::cases
             {
               const std::string name = args[i], text = value(name.c_str());
               int n = 0;
-              try
-                {
-                  std::size_t used = 0;
-                  n = std::stoi(text, &used);
-                  if (used != text.size())
-                    throw std::invalid_argument(text);
-                }
-              catch (const std::logic_error &)
-                {
-                  throw std::invalid_argument("bench: " + name + " = '" + text + "' is not an integer in [1, 1000]");
-                }
+              if (!read_whole(text, n))
+                throw std::invalid_argument("bench: " + name + " = '" + text + "' is not an integer in [1, 1000]");
               if (n < 1 || n > 1000)
                 throw std::invalid_argument("bench: " + name + " = " + std::to_string(n) + " is outside [1, 1000]");
               (name == "--repeat" ? o.repeat : o.fe_repeat) = n;
@@ -119,17 +130,8 @@ namespace gradcontact::cases
               std::istringstream list(value("--k"));
               for (std::string text; std::getline(list, text, ',');)
                 {
-                  std::size_t used = 0;
-                  double      k    = 0;
-                  try
-                    {
-                      k = std::stod(text, &used);
-                    }
-                  catch (const std::logic_error &)
-                    {
-                      used = 0;
-                    }
-                  if (used == 0 || used != text.size())
+                  double k = 0;
+                  if (!read_whole(text, k))
                     throw std::invalid_argument("bench: --k = '" + text + "' is not a number in (-1, 1)");
                   o.ks.push_back(k);
                 }
